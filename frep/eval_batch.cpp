@@ -1,0 +1,163 @@
+#include "frep/eval_batch.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "frep/op_semantics.h"
+
+namespace hg::frep {
+
+template <class T>
+BatchEvaluator<T>::BatchEvaluator(const Tape& tape)
+    : tape_(tape), regs_(static_cast<size_t>(tape.registers) * kBatch), fail_(kBatch), bad_(kBatch) {
+    for (size_t i = 0; i < tape.code.size(); ++i) {
+        const Instr& in = tape.code[i];
+        if (in.op == Op::X || in.op == Op::Y || in.op == Op::Z) { firstInstr_ = i + 1; continue; }
+        if (in.op != Op::Const) break;
+        std::fill_n(reg(tape.out[i]), kBatch, static_cast<T>(in.imm));
+        firstInstr_ = i + 1;
+    }
+}
+
+template <class T>
+void BatchEvaluator<T>::evaluate(const T* x, const T* y, const T* z, T* out, size_t n, ErrorReport& errors,
+                                 std::uint8_t* failed) {
+    for (size_t i = 0; i < n; i += kBatch) {
+        size_t m = std::min(kBatch, n - i);
+        chunk(x + i, y + i, z + i, out + i, m, errors, failed ? failed + i : nullptr);
+    }
+}
+
+namespace {
+
+// Element-wise loops. `restrict` is sound: an instruction never writes a
+// register it reads (TapeBuilder::finish).
+template <class T, class F>
+inline void unary(T* __restrict o, const T* __restrict a, size_t n, F f) {
+    for (size_t i = 0; i < n; ++i) o[i] = f(a[i]);
+}
+template <class T, class F>
+inline void binary(T* __restrict o, const T* __restrict a, const T* __restrict b, size_t n, F f) {
+    for (size_t i = 0; i < n; ++i) o[i] = f(a[i], b[i]);
+}
+
+}  // namespace
+
+template <class T>
+void BatchEvaluator<T>::chunk(const T* x, const T* y, const T* z, T* out, size_t n, ErrorReport& errors,
+                              std::uint8_t* failed) {
+    // Registers 0..2 are x, y, z (TapeBuilder::finish).
+    for (size_t i = 0; i < tape_.code.size() && i < 3; ++i) {
+        const Op op = tape_.code[i].op;
+        const T* src = op == Op::X ? x : op == Op::Y ? y : z;
+        std::copy_n(src, n, reg(tape_.out[i]));
+    }
+    std::fill_n(fail_.data(), n, std::uint8_t(0));
+    bool anyFail = false;
+    SourceLoc firstLoc;
+    DomainError firstError = DomainError::None;
+
+    const T eps = hf::kEps<T>;
+    for (size_t k = firstInstr_; k < tape_.code.size(); ++k) {
+        const Instr& in = tape_.code[k];
+        T* o = reg(tape_.out[k]);
+        const T* a = in.a != kNoReg ? reg(in.a) : nullptr;
+        const T* b = in.b != kNoReg ? reg(in.b) : nullptr;
+        const T* c = in.c != kNoReg ? reg(in.c) : nullptr;
+        switch (in.op) {
+            case Op::Add: binary(o, a, b, n, [](T p, T q) { return p + q; }); break;
+            case Op::Sub: binary(o, a, b, n, [](T p, T q) { return p - q; }); break;
+            case Op::Mul: binary(o, a, b, n, [](T p, T q) { return p * q; }); break;
+            case Op::Div: binary(o, a, b, n, [](T p, T q) { return p / q; }); break;
+            case Op::Neg: unary(o, a, n, [](T p) { return -p; }); break;
+            case Op::Abs: unary(o, a, n, [](T p) { return std::fabs(p); }); break;
+            case Op::Sqrt: unary(o, a, n, [](T p) { return std::sqrt(p); }); break;
+            case Op::Min: binary(o, a, b, n, [](T p, T q) { return p < q ? p : q; }); break;
+            case Op::Max: binary(o, a, b, n, [](T p, T q) { return p > q ? p : q; }); break;
+            case Op::Lt: binary(o, a, b, n, [](T p, T q) { return p < q ? T(1) : T(0); }); break;
+            case Op::Le: binary(o, a, b, n, [](T p, T q) { return p <= q ? T(1) : T(0); }); break;
+            case Op::Gt: binary(o, a, b, n, [](T p, T q) { return p > q ? T(1) : T(0); }); break;
+            case Op::Ge: binary(o, a, b, n, [](T p, T q) { return p >= q ? T(1) : T(0); }); break;
+            case Op::Union:
+                binary(o, a, b, n, [](T f, T g) { return f + g + std::sqrt(std::fabs(f * f + g * g)); });
+                break;
+            case Op::Intersect:
+                binary(o, a, b, n, [](T f, T g) { return f + g - std::sqrt(std::fabs(f * f + g * g)); });
+                break;
+            case Op::Subtract:
+                binary(o, a, b, n, [](T f, T g) { return f + -g - std::sqrt(std::fabs(f * f + g * g)); });
+                break;
+            case Op::Select:
+                for (size_t i = 0; i < n; ++i) o[i] = a[i] != T(0) ? b[i] : c[i];
+                break;
+            case Op::HfDiv: {
+                // Value and failure mask in separate loops: both vectorize.
+                binary(o, a, b, n, [](T p, T q) { return p / q; });
+                for (size_t i = 0; i < n; ++i) bad_[i] = std::fabs(b[i]) < eps;
+                goto guarded;
+            }
+            case Op::HfSqrt: {
+                unary(o, a, n, [](T p) { return std::sqrt(p); });
+                for (size_t i = 0; i < n; ++i) bad_[i] = a[i] < T(0);
+                goto guarded;
+            }
+            case Op::Check: {
+                for (size_t i = 0; i < n; ++i) { o[i] = a[i]; bad_[i] = a[i] == T(0); }
+                goto guarded;
+            }
+            default: {
+                const bool fallible = opCanFail(in.op);
+                for (size_t i = 0; i < n; ++i) {
+                    T v = T(0);
+                    DomainError e = applyOp<T>(in.op, in.error, a ? a[i] : T(0), b ? b[i] : T(0),
+                                               c ? c[i] : T(0), v);
+                    o[i] = v;
+                    bad_[i] = e != DomainError::None;
+                }
+                if (!fallible) break;
+                goto guarded;
+            }
+            guarded: {
+                const T* g = in.guard != kNoReg ? reg(in.guard) : nullptr;
+                std::uint8_t hit = 0;
+                for (size_t i = 0; i < n; ++i) {
+                    const std::uint8_t f = static_cast<std::uint8_t>(bad_[i] & (g ? (g[i] != T(0)) : 1));
+                    hit = static_cast<std::uint8_t>(hit | (f & !fail_[i]));
+                    fail_[i] = static_cast<std::uint8_t>(fail_[i] | f);
+                }
+                if (hit && !anyFail) {
+                    anyFail = true;
+                    firstLoc = tape_.sites[in.site];
+                    firstError = in.op == Op::Check ? in.error : [&] {
+                        for (size_t i = 0; i < n; ++i) {
+                            if (!bad_[i]) continue;
+                            T v;
+                            return applyOp<T>(in.op, in.error, a ? a[i] : T(0), b ? b[i] : T(0), T(0), v);
+                        }
+                        return DomainError::NotANumber;
+                    }();
+                }
+                break;
+            }
+        }
+    }
+
+    const T* r = reg(tape_.result);
+    const T limit = static_cast<T>(kValueLimit);
+    std::uint64_t failures = 0;
+    for (size_t i = 0; i < n; ++i) {
+        T v = r[i];
+        bool f = fail_[i] || std::isnan(v);
+        if (f && !fail_[i] && firstError == DomainError::None) firstError = DomainError::NotANumber;
+        failures += f;
+        v = f ? static_cast<T>(kOutsideValue) : std::min(std::max(v, -limit), limit);
+        out[i] = v;
+        if (failed) failed[i] = f;
+    }
+    if (failures) errors.add(firstError, firstLoc, failures);
+}
+
+template class BatchEvaluator<float>;
+template class BatchEvaluator<double>;
+
+}  // namespace hg::frep

@@ -1,0 +1,46 @@
+// Batch evaluator: runs a tape over up to kBatch points at once, structure
+// of arrays, one tight loop per instruction (the compiler vectorizes the
+// arithmetic ones). Templated on float (sampling) and double (conformance,
+// export checks). Failing points and NaN come out as kOutsideValue and are
+// counted; infinities are clamped to +-kValueLimit.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "frep/domain_error.h"
+#include "frep/tape.h"
+
+namespace hg::frep {
+
+template <class T>
+class BatchEvaluator {
+public:
+    static constexpr size_t kBatch = 256;
+
+    // `tape` must outlive the evaluator. One evaluator per thread.
+    explicit BatchEvaluator(const Tape& tape);
+
+    // Any n; processed in chunks of kBatch. `failed`, if given, receives 1 for
+    // each point where the program failed (or produced NaN), else 0.
+    void evaluate(const T* x, const T* y, const T* z, T* out, size_t n, ErrorReport& errors,
+                  std::uint8_t* failed = nullptr);
+
+    const Tape& tape() const { return tape_; }
+
+private:
+    void chunk(const T* x, const T* y, const T* z, T* out, size_t n, ErrorReport& errors, std::uint8_t* failed);
+    T* reg(std::uint32_t r) { return regs_.data() + static_cast<size_t>(r) * kBatch; }
+
+    const Tape& tape_;
+    size_t firstInstr_ = 0;  // instructions before this are x, y, z and constants
+    std::vector<T> regs_;
+    std::vector<std::uint8_t> fail_;
+    std::vector<std::uint8_t> bad_;
+};
+
+extern template class BatchEvaluator<float>;
+extern template class BatchEvaluator<double>;
+
+}  // namespace hg::frep

@@ -1,0 +1,349 @@
+#include "frep/eval_interval.h"
+
+#include <cmath>
+
+#include "frep/domain_error.h"
+#include "frep/hf_math.h"
+
+namespace hg::frep {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kEps = 1e-6;
+
+// Outward rounding: two ulps cover libm's sub-ulp errors and our own.
+double down(double v) { return std::nextafter(std::nextafter(v, -kInf), -kInf); }
+double up(double v) { return std::nextafter(std::nextafter(v, kInf), kInf); }
+
+Interval make(double lo, double hi, bool nan) {
+    if (std::isnan(lo) || std::isnan(hi)) return Interval::entire();
+    return {down(lo), up(hi), nan};
+}
+
+// Bounds of f over [lo, hi] for monotone non-decreasing f.
+template <class F>
+Interval increasing(const Interval& a, F f) {
+    return make(f(a.lo), f(a.hi), a.maybeNaN);
+}
+
+Interval add(const Interval& a, const Interval& b) { return make(a.lo + b.lo, a.hi + b.hi, a.maybeNaN || b.maybeNaN); }
+Interval sub(const Interval& a, const Interval& b) { return make(a.lo - b.hi, a.hi - b.lo, a.maybeNaN || b.maybeNaN); }
+Interval neg(const Interval& a) { return {-a.hi, -a.lo, a.maybeNaN}; }
+
+Interval mul(const Interval& a, const Interval& b, bool same) {
+    bool nan = a.maybeNaN || b.maybeNaN;
+    if (same) {  // a square is never negative
+        double l = a.lo * a.lo, h = a.hi * a.hi;
+        if (a.lo <= 0.0 && a.hi >= 0.0) return make(0.0, std::max(l, h), nan);
+        return make(std::min(l, h), std::max(l, h), nan);
+    }
+    double p[4] = {a.lo * b.lo, a.lo * b.hi, a.hi * b.lo, a.hi * b.hi};
+    for (double& v : p)
+        if (std::isnan(v)) v = 0.0;  // 0 * inf: the bound is attained elsewhere or is 0
+    bool infProduct = (std::isinf(a.lo) || std::isinf(a.hi) || std::isinf(b.lo) || std::isinf(b.hi)) &&
+                      (a.contains(0.0) || b.contains(0.0));
+    return make(*std::min_element(p, p + 4), *std::max_element(p, p + 4), nan || infProduct);
+}
+
+Interval recip(const Interval& b) {
+    if (b.lo > 0.0 || b.hi < 0.0) return make(1.0 / b.hi, 1.0 / b.lo, b.maybeNaN);
+    return Interval::entire();
+}
+
+Interval div(const Interval& a, const Interval& b) {
+    if (b.lo > 0.0 || b.hi < 0.0) return mul(a, recip(b), false);
+    return Interval::entire();
+}
+
+// a / b restricted to |b| >= eps (the other points fail and are counted).
+Interval guardedDiv(const Interval& a, const Interval& b) {
+    if (b.lo >= kEps || b.hi <= -kEps) return div(a, b);
+    Interval r;
+    bool any = false;
+    if (b.hi >= kEps) { r = div(a, Interval(kEps, b.hi, b.maybeNaN)); any = true; }
+    if (b.lo <= -kEps) {
+        Interval n = div(a, Interval(b.lo, -kEps, b.maybeNaN));
+        r = any ? hull(r, n) : n;
+        any = true;
+    }
+    return any ? r : Interval(0.0);
+}
+
+Interval absI(const Interval& a) {
+    if (a.lo >= 0.0) return a;
+    if (a.hi <= 0.0) return neg(a);
+    return {0.0, std::max(-a.lo, a.hi), a.maybeNaN};
+}
+
+Interval sqrtI(const Interval& a) {
+    if (a.hi < 0.0) return {0.0, 0.0, true};  // NaN everywhere
+    return make(std::sqrt(std::max(a.lo, 0.0)), std::sqrt(a.hi), a.maybeNaN || a.lo < 0.0);
+}
+
+Interval logI(const Interval& a, double (*f)(double)) {
+    if (a.hi <= 0.0) return {-kInf, -kInf, true};
+    double l = a.lo > 0.0 ? f(a.lo) : -kInf;
+    return make(l, f(a.hi), a.maybeNaN || a.lo < 0.0);
+}
+
+// sin over [lo, hi]: extremes at the ends or at pi/2 + k*pi inside.
+Interval sinI(const Interval& a) {
+    if (!(a.hi - a.lo < 2 * kPi) || std::isinf(a.lo) || std::isinf(a.hi)) return {-1.0, 1.0, a.maybeNaN};
+    double l = std::min(std::sin(a.lo), std::sin(a.hi));
+    double h = std::max(std::sin(a.lo), std::sin(a.hi));
+    double k = std::ceil((a.lo - kPi / 2) / kPi);
+    for (double t = kPi / 2 + k * kPi; t <= a.hi + 1e-12; t += kPi, k += 1) {
+        if (std::fmod(std::fabs(k), 2.0) == 0.0) h = 1.0; else l = -1.0;
+    }
+    Interval r = make(l, h, a.maybeNaN);
+    r.lo = std::max(r.lo, -1.0);
+    r.hi = std::min(r.hi, 1.0);
+    return r;
+}
+Interval cosI(const Interval& a) { return sinI(add(a, Interval(kPi / 2))); }
+
+Interval tanI(const Interval& a) {
+    // Monotone between poles at pi/2 + k*pi.
+    if (!(a.hi - a.lo < kPi)) return Interval::entire();
+    double k1 = std::floor((a.lo - kPi / 2) / kPi), k2 = std::floor((a.hi - kPi / 2) / kPi);
+    if (k1 != k2) return Interval::entire();
+    return make(std::tan(a.lo), std::tan(a.hi), a.maybeNaN);
+}
+
+Interval asinI(const Interval& a, bool acosine) {
+    bool nan = a.maybeNaN || a.lo < -1.0 || a.hi > 1.0;
+    double l = std::max(a.lo, -1.0), h = std::min(a.hi, 1.0);
+    if (l > h) return {0.0, 0.0, true};
+    if (acosine) return make(std::acos(h), std::acos(l), nan);
+    return make(std::asin(l), std::asin(h), nan);
+}
+
+Interval atan2I(const Interval& y, const Interval& x) {
+    bool nan = y.maybeNaN || x.maybeNaN;
+    if (x.lo > 0.0) {
+        // Right half-plane: atan2 is monotone in each argument, extremes at corners.
+        double c[4] = {std::atan2(y.lo, x.lo), std::atan2(y.lo, x.hi), std::atan2(y.hi, x.lo), std::atan2(y.hi, x.hi)};
+        return make(*std::min_element(c, c + 4), *std::max_element(c, c + 4), nan);
+    }
+    if (y.lo > 0.0) {  // upper half-plane
+        double c[4] = {std::atan2(y.lo, x.lo), std::atan2(y.lo, x.hi), std::atan2(y.hi, x.lo), std::atan2(y.hi, x.hi)};
+        return make(*std::min_element(c, c + 4), *std::max_element(c, c + 4), nan);
+    }
+    if (y.hi < 0.0) {  // lower half-plane
+        double c[4] = {std::atan2(y.lo, x.lo), std::atan2(y.lo, x.hi), std::atan2(y.hi, x.lo), std::atan2(y.hi, x.hi)};
+        return make(*std::min_element(c, c + 4), *std::max_element(c, c + 4), nan);
+    }
+    return make(-kPi, kPi, nan);
+}
+
+Interval intPow(const Interval& b, long long n) {
+    if (n == 0) return Interval(1.0, 1.0, b.maybeNaN);
+    Interval r = b;
+    Interval p = b;
+    // Even powers of an interval around 0 start at 0; use repeated squaring on |b|.
+    if (n % 2 == 0) {
+        Interval m = absI(b);
+        r = Interval(1.0);
+        for (long long i = 0; i < n; ++i) r = mul(r, m, false);
+        return r;
+    }
+    for (long long i = 1; i < n; ++i) p = mul(p, b, false);
+    (void)r;
+    return p;  // odd powers are monotone; the product bounds contain them
+}
+
+// exp(e * log(b)) for b > 0 over boxes: monotone in b and e on each sign of log b.
+Interval realPow(const Interval& b, const Interval& e) {
+    Interval lb = logI(Interval(std::max(b.lo, 0.0), b.hi), [](double v) { return std::log(v); });
+    return increasing(mul(e, lb, false), [](double v) { return std::exp(v); });
+}
+
+// Reference power (hf_math.h) with failures excluded.
+Interval hfPow(const Interval& b, const Interval& e, bool& mayFail) {
+    if (!e.isPoint()) {  // the exponent may be integer at some points: no tight bound
+        mayFail = true;
+        return Interval::entire();
+    }
+    Interval r;
+    bool any = false;
+    auto join = [&](const Interval& v) { r = any ? hull(r, v) : v; any = true; };
+    if (b.lo < kEps && b.hi > -kEps) {  // near-zero base possible
+        if (e.lo <= kEps) mayFail = true;
+        else join(Interval(0.0));
+    }
+    if (e.lo - std::floor(e.lo) < kEps) {
+        long long n = hf::round(std::fabs(e.lo));
+        Interval p = intPow(b, n);
+        join(e.lo < 0.0 ? recip(p) : p);
+    } else {
+        if (b.lo < 0.0) mayFail = true;
+        if (b.hi > 0.0) join(realPow(b, e));
+    }
+    return any ? r : Interval(0.0);
+}
+
+bool mayBeTrue(const Interval& c) { return c.maybeNaN || c.hi != 0.0 || c.lo != 0.0; }
+bool surelyTrue(const Interval& c) { return !c.maybeNaN && (c.lo > 0.0 || c.hi < 0.0); }
+
+// truthy(v) = |v| >= eps.
+Interval truthyI(const Interval& a) {
+    if (!a.maybeNaN && (a.lo >= kEps || a.hi <= -kEps)) return Interval(1.0);
+    if (!a.maybeNaN && a.lo > -kEps && a.hi < kEps) return Interval(0.0);
+    return {0.0, 1.0};
+}
+Interval boolI(bool surelyT, bool surelyF) {
+    if (surelyT) return Interval(1.0);
+    if (surelyF) return Interval(0.0);
+    return {0.0, 1.0};
+}
+
+}  // namespace
+
+IntervalEvaluator::IntervalEvaluator(const Tape& tape) : tape_(tape), regs_(tape.registers) {}
+
+Interval IntervalEvaluator::evaluate(const Interval& x, const Interval& y, const Interval& z) {
+    bool mayFail = false;
+    for (size_t k = 0; k < tape_.code.size(); ++k) {
+        const Instr& in = tape_.code[k];
+        const Interval a = in.a != kNoReg ? regs_[in.a] : Interval();
+        const Interval b = in.b != kNoReg ? regs_[in.b] : Interval();
+        const Interval c = in.c != kNoReg ? regs_[in.c] : Interval();
+        const bool nan = a.maybeNaN || b.maybeNaN || c.maybeNaN;
+        bool fails = false;  // this fallible op may fail somewhere in the box
+        Interval r;
+        switch (in.op) {
+            case Op::X: r = x; break;
+            case Op::Y: r = y; break;
+            case Op::Z: r = z; break;
+            case Op::Const: r = Interval(in.imm); break;
+            case Op::Add: r = add(a, b); break;
+            case Op::Sub: r = sub(a, b); break;
+            case Op::Mul: r = mul(a, b, in.a == in.b); break;
+            case Op::Div: r = div(a, b); break;
+            case Op::Neg: r = neg(a); break;
+            case Op::Abs: r = absI(a); break;
+            case Op::Sqrt: r = sqrtI(a); break;
+            case Op::Exp: r = increasing(a, [](double v) { return std::exp(v); }); break;
+            case Op::Log: r = logI(a, [](double v) { return std::log(v); }); break;
+            case Op::Sin: r = sinI(a); break;
+            case Op::Cos: r = cosI(a); break;
+            case Op::Tan: r = tanI(a); break;
+            case Op::Atan: r = increasing(a, [](double v) { return std::atan(v); }); break;
+            case Op::Asin: r = asinI(a, false); break;
+            case Op::Acos: r = asinI(a, true); break;
+            case Op::Atan2: r = atan2I(a, b); break;
+            case Op::Pow:
+                if (b.isPoint() && b.lo == std::floor(b.lo) && std::fabs(b.lo) <= 64) {
+                    r = intPow(a, static_cast<long long>(std::fabs(b.lo)));
+                    if (b.lo < 0) r = recip(r);
+                } else if (a.lo > 0.0) {
+                    r = realPow(a, b);
+                } else {
+                    r = Interval::entire();
+                }
+                break;
+            case Op::Floor: r = increasing(a, [](double v) { return std::floor(v); }); break;
+            case Op::Ceil: r = increasing(a, [](double v) { return std::ceil(v); }); break;
+            case Op::Trunc: r = increasing(a, [](double v) { return std::trunc(v); }); break;
+            case Op::Sinh: r = increasing(a, [](double v) { return std::sinh(v); }); break;
+            case Op::Tanh: r = increasing(a, [](double v) { return std::tanh(v); }); break;
+            case Op::Cosh: {
+                Interval m = absI(a);
+                r = increasing(m, [](double v) { return std::cosh(v); });
+                break;
+            }
+            case Op::Lt: r = boolI(!nan && a.hi < b.lo, !nan && a.lo >= b.hi); break;
+            case Op::Le: r = boolI(!nan && a.hi <= b.lo, !nan && a.lo > b.hi); break;
+            case Op::Gt: r = boolI(!nan && a.lo > b.hi, !nan && a.hi <= b.lo); break;
+            case Op::Ge: r = boolI(!nan && a.lo >= b.hi, !nan && a.hi < b.lo); break;
+            case Op::EqEps:
+            case Op::NeEps: {
+                Interval d = absI(sub(a, b));
+                r = boolI(!nan && d.hi < kEps, !nan && d.lo >= kEps);
+                if (in.op == Op::NeEps && r.isPoint()) r = Interval(1.0 - r.lo);
+                break;
+            }
+            case Op::Truthy: r = truthyI(a); break;
+            case Op::Not: {
+                Interval t = truthyI(a);
+                r = t.isPoint() ? Interval(1.0 - t.lo) : Interval(0.0, 1.0);
+                break;
+            }
+            case Op::And:
+            case Op::Or: {
+                Interval ta = truthyI(a), tb = truthyI(b);
+                if (in.op == Op::And)
+                    r = boolI(ta.lo == 1.0 && tb.lo == 1.0, ta.hi == 0.0 || tb.hi == 0.0);
+                else
+                    r = boolI(ta.lo == 1.0 || tb.lo == 1.0, ta.hi == 0.0 && tb.hi == 0.0);
+                break;
+            }
+            case Op::Select:
+                if (surelyTrue(a)) r = b;
+                else if (!mayBeTrue(a)) r = c;
+                else r = hull(b, c);
+                break;
+            // With a NaN operand the C ternary returns the other one (or NaN).
+            case Op::Min: r = nan ? hull(a, b) : Interval(std::min(a.lo, b.lo), std::min(a.hi, b.hi)); break;
+            case Op::Max: r = nan ? hull(a, b) : Interval(std::max(a.lo, b.lo), std::max(a.hi, b.hi)); break;
+            case Op::Union:
+                // R-functions are monotone in both arguments.
+                r = make(hf::unite(a.lo, b.lo), hf::unite(a.hi, b.hi), nan);
+                break;
+            case Op::Intersect: r = make(hf::intersect(a.lo, b.lo), hf::intersect(a.hi, b.hi), nan); break;
+            case Op::Subtract: r = make(hf::subtract(a.lo, b.hi), hf::subtract(a.hi, b.lo), nan); break;
+            case Op::HfDiv:
+                fails = b.lo < kEps && b.hi > -kEps;
+                r = guardedDiv(a, b);
+                break;
+            case Op::HfPow: r = hfPow(a, b, fails); break;
+            case Op::HfSqrt:
+                fails = a.lo < 0.0;
+                r = a.hi < 0.0 ? Interval(0.0) : sqrtI(Interval(std::max(a.lo, 0.0), a.hi, a.maybeNaN));
+                break;
+            case Op::HfLog:
+            case Op::HfLog10: {
+                fails = !(a.lo > 0.0);
+                auto f = in.op == Op::HfLog ? +[](double v) { return std::log(v); } : +[](double v) { return std::log10(v); };
+                if (a.hi <= 0.0) r = Interval(0.0);
+                else r = make(a.lo > 0.0 ? f(a.lo) : -kInf, f(a.hi), a.maybeNaN);
+                break;
+            }
+            case Op::HfAsin:
+            case Op::HfAcos:
+                fails = a.lo < -1.0 || a.hi > 1.0;
+                r = asinI(a, in.op == Op::HfAcos);
+                r.maybeNaN = a.maybeNaN;
+                break;
+            case Op::HfTan:
+                r = tanI(a);
+                fails = std::isinf(r.lo) || std::isinf(r.hi);
+                break;
+            case Op::HfMod: {
+                double q = std::max(std::fabs(b.lo), std::fabs(b.hi)) + 1.0;
+                fails = b.lo < 0.5 && b.hi >= -0.5;
+                r = Interval(-q, q, nan);
+                break;
+            }
+            case Op::Check:
+                fails = a.maybeNaN || a.lo <= 0.0;
+                r = a;
+                break;
+        }
+        if (fails || (opCanFail(in.op) && nan)) {
+            const bool guardMayHold = in.guard == kNoReg || mayBeTrue(regs_[in.guard]);
+            if (guardMayHold) mayFail = true;
+        }
+        regs_[tape_.out[k]] = r;
+    }
+    Interval result = regs_[tape_.result];
+    if (result.maybeNaN || mayFail) result = hull(result, Interval(kOutsideValue));
+    result.maybeNaN = false;
+    result.lo = std::max(result.lo, -kValueLimit);
+    result.hi = std::min(result.hi, kValueLimit);
+    if (std::isnan(result.lo) || std::isnan(result.hi)) result = Interval(-kValueLimit, kValueLimit);
+    return result;
+}
+
+}  // namespace hg::frep

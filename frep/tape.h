@@ -1,0 +1,61 @@
+// A compiled body: a flat list of register instructions in evaluation order
+// (SSA before register allocation). Leaves are the point coordinates and
+// constants; a[] values are folded in at compile time. Every evaluator
+// (batch float/double, interval, gradient) runs the same tape.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "frep/ast.h"
+#include "frep/domain_error.h"
+
+namespace hg::frep {
+
+enum class Op : std::uint8_t {
+    // leaves
+    X, Y, Z, Const,
+    // plain IEEE arithmetic (library routines, folded language ops)
+    Add, Sub, Mul, Div, Neg, Abs, Sqrt, Exp, Log, Sin, Cos, Tan, Atan, Asin, Acos,
+    Atan2, Pow, Floor, Ceil, Trunc, Sinh, Cosh, Tanh,
+    // 0/1 results
+    Lt, Le, Gt, Ge, EqEps, NeEps, And, Or, Not, Truthy,
+    Select,  // a != 0 ? b : c
+    Min, Max,
+    // R-functions, alpha 0
+    Union, Intersect, Subtract,
+    // language operations that can fail (domain errors) where their guard holds
+    HfDiv, HfPow, HfSqrt, HfLog, HfLog10, HfAsin, HfAcos, HfTan, HfMod,
+    Check,   // fails with `error` where a == 0 (unassigned value, bad index)
+};
+
+const char* opName(Op op);
+int opArity(Op op);
+bool opCanFail(Op op);
+
+constexpr std::uint32_t kNoReg = 0xffffffffu;
+
+struct Instr {
+    Op op = Op::Const;
+    DomainError error = DomainError::None;  // for Check
+    std::uint32_t a = kNoReg, b = kNoReg, c = kNoReg;
+    std::uint32_t guard = kNoReg;  // fallible ops: fail only where guard != 0
+    std::uint32_t site = 0;        // index into Tape::sites, for fallible ops
+    double imm = 0.0;              // Const value
+};
+
+struct Tape {
+    // After register allocation: instruction i writes register out[i].
+    std::vector<Instr> code;
+    std::vector<std::uint32_t> out;
+    std::uint32_t registers = 0;
+    std::uint32_t result = kNoReg;  // register holding the body's value
+    std::vector<SourceLoc> sites;   // locations of fallible operations
+
+    size_t size() const { return code.size(); }
+    bool canFail() const;
+    std::string dump() const;
+};
+
+}  // namespace hg::frep

@@ -1,0 +1,69 @@
+// Builds a Tape in SSA form: folds constants with the same double arithmetic
+// the evaluators use (so folding never changes a value), shares repeated
+// subexpressions, and at the end drops dead code and allocates registers.
+#pragma once
+
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+#include "frep/tape.h"
+
+namespace hg::frep {
+
+class TapeBuilder {
+public:
+    // Hard cap on SSA values, so that unrolling cannot exhaust memory.
+    static constexpr size_t kMaxValues = 4'000'000;
+
+    TapeBuilder();
+
+    std::uint32_t x() const { return x_; }
+    std::uint32_t y() const { return y_; }
+    std::uint32_t z() const { return z_; }
+    std::uint32_t constant(double v);
+
+    // A pure operation: folded when its inputs are constant, shared when the
+    // same operation was built before.
+    std::uint32_t op(Op op, std::uint32_t a, std::uint32_t b = kNoReg, std::uint32_t c = kNoReg);
+
+    // A language operation that may fail where `guard` (0/1 value, or kNoReg
+    // for "always") is non-zero; `loc` is reported on failure.
+    std::uint32_t fallible(Op op, std::uint32_t a, std::uint32_t b, std::uint32_t guard, SourceLoc loc,
+                           DomainError checkError = DomainError::None);
+
+    // Fails with `error` where `ok` is 0 and `guard` holds.
+    void check(std::uint32_t ok, std::uint32_t guard, SourceLoc loc, DomainError error);
+
+    // guard && cond, treating kNoReg as "true".
+    std::uint32_t andGuard(std::uint32_t guard, std::uint32_t cond);
+
+    bool isConstant(std::uint32_t v) const { return code_[v].op == Op::Const; }
+    double constantValue(std::uint32_t v) const { return code_[v].imm; }
+    size_t size() const { return code_.size(); }
+
+    // Dead-code elimination and register allocation. Registers 0..2 hold
+    // x, y, z and every constant gets a register of its own that no
+    // instruction overwrites, so evaluators fill them once.
+    Tape finish(std::uint32_t result) const;
+
+private:
+    std::uint32_t push(const Instr& in);
+    bool fold(Op op, std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t& out);
+
+    struct Key {
+        Op op; DomainError error; std::uint32_t a, b, c, guard, site; std::uint64_t imm;
+        bool operator==(const Key& o) const {
+            return op == o.op && error == o.error && a == o.a && b == o.b && c == o.c &&
+                   guard == o.guard && site == o.site && imm == o.imm;
+        }
+    };
+    struct KeyHash { size_t operator()(const Key& k) const; };
+
+    std::vector<Instr> code_;
+    std::vector<SourceLoc> sites_;
+    std::unordered_map<Key, std::uint32_t, KeyHash> cse_;
+    std::uint32_t x_, y_, z_;
+};
+
+}  // namespace hg::frep

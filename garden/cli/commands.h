@@ -1,0 +1,25 @@
+// Subcommands of the `hypergarden` executable. Each returns the process
+// exit status: 0 on success, 1 when the input has errors, 2 on bad usage.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace hg::garden::cli {
+
+struct ModelOptions {
+    std::string file;
+    std::string body;                 // "" : my_model, else the first body
+    std::vector<double> parameters;   // a[1], a[2], ...
+};
+
+struct EvalOptions {
+    ModelOptions model;
+    std::vector<double> point;        // empty: read points from standard input
+    bool interpreter = false;         // force the scalar interpreter
+};
+
+int runCheck(const ModelOptions& options);
+int runEval(const EvalOptions& options);
+
+}  // namespace hg::garden::cli

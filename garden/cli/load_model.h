@@ -1,0 +1,28 @@
+// Loads a HyperFun file for a command: parse, report every error with its
+// location, pick the body, build the Model.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "frep/model.h"
+#include "garden/cli/commands.h"
+
+namespace hg::garden::cli {
+
+struct LoadedModel {
+    std::shared_ptr<const frep::Program> program;
+    std::string source;
+    std::optional<frep::Model> model;
+};
+
+// Prints diagnostics to stderr and returns nullopt when the file cannot be
+// used.
+std::optional<LoadedModel> loadModel(const ModelOptions& options);
+
+// The body named `name` (case-insensitive), or the default body for "".
+// Returns -1 and prints the available bodies when there is no such body.
+int pickBody(const frep::Program& program, const std::string& name, const std::string& file);
+
+}  // namespace hg::garden::cli
