@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "frep/conv_kernels.h"
 #include "frep/op_semantics.h"
 
 namespace hg::frep {
@@ -72,6 +73,24 @@ void BatchEvaluator<T>::chunk(const T* x, const T* y, const T* z, T* out, size_t
             case Op::Neg: unary(o, a, n, [](T p) { return -p; }); break;
             case Op::Abs: unary(o, a, n, [](T p) { return std::fabs(p); }); break;
             case Op::Sqrt: unary(o, a, n, [](T p) { return std::sqrt(p); }); break;
+            case Op::Exp: unary(o, a, n, [](T p) { return std::exp(p); }); break;
+            case Op::Log: unary(o, a, n, [](T p) { return std::log(p); }); break;
+            case Op::Sin: unary(o, a, n, [](T p) { return std::sin(p); }); break;
+            case Op::Cos: unary(o, a, n, [](T p) { return std::cos(p); }); break;
+            case Op::Tan: unary(o, a, n, [](T p) { return std::tan(p); }); break;
+            case Op::Atan: unary(o, a, n, [](T p) { return std::atan(p); }); break;
+            case Op::Floor: unary(o, a, n, [](T p) { return std::floor(p); }); break;
+            case Op::Atan2: binary(o, a, b, n, [](T p, T q) { return std::atan2(p, q); }); break;
+            case Op::EqEps: binary(o, a, b, n, [](T p, T q) { return hf::equal(p, q); }); break;
+            case Op::NeEps: binary(o, a, b, n, [](T p, T q) { return hf::notEqual(p, q); }); break;
+            case Op::Truthy: unary(o, a, n, [](T p) { return std::fabs(p) >= hf::kEps<T> ? T(1) : T(0); }); break;
+            case Op::Not: unary(o, a, n, [](T p) { return std::fabs(p) >= hf::kEps<T> ? T(0) : T(1); }); break;
+            case Op::And:
+                binary(o, a, b, n, [](T p, T q) { return (std::fabs(p) >= hf::kEps<T>) & (std::fabs(q) >= hf::kEps<T>) ? T(1) : T(0); });
+                break;
+            case Op::Or:
+                binary(o, a, b, n, [](T p, T q) { return (std::fabs(p) >= hf::kEps<T>) | (std::fabs(q) >= hf::kEps<T>) ? T(1) : T(0); });
+                break;
             case Op::Min: binary(o, a, b, n, [](T p, T q) { return p < q ? p : q; }); break;
             case Op::Max: binary(o, a, b, n, [](T p, T q) { return p > q ? p : q; }); break;
             case Op::Lt: binary(o, a, b, n, [](T p, T q) { return p < q ? T(1) : T(0); }); break;
@@ -101,6 +120,9 @@ void BatchEvaluator<T>::chunk(const T* x, const T* y, const T* z, T* out, size_t
                 for (size_t i = 0; i < n; ++i) bad_[i] = a[i] < T(0);
                 goto guarded;
             }
+            case Op::ConvSegment:
+                convSegmentBatch(a, b, c, o, n, tape_.params.data() + in.param);
+                break;
             case Op::Check: {
                 for (size_t i = 0; i < n; ++i) { o[i] = a[i]; bad_[i] = a[i] == T(0); }
                 goto guarded;

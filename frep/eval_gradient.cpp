@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "frep/conv_kernels.h"
 #include "frep/op_semantics.h"
 
 namespace hg::frep {
@@ -40,11 +41,22 @@ void GradientEvaluator::chunk(const double* x, const double* y, const double* z,
             const double bv = in.b != kNoReg ? v_[b + i] : 0.0;
             const double cv = in.c != kNoReg ? v_[c + i] : 0.0;
             double value = 0.0;
+            double ka = 0.0, kb = 0.0;
             DomainError e = applyOp<double>(in.op, in.error, av, bv, cv, value);
             if (in.op == Op::X) value = x[i];
             if (in.op == Op::Y) value = y[i];
             if (in.op == Op::Z) value = z[i];
             if (in.op == Op::Const) value = in.imm;
+            double kc = 0.0;  // coefficient of c's derivative (fused kernels)
+            if (in.op == Op::ConvSegment) {
+                // Central differences of the exact closed form.
+                const double* q = tape_.params.data() + in.param;
+                const double h = 1e-6;
+                value = convSegmentField(av, bv, cv, q);
+                ka = (convSegmentField(av + h, bv, cv, q) - convSegmentField(av - h, bv, cv, q)) / (2 * h);
+                kb = (convSegmentField(av, bv + h, cv, q) - convSegmentField(av, bv - h, cv, q)) / (2 * h);
+                kc = (convSegmentField(av, bv, cv + h, q) - convSegmentField(av, bv, cv - h, q)) / (2 * h);
+            }
             if (e != DomainError::None && (in.guard == kNoReg || v_[static_cast<size_t>(in.guard) * kBatch + i] != 0.0)) {
                 if (!fail_[i] && firstError == DomainError::None) {
                     firstError = e;
@@ -52,8 +64,7 @@ void GradientEvaluator::chunk(const double* x, const double* y, const double* z,
                 }
                 fail_[i] = 1;
             }
-            // d(out) = da * ka + db * kb (+ dc for select).
-            double ka = 0.0, kb = 0.0;
+            // d(out) = da * ka + db * kb (+ dc * kc); select/min/max pick one.
             int pick = 0;  // select/min/max: 1 takes a's derivative, 2 b's, 3 c's
             switch (in.op) {
                 case Op::X: case Op::Y: case Op::Z: case Op::Const: break;
@@ -96,6 +107,7 @@ void GradientEvaluator::chunk(const double* x, const double* y, const double* z,
                     break;
                 }
                 case Op::Check: ka = 1; break;
+                case Op::ConvSegment: break;  // coefficients computed above
                 default: break;  // floor, comparisons, logic, mod: piecewise constant
             }
             double gx, gy, gz;
@@ -109,6 +121,7 @@ void GradientEvaluator::chunk(const double* x, const double* y, const double* z,
                 gx = gy = gz = 0.0;
                 if (ka != 0.0) { gx += ka * dx_[a + i]; gy += ka * dy_[a + i]; gz += ka * dz_[a + i]; }
                 if (kb != 0.0) { gx += kb * dx_[b + i]; gy += kb * dy_[b + i]; gz += kb * dz_[b + i]; }
+                if (kc != 0.0) { gx += kc * dx_[c + i]; gy += kc * dy_[c + i]; gz += kc * dz_[c + i]; }
             }
             v_[o + i] = value;
             dx_[o + i] = gx; dy_[o + i] = gy; dz_[o + i] = gz;

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "frep/conv_kernels.h"
 #include "frep/domain_error.h"
 #include "frep/hf_math.h"
 
@@ -330,6 +331,7 @@ Interval IntervalEvaluator::evaluate(const Interval& x, const Interval& y, const
                 fails = a.maybeNaN || a.lo <= 0.0;
                 r = a;
                 break;
+            case Op::ConvSegment: r = convSegmentBounds(a, b, c, tape_.params.data() + in.param); break;
         }
         if (fails || (opCanFail(in.op) && nan)) {
             const bool guardMayHold = in.guard == kNoReg || mayBeTrue(regs_[in.guard]);

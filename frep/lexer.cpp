@@ -187,7 +187,7 @@ Token Lexer::scan() {
                 ++i;
                 ++count;
             }
-            if (at(i) != '"') {
+            if (at(i) != '"' || count >= kMaxLexemLength) {
                 t.problem = LexProblem::UnterminatedString;
                 return finish(TokenKind::Illegal, i - pos_);
             }
@@ -306,7 +306,9 @@ std::string describe(const Token& token, std::string_view source) {
         case LexProblem::LongComment:
             return "comment longer than 256 characters: the reference interpreter rejects it";
         case LexProblem::LongIdentifier: return "name longer than 256 characters";
-        case LexProblem::UnterminatedString: return "string without a closing quotation mark";
+        case LexProblem::UnterminatedString:
+            return "string without a closing quotation mark on its line (or longer than 256 "
+                   "characters)";
     }
     return {};
 }

@@ -906,7 +906,7 @@ bool Parser::parseArrayLiteral(std::vector<Stmt>& out, const Token& name, int sl
         return false;
     }
     advance();
-    countNodes(1 + values.size(), name);
+    countNodes(1 + values.size() / 8, name);  // numbers are small: 8 count as one node
     Stmt s;
     s.kind = StmtKind::AssignArray;
     s.loc = name.loc;

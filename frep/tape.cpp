@@ -59,6 +59,7 @@ const char* opName(Op op) {
         case Op::HfTan: return "hf_tan";
         case Op::HfMod: return "hf_mod";
         case Op::Check: return "check";
+        case Op::ConvSegment: return "conv_segment";
     }
     return "?";
 }
@@ -72,7 +73,7 @@ int opArity(Op op) {
         case Op::Truthy: case Op::HfSqrt: case Op::HfLog: case Op::HfLog10: case Op::HfAsin:
         case Op::HfAcos: case Op::HfTan: case Op::Check:
             return 1;
-        case Op::Select: return 3;
+        case Op::Select: case Op::ConvSegment: return 3;
         default: return 2;
     }
 }

@@ -28,7 +28,12 @@ enum class Op : std::uint8_t {
     // language operations that can fail (domain errors) where their guard holds
     HfDiv, HfPow, HfSqrt, HfLog, HfLog10, HfAsin, HfAcos, HfTan, HfMod,
     Check,   // fails with `error` where a == 0 (unassigned value, bad index)
+    // fused library kernels; parameters in Tape::params[param...]
+    ConvSegment,  // Cauchy line-segment field at (a, b, c): b, e (3 each), s
 };
+
+// Parameters of a ConvSegment: begin (3), end (3), kernel width.
+constexpr std::uint32_t kConvSegmentParams = 7;
 
 const char* opName(Op op);
 int opArity(Op op);
@@ -42,6 +47,7 @@ struct Instr {
     std::uint32_t a = kNoReg, b = kNoReg, c = kNoReg;
     std::uint32_t guard = kNoReg;  // fallible ops: fail only where guard != 0
     std::uint32_t site = 0;        // index into Tape::sites, for fallible ops
+    std::uint32_t param = 0;       // fused kernels: first index into Tape::params
     double imm = 0.0;              // Const value
 };
 
@@ -52,6 +58,7 @@ struct Tape {
     std::uint32_t registers = 0;
     std::uint32_t result = kNoReg;  // register holding the body's value
     std::vector<SourceLoc> sites;   // locations of fallible operations
+    std::vector<double> params;     // constant parameters of fused kernels
 
     size_t size() const { return code.size(); }
     bool canFail() const;

@@ -4,6 +4,7 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "frep/conv_kernels.h"
 #include "frep/op_semantics.h"
 
 namespace hg::frep {
@@ -18,7 +19,7 @@ std::uint64_t bitsOf(double v) {
 size_t TapeBuilder::KeyHash::operator()(const Key& k) const {
     std::uint64_t h = static_cast<std::uint64_t>(k.op) * 0x9E3779B97F4A7C15ull;
     for (std::uint64_t v : {std::uint64_t(k.a), std::uint64_t(k.b), std::uint64_t(k.c),
-                            std::uint64_t(k.guard), std::uint64_t(k.site), k.imm,
+                            std::uint64_t(k.guard), std::uint64_t(k.site), std::uint64_t(k.param), k.imm,
                             std::uint64_t(k.error)})
         h = (h ^ v) * 0x100000001B3ull + (h >> 29);
     return static_cast<size_t>(h);
@@ -32,7 +33,7 @@ TapeBuilder::TapeBuilder() {
 }
 
 std::uint32_t TapeBuilder::push(const Instr& in) {
-    Key key{in.op, in.error, in.a, in.b, in.c, in.guard, in.site, bitsOf(in.imm)};
+    Key key{in.op, in.error, in.a, in.b, in.c, in.guard, in.site, in.param, bitsOf(in.imm)};
     auto it = cse_.find(key);
     if (it != cse_.end()) return it->second;
     if (code_.size() >= kMaxValues)
@@ -90,12 +91,50 @@ bool TapeBuilder::fold(Op op, std::uint32_t a, std::uint32_t b, std::uint32_t c,
     return false;
 }
 
+bool TapeBuilder::rFunction(Op o, std::uint32_t a, std::uint32_t b, std::uint32_t& out) {
+    // (p + q) +- sqrt(p*p + q*q), in either order, is the alpha-0 R-function
+    // union/intersection: the fused op computes the same bits (IEEE addition
+    // commutes; fabs of a sum of squares changes nothing) and has monotone,
+    // tight interval bounds where the expanded form suffers from dependency.
+    if ((o != Op::Add && o != Op::Sub) || code_[a].op != Op::Add || code_[b].op != Op::Sqrt) return false;
+    const Instr& sum = code_[code_[b].a];
+    if (sum.op != Op::Add) return false;
+    auto squareOf = [&](std::uint32_t v) {
+        const Instr& m = code_[v];
+        return m.op == Op::Mul && m.a == m.b ? m.a : kNoReg;
+    };
+    const std::uint32_t p = code_[a].a, q = code_[a].b;
+    const std::uint32_t s1 = squareOf(sum.a), s2 = squareOf(sum.b);
+    if (!((s1 == p && s2 == q) || (s1 == q && s2 == p))) return false;
+    out = op(o == Op::Add ? Op::Union : Op::Intersect, p, q);
+    return true;
+}
+
 std::uint32_t TapeBuilder::op(Op o, std::uint32_t a, std::uint32_t b, std::uint32_t c) {
     std::uint32_t folded;
     if (fold(o, a, b, c, folded)) return folded;
+    if (rFunction(o, a, b, folded)) return folded;
     Instr in;
     in.op = o;
     in.a = a; in.b = b; in.c = c;
+    return push(in);
+}
+
+std::uint32_t TapeBuilder::convSegment(std::uint32_t px, std::uint32_t py, std::uint32_t pz, const double* params) {
+    if (isConstant(px) && isConstant(py) && isConstant(pz))
+        return constant(convSegmentField(constantValue(px), constantValue(py), constantValue(pz), params));
+    // Identical segments share one parameter block (and so one instruction).
+    std::uint32_t index = static_cast<std::uint32_t>(params_.size());
+    for (size_t i = 0; i + kConvSegmentParams <= params_.size(); i += kConvSegmentParams)
+        if (std::equal(params, params + kConvSegmentParams, params_.begin() + static_cast<std::ptrdiff_t>(i))) {
+            index = static_cast<std::uint32_t>(i);
+            break;
+        }
+    if (index == params_.size()) params_.insert(params_.end(), params, params + kConvSegmentParams);
+    Instr in;
+    in.op = Op::ConvSegment;
+    in.a = px; in.b = py; in.c = pz;
+    in.param = index;
     return push(in);
 }
 
@@ -196,6 +235,7 @@ Tape TapeBuilder::finish(std::uint32_t result) const {
     t.registers = next;
     t.result = reg[result];
     t.sites = sites_;
+    t.params = params_;
     return t;
 }
 

@@ -35,6 +35,10 @@ public:
     // Fails with `error` where `ok` is 0 and `guard` holds.
     void check(std::uint32_t ok, std::uint32_t guard, SourceLoc loc, DomainError error);
 
+    // Fused Cauchy line-segment field at (px, py, pz); `params` holds
+    // begin, end and kernel width (kConvSegmentParams values).
+    std::uint32_t convSegment(std::uint32_t px, std::uint32_t py, std::uint32_t pz, const double* params);
+
     // guard && cond, treating kNoReg as "true".
     std::uint32_t andGuard(std::uint32_t guard, std::uint32_t cond);
 
@@ -50,18 +54,20 @@ public:
 private:
     std::uint32_t push(const Instr& in);
     bool fold(Op op, std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t& out);
+    bool rFunction(Op op, std::uint32_t a, std::uint32_t b, std::uint32_t& out);
 
     struct Key {
-        Op op; DomainError error; std::uint32_t a, b, c, guard, site; std::uint64_t imm;
+        Op op; DomainError error; std::uint32_t a, b, c, guard, site, param; std::uint64_t imm;
         bool operator==(const Key& o) const {
             return op == o.op && error == o.error && a == o.a && b == o.b && c == o.c &&
-                   guard == o.guard && site == o.site && imm == o.imm;
+                   guard == o.guard && site == o.site && param == o.param && imm == o.imm;
         }
     };
     struct KeyHash { size_t operator()(const Key& k) const; };
 
     std::vector<Instr> code_;
     std::vector<SourceLoc> sites_;
+    std::vector<double> params_;
     std::unordered_map<Key, std::uint32_t, KeyHash> cse_;
     std::uint32_t x_, y_, z_;
 };

@@ -276,14 +276,17 @@ V hfConvArc(const std::vector<V>& x, const std::vector<V>& center, const std::ve
         V over = gt(theta[i], V(180.0));
         V overTh = (theta[i] - 180.0) * rd;
         theta[i] = select(over, V(180.0), theta[i]);
-        V overX = (overC + overII * overOneC) * newX + (-overKS + overIJ * overOneC) * newY +
-                  (overJS + overKI * overOneC) * newZ;
-        V overY = (overKS + overIJ * overOneC) * newX + (overC + overJJ * overOneC) * newY +
-                  (-overIS + overJK * overOneC) * newZ;
-        V overZ = (-overJS + overKI * overOneC) * newX + (overIS + overJK * overOneC) * newY +
-                  (overC + overKK * overOneC) * newZ;
-        V overField = detail::convArcField(overX, overY, overZ, r, s[i], overTh);
-        f = select(over, f + overField, f);
+        // Skipped statically when the span is a constant of at most 180.
+        if (!isConstant(over) || constantValue(over) != 0.0) {
+            V overX = (overC + overII * overOneC) * newX + (-overKS + overIJ * overOneC) * newY +
+                      (overJS + overKI * overOneC) * newZ;
+            V overY = (overKS + overIJ * overOneC) * newX + (overC + overJJ * overOneC) * newY +
+                      (-overIS + overJK * overOneC) * newZ;
+            V overZ = (-overJS + overKI * overOneC) * newX + (overIS + overJK * overOneC) * newY +
+                      (overC + overKK * overOneC) * newZ;
+            V overField = detail::convArcField(overX, overY, overZ, r, s[i], overTh);
+            f = select(over, f + overField, f);
+        }
 
         V th = theta[i] * rd;
         f = f + detail::convArcField(newX, newY, newZ, r, s[i], th);

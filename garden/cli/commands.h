@@ -19,6 +19,9 @@ struct EvalOptions {
     bool interpreter = false;         // force the scalar interpreter
 };
 
+// "0.5,1,-2" -> {0.5, 1, -2}; false when an item is not a number.
+bool parseNumberList(const std::string& text, std::vector<double>& out);
+
 int runCheck(const ModelOptions& options);
 int runEval(const EvalOptions& options);
 

@@ -1,5 +1,6 @@
 #include "garden/cli/load_model.h"
 
+#include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -7,6 +8,20 @@
 #include "frep/parser.h"
 
 namespace hg::garden::cli {
+
+bool parseNumberList(const std::string& text, std::vector<double>& out) {
+    out.clear();
+    if (text.empty()) return true;
+    std::stringstream s(text);
+    std::string item;
+    while (std::getline(s, item, ',')) {
+        char* end = nullptr;
+        double v = std::strtod(item.c_str(), &end);
+        if (item.empty() || end == item.c_str() || *end != '\0') return false;
+        out.push_back(v);
+    }
+    return true;
+}
 
 int pickBody(const frep::Program& program, const std::string& name, const std::string& file) {
     int body = name.empty() ? program.defaultBody() : program.findBody(name);
