@@ -22,6 +22,13 @@ Interval make(double lo, double hi, bool nan) {
     return {down(lo), up(hi), nan};
 }
 
+// Like make(), for results that cancel large terms: the rounding error is
+// relative to `magnitude` (the terms), not to the result.
+Interval makeCancelling(double lo, double hi, double magnitude, bool nan) {
+    const double pad = 8.0 * std::numeric_limits<double>::epsilon() * magnitude;
+    return make(lo - pad, hi + pad, nan);
+}
+
 // Bounds of f over [lo, hi] for monotone non-decreasing f.
 template <class F>
 Interval increasing(const Interval& a, F f) {
@@ -157,7 +164,11 @@ Interval intPow(const Interval& b, long long n) {
 // exp(e * log(b)) for b > 0 over boxes: monotone in b and e on each sign of log b.
 Interval realPow(const Interval& b, const Interval& e) {
     Interval lb = logI(Interval(std::max(b.lo, 0.0), b.hi), [](double v) { return std::log(v); });
-    return increasing(mul(e, lb, false), [](double v) { return std::exp(v); });
+    Interval arg = mul(e, lb, false);
+    // exp turns the argument's absolute rounding error into a relative one.
+    const double rel = 8.0 * std::numeric_limits<double>::epsilon() * (1.0 + std::max(std::fabs(arg.lo), std::fabs(arg.hi)));
+    Interval r = increasing(arg, [](double v) { return std::exp(v); });
+    return make(r.lo * (1.0 - rel), r.hi * (1.0 + rel), r.maybeNaN);
 }
 
 // Reference power (hf_math.h) with failures excluded.
@@ -289,11 +300,16 @@ Interval IntervalEvaluator::evaluate(const Interval& x, const Interval& y, const
             case Op::Min: r = nan ? hull(a, b) : Interval(std::min(a.lo, b.lo), std::min(a.hi, b.hi)); break;
             case Op::Max: r = nan ? hull(a, b) : Interval(std::max(a.lo, b.lo), std::max(a.hi, b.hi)); break;
             case Op::Union:
-                // R-functions are monotone in both arguments.
-                r = make(hf::unite(a.lo, b.lo), hf::unite(a.hi, b.hi), nan);
+            case Op::Intersect:
+            case Op::Subtract: {
+                // R-functions are monotone in both arguments (decreasing in
+                // the second for the difference).
+                const double m = std::max(std::fabs(a.lo), std::fabs(a.hi)) + std::max(std::fabs(b.lo), std::fabs(b.hi));
+                if (in.op == Op::Union) r = makeCancelling(hf::unite(a.lo, b.lo), hf::unite(a.hi, b.hi), m, nan);
+                else if (in.op == Op::Intersect) r = makeCancelling(hf::intersect(a.lo, b.lo), hf::intersect(a.hi, b.hi), m, nan);
+                else r = makeCancelling(hf::subtract(a.lo, b.hi), hf::subtract(a.hi, b.lo), m, nan);
                 break;
-            case Op::Intersect: r = make(hf::intersect(a.lo, b.lo), hf::intersect(a.hi, b.hi), nan); break;
-            case Op::Subtract: r = make(hf::subtract(a.lo, b.hi), hf::subtract(a.hi, b.lo), nan); break;
+            }
             case Op::HfDiv:
                 fails = b.lo < kEps && b.hi > -kEps;
                 r = guardedDiv(a, b);

@@ -184,6 +184,13 @@ private:
     long long bodyArrayItems_ = 0;
     int depth_ = 0;
     size_t nodes_ = 0;
+    // "Unassigned identificator" errors, to explain calls of later bodies.
+    struct Unresolved {
+        size_t error;
+        std::string name;
+        size_t body;  // index the calling body gets
+    };
+    std::vector<Unresolved> unresolved_;
 };
 
 void Parser::error(const Token& at, const std::string& message, std::string note) {
@@ -443,10 +450,13 @@ bool Parser::parseBodyCall(Node& out) {
     Token name = tok_;
     auto found = bodyIndex_.find(name.name);
     if (found == bodyIndex_.end()) {
+        size_t before = errors_.size();
         error(name, msg::kUnassignedIdentifier,
               "'" + text(name) +
                   "' is neither a variable assigned above, an array of this body, nor a body "
                   "defined above this one");
+        if (errors_.size() > before && errors_.back().message == msg::kUnassignedIdentifier)
+            unresolved_.push_back({before, name.name, program_.bodies.size()});
         return false;
     }
     const Body& callee = program_.bodies[static_cast<size_t>(found->second)];
@@ -1173,6 +1183,18 @@ ParseResult Parser::run() {
     if (errors_.empty() && program_.bodies.empty())
         error(tok_, "the program has no body", "a program is one or more bodies such as "
                                                "'my_model(x[3], a[1]) { my_model = ...; }'");
+
+    for (const Unresolved& u : unresolved_) {
+        auto it = bodyIndex_.find(u.name);
+        if (it == bodyIndex_.end() || u.error >= errors_.size()) continue;
+        const Body& callee = program_.bodies[static_cast<size_t>(it->second)];
+        if (static_cast<size_t>(it->second) == u.body)
+            errors_[u.error].note = "a body cannot call itself";
+        else if (static_cast<size_t>(it->second) > u.body)
+            errors_[u.error].note = "body '" + callee.spelling + "' is defined below (line " +
+                                    std::to_string(callee.loc.line) +
+                                    "); a body can only call bodies defined above it";
+    }
 
     ParseResult result;
     result.errors = std::move(errors_);

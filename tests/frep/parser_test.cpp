@@ -449,8 +449,14 @@ TEST(ParserAst, VariableExistsInItsOwnFirstAssignment) {
 TEST(ParserErrors, BodyCalls) {
     const std::string helper = "h(x[3], a[1]) { h = x[1]; }\n";
     // Calling itself or a later body.
-    EXPECT_EQ(parse("h(x[3], a[1]) { h = h(x, a); }").errors.at(0).message,
-              "Unassigned identificator used in expression");
+    ParseResult self = parse("h(x[3], a[1]) { h = h(x, a); }");
+    ASSERT_FALSE(self.ok());
+    EXPECT_EQ(self.errors[0].message, "Unassigned identificator used in expression");
+    EXPECT_EQ(self.errors[0].note, "a body cannot call itself");
+    ParseResult later = parse("m(x[3], a[1]) { m = h(x, a); }\n" + helper);
+    ASSERT_EQ(later.errors.size(), 1u);
+    EXPECT_EQ(later.errors[0].message, "Unassigned identificator used in expression");
+    EXPECT_NE(later.errors[0].note.find("defined below (line 2)"), std::string::npos);
     // Wrong sizes.
     ParseResult r = parse(helper + "m(x[2], a[1]) { m = h(x, a); }");
     ASSERT_FALSE(r.ok());
