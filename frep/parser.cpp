@@ -188,8 +188,9 @@ private:
     struct Unresolved {
         size_t error;
         std::string name;
-        size_t body;  // index the calling body gets
+        std::string caller;
     };
+    void explainUnresolved();
     std::vector<Unresolved> unresolved_;
 };
 
@@ -456,7 +457,7 @@ bool Parser::parseBodyCall(Node& out) {
                   "' is neither a variable assigned above, an array of this body, nor a body "
                   "defined above this one");
         if (errors_.size() > before && errors_.back().message == msg::kUnassignedIdentifier)
-            unresolved_.push_back({before, name.name, program_.bodies.size()});
+            unresolved_.push_back({before, name.name, body_->name});
         return false;
     }
     const Body& callee = program_.bodies[static_cast<size_t>(found->second)];
@@ -1144,6 +1145,37 @@ bool Parser::parseBodyDef(Body& b) {
     return true;
 }
 
+// Notes for "Unassigned identificator" errors that name the body itself or
+// a body defined further down (found by its header "name ( x [").
+void Parser::explainUnresolved() {
+    if (unresolved_.empty()) return;
+    std::unordered_map<std::string, std::pair<SourceLoc, std::string>> headers;
+    syntax::Lexer lexer(lex_.source());
+    Token window[4];
+    for (size_t n = 0;; ++n) {
+        window[0] = std::move(window[1]);
+        window[1] = std::move(window[2]);
+        window[2] = std::move(window[3]);
+        window[3] = lexer.next();
+        if (window[3].kind == TK::End) break;
+        if (n >= 3 && window[0].kind == TK::Identifier && window[1].kind == TK::LParen &&
+            window[2].kind == TK::XId && window[3].kind == TK::LBracket)
+            headers.emplace(window[0].name, std::make_pair(window[0].loc, text(window[0])));
+    }
+    for (const Unresolved& u : unresolved_) {
+        if (u.error >= errors_.size()) continue;
+        if (u.name == u.caller) {
+            errors_[u.error].note = "a body cannot call itself";
+            continue;
+        }
+        auto it = headers.find(u.name);
+        if (it != headers.end() && it->second.first.line >= errors_[u.error].loc.line)
+            errors_[u.error].note = "body '" + it->second.second + "' is defined below (line " +
+                                    std::to_string(it->second.first.line) +
+                                    "); a body can only call bodies defined above it";
+    }
+}
+
 ParseResult Parser::run() {
     advance();
     while (!is(TK::End)) {
@@ -1184,17 +1216,7 @@ ParseResult Parser::run() {
         error(tok_, "the program has no body", "a program is one or more bodies such as "
                                                "'my_model(x[3], a[1]) { my_model = ...; }'");
 
-    for (const Unresolved& u : unresolved_) {
-        auto it = bodyIndex_.find(u.name);
-        if (it == bodyIndex_.end() || u.error >= errors_.size()) continue;
-        const Body& callee = program_.bodies[static_cast<size_t>(it->second)];
-        if (static_cast<size_t>(it->second) == u.body)
-            errors_[u.error].note = "a body cannot call itself";
-        else if (static_cast<size_t>(it->second) > u.body)
-            errors_[u.error].note = "body '" + callee.spelling + "' is defined below (line " +
-                                    std::to_string(callee.loc.line) +
-                                    "); a body can only call bodies defined above it";
-    }
+    explainUnresolved();
 
     ParseResult result;
     result.errors = std::move(errors_);
