@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "frep/fast_math.h"
 #include "frep/library/convolution.h"
 
 namespace hg::frep {
@@ -13,23 +14,6 @@ namespace {
 // the integral of |K'| along an infinite line, at most 2.178 (at distance
 // 0.3 / s); rounded up.
 constexpr double kLineLipschitz = 2.25;
-
-// atan for float without branches (Cephes atanf reduction and polynomial,
-// relative error about 1e-7), so the whole kernel loop vectorizes.
-inline float atanFast(float x) {
-    const float t = std::fabs(x);
-    // Every candidate is computed, then selected: no branch in the loop.
-    const float rBig = -1.0f / (t + 1e-30f);
-    const float rMid = (t - 1.0f) / (t + 1.0f);
-    const bool big = t > 2.414213562f;
-    const bool mid = t > 0.414213562f;
-    const float y0 = big ? 1.570796327f : (mid ? 0.785398163f : 0.0f);
-    const float r = big ? rBig : (mid ? rMid : t);
-    const float z = r * r;
-    const float p = (((8.05374449538e-2f * z - 1.38776856032e-1f) * z + 1.99777106478e-1f) * z - 3.33329491539e-1f) * z * r + r;
-    const float v = y0 + p;
-    return x < 0.0f ? -v : v;
-}
 
 }  // namespace
 
@@ -60,7 +44,7 @@ void convSegmentBatch(const float* __restrict px, const float* __restrict py, co
         const float p = std::sqrt(p2);
         const float lx = l - xx;
         out[i] = xx / (2.0f * p2 * (p2 + s2 * xx * xx)) + lx / (2.0f * p2 * q2) +
-                 (atanFast(s * xx / p) + atanFast(s * lx / p)) * inv2s / (p2 * p);
+                 (fast::atan(s * xx / p) + fast::atan(s * lx / p)) * inv2s / (p2 * p);
     }
 }
 

@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include <type_traits>
+
 #include "frep/conv_kernels.h"
+#include "frep/fast_math.h"
 #include "frep/op_semantics.h"
 
 namespace hg::frep {
@@ -42,6 +45,50 @@ inline void binary(T* __restrict o, const T* __restrict a, const T* __restrict b
     for (size_t i = 0; i < n; ++i) o[i] = f(a[i], b[i]);
 }
 
+// exp, log, sin, cos: libm in double (exact path); in float a vectorized
+// approximation, then libm for the lanes outside its range.
+template <class T>
+void transcendental(T* __restrict o, const T* __restrict a, size_t n, Op op) {
+    if constexpr (std::is_same_v<T, float>) {
+        unsigned fixup = 0;  // an integer reduction vectorizes; a bool one does not
+        switch (op) {
+            case Op::Exp:
+                for (size_t i = 0; i < n; ++i) o[i] = fast::exp(a[i]);
+                for (size_t i = 0; i < n; ++i) fixup |= static_cast<unsigned>(fast::needsLibmExp(a[i]));
+                break;
+            case Op::Log:
+                for (size_t i = 0; i < n; ++i) o[i] = fast::log(a[i]);
+                for (size_t i = 0; i < n; ++i) fixup |= static_cast<unsigned>(fast::needsLibmLog(a[i]));
+                break;
+            case Op::Sin:
+                for (size_t i = 0; i < n; ++i) o[i] = fast::sin(a[i]);
+                for (size_t i = 0; i < n; ++i) fixup |= static_cast<unsigned>(fast::needsLibmTrig(a[i]));
+                break;
+            default:
+                for (size_t i = 0; i < n; ++i) o[i] = fast::cos(a[i]);
+                for (size_t i = 0; i < n; ++i) fixup |= static_cast<unsigned>(fast::needsLibmTrig(a[i]));
+                break;
+        }
+        if (!fixup) return;
+        for (size_t i = 0; i < n; ++i) {
+            const float v = a[i];
+            switch (op) {
+                case Op::Exp: if (fast::needsLibmExp(v)) o[i] = std::exp(v); break;
+                case Op::Log: if (fast::needsLibmLog(v)) o[i] = std::log(v); break;
+                case Op::Sin: if (fast::needsLibmTrig(v)) o[i] = std::sin(v); break;
+                default: if (fast::needsLibmTrig(v)) o[i] = std::cos(v); break;
+            }
+        }
+    } else {
+        switch (op) {
+            case Op::Exp: unary(o, a, n, [](T p) { return std::exp(p); }); break;
+            case Op::Log: unary(o, a, n, [](T p) { return std::log(p); }); break;
+            case Op::Sin: unary(o, a, n, [](T p) { return std::sin(p); }); break;
+            default: unary(o, a, n, [](T p) { return std::cos(p); }); break;
+        }
+    }
+}
+
 }  // namespace
 
 template <class T>
@@ -73,12 +120,15 @@ void BatchEvaluator<T>::chunk(const T* x, const T* y, const T* z, T* out, size_t
             case Op::Neg: unary(o, a, n, [](T p) { return -p; }); break;
             case Op::Abs: unary(o, a, n, [](T p) { return std::fabs(p); }); break;
             case Op::Sqrt: unary(o, a, n, [](T p) { return std::sqrt(p); }); break;
-            case Op::Exp: unary(o, a, n, [](T p) { return std::exp(p); }); break;
-            case Op::Log: unary(o, a, n, [](T p) { return std::log(p); }); break;
-            case Op::Sin: unary(o, a, n, [](T p) { return std::sin(p); }); break;
-            case Op::Cos: unary(o, a, n, [](T p) { return std::cos(p); }); break;
+            case Op::Exp: transcendental(o, a, n, Op::Exp); break;
+            case Op::Log: transcendental(o, a, n, Op::Log); break;
+            case Op::Sin: transcendental(o, a, n, Op::Sin); break;
+            case Op::Cos: transcendental(o, a, n, Op::Cos); break;
             case Op::Tan: unary(o, a, n, [](T p) { return std::tan(p); }); break;
-            case Op::Atan: unary(o, a, n, [](T p) { return std::atan(p); }); break;
+            case Op::Atan:
+                if constexpr (std::is_same_v<T, float>) unary(o, a, n, [](T p) { return fast::atan(p); });
+                else unary(o, a, n, [](T p) { return std::atan(p); });
+                break;
             case Op::Floor: unary(o, a, n, [](T p) { return std::floor(p); }); break;
             case Op::Atan2: binary(o, a, b, n, [](T p, T q) { return std::atan2(p, q); }); break;
             case Op::EqEps: binary(o, a, b, n, [](T p, T q) { return hf::equal(p, q); }); break;

@@ -188,35 +188,55 @@ std::optional<std::string> plainSpelling(double v) {
 
 std::string intText(long long n) { return std::to_string(n); }
 
-// `D * 10 ^ k` or `D / 10 ^ k`, 1 <= k <= 22 (10^k exact: one rounding).
+// D * 10^k or D / 10^k for a short plain decimal D, with the power split
+// into factors 10^k, k <= 22, each exact: `1.5 * 10 ^ 21`, `10 ^ 22`,
+// `1 / 10 ^ 22 / 10 ^ 18`, `150000000 * 10 ^ 22`. Every candidate is
+// computed here as the interpreter would and then checked by evaluating it.
 std::optional<Text> scaledSpelling(double v) {
-    const int e10 = decimalDigits(v, 17).exp10;
-    const bool multiply = e10 >= 0;
-    const int k = std::min(multiply ? e10 : -e10, 22);
-    if (k < 1) return std::nullopt;
-    double p10 = 1.0;
-    for (int i = 0; i < k; ++i) p10 *= 10.0;  // as the interpreter's ^: exact up to 10^22
+    auto power10 = [](int k) {
+        double p = 1.0;
+        for (int i = 0; i < k; ++i) p *= 10.0;  // as the interpreter's ^
+        return p;
+    };
     static constexpr int kDeltas[] = {0, -1, 1, -2, 2};
     for (int p = 1; p <= 17; ++p) {
         const Decimal d = decimalDigits(v, p);
         for (int delta : kDeltas) {
-            std::optional<Decimal> c = bump(d, delta);
-            if (!c) continue;
-            c->exp10 += multiply ? -k : k;
-            if (c->exp10 < -30 || c->exp10 > 20) continue;
-            const std::string ds = toPlain(*c);
-            std::optional<double> dv = lexNumber(ds);
-            if (!dv) continue;
-            const double r = multiply ? *dv * p10 : *dv / p10;
-            if (!sameBits(r, v)) continue;
-            Text t;
-            if (multiply && ds == "1") {
-                t = Text{"10 ^ " + intText(k), kLevelPow};
+            const std::optional<Decimal> c = bump(d, delta);
+            if (!c || c->exp10 == 0) continue;
+            const bool multiply = c->exp10 > 0;
+            const int total = multiply ? c->exp10 : -c->exp10;
+            // Splits of the power: D in [1, 10) first, then D shifted by
+            // 10^22 only.
+            std::vector<std::vector<int>> forms;
+            if (total <= 22) {
+                forms.push_back({total});
             } else {
-                t = Text{ds + (multiply ? " * 10 ^ " : " / 10 ^ ") + intText(k), kLevelMul};
+                if (total - 22 <= 22) forms.push_back({22, total - 22});
+                forms.push_back({22});
             }
-            std::optional<double> check = evaluateText(t.s);
-            if (check && sameBits(*check, v)) return t;
+            for (const std::vector<int>& ks : forms) {
+                Decimal m = *c;
+                for (int k : ks) m.exp10 += multiply ? -k : k;
+                if (m.exp10 < -30 || m.exp10 > 20) continue;
+                const std::string ds = toPlain(m);
+                if (ds.size() > 24) continue;
+                const std::optional<double> dv = lexNumber(ds);
+                if (!dv) continue;
+                double r = *dv;
+                for (int k : ks) r = multiply ? r * power10(k) : r / power10(k);
+                if (!sameBits(r, v)) continue;
+                Text t{multiply && ds == "1" ? std::string() : ds, kLevelMul};
+                for (int k : ks) {
+                    if (t.s.empty())
+                        t.s = "10 ^ " + intText(k);
+                    else
+                        t.s += (multiply ? " * 10 ^ " : " / 10 ^ ") + intText(k);
+                }
+                if (ks.size() == 1 && multiply && ds == "1") t.level = kLevelPow;
+                const std::optional<double> check = evaluateText(t.s);
+                if (check && sameBits(*check, v)) return t;
+            }
         }
     }
     return std::nullopt;
@@ -265,9 +285,11 @@ Text numberText(double v) {
     }
     if (!negative) return t;
     // A unary minus on the positive spelling (exact: negation is exact and
-    // rounding is symmetric). `-2 ^ 8` would be (-2)^8, so a bare power
-    // gets an explicit factor.
-    if (t.level == kLevelPow) return Text{"-1 * " + t.s, kLevelMul};
+    // rounding is symmetric).
+    // A spelling that starts with a power (`10 ^ 22 * 10 ^ 1`) would negate
+    // only the base, and (-10)^22 is positive: it gets an explicit factor.
+    if (t.s.compare(0, 5, "10 ^ ") == 0 || t.s.compare(0, 4, "2 ^ ") == 0)
+        return Text{"-1 * " + t.s, kLevelMul};
     if (t.level == kLevelPrimary) return Text{"-" + t.s, kLevelPrefix};
     return Text{"-" + t.s, t.level};
 }
@@ -352,11 +374,19 @@ private:
         out_ += '\n';
     }
 
+    // head item, item, ... item tail: wrapped beyond kLineWidth columns,
+    // continuation lines aligned after the head.
+    void list(int depth, const std::string& head, const std::vector<std::string>& items,
+              const std::string& tail);
+
     const Program& program_;
     const Body& body_;
     const WriteOptions& options_;
     std::string out_;
 };
+
+// Array literals wrap beyond this many columns.
+constexpr size_t kLineWidth = 96;
 
 std::string paren(const std::string& s) { return "(" + s + ")"; }
 
@@ -495,9 +525,31 @@ Text Writer::condition(const Expr& e) {
     }
     // An arithmetic operand. Starting with '(' it would be read as a
     // parenthesised condition: a unary plus (the identity) avoids that.
-    std::string s = arith(e).s;
-    if (s[0] == '(') s = "+" + s;
-    return Text{s, kCondOperand};
+    Text t = arith(e);
+    if (!t.s.empty() && t.s.front() == '(') t.s.insert(t.s.begin(), '+');
+    return Text{std::move(t.s), kCondOperand};
+}
+
+void Writer::list(int depth, const std::string& head, const std::vector<std::string>& items,
+                  const std::string& tail) {
+    const size_t margin = static_cast<size_t>(depth * std::max(options_.indent, 0));
+    std::string text = head;
+    size_t width = margin + head.size();  // of the line being filled
+    for (size_t i = 0; i < items.size(); ++i) {
+        const std::string piece = items[i] + (i + 1 < items.size() ? "," : tail);
+        if (i > 0) {
+            if (width + 1 + piece.size() > kLineWidth) {
+                text += "\n" + std::string(margin + head.size(), ' ');
+                width = margin + head.size();
+            } else {
+                text += ' ';
+                ++width;
+            }
+        }
+        text += piece;
+        width += piece.size();
+    }
+    line(depth, text);
 }
 
 void Writer::statements(const std::vector<Stmt>& list, int depth) {
@@ -519,23 +571,22 @@ void Writer::statement(const Stmt& s, int depth) {
             if (s.literal.empty()) throw std::invalid_argument("empty array literal for '" + name + "'");
             // Items are numbers with at most one sign. An item without a
             // plain spelling gets 0 here and its own assignment after.
-            std::string text = name + " = [";
+            std::vector<std::string> items;
             std::vector<std::pair<size_t, double>> patches;
             for (size_t i = 0; i < s.literal.size(); ++i) {
                 const double v = s.literal[i];
-                if (i) text += ", ";
                 if (!std::isfinite(v))
                     throw std::invalid_argument("array literal of '" + name +
                                                 "' holds NaN or infinity, which HyperFun cannot spell");
                 std::optional<std::string> plain = plainSpelling(std::fabs(v));
                 if (plain) {
-                    text += (std::signbit(v) ? "-" : "") + *plain;
+                    items.push_back((std::signbit(v) ? "-" : "") + *plain);
                 } else {
-                    text += "0";
+                    items.push_back("0");
                     patches.emplace_back(i + 1, v);
                 }
             }
-            line(depth, text + "];");
+            list(depth, name + " = [", items, "];");
             for (const auto& [index, v] : patches)
                 line(depth, name + "[" + std::to_string(index) + "] = " + numberText(v).s + ";");
             return;
@@ -572,12 +623,10 @@ std::string Writer::body() {
     line(0, head + ")");
     line(0, "{");
     if (body_.arrays.size() > 3) {
-        std::string decl = "array ";
-        for (size_t i = 3; i < body_.arrays.size(); ++i) {
-            if (i > 3) decl += ", ";
-            decl += arrayName(static_cast<int>(i)) + "[" + std::to_string(body_.arrays[i].size) + "]";
-        }
-        line(1, decl + ";");
+        std::vector<std::string> decls;
+        for (size_t i = 3; i < body_.arrays.size(); ++i)
+            decls.push_back(arrayName(static_cast<int>(i)) + "[" + std::to_string(body_.arrays[i].size) + "]");
+        list(1, "array ", decls, ";");
     }
     statements(body_.statements, 1);
     line(1, body_.spelling + " = " + arith(*body_.result).s + ";");
