@@ -58,7 +58,10 @@ inline float exp(float x) {
     const float p = ((((1.9875691500e-4f * r + 1.3981999507e-3f) * r + 8.3334519073e-3f) * r + 4.1665795894e-2f) * r +
                      1.6666665459e-1f) * r + 5.0000001201e-1f;
     const float e = p * z + r + 1.0f;
-    return e * fromBits((static_cast<std::int32_t>(n) + 127) << 23);
+    // Out-of-range lanes are recomputed by the caller; clamp so the exponent
+    // bits stay a valid float (and the shift defined).
+    const float nc = std::fmin(std::fmax(n, -126.0f), 127.0f);
+    return e * fromBits(static_cast<std::int32_t>(static_cast<std::uint32_t>(static_cast<std::int32_t>(nc) + 127) << 23));
 }
 
 // log for normal positive x.

@@ -51,7 +51,8 @@ void PointSampler<T>::evaluate(const T* x, const T* y, const T* z, T* out, size_
     }
     for (size_t i = 0; i < n; ++i) {
         std::uint64_t before = errors.count;
-        out[i] = static_cast<T>(impl_->interp->evaluateSafe(x[i], y[i], z[i], errors));
+        out[i] = static_cast<T>(impl_->interp->evaluateSafe(static_cast<double>(x[i]), static_cast<double>(y[i]),
+                                                            static_cast<double>(z[i]), errors));
         if (failed) failed[i] = errors.count != before;
     }
 }

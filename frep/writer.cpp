@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <optional>
 #include <stdexcept>
@@ -219,13 +220,16 @@ std::optional<Text> scaledSpelling(double v) {
                 Decimal m = *c;
                 for (int k : ks) m.exp10 += multiply ? -k : k;
                 if (m.exp10 < -30 || m.exp10 > 20) continue;
-                const std::string ds = toPlain(m);
-                if (ds.size() > 24) continue;
-                const std::optional<double> dv = lexNumber(ds);
+                const std::optional<double> dv = lexNumber(toPlain(m));
                 if (!dv) continue;
                 double r = *dv;
                 for (int k : ks) r = multiply ? r * power10(k) : r / power10(k);
                 if (!sameBits(r, v)) continue;
+                // D as the writer spells that value, so that writing the
+                // parsed text again gives the same text.
+                const std::optional<std::string> canonical = plainSpelling(*dv);
+                if (!canonical || canonical->size() > 24) continue;
+                const std::string& ds = *canonical;
                 Text t{multiply && ds == "1" ? std::string() : ds, kLevelMul};
                 for (int k : ks) {
                     if (t.s.empty())
@@ -285,8 +289,7 @@ Text numberText(double v) {
     }
     if (!negative) return t;
     // A unary minus on the positive spelling (exact: negation is exact and
-    // rounding is symmetric).
-    // A spelling that starts with a power (`10 ^ 22 * 10 ^ 1`) would negate
+    // rounding is symmetric). A spelling that starts with a power (`10 ^ 22 * 10 ^ 1`) would negate
     // only the base, and (-10)^22 is positive: it gets an explicit factor.
     if (t.s.compare(0, 5, "10 ^ ") == 0 || t.s.compare(0, 4, "2 ^ ") == 0)
         return Text{"-1 * " + t.s, kLevelMul};

@@ -57,29 +57,39 @@ std::string writeBody(const Body& body, const Program& program, const WriteOptio
 std::string writeExpression(const Expr& e, const Body& body, const Program& program);
 
 // A number as HyperFun text that our parser and interpreter read back to
-// exactly `v` (bit for bit, -0.0 included):
+// exactly `v` (bit for bit, -0.0 included), and that the writer spells the
+// same way again after a parse (so writing is idempotent):
 //
-//  * 0 <= |v| in [1e-30, 1e21): the shortest plain decimal without exponent
-//    (`0.1`, `0.000001`, `123456789012`, `1000.0000000000007`) that the
-//    lexer reads back to v. The lexer is not correctly rounded (digits are
-//    accumulated one by one), so candidates (the correctly rounded 1..17
-//    digit decimals of v and their neighbours in the last digit, then a
-//    digit-by-digit construction that mirrors the lexer) are checked by
-//    running the project's lexer on them. Exponent spellings (`1e3`) are
-//    never written: the lexer scales them by exp(n * ln 10), which is
-//    neither exact nor the same on every C library.
-//  * Otherwise (huge, tiny or not reachable by a plain decimal) an exact
-//    arithmetic expression, checked by evaluating it with the interpreter:
-//    `D * 10 ^ k` or `D / 10 ^ k` with a short plain decimal D and
-//    1 <= k <= 22 (10^k is exact, so one rounding; `10 ^ 22` when D is 1),
+//  * 0, and 1e-30 <= |v| < 1e21: the shortest plain decimal without
+//    exponent (`0.1`, `0.0000001`, `123456789012`, `1000.0000000000007`)
+//    that the lexer reads back to v. The lexer is not correctly rounded
+//    (it accumulates digit by digit: value * 10 + d, then value + d / 10^k),
+//    so the candidates (the correctly rounded 1..17 digit decimals of v and
+//    their neighbours +-1, +-2 in the last digit, then a digit-by-digit
+//    construction that mirrors the lexer) are checked by running the
+//    project's lexer on them. Exponent spellings (`1e3`) are never written:
+//    the lexer scales them by exp(n * ln 10), which is neither exact
+//    (`1e3` reads as 1000.0000000000007) nor the same on every C library.
+//  * Otherwise (huge or tiny, or, rarely, no plain decimal reaches v) an
+//    exact arithmetic expression, checked by evaluating it with the
+//    interpreter: a short plain decimal D times or divided by factors
+//    `10 ^ k` with k <= 22 (each power exact, so one rounding per factor):
+//    `1.5 * 10 ^ 21`, `10 ^ 22`, `10 ^ 22 * 10 ^ 8`, `1 / 10 ^ 22 / 10 ^ 13`;
 //    else the exact binary form `M * 2 ^ E`, `M / 2 ^ E` or
-//    `M / 2 ^ 1023 / 2 ^ E` with an integer M below 2^53 (every step
-//    exact; 5e-324 is `1 / 2 ^ 1023 / 2 ^ 51`). These have the precedence
-//    of `*` (or `^`), and the expression writer parenthesises them where
-//    needed.
+//    `M / 2 ^ 1023 / 2 ^ E` with an odd integer M below 2^53, where every
+//    step is exact (5e-324 is `1 / 2 ^ 1023 / 2 ^ 51`). These have the
+//    precedence of `*` (`^` for a bare `10 ^ 22`); the expression writer
+//    parenthesises them where needed. Array literal items cannot be
+//    expressions: such an item is written as 0 in the literal, followed by
+//    an element assignment `v[i] = <expression>;` (same values, one more
+//    statement).
 //  * Negative values (the language has no negative literals): a unary
-//    minus on the positive spelling; -0.0 is `-0`.
-//  * NaN and infinities cannot be written: std::invalid_argument.
+//    minus on the positive spelling, `-2.5`, `-1 / 2 ^ 1023 / 2 ^ 51`; a
+//    spelling that starts with a power gets a factor: `-1 * 10 ^ 22`
+//    (`-10 ^ 22` would be (-10)^22). -0.0 is `-0` (minus zero is -0.0).
+//  * NaN and infinities cannot be written: std::invalid_argument. (A
+//    literal such as 1e400 parses to infinity; such a program cannot be
+//    written.)
 std::string writeNumber(double v);
 
 }  // namespace hg::frep

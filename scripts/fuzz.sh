@@ -9,5 +9,5 @@ mkdir -p "$corpus"
 for dir in content/hyperfun ../shared/hyperfun/conformance ../shared/hyperfun/corpus; do
   if [ -d "$dir" ]; then cp -f "$dir"/*.hf "$corpus"/ 2>/dev/null || true; fi
 done
-./build/fuzz/tests/fuzz/parser_fuzz -max_total_time="$seconds" -max_len=4096 -timeout=10 \
+./build/fuzz/tests/fuzz/hg_parser_fuzz -max_total_time="$seconds" -max_len=4096 -timeout=10 \
   -rss_limit_mb=2048 "$corpus"

@@ -589,7 +589,10 @@ public:
                 if (e->binaryOp == BinaryOp::Pow) {
                     // Integer exponents loop |e| times: keep them small.
                     if (rng_() % 2) {
-                        e->args.push_back(variable());
+                        // u, v or w (from x[]), never r, which may be huge.
+                        auto var = node(ExprKind::Variable);
+                        var->slot = static_cast<int>(rng_() % 3);
+                        e->args.push_back(std::move(var));
                     } else {
                         static const double exps[] = {2, 3, -1, 0.5, 1.5, 0};
                         auto n = node(ExprKind::Number);
@@ -756,7 +759,7 @@ TEST(WriterNumber, PlainSpellingIsShortest) {
 TEST(WriterNumber, RandomValuesRoundTrip) {
     std::mt19937_64 rng(4242);
     int fallbacks = 0;
-    for (int i = 0; i < 20000; ++i) {
+    for (int i = 0; i < 10000; ++i) {
         double v = 0;
         if (i % 2 == 0) {
             std::uint64_t bits = rng();
@@ -775,7 +778,7 @@ TEST(WriterNumber, RandomValuesRoundTrip) {
         if (s.find(' ') != std::string::npos && std::fabs(v) >= 1e-30 && std::fabs(v) < 1e21) ++fallbacks;
     }
     // Almost every value of ordinary size has a plain spelling.
-    EXPECT_LT(fallbacks, 20);
+    EXPECT_LT(fallbacks, 10);
 }
 
 }  // namespace
