@@ -331,14 +331,12 @@ CompileResult compile(const Program& program, int body, const std::vector<double
         TapeBuilder b;
         Compiler c(program, b);
         Frame f = c.newFrame(body);
-        const Body& bd = program.bodies[static_cast<size_t>(body)];
         const std::uint32_t xyz[3] = {b.x(), b.y(), b.z()};
         for (size_t i = 0; i < f.arrays[kArrayX].size(); ++i)
             f.arrays[kArrayX][i] = Slot{i < 3 ? xyz[i] : c.zero_, c.one_};
         for (size_t i = 0; i < f.arrays[kArrayA].size(); ++i)
             f.arrays[kArrayA][i] = Slot{b.constant(i < a.size() ? a[i] : 0.0), c.one_};
         for (auto& s : f.arrays[kArrayS]) s = Slot{c.zero_, c.one_};
-        (void)bd;
         std::uint32_t r = c.compileBody(body, f, kNoReg);
         result.tape = b.finish(r);
     } catch (const CannotFlatten& cf) {

@@ -129,16 +129,9 @@ Interval asinI(const Interval& a, bool acosine) {
 
 Interval atan2I(const Interval& y, const Interval& x) {
     bool nan = y.maybeNaN || x.maybeNaN;
-    if (x.lo > 0.0) {
-        // Right half-plane: atan2 is monotone in each argument, extremes at corners.
-        double c[4] = {std::atan2(y.lo, x.lo), std::atan2(y.lo, x.hi), std::atan2(y.hi, x.lo), std::atan2(y.hi, x.hi)};
-        return make(*std::min_element(c, c + 4), *std::max_element(c, c + 4), nan);
-    }
-    if (y.lo > 0.0) {  // upper half-plane
-        double c[4] = {std::atan2(y.lo, x.lo), std::atan2(y.lo, x.hi), std::atan2(y.hi, x.lo), std::atan2(y.hi, x.hi)};
-        return make(*std::min_element(c, c + 4), *std::max_element(c, c + 4), nan);
-    }
-    if (y.hi < 0.0) {  // lower half-plane
+    // Off the branch cut (x < 0, y crossing 0) atan2 is monotone in each
+    // argument over the box, so its extremes are at the corners.
+    if (x.lo > 0.0 || y.lo > 0.0 || y.hi < 0.0) {
         double c[4] = {std::atan2(y.lo, x.lo), std::atan2(y.lo, x.hi), std::atan2(y.hi, x.lo), std::atan2(y.hi, x.hi)};
         return make(*std::min_element(c, c + 4), *std::max_element(c, c + 4), nan);
     }
@@ -147,18 +140,12 @@ Interval atan2I(const Interval& y, const Interval& x) {
 
 Interval intPow(const Interval& b, long long n) {
     if (n == 0) return Interval(1.0, 1.0, b.maybeNaN);
-    Interval r = b;
-    Interval p = b;
-    // Even powers of an interval around 0 start at 0; use repeated squaring on |b|.
-    if (n % 2 == 0) {
-        Interval m = absI(b);
-        r = Interval(1.0);
-        for (long long i = 0; i < n; ++i) r = mul(r, m, false);
-        return r;
-    }
-    for (long long i = 1; i < n; ++i) p = mul(p, b, false);
-    (void)r;
-    return p;  // odd powers are monotone; the product bounds contain them
+    // Even powers: repeated products of |b|, so an interval around 0 starts
+    // at 0. Odd powers are monotone; the product bounds contain them.
+    const Interval base = n % 2 == 0 ? absI(b) : b;
+    Interval p = base;
+    for (long long i = 1; i < n; ++i) p = mul(p, base, false);
+    return p;
 }
 
 // exp(e * log(b)) for b > 0 over boxes: monotone in b and e on each sign of log b.
