@@ -13,9 +13,19 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kEps = 1e-6;
 
-// Outward rounding: two ulps cover libm's sub-ulp errors and our own.
-double down(double v) { return std::nextafter(std::nextafter(v, -kInf), -kInf); }
-double up(double v) { return std::nextafter(std::nextafter(v, kInf), kInf); }
+// Outward rounding by 2^-50 relative (four to eight ulps, more than libm's
+// sub-ulp errors plus the operation's own rounding) and the smallest normal
+// absolute: a few flops, where two nextafter calls per bound cost a third of
+// a voxel sampler's time. inf - inf (an infinite bound moved inward) becomes
+// the largest finite double, as nextafter would give.
+double down(double v) {
+    double r = v - (std::fabs(v) * 0x1p-50 + 0x1p-1022);
+    return r == r ? r : std::numeric_limits<double>::max();
+}
+double up(double v) {
+    double r = v + (std::fabs(v) * 0x1p-50 + 0x1p-1022);
+    return r == r ? r : -std::numeric_limits<double>::max();
+}
 
 Interval make(double lo, double hi, bool nan) {
     if (std::isnan(lo) || std::isnan(hi)) return Interval::entire();

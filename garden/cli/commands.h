@@ -19,10 +19,24 @@ struct EvalOptions {
     bool interpreter = false;         // force the scalar interpreter
 };
 
+struct VoxelizeOptions {
+    ModelOptions model;
+    int resolution = 0;
+    float band = 3.0f;
+    std::vector<double> box;          // empty: estimate; else x0,y0,z0,x1,y1,z1
+    bool dense = false;               // unclamped source cache, every voxel
+    bool levelset = false;            // OpenVDB level-set convention
+    bool stats = false;
+    std::string output;
+    int threads = 0;                  // 0: all cores
+    double memoryLimitMiB = 0.0;      // 0: 80% of available memory
+};
+
 // "0.5,1,-2" -> {0.5, 1, -2}; false when an item is not a number.
 bool parseNumberList(const std::string& text, std::vector<double>& out);
 
 int runCheck(const ModelOptions& options);
 int runEval(const EvalOptions& options);
+int runVoxelize(const VoxelizeOptions& options);
 
 }  // namespace hg::garden::cli

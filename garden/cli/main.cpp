@@ -1,6 +1,6 @@
 // hypergarden: the one executable. Subcommands check and evaluate HyperFun
-// files; later ones voxelize, mesh, export and replay, and no subcommand will
-// open the garden.
+// files and voxelize them; later ones mesh, export and replay, and no
+// subcommand will open the garden.
 #include <CLI/CLI.hpp>
 
 #include <iostream>
@@ -27,16 +27,40 @@ int main(int argc, char** argv) {
     eval->add_option("point", evalOpts.point, "x y z")->expected(0, 3);
     eval->add_flag("--interpreter", evalOpts.interpreter, "Use the scalar interpreter even when the body compiles");
 
+    VoxelizeOptions voxOpts;
+    std::string voxA, voxBox;
+    auto* vox = app.add_subcommand("voxelize", "Sample a body into an OpenVDB grid (.vdb)");
+    vox->add_option("file", voxOpts.model.file, "HyperFun file (.hf)")->required();
+    vox->add_option("--body", voxOpts.model.body, "Body to sample (default: my_model, else the first)");
+    vox->add_option("--a", voxA, "Values of a[1], a[2], ... separated by commas");
+    vox->add_option("--res", voxOpts.resolution, "Voxels along the model box's longest side")->required();
+    vox->add_option("--band", voxOpts.band, "Half-width of the narrow band in voxels (default 3)");
+    vox->add_option("--box", voxBox, "Model box x0,y0,z0,x1,y1,z1 (default: estimated by interval subdivision)");
+    vox->add_flag("--dense", voxOpts.dense, "Write the unclamped dense source cache (every voxel) instead");
+    vox->add_option("-o,--output", voxOpts.output, "Output .vdb file")->required();
+    vox->add_flag("--levelset", voxOpts.levelset, "Write an OpenVDB level set (negative inside, model units)");
+    vox->add_flag("--stats", voxOpts.stats, "Print |grad| at the surface and the grid's layout");
+    vox->add_option("--threads", voxOpts.threads, "Worker threads (default: all cores)");
+    vox->add_option("--memory-limit", voxOpts.memoryLimitMiB, "MiB the grid may use (default: 80% of available)");
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
         return app.exit(e);
     }
-    if (!parseNumberList(checkA, checkOpts.parameters) || !parseNumberList(evalA, evalOpts.model.parameters)) {
+    if (!parseNumberList(checkA, checkOpts.parameters) || !parseNumberList(evalA, evalOpts.model.parameters) ||
+        !parseNumberList(voxA, voxOpts.model.parameters)) {
         std::cerr << "error: --a expects numbers separated by commas, for example --a 0.5,1\n";
         return 2;
     }
     if (*check) return runCheck(checkOpts);
     if (*eval) return runEval(evalOpts);
+    if (*vox) {
+        if (!parseNumberList(voxBox, voxOpts.box)) {
+            std::cerr << "error: --box expects six numbers separated by commas: x0,y0,z0,x1,y1,z1\n";
+            return 2;
+        }
+        return runVoxelize(voxOpts);
+    }
     return 2;
 }

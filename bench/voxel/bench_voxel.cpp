@@ -1,0 +1,177 @@
+// Volume sampling benchmark: for the shared corpus models and every program
+// in content/hyperfun, the culled narrow-band sampler against dense sampling
+// of the same box with the same batch evaluator (both on all cores), the
+// fraction of the box the culled sampler evaluated, and its times at
+// 128^3, 256^3 and 512^3. Prints a Markdown table; --json FILE writes the
+// rows too. Times are the best of --repeat runs.
+//
+//   ./build/release/bench/bench_voxel [--json out.json] [--filter NAME] [--repeat N] [--dense-res N]
+#include <tbb/info.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "frep/model.h"
+#include "frep/parser.h"
+#include "voxel/dense_field.h"
+#include "voxel/sampler.h"
+
+namespace {
+
+using namespace hg;
+namespace fs = std::filesystem;
+
+struct Subject {
+    std::string name;
+    std::shared_ptr<const frep::Program> program;
+    std::unique_ptr<frep::Model> model;
+    std::optional<frep::Box3> box;  // none: estimated
+};
+
+struct Row {
+    std::string name;
+    std::string path;
+    double culledSeconds = 0, denseSeconds = 0;
+    double evaluated = 0;           // fraction of the box's voxels evaluated
+    double culledByRes[3] = {0, 0, 0};
+    std::string note;
+};
+
+frep::Box3 cube(double h) {
+    frep::Box3 b;
+    for (int a = 0; a < 3; ++a) { b.lo[a] = -h; b.hi[a] = h; }
+    return b;
+}
+
+// Boxes for programs whose solid is unbounded or whose interval estimate
+// fails; HyperFun's own viewer samples [-10, 10]^3 by default.
+std::optional<frep::Box3> knownBox(const std::string& name) {
+    if (name == "plane" || name == "paraboloid") return cube(10.0);
+    return std::nullopt;
+}
+
+void addSubject(std::vector<Subject>& out, const fs::path& file, const std::string& filter) {
+    std::string name = file.stem().string();
+    if (!filter.empty() && name.find(filter) == std::string::npos) return;
+    frep::ParseResult r = frep::parseFile(file.string());
+    if (!r.ok()) {
+        std::fprintf(stderr, "skipping %s: it does not parse\n", file.string().c_str());
+        return;
+    }
+    Subject s;
+    s.name = name;
+    s.program = std::make_shared<const frep::Program>(std::move(*r.program));
+    // Our content documents its a[] in each file's header; the defaults
+    // below are the garden's.
+    std::vector<double> a;
+    if (name == "dancer") a = {0.4};
+    s.model = std::make_unique<frep::Model>(s.program, s.program->defaultBody(), a);
+    s.box = knownBox(name);
+    out.push_back(std::move(s));
+}
+
+template <class F>
+double bestOf(int repeat, F f) {
+    double best = 1e30;
+    for (int i = 0; i < repeat; ++i) {
+        auto t0 = std::chrono::steady_clock::now();
+        f();
+        best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    }
+    return best;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    std::string jsonPath, filter;
+    int repeat = 3;
+    for (int i = 1; i < argc; ++i) {
+        std::string arg = argv[i];
+        if (arg == "--json" && i + 1 < argc) jsonPath = argv[++i];
+        else if (arg == "--filter" && i + 1 < argc) filter = argv[++i];
+        else if (arg == "--repeat" && i + 1 < argc) repeat = std::max(1, std::atoi(argv[++i]));
+        else {
+            std::fprintf(stderr, "usage: %s [--json FILE] [--filter NAME] [--repeat N]\n", argv[0]);
+            return 2;
+        }
+    }
+    std::vector<Subject> subjects;
+    fs::path corpus = fs::path(HG_SHARED_DIR) / "hyperfun" / "corpus";
+    if (fs::exists(corpus)) {
+        std::vector<fs::path> files;
+        for (const auto& e : fs::directory_iterator(corpus))
+            if (e.path().extension() == ".hf") files.push_back(e.path());
+        std::sort(files.begin(), files.end());
+        for (const auto& f : files) addSubject(subjects, f, filter);
+    } else {
+        std::fprintf(stderr, "note: %s is absent; benchmarking our own content only\n", corpus.string().c_str());
+    }
+    std::vector<fs::path> ours;
+    for (const auto& e : fs::directory_iterator(fs::path(HG_SOURCE_DIR) / "content" / "hyperfun"))
+        if (e.path().extension() == ".hf") ours.push_back(e.path());
+    std::sort(ours.begin(), ours.end());
+    for (const auto& f : ours) addSubject(subjects, f, filter);
+
+    const int resolutions[3] = {128, 256, 512};
+    std::vector<Row> rows;
+    for (Subject& s : subjects) {
+        Row row;
+        row.name = s.name;
+        row.path = s.model->tape() ? std::to_string(s.model->tape()->size()) + " instrs" : "interpreter";
+        voxel::VolumeRequest req;
+        req.box = s.box;
+        std::fprintf(stderr, "%s...\n", s.name.c_str());
+        for (int r = 0; r < 3; ++r) {
+            req.resolution = resolutions[r];
+            voxel::VoxelizeResult result;
+            double t = bestOf(r == 2 ? 1 : repeat, [&] { result = voxel::voxelize(*s.model, req); });
+            if (!result.volume) {
+                row.note = result.error;
+                break;
+            }
+            row.culledByRes[r] = t;
+            if (resolutions[r] != 256) continue;
+            row.culledSeconds = t;
+            row.evaluated = result.stats.evaluatedFraction();
+            const voxel::Volume& v = *result.volume;
+            row.denseSeconds = bestOf(repeat, [&] {
+                voxel::DenseResult d = voxel::sampleDense(*s.model, v.frame, v.normalization, v.frame.indexBox);
+                if (!d.error.empty()) row.note = d.error;
+            });
+        }
+        rows.push_back(row);
+    }
+
+    std::printf("Threads: %d. Culled: `voxel::voxelize` (normalization probe, interval culling, leaves,\n"
+                "tree assembly). Dense: `voxel::sampleDense` over the same index box, same evaluator.\n\n",
+                tbb::info::default_concurrency());
+    std::printf("| model | path | culled 256^3 (s) | dense 256^3 (s) | dense / culled | box evaluated | 128^3 (s) | 256^3 (s) | 512^3 (s) |\n");
+    std::printf("|---|---|---:|---:|---:|---:|---:|---:|---:|\n");
+    for (const Row& r : rows) {
+        if (!r.note.empty() && r.culledSeconds == 0) {
+            std::printf("| %s | %s | - | - | - | - | - | - | - |  (%s)\n", r.name.c_str(), r.path.c_str(), r.note.c_str());
+            continue;
+        }
+        std::printf("| %s | %s | %.3f | %.3f | %.1fx | %.1f%% | %.3f | %.3f | %.3f |\n", r.name.c_str(), r.path.c_str(),
+                    r.culledSeconds, r.denseSeconds, r.denseSeconds / r.culledSeconds, 100.0 * r.evaluated,
+                    r.culledByRes[0], r.culledByRes[1], r.culledByRes[2]);
+    }
+    if (!jsonPath.empty()) {
+        nlohmann::json j = nlohmann::json::array();
+        for (const Row& r : rows)
+            j.push_back({{"model", r.name}, {"path", r.path}, {"dense_256_s", r.denseSeconds},
+                         {"evaluated_fraction_256", r.evaluated}, {"culled_128_s", r.culledByRes[0]},
+                         {"culled_256_s", r.culledByRes[1]}, {"culled_512_s", r.culledByRes[2]}, {"note", r.note}});
+        std::ofstream(jsonPath) << j.dump(2) << "\n";
+    }
+    return 0;
+}

@@ -1,0 +1,151 @@
+#include "voxel/box_walker.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace hg::voxel {
+
+namespace {
+
+int floorToMultiple(int v, int size) {
+    int q = v / size;
+    if (v % size != 0 && v < 0) --q;
+    return q * size;
+}
+
+IndexBox boxAt(const int origin[3], int size) {
+    return IndexBox::fromCorners(origin[0], origin[1], origin[2], origin[0] + size - 1, origin[1] + size - 1,
+                                 origin[2] + size - 1);
+}
+
+}  // namespace
+
+std::vector<std::array<int, 3>> alignedBoxes(const IndexBox& box, int size) {
+    std::vector<std::array<int, 3>> out;
+    if (box.empty()) return out;
+    int lo[3], hi[3];
+    for (int a = 0; a < 3; ++a) {
+        lo[a] = floorToMultiple(box.lo[a], size);
+        hi[a] = floorToMultiple(box.hi[a], size);
+    }
+    for (int z = lo[2]; z <= hi[2]; z += size)
+        for (int y = lo[1]; y <= hi[1]; y += size)
+            for (int x = lo[0]; x <= hi[0]; x += size) out.push_back({x, y, z});
+    return out;
+}
+
+BoxWalker::BoxWalker(const frep::Model& model, const VolumeFrame& frame, double scale)
+    : frame_(frame), scale_(scale), scalef_(static_cast<float>(scale)), sampler_(model),
+      x_(512), y_(512), z_(512), f_(512) {
+    if (model.tape()) interval_ = std::make_unique<frep::IntervalEvaluator>(*model.tape());
+}
+
+BoxWalker::Verdict BoxWalker::classify(const IndexBox& domain, WalkCounters& counters) {
+    if (!interval_) return Verdict::Unknown;
+    // The batch evaluator sees float coordinates; rounding is monotone, so
+    // the rounded corners bound every rounded point of the box.
+    frep::Interval axis[3];
+    for (int a = 0; a < 3; ++a)
+        axis[a] = frep::Interval(static_cast<double>(static_cast<float>(frame_.coordinate(a, domain.lo[a]))),
+                                 static_cast<double>(static_cast<float>(frame_.coordinate(a, domain.hi[a]))));
+    ++counters.boxesTested;
+    frep::Interval v = interval_->evaluate(axis[0], axis[1], axis[2]);
+    if (v.maybeNaN) return Verdict::Unknown;
+    const double band = static_cast<double>(frame_.band);
+    if (v.lo * scale_ >= band) {
+        ++counters.boxesInside;
+        return Verdict::Inside;
+    }
+    if (v.hi * scale_ <= -band) {
+        ++counters.boxesOutside;
+        return Verdict::Outside;
+    }
+    return Verdict::Unknown;
+}
+
+void BoxWalker::walk(const int origin[3], int size, const IndexBox& clip, WalkOutput& out, int deferSize,
+                     std::vector<std::array<int, 3>>* deferred) {
+    IndexBox domain = intersect(boxAt(origin, size), frame_.indexBox);
+    IndexBox target = intersect(domain, clip);
+    if (target.empty()) return;
+    if (deferred && size == deferSize) {
+        deferred->push_back({origin[0], origin[1], origin[2]});
+        return;
+    }
+    // The verdict depends on `domain` only, never on `clip`.
+    switch (classify(domain, out.counters)) {
+        case Verdict::Inside: out.fills.push_back({target, frame_.band}); return;
+        case Verdict::Outside: out.fills.push_back({target, -frame_.band}); return;
+        case Verdict::Unknown: break;
+    }
+    if (size <= kLeafSize) {
+        evaluateLeaf(origin, target, out);
+        return;
+    }
+    const int half = size / 2;
+    for (int dz = 0; dz < 2; ++dz)
+        for (int dy = 0; dy < 2; ++dy)
+            for (int dx = 0; dx < 2; ++dx) {
+                int child[3] = {origin[0] + dx * half, origin[1] + dy * half, origin[2] + dz * half};
+                walk(child, half, clip, out, deferSize, deferred);
+            }
+}
+
+void BoxWalker::evaluateLeaf(const int origin[3], const IndexBox& target, WalkOutput& out) {
+    // The leaf's eight 4^3 octants are interval-tested too: an interval
+    // evaluation costs about as much as a handful of points, and near a
+    // curved surface many octants of a straddling leaf are still certain.
+    // Points are listed in OpenVDB's leaf order (z fastest).
+    const float band = frame_.band;
+    LeafSamples leaf;
+    std::copy(origin, origin + 3, leaf.origin);
+    leaf.values.fill(-band);
+    std::size_t n = 0;
+    int offsets[512];
+    constexpr int kOctant = kLeafSize / 2;
+    for (int dx = 0; dx < 2; ++dx)
+        for (int dy = 0; dy < 2; ++dy)
+            for (int dz = 0; dz < 2; ++dz) {
+                int o[3] = {origin[0] + dx * kOctant, origin[1] + dy * kOctant, origin[2] + dz * kOctant};
+                IndexBox domain = intersect(boxAt(o, kOctant), frame_.indexBox);
+                IndexBox sub = intersect(domain, target);
+                if (sub.empty()) continue;
+                Verdict v = classify(domain, out.counters);
+                for (int x = sub.lo[0]; x <= sub.hi[0]; ++x)
+                    for (int y = sub.lo[1]; y <= sub.hi[1]; ++y)
+                        for (int z = sub.lo[2]; z <= sub.hi[2]; ++z) {
+                            int offset = ((x - origin[0]) * kLeafSize + (y - origin[1])) * kLeafSize + (z - origin[2]);
+                            leaf.evaluated.set(static_cast<std::size_t>(offset));
+                            if (v != Verdict::Unknown) {
+                                leaf.values[static_cast<std::size_t>(offset)] = v == Verdict::Inside ? band : -band;
+                                continue;
+                            }
+                            x_[n] = static_cast<float>(frame_.coordinate(0, x));
+                            y_[n] = static_cast<float>(frame_.coordinate(1, y));
+                            z_[n] = static_cast<float>(frame_.coordinate(2, z));
+                            offsets[n] = offset;
+                            ++n;
+                        }
+            }
+    if (n) sampler_.evaluate(x_.data(), y_.data(), z_.data(), f_.data(), n, out.errors);
+    out.counters.samples += n;
+    for (std::size_t i = 0; i < n; ++i)
+        leaf.values[static_cast<std::size_t>(offsets[i])] = std::clamp(f_[i] * scalef_, -band, band);
+    // Every voxel clamped alike: a fill holds the same values.
+    float first = 0.0f;
+    bool uniform = true, any = false;
+    for (std::size_t i = 0; i < 512 && uniform; ++i) {
+        if (!leaf.evaluated.test(i)) continue;
+        if (!any) first = leaf.values[i];
+        any = true;
+        uniform = leaf.values[i] == first && std::fabs(first) == band;
+    }
+    if (uniform && any) {
+        out.fills.push_back({target, first});
+        return;
+    }
+    ++out.counters.leaves;
+    out.leaves.push_back(leaf);
+}
+
+}  // namespace hg::voxel

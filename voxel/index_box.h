@@ -1,0 +1,49 @@
+// An axis-aligned box of voxel indices, both corners included. The voxel
+// module's own box type, so that headers seen by the whole program need not
+// include OpenVDB (whose CoordBBox is the same idea).
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+
+namespace hg::voxel {
+
+struct IndexBox {
+    int lo[3] = {0, 0, 0};
+    int hi[3] = {-1, -1, -1};  // empty by default
+
+    static IndexBox fromCorners(int x0, int y0, int z0, int x1, int y1, int z1) {
+        IndexBox b;
+        b.lo[0] = x0; b.lo[1] = y0; b.lo[2] = z0;
+        b.hi[0] = x1; b.hi[1] = y1; b.hi[2] = z1;
+        return b;
+    }
+    bool empty() const { return hi[0] < lo[0] || hi[1] < lo[1] || hi[2] < lo[2]; }
+    int extent(int axis) const { return hi[axis] - lo[axis] + 1; }
+    std::uint64_t volume() const {
+        if (empty()) return 0;
+        return static_cast<std::uint64_t>(extent(0)) * static_cast<std::uint64_t>(extent(1)) *
+               static_cast<std::uint64_t>(extent(2));
+    }
+    bool contains(int x, int y, int z) const {
+        return x >= lo[0] && x <= hi[0] && y >= lo[1] && y <= hi[1] && z >= lo[2] && z <= hi[2];
+    }
+    bool contains(const IndexBox& o) const {
+        return o.empty() || (contains(o.lo[0], o.lo[1], o.lo[2]) && contains(o.hi[0], o.hi[1], o.hi[2]));
+    }
+};
+
+inline IndexBox intersect(const IndexBox& a, const IndexBox& b) {
+    IndexBox r;
+    for (int i = 0; i < 3; ++i) {
+        r.lo[i] = std::max(a.lo[i], b.lo[i]);
+        r.hi[i] = std::min(a.hi[i], b.hi[i]);
+    }
+    return r;
+}
+
+inline bool operator==(const IndexBox& a, const IndexBox& b) {
+    return std::equal(a.lo, a.lo + 3, b.lo) && std::equal(a.hi, a.hi + 3, b.hi);
+}
+
+}  // namespace hg::voxel

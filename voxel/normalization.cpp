@@ -1,0 +1,150 @@
+#include "voxel/normalization.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "frep/eval_gradient.h"
+
+namespace hg::voxel {
+
+namespace {
+
+constexpr int kProbeCells = 48;            // lattice cells along the longest side
+constexpr std::size_t kMaxSurfaceSamples = 4096;
+
+struct Probe {
+    int n[3];
+    double lo[3];
+    double step;
+    std::vector<double> f;
+    std::vector<std::uint8_t> failed;
+    std::size_t at(int i, int j, int k) const {
+        return (static_cast<std::size_t>(k) * static_cast<std::size_t>(n[1]) + static_cast<std::size_t>(j)) *
+                   static_cast<std::size_t>(n[0]) + static_cast<std::size_t>(i);
+    }
+};
+
+Probe sampleLattice(const frep::Model& model, const VolumeFrame& frame) {
+    Probe p;
+    double extent[3];
+    double longest = 0.0;
+    for (int a = 0; a < 3; ++a) {
+        p.lo[a] = frame.coordinate(a, frame.indexBox.lo[a]);
+        extent[a] = frame.coordinate(a, frame.indexBox.hi[a]) - p.lo[a];
+        longest = std::max(longest, extent[a]);
+    }
+    int cells = std::min(kProbeCells, frame.resolution);
+    p.step = longest / cells;
+    for (int a = 0; a < 3; ++a) p.n[a] = static_cast<int>(std::ceil(extent[a] / p.step)) + 1;
+    p.f.resize(static_cast<std::size_t>(p.n[0]) * static_cast<std::size_t>(p.n[1]) * static_cast<std::size_t>(p.n[2]));
+    p.failed.resize(p.f.size());
+
+    frep::PointSampler<double> sampler(model);
+    frep::ErrorReport errors;
+    std::vector<double> x(static_cast<std::size_t>(p.n[0])), y(x.size()), z(x.size());
+    for (int k = 0; k < p.n[2]; ++k)
+        for (int j = 0; j < p.n[1]; ++j) {
+            for (int i = 0; i < p.n[0]; ++i) {
+                x[static_cast<std::size_t>(i)] = p.lo[0] + i * p.step;
+                y[static_cast<std::size_t>(i)] = p.lo[1] + j * p.step;
+                z[static_cast<std::size_t>(i)] = p.lo[2] + k * p.step;
+            }
+            std::size_t o = p.at(0, j, k);
+            sampler.evaluate(x.data(), y.data(), z.data(), p.f.data() + o, x.size(), errors, p.failed.data() + o);
+        }
+    return p;
+}
+
+// Surface crossings along the lattice's edges, in a fixed order.
+std::vector<double> surfacePoints(const Probe& p) {
+    std::vector<double> pts;  // x, y, z triples
+    const int d[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    for (int k = 0; k < p.n[2]; ++k)
+        for (int j = 0; j < p.n[1]; ++j)
+            for (int i = 0; i < p.n[0]; ++i) {
+                std::size_t a = p.at(i, j, k);
+                if (p.failed[a]) continue;
+                for (const auto& e : d) {
+                    int i1 = i + e[0], j1 = j + e[1], k1 = k + e[2];
+                    if (i1 >= p.n[0] || j1 >= p.n[1] || k1 >= p.n[2]) continue;
+                    std::size_t b = p.at(i1, j1, k1);
+                    if (p.failed[b] || (p.f[a] >= 0.0) == (p.f[b] >= 0.0)) continue;
+                    double t = p.f[a] / (p.f[a] - p.f[b]);
+                    pts.push_back(p.lo[0] + (i + t * e[0]) * p.step);
+                    pts.push_back(p.lo[1] + (j + t * e[1]) * p.step);
+                    pts.push_back(p.lo[2] + (k + t * e[2]) * p.step);
+                }
+            }
+    std::size_t count = pts.size() / 3;
+    if (count <= kMaxSurfaceSamples) return pts;
+    std::vector<double> kept;
+    kept.reserve(kMaxSurfaceSamples * 3);
+    for (std::size_t s = 0; s < kMaxSurfaceSamples; ++s) {
+        std::size_t i = s * count / kMaxSurfaceSamples;
+        kept.insert(kept.end(), pts.begin() + static_cast<std::ptrdiff_t>(3 * i),
+                    pts.begin() + static_cast<std::ptrdiff_t>(3 * i + 3));
+    }
+    return kept;
+}
+
+std::vector<double> gradientMagnitudes(const frep::Model& model, const std::vector<double>& pts, double h) {
+    std::size_t n = pts.size() / 3;
+    std::vector<double> mags;
+    mags.reserve(n);
+    frep::ErrorReport errors;
+    if (const frep::Tape* tape = model.tape()) {
+        frep::GradientEvaluator grad(*tape);
+        for (std::size_t i = 0; i < n; ++i) {
+            std::uint64_t before = errors.count;
+            frep::Gradient g = grad.evaluate(pts[3 * i], pts[3 * i + 1], pts[3 * i + 2], errors);
+            double m = std::sqrt(g.dx * g.dx + g.dy * g.dy + g.dz * g.dz);
+            if (errors.count == before && std::isfinite(m) && m > 0.0) mags.push_back(m);
+        }
+        return mags;
+    }
+    // Interpreter path: central differences, six points per sample.
+    frep::PointSampler<double> sampler(model);
+    for (std::size_t i = 0; i < n; ++i) {
+        double x[6], y[6], z[6], f[6];
+        std::uint8_t failed[6];
+        for (int s = 0; s < 6; ++s) {
+            x[s] = pts[3 * i]; y[s] = pts[3 * i + 1]; z[s] = pts[3 * i + 2];
+        }
+        x[0] += h; x[1] -= h; y[2] += h; y[3] -= h; z[4] += h; z[5] -= h;
+        sampler.evaluate(x, y, z, f, 6, errors, failed);
+        if (std::any_of(failed, failed + 6, [](std::uint8_t b) { return b != 0; })) continue;
+        double gx = (f[0] - f[1]) / (2 * h), gy = (f[2] - f[3]) / (2 * h), gz = (f[4] - f[5]) / (2 * h);
+        double m = std::sqrt(gx * gx + gy * gy + gz * gz);
+        if (std::isfinite(m) && m > 0.0) mags.push_back(m);
+    }
+    return mags;
+}
+
+}  // namespace
+
+void medianAndP90(double* values, std::size_t n, double& median, double& p90) {
+    median = p90 = 0.0;
+    if (n == 0) return;
+    std::size_t m = n / 2, q = std::min(n - 1, (n * 9) / 10);
+    std::nth_element(values, values + m, values + n);
+    median = values[m];
+    std::nth_element(values, values + q, values + n);
+    p90 = values[q];
+}
+
+Normalization estimateNormalization(const frep::Model& model, const VolumeFrame& frame) {
+    Normalization result;
+    result.scale = 1.0 / frame.voxelSize;
+    Probe probe = sampleLattice(model, frame);
+    std::vector<double> pts = surfacePoints(probe);
+    std::vector<double> mags = gradientMagnitudes(model, pts, frame.voxelSize * 0.25);
+    result.surfaceSamples = mags.size();
+    if (mags.empty()) return result;
+    medianAndP90(mags.data(), mags.size(), result.medianGradient, result.p90Gradient);
+    if (result.medianGradient > 0.0 && std::isfinite(result.medianGradient))
+        result.scale = 1.0 / (frame.voxelSize * result.medianGradient);
+    return result;
+}
+
+}  // namespace hg::voxel

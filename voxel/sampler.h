@@ -1,0 +1,67 @@
+// Turns a sculpture's program into its volume: the model box, the
+// normalization, then the culled narrow-band sampling (box_walker.h) on TBB
+// workers. The grid is the same whatever the number of threads: every piece
+// of work is a pure function of its box, and pieces are put into the tree in
+// a fixed order.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+
+#include "frep/domain_error.h"
+#include "frep/model.h"
+#include "voxel/normalization.h"
+#include "voxel/volume.h"
+
+namespace hg::voxel {
+
+struct SampleOptions {
+    // Called with the fraction done (0..1) from any thread, at most a few
+    // hundred times; must be thread-safe.
+    std::function<void(double)> progress;
+    // Bytes the grid may take; 0: 80% of the memory available now.
+    std::uint64_t memoryLimit = 0;
+};
+
+struct SampleStats {
+    std::uint64_t boxesTested = 0;    // interval evaluations
+    std::uint64_t boxesCulled = 0;    // proven inside or outside the band
+    std::uint64_t samples = 0;        // points batch-evaluated
+    std::uint64_t voxels = 0;         // voxels in the sampled box
+    std::uint64_t leaves = 0;         // leaves that hold evaluated voxels
+    std::uint64_t estimatedBytes = 0; // the memory guard's estimate
+    double seconds = 0.0;
+    frep::ErrorReport errors;         // domain errors at sampled points
+
+    double evaluatedFraction() const { return voxels ? static_cast<double>(samples) / static_cast<double>(voxels) : 0.0; }
+};
+
+struct VolumeRequest {
+    std::optional<frep::Box3> box;  // none: estimate by interval subdivision
+    int resolution = 256;
+    float band = 3.0f;
+    VolumeSource source;            // recorded in the volume's metadata
+};
+
+struct VoxelizeResult {
+    std::optional<Volume> volume;
+    std::string error;              // why there is no volume
+    Normalization normalization;
+    SampleStats stats;
+};
+
+// The model box a request will use: the given one, or the interval estimate
+// (which needs a tape). "" on success, else why there is none.
+std::string resolveModelBox(const frep::Model& model, const VolumeRequest& request, frep::Box3& box,
+                            bool& estimated);
+
+VoxelizeResult voxelize(const frep::Model& model, const VolumeRequest& request, const SampleOptions& options = {});
+
+// Recomputes the voxels of `region` (index space, clipped to the frame) from
+// `model` with the volume's normalization, touching nothing else. Bit-identical
+// to what a full sampling of `model` stores there.
+SampleStats resampleRegion(Volume& volume, const frep::Model& model, const IndexBox& region);
+
+}  // namespace hg::voxel

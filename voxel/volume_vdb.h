@@ -1,0 +1,31 @@
+// The OpenVDB side of voxel::Volume. Include only where the grid itself is
+// read or written: OpenVDB's headers are heavy.
+#pragma once
+
+#include <openvdb/openvdb.h>
+
+#include "voxel/index_box.h"
+#include "voxel/volume.h"
+
+namespace hg::voxel {
+
+struct VolumeGrid {
+    openvdb::FloatGrid::Ptr grid;
+};
+
+using FloatLeaf = openvdb::FloatTree::LeafNodeType;
+
+inline openvdb::FloatGrid& vdb(Volume& v) { return *v.grid().grid; }
+inline const openvdb::FloatGrid& vdb(const Volume& v) { return *v.grid().grid; }
+
+inline openvdb::CoordBBox toCoordBBox(const IndexBox& b) {
+    return openvdb::CoordBBox(openvdb::Coord(b.lo[0], b.lo[1], b.lo[2]), openvdb::Coord(b.hi[0], b.hi[1], b.hi[2]));
+}
+inline IndexBox toIndexBox(const openvdb::CoordBBox& b) {
+    return IndexBox::fromCorners(b.min().x(), b.min().y(), b.min().z(), b.max().x(), b.max().y(), b.max().z());
+}
+
+// Makes sure openvdb::initialize() has run (idempotent, thread-safe).
+void ensureOpenVdbInitialized();
+
+}  // namespace hg::voxel
