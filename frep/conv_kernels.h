@@ -1,24 +1,25 @@
-// Fused convolution kernels of the tape (Op::ConvSegment): the Cauchy
-// line-segment field, in double exactly as the library routine computes it
-// (same code, so results match the reference bit for bit), in float as a
-// branch-free loop body the compiler vectorizes, and as sound bounds over a
-// box for the interval evaluator.
+// The fused convolution kernels of the tape (Op::ConvSegment in
+// conv_segment.h, Op::ConvArc in conv_arc.h), dispatched by opcode so that
+// the builder and the evaluators treat every fused kernel alike. `params`
+// points at the instruction's block in Tape::params.
 #pragma once
 
+#include <cstddef>
+
 #include "frep/interval.h"
+#include "frep/tape.h"
 
 namespace hg::frep {
 
-// params: begin (3), end (3), kernel width s.
-double convSegmentField(double px, double py, double pz, const double* params);
-// Evaluates n points; float version vectorized, double version exact.
-void convSegmentBatch(const float* px, const float* py, const float* pz, float* out, size_t n, const double* params);
-void convSegmentBatch(const double* px, const double* py, const double* pz, double* out, size_t n,
-                      const double* params);
-// Bounds of the field over a box: the field is the integral of the kernel
-// K(r) = 1/(1 + s^2 r^2)^2 along the segment, so it lies between
-// l K(dmax) and l K(dmin), and within a Lipschitz band around the centre
-// value (|grad| <= 2.25 for any segment and width).
-Interval convSegmentBounds(const Interval& px, const Interval& py, const Interval& pz, const double* params);
+// The library's value at one point, bit for bit (constant folding, exact path).
+double fusedField(Op op, double px, double py, double pz, const double* params);
+// n points: the float version vectorized, the double version exact.
+void fusedBatch(Op op, const float* px, const float* py, const float* pz, float* out, size_t n, const double* params);
+void fusedBatch(Op op, const double* px, const double* py, const double* pz, double* out, size_t n,
+                const double* params);
+// Sound bounds over a box.
+Interval fusedBounds(Op op, const Interval& px, const Interval& py, const Interval& pz, const double* params);
+// Value (as fusedField) and its analytic partial derivatives along px, py, pz.
+double fusedGradient(Op op, double px, double py, double pz, const double* params, double grad[3]);
 
 }  // namespace hg::frep

@@ -171,7 +171,8 @@ void BatchEvaluator<T>::chunk(const T* x, const T* y, const T* z, T* out, size_t
                 goto guarded;
             }
             case Op::ConvSegment:
-                convSegmentBatch(a, b, c, o, n, tape_.params.data() + in.param);
+            case Op::ConvArc:
+                fusedBatch(in.op, a, b, c, o, n, tape_.params.data() + in.param);
                 break;
             case Op::Check: {
                 for (size_t i = 0; i < n; ++i) { o[i] = a[i]; bad_[i] = a[i] == T(0); }

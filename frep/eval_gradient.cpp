@@ -48,14 +48,11 @@ void GradientEvaluator::chunk(const double* x, const double* y, const double* z,
             if (in.op == Op::Z) value = z[i];
             if (in.op == Op::Const) value = in.imm;
             double kc = 0.0;  // coefficient of c's derivative (fused kernels)
-            if (in.op == Op::ConvSegment) {
-                // Central differences of the exact closed form.
-                const double* q = tape_.params.data() + in.param;
-                const double h = 1e-6;
-                value = convSegmentField(av, bv, cv, q);
-                ka = (convSegmentField(av + h, bv, cv, q) - convSegmentField(av - h, bv, cv, q)) / (2 * h);
-                kb = (convSegmentField(av, bv + h, cv, q) - convSegmentField(av, bv - h, cv, q)) / (2 * h);
-                kc = (convSegmentField(av, bv, cv + h, q) - convSegmentField(av, bv, cv - h, q)) / (2 * h);
+            if (fusedParamCount(in.op) > 0) {
+                // The kernel's own closed form, differentiated analytically.
+                double slope[3];
+                value = fusedGradient(in.op, av, bv, cv, tape_.params.data() + in.param, slope);
+                ka = slope[0]; kb = slope[1]; kc = slope[2];
             }
             if (e != DomainError::None && (in.guard == kNoReg || v_[static_cast<size_t>(in.guard) * kBatch + i] != 0.0)) {
                 if (!fail_[i] && firstError == DomainError::None) {
@@ -107,7 +104,7 @@ void GradientEvaluator::chunk(const double* x, const double* y, const double* z,
                     break;
                 }
                 case Op::Check: ka = 1; break;
-                case Op::ConvSegment: break;  // coefficients computed above
+                case Op::ConvSegment: case Op::ConvArc: break;  // coefficients computed above
                 default: break;  // floor, comparisons, logic, mod: piecewise constant
             }
             double gx, gy, gz;

@@ -82,6 +82,12 @@ inline float log(float x) {
     return m + y + 0.693359375f * e;
 }
 
+// Cephes atanf polynomial on the reduced argument |r| <= tan(pi / 8).
+inline float atanPoly(float r) {
+    const float z = r * r;
+    return (((8.05374449538e-2f * z - 1.38776856032e-1f) * z + 1.99777106478e-1f) * z - 3.33329491539e-1f) * z * r + r;
+}
+
 // atan for every float (Cephes atanf reduction); every candidate is
 // computed, then selected, so there is no branch.
 inline float atan(float x) {
@@ -92,10 +98,26 @@ inline float atan(float x) {
     const bool mid = t > 0.414213562f;
     const float y0 = big ? 1.570796327f : (mid ? 0.785398163f : 0.0f);
     const float r = big ? rBig : (mid ? rMid : t);
-    const float z = r * r;
-    const float p = (((8.05374449538e-2f * z - 1.38776856032e-1f) * z + 1.99777106478e-1f) * z - 3.33329491539e-1f) * z * r + r;
-    const float v = y0 + p;
+    const float v = y0 + atanPoly(r);
     return x < 0.0f ? -v : v;
+}
+
+// atan2(y, x) for y > 0 and finite x: the angle in (0, pi), by the same
+// reduction applied to y / |x| without forming that quotient. The three
+// candidate quotients do not wait for the selection, so their divisions
+// overlap (the convolution kernels that use this are latency bound).
+inline float angleAbove(float y, float x) {
+    const float ax = std::fabs(x);
+    const bool big = y > 2.414213562f * ax;
+    const bool mid = y > 0.414213562f * ax;
+    const float y0 = big ? 1.570796327f : (mid ? 0.785398163f : 0.0f);
+    const float rBig = -ax / y, rMid = (y - ax) / (y + ax), rSmall = y / ax;
+    const float r = big ? rBig : (mid ? rMid : rSmall);
+    // atanPoly's polynomial in Estrin's form: a shorter dependency chain.
+    const float z = r * r, z2 = z * z;
+    const float p = ((-3.33329491539e-1f + 1.99777106478e-1f * z) + z2 * (-1.38776856032e-1f + 8.05374449538e-2f * z)) * z * r + r;
+    const float first = y0 + p;  // angle of (|x|, y)
+    return x < 0.0f ? 3.141592654f - first : first;
 }
 
 }  // namespace hg::frep::fast

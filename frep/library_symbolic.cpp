@@ -1,9 +1,13 @@
 // The library routines instantiated on Sym: the compiler records each
 // routine's operations onto the tape (see frep/library/library.h).
 //
-// One routine piece is replaced by a fused tape kernel: a Cauchy line
-// segment with constant end points and width becomes one Op::ConvSegment
-// (fast vector loop, tight interval bounds) instead of ~40 instructions.
+// Two routine pieces are replaced by fused tape kernels (fast vector loops,
+// tight interval bounds): a Cauchy line segment with constant end points and
+// width becomes one Op::ConvSegment instead of ~40 instructions, and a piece
+// of an hfConvArc arc with constant frame, radius, width and span one
+// Op::ConvArc instead of ~100.
+#include <cmath>
+
 #include "frep/library/library_impl.h"
 #include "frep/sym.h"
 
@@ -34,8 +38,34 @@ Sym convSegment<Sym>(const Sym& px, const Sym& py, const Sym& pz, const Sym& bx,
     bool degenerate = q[0] == q[3] && q[1] == q[4] && q[2] == q[5];
     TapeBuilder* b = px.builder() ? px.builder() : py.builder() ? py.builder() : pz.builder();
     if (constant && !degenerate && b)
-        return Sym(b, b->convSegment(px.on(*b), py.on(*b), pz.on(*b), q));
+        return Sym(b, b->fused(Op::ConvSegment, px.on(*b), py.on(*b), pz.on(*b), q));
     return convSegment<SymExpanded>(px, py, pz, bx, by, bz, ex, ey, ez, s);
+}
+
+template <>
+Sym convArcPiece<Sym>(const Sym& x0, const Sym& x1, const Sym& x2, const Sym* frame, const double* turn,
+                      const Sym& r, const Sym& s, const Sym& th) {
+    double q[kConvArcParams];
+    bool constant = r.isConstant() && s.isConstant() && th.isConstant();
+    for (size_t i = 0; i < kArcFrame; ++i) {
+        constant = constant && frame[i].isConstant();
+        q[i] = frame[i].isConstant() ? frame[i].constant() : 0.0;
+    }
+    q[kArcFrame] = r.isConstant() ? r.constant() : 0.0;
+    q[kArcFrame + 1] = s.isConstant() ? s.constant() : 0.0;
+    q[kArcFrame + 2] = th.isConstant() ? th.constant() : 0.0;
+    q[kArcFrame + 3] = turn ? 1.0 : 0.0;
+    bool finite = true;
+    for (double v : q) finite = finite && std::isfinite(v);
+    // The fused kernel's float rewrite and bounds assume a proper arc of at
+    // most 180 degrees; anything else keeps the generic form.
+    const bool proper = finite && q[kArcFrame] > 0.0 && q[kArcFrame + 1] != 0.0 && q[kArcFrame + 2] > 0.0 &&
+                        q[kArcFrame + 2] <= 180.0 * kArcDegree;
+    TapeBuilder* b = x0.builder() ? x0.builder() : x1.builder() ? x1.builder() : x2.builder();
+    if (constant && proper && b) return Sym(b, b->fused(Op::ConvArc, x0.on(*b), x1.on(*b), x2.on(*b), q));
+    SymExpanded f[kArcFrame];
+    for (size_t i = 0; i < kArcFrame; ++i) f[i] = frame[i];
+    return convArcPiece<SymExpanded>(x0, x1, x2, f, turn, r, s, th);
 }
 
 }  // namespace hg::frep::lib::detail

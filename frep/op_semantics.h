@@ -69,7 +69,8 @@ inline DomainError applyOp(Op op, DomainError checkError, T a, T b, T c, T& out)
         case Op::Check:
             out = a;
             return a != T(0) ? DomainError::None : checkError;
-        case Op::ConvSegment:  // needs its parameters: evaluated by the callers
+        case Op::ConvSegment:  // fused kernels need their parameters: evaluated by the callers
+        case Op::ConvArc:
             out = T(0);
             break;
     }

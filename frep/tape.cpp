@@ -60,6 +60,7 @@ const char* opName(Op op) {
         case Op::HfMod: return "hf_mod";
         case Op::Check: return "check";
         case Op::ConvSegment: return "conv_segment";
+        case Op::ConvArc: return "conv_arc";
     }
     return "?";
 }
@@ -73,8 +74,16 @@ int opArity(Op op) {
         case Op::Truthy: case Op::HfSqrt: case Op::HfLog: case Op::HfLog10: case Op::HfAsin:
         case Op::HfAcos: case Op::HfTan: case Op::Check:
             return 1;
-        case Op::Select: case Op::ConvSegment: return 3;
+        case Op::Select: case Op::ConvSegment: case Op::ConvArc: return 3;
         default: return 2;
+    }
+}
+
+std::uint32_t fusedParamCount(Op op) {
+    switch (op) {
+        case Op::ConvSegment: return kConvSegmentParams;
+        case Op::ConvArc: return kConvArcParams;
+        default: return 0;
     }
 }
 

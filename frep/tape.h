@@ -30,10 +30,18 @@ enum class Op : std::uint8_t {
     Check,   // fails with `error` where a == 0 (unassigned value, bad index)
     // fused library kernels; parameters in Tape::params[param...]
     ConvSegment,  // Cauchy line-segment field at (a, b, c): b, e (3 each), s
+    ConvArc,      // one hfConvArc piece at (a, b, c): frame, r, s, span, over
 };
 
 // Parameters of a ConvSegment: begin (3), end (3), kernel width.
 constexpr std::uint32_t kConvSegmentParams = 7;
+// Parameters of a ConvArc: centre (3), rotation into the arc's plane (3x3,
+// row major), radius, kernel width, span in radians, 1 for the part beyond
+// 180 degrees (turned by -180 degrees) else 0.
+constexpr std::uint32_t kConvArcParams = 16;
+
+// Number of parameters of a fused kernel; 0 for every other opcode.
+std::uint32_t fusedParamCount(Op op);
 
 const char* opName(Op op);
 int opArity(Op op);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstring>
 #include <stdexcept>
+#include <utility>
 
 #include "frep/conv_kernels.h"
 #include "frep/op_semantics.h"
@@ -120,21 +121,19 @@ std::uint32_t TapeBuilder::op(Op o, std::uint32_t a, std::uint32_t b, std::uint3
     return push(in);
 }
 
-std::uint32_t TapeBuilder::convSegment(std::uint32_t px, std::uint32_t py, std::uint32_t pz, const double* params) {
+std::uint32_t TapeBuilder::fused(Op o, std::uint32_t px, std::uint32_t py, std::uint32_t pz, const double* params) {
     if (isConstant(px) && isConstant(py) && isConstant(pz))
-        return constant(convSegmentField(constantValue(px), constantValue(py), constantValue(pz), params));
-    // Identical segments share one parameter block (and so one instruction).
-    std::uint32_t index = static_cast<std::uint32_t>(params_.size());
-    for (size_t i = 0; i + kConvSegmentParams <= params_.size(); i += kConvSegmentParams)
-        if (std::equal(params, params + kConvSegmentParams, params_.begin() + static_cast<std::ptrdiff_t>(i))) {
-            index = static_cast<std::uint32_t>(i);
-            break;
-        }
-    if (index == params_.size()) params_.insert(params_.end(), params, params + kConvSegmentParams);
+        return constant(fusedField(o, constantValue(px), constantValue(py), constantValue(pz), params));
+    // Identical kernels share one parameter block (and so one instruction).
+    const std::uint32_t count = fusedParamCount(o);
+    std::vector<std::uint64_t> key{static_cast<std::uint64_t>(o)};
+    for (std::uint32_t i = 0; i < count; ++i) key.push_back(bitsOf(params[i]));
+    auto [it, added] = paramBlocks_.emplace(std::move(key), static_cast<std::uint32_t>(params_.size()));
+    if (added) params_.insert(params_.end(), params, params + count);
     Instr in;
-    in.op = Op::ConvSegment;
+    in.op = o;
     in.a = px; in.b = py; in.c = pz;
-    in.param = index;
+    in.param = it->second;
     return push(in);
 }
 

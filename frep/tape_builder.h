@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <unordered_map>
 #include <vector>
 
@@ -35,9 +36,9 @@ public:
     // Fails with `error` where `ok` is 0 and `guard` holds.
     void check(std::uint32_t ok, std::uint32_t guard, SourceLoc loc, DomainError error);
 
-    // Fused Cauchy line-segment field at (px, py, pz); `params` holds
-    // begin, end and kernel width (kConvSegmentParams values).
-    std::uint32_t convSegment(std::uint32_t px, std::uint32_t py, std::uint32_t pz, const double* params);
+    // A fused kernel (`op` with fusedParamCount(op) > 0) at (px, py, pz);
+    // `params` holds its fusedParamCount(op) constant parameters.
+    std::uint32_t fused(Op op, std::uint32_t px, std::uint32_t py, std::uint32_t pz, const double* params);
 
     // guard && cond, treating kNoReg as "true".
     std::uint32_t andGuard(std::uint32_t guard, std::uint32_t cond);
@@ -68,6 +69,8 @@ private:
     std::vector<Instr> code_;
     std::vector<SourceLoc> sites_;
     std::vector<double> params_;
+    // Parameter blocks by opcode and bits, so identical kernels share one.
+    std::map<std::vector<std::uint64_t>, std::uint32_t> paramBlocks_;
     std::unordered_map<Key, std::uint32_t, KeyHash> cse_;
     std::uint32_t x_, y_, z_;
 };

@@ -5,6 +5,8 @@
 // except for hfConvLineR (see there).
 #pragma once
 
+#include <cmath>
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -167,6 +169,62 @@ V convArcField(const V& nx, const V& ny, const V& nz, const V& r, const V& s, co
     return f1 + f2;
 }
 
+// Degrees to radians with the reference's pi = 3.141592.
+constexpr double kArcDegree = 3.141592 / 180.0;
+
+// An arc's frame: centre (3), then the rotation into the arc's plane (3x3,
+// row major).
+constexpr size_t kArcFrame = 12;
+
+// (ox, oy, oz) = m (x, y, z) in the reference's order of operations.
+template <class V, class M>
+void arcRotate(const M* m, const V& x, const V& y, const V& z, V& ox, V& oy, V& oz) {
+    ox = m[0] * x + m[1] * y + m[2] * z;
+    oy = m[3] * x + m[4] * y + m[5] * z;
+    oz = m[6] * x + m[7] * y + m[8] * z;
+}
+
+// The reference's turn by -180 degrees about the z axis, which carries the
+// part of an arc beyond 180 degrees; rounded as the reference rounds it
+// (cos and sin of 3.141592 / 180 * -180 are not exactly -1 and 0).
+inline void arcOverTurn(double m[9]) {
+    const double i = 0.0, j = 0.0, k = 1.0;
+    const double c = std::cos(kArcDegree * (-180.0));
+    const double s = std::sin(kArcDegree * (-180.0));
+    const double oneC = 1.0 - c;
+    const double ii = i * i, jj = j * j, kk = k * k;
+    const double ij = i * j, jk = j * k, ki = k * i;
+    const double is = i * s, js = j * s, ks = k * s;
+    const double t[9] = {c + ii * oneC, -ks + ij * oneC, js + ki * oneC,
+                         ks + ij * oneC, c + jj * oneC, -is + jk * oneC,
+                         -js + ki * oneC, is + jk * oneC, c + kk * oneC};
+    for (int n = 0; n < 9; ++n) m[n] = t[n];
+}
+
+// Field at the point (x0, x1, x2) of one piece of an hfConvArc arc: the
+// point is moved into the arc's frame (kArcFrame values), for the part
+// beyond 180 degrees also turned by `turn` (arcOverTurn; null for the first
+// 180 degrees), then the arc of `th` radians is evaluated there. The
+// compiler replaces this by a fused kernel when everything but the point is
+// constant.
+template <class V>
+V convArcPiece(const V& x0, const V& x1, const V& x2, const V* frame, const double* turn, const V& r,
+               const V& s, const V& th) {
+    V px = x0 - frame[0];
+    V py = x1 - frame[1];
+    V pz = x2 - frame[2];
+    V nx, ny, nz;
+    arcRotate(frame + 3, px, py, pz, nx, ny, nz);
+    if (turn) {
+        V ox, oy, oz;
+        arcRotate(turn, nx, ny, nz, ox, oy, oz);
+        nx = ox;
+        ny = oy;
+        nz = oz;
+    }
+    return convArcField(nx, ny, nz, r, s, th);
+}
+
 }  // namespace detail
 
 // hfConvPoint(x, vect, S, T): sum_n 1 / (1 + S_n^2 r_n^2)^2 - T, r_n the
@@ -226,23 +284,12 @@ V hfConvArc(const std::vector<V>& x, const std::vector<V>& center, const std::ve
         !detail::hasItems(theta, n) || !detail::hasItems(axis, 3 * n) ||
         !detail::hasItems(angle, n))
         return V(kSentinel);
-    constexpr double kPi = 3.141592;
-    constexpr double rd = kPi / 180.0;
-    // Rotation by -180 degrees about the z axis, with the reference's
-    // rounding (cos and sin of rd * -180 are not exactly -1 and 0).
-    const double overI = 0.0, overJ = 0.0, overK = 1.0;
-    const double overC = std::cos(rd * (-180.0));
-    const double overS = std::sin(rd * (-180.0));
-    const double overOneC = 1.0 - overC;
-    const double overII = overI * overI, overJJ = overJ * overJ, overKK = overK * overK;
-    const double overIJ = overI * overJ, overJK = overJ * overK, overKI = overK * overI;
-    const double overIS = overI * overS, overJS = overJ * overS, overKS = overK * overS;
+    constexpr double rd = detail::kArcDegree;
+    double overTurn[9];
+    detail::arcOverTurn(overTurn);
 
     V f = V(0.0);
     for (size_t i = 0; i < n; ++i) {
-        V cx = center[3 * i];
-        V cy = center[3 * i + 1];
-        V cz = center[3 * i + 2];
         V r = radius[i];
         angle[i] = angle[i] + detail::kEps;
 
@@ -264,32 +311,26 @@ V hfConvArc(const std::vector<V>& x, const std::vector<V>& center, const std::ve
 
         theta[i] = select(gt(theta[i], V(360.0)), V(360.0), theta[i]);
 
-        // The point in the arc's frame (rotation by -angle about the axis).
-        V px = x[0] - cx;
-        V py = x[1] - cy;
-        V pz = x[2] - cz;
-        V newX = (c + ii * oneC) * px + (-ks + ij * oneC) * py + (js + ki * oneC) * pz;
-        V newY = (ks + ij * oneC) * px + (c + jj * oneC) * py + (-is + jk * oneC) * pz;
-        V newZ = (-js + ki * oneC) * px + (is + jk * oneC) * py + (c + kk * oneC) * pz;
+        // Centre, then the rotation by -angle about the axis into the arc's
+        // frame (row major).
+        const V frame[detail::kArcFrame] = {
+            center[3 * i], center[3 * i + 1], center[3 * i + 2],
+            c + ii * oneC, -ks + ij * oneC, js + ki * oneC,
+            ks + ij * oneC, c + jj * oneC, -is + jk * oneC,
+            -js + ki * oneC, is + jk * oneC, c + kk * oneC};
 
-        // Beyond 180 degrees: the rest of the arc, rotated by -180 degrees.
+        // Beyond 180 degrees: the rest of the arc, turned by -180 degrees.
         V over = gt(theta[i], V(180.0));
         V overTh = (theta[i] - 180.0) * rd;
         theta[i] = select(over, V(180.0), theta[i]);
         // Skipped statically when the span is a constant of at most 180.
         if (!isConstant(over) || constantValue(over) != 0.0) {
-            V overX = (overC + overII * overOneC) * newX + (-overKS + overIJ * overOneC) * newY +
-                      (overJS + overKI * overOneC) * newZ;
-            V overY = (overKS + overIJ * overOneC) * newX + (overC + overJJ * overOneC) * newY +
-                      (-overIS + overJK * overOneC) * newZ;
-            V overZ = (-overJS + overKI * overOneC) * newX + (overIS + overJK * overOneC) * newY +
-                      (overC + overKK * overOneC) * newZ;
-            V overField = detail::convArcField(overX, overY, overZ, r, s[i], overTh);
+            V overField = detail::convArcPiece(x[0], x[1], x[2], frame, overTurn, r, s[i], overTh);
             f = select(over, f + overField, f);
         }
 
         V th = theta[i] * rd;
-        f = f + detail::convArcField(newX, newY, newZ, r, s[i], th);
+        f = f + detail::convArcPiece(x[0], x[1], x[2], frame, nullptr, r, s[i], th);
     }
     return f - t;
 }
