@@ -50,7 +50,11 @@ BoundsEstimate estimateBounds(const Tape& tape, double s, size_t maxBoxes) {
             for (int a = 0; a < 3; ++a) { bb.lo[a] = std::min(bb.lo[a], b.lo[a]); bb.hi[a] = std::max(bb.hi[a], b.hi[a]); }
         est.box = bb;
         double extent = std::max({bb.hi[0] - bb.lo[0], bb.hi[1] - bb.lo[1], bb.hi[2] - bb.lo[2]});
-        if (cell <= extent / 128.0 || boxes.size() > maxBoxes) break;
+        if (cell <= extent / 128.0) break;
+        if (boxes.size() > maxBoxes) {
+            est.budgetSpent = true;
+            break;
+        }
     }
     for (int a = 0; a < 3; ++a)
         if (est.box.lo[a] <= -s || est.box.hi[a] >= s) est.unbounded = true;

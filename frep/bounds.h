@@ -17,7 +17,8 @@ struct Box3 {
 struct BoundsEstimate {
     Box3 box;
     bool empty = false;       // nothing can be inside the search cube
-    bool unbounded = false;   // the solid reaches the search cube's faces
+    bool unbounded = false;   // the kept boxes reach the search cube's faces
+    bool budgetSpent = false; // stopped because a level kept more than maxBoxes
     int levels = 0;           // subdivision levels done
     double cellSize = 0.0;    // size of the last level's cells (precision)
 };

@@ -103,6 +103,10 @@ std::string resolveModelBox(const frep::Model& model, const VolumeRequest& reque
                model.fallbackReason() + "); give the box explicitly";
     frep::BoundsEstimate est = frep::estimateBounds(*model.tape());
     if (est.empty) return "the solid is empty: no point of the search cube is inside it";
+    if (est.unbounded && est.budgetSpent)
+        return "the model box cannot be estimated: interval bounds do not separate the solid from far space "
+               "within the estimate's budget (an unbounded solid, or bounds too loose far away, as with twists "
+               "over huge boxes); give the model box explicitly";
     if (est.unbounded)
         return "the solid is unbounded (it reaches the search cube's faces); give the model box explicitly";
     box = est.box;

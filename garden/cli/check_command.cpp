@@ -45,7 +45,7 @@ int runCheck(const ModelOptions& options) {
         } else {
             std::printf("model box: [%.4g, %.4g] x [%.4g, %.4g] x [%.4g, %.4g]%s (cell %.3g after %d levels)\n",
                         est.box.lo[0], est.box.hi[0], est.box.lo[1], est.box.hi[1], est.box.lo[2], est.box.hi[2],
-                        est.unbounded ? " unbounded: reaches the search cube" : "", est.cellSize, est.levels);
+                        !est.unbounded ? "" : est.budgetSpent ? " not separated from far space within the budget (unbounded, or loose bounds)" : " unbounded: reaches the search cube", est.cellSize, est.levels);
             std::fflush(stdout);
         }
     } else {
