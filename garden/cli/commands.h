@@ -32,11 +32,21 @@ struct VoxelizeOptions {
     double memoryLimitMiB = 0.0;      // 0: 80% of available memory
 };
 
+struct MeshOptions {
+    ModelOptions model;               // a .hf file, or one of our .vdb grids
+    int resolution = 0;               // required for .hf
+    std::vector<double> box;
+    std::string output;
+    bool ascii = false;
+    double mmPerUnit = 1.0;
+};
+
 // "0.5,1,-2" -> {0.5, 1, -2}; false when an item is not a number.
 bool parseNumberList(const std::string& text, std::vector<double>& out);
 
 int runCheck(const ModelOptions& options);
 int runEval(const EvalOptions& options);
 int runVoxelize(const VoxelizeOptions& options);
+int runMesh(const MeshOptions& options);
 
 }  // namespace hg::garden::cli

@@ -1,5 +1,5 @@
 // hypergarden: the one executable. Subcommands check and evaluate HyperFun
-// files and voxelize them; later ones mesh, export and replay, and no
+// files, voxelize them and mesh them to STL; later ones replay, and no
 // subcommand will open the garden.
 #include <CLI/CLI.hpp>
 
@@ -43,13 +43,25 @@ int main(int argc, char** argv) {
     vox->add_option("--threads", voxOpts.threads, "Worker threads (default: all cores)");
     vox->add_option("--memory-limit", voxOpts.memoryLimitMiB, "MiB the grid may use (default: 80% of available)");
 
+    MeshOptions meshOpts;
+    std::string meshA, meshBox;
+    auto* meshCmd = app.add_subcommand("mesh", "Mesh a sculpture (.hf or our .vdb) and write a watertight STL");
+    meshCmd->add_option("file", meshOpts.model.file, "HyperFun file (.hf) or Hypergarden grid (.vdb)")->required();
+    meshCmd->add_option("--body", meshOpts.model.body, "Body to mesh (default: my_model, else the first)");
+    meshCmd->add_option("--a", meshA, "Values of a[1], a[2], ... separated by commas");
+    meshCmd->add_option("--res", meshOpts.resolution, "Voxels along the model box's longest side (for .hf)");
+    meshCmd->add_option("--box", meshBox, "Model box x0,y0,z0,x1,y1,z1 (default: estimated)");
+    meshCmd->add_option("-o,--output", meshOpts.output, "Output .stl file")->required();
+    meshCmd->add_flag("--ascii", meshOpts.ascii, "Write ASCII STL instead of binary");
+    meshCmd->add_option("--mm-per-unit", meshOpts.mmPerUnit, "Millimetres per model unit (default 1)");
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
         return app.exit(e);
     }
     if (!parseNumberList(checkA, checkOpts.parameters) || !parseNumberList(evalA, evalOpts.model.parameters) ||
-        !parseNumberList(voxA, voxOpts.model.parameters)) {
+        !parseNumberList(voxA, voxOpts.model.parameters) || !parseNumberList(meshA, meshOpts.model.parameters)) {
         std::cerr << "error: --a expects numbers separated by commas, for example --a 0.5,1\n";
         return 2;
     }
@@ -61,6 +73,13 @@ int main(int argc, char** argv) {
             return 2;
         }
         return runVoxelize(voxOpts);
+    }
+    if (*meshCmd) {
+        if (!parseNumberList(meshBox, meshOpts.box)) {
+            std::cerr << "error: --box expects six numbers separated by commas: x0,y0,z0,x1,y1,z1\n";
+            return 2;
+        }
+        return runMesh(meshOpts);
     }
     return 2;
 }

@@ -3,14 +3,9 @@
 // non-zero exit status and no output file.
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-
-#include <array>
-#include <cstdio>
-#include <filesystem>
 #include <fstream>
-#include <memory>
 
+#include "../cli_fixture.h"
 #include "test_models.h"
 #include "voxel/vdb_io.h"
 
@@ -18,50 +13,16 @@ namespace hg::voxel {
 namespace {
 
 namespace fs = std::filesystem;
+using ::hg::test::CommandRun;
 
-struct CommandRun {
-    int status = -1;
-    std::string output;  // stdout and stderr together
-};
+CommandRun run(const std::string& args) { return ::hg::test::runHypergarden(args); }
 
-CommandRun run(const std::string& args) {
-#ifndef HG_HYPERGARDEN_EXE
-    (void)args;
-    return {};
-#else
-    CommandRun r;
-    std::string cmd = std::string("'") + HG_HYPERGARDEN_EXE + "' " + args + " 2>&1";
-    FILE* pipe = ::popen(cmd.c_str(), "r");
-    if (!pipe) return r;
-    std::array<char, 4096> buf;
-    std::size_t n;
-    while ((n = std::fread(buf.data(), 1, buf.size(), pipe)) > 0) r.output.append(buf.data(), n);
-    int st = ::pclose(pipe);
-    r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-    return r;
-#endif
-}
-
-class VoxelizeCli : public ::testing::Test {
+class VoxelizeCli : public ::hg::test::CliTest {
 protected:
     void SetUp() override {
-#ifndef HG_HYPERGARDEN_EXE
-        GTEST_SKIP() << "the hypergarden executable is not built (HG_BUILD_APP=OFF)";
-#endif
-        dir = fs::temp_directory_path() / ("hg_cli_" + std::to_string(::getpid()) + "_" +
-                                           ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::create_directories(dir);
-        std::ofstream(dir / "torus.hf") << test::kTorusBlock;
+        CliTest::SetUp();
+        if (!IsSkipped()) std::ofstream(dir / "torus.hf") << test::kTorusBlock;
     }
-    void TearDown() override {
-        if (!dir.empty()) fs::remove_all(dir);
-    }
-    std::string path(const std::string& name) const { return "'" + (dir / name).string() + "'"; }
-    bool exists(const std::string& name) const { return fs::exists(dir / name); }
-    std::size_t entries() const {
-        return static_cast<std::size_t>(std::distance(fs::directory_iterator(dir), fs::directory_iterator()));
-    }
-    fs::path dir;
 };
 
 TEST_F(VoxelizeCli, WritesAGridAndReportsStatistics) {

@@ -1,0 +1,101 @@
+// Export meshing benchmark: poly::meshVolume (one level, welded) against
+// OpenVDB's tools::volumeToMesh on the same grid (isovalue 0, adaptivity 0),
+// at 128^3 and 256^3, for our sculptures and an analytic sphere and torus.
+// Prints a Markdown table; --json FILE writes the rows too.
+//
+//   ./build/release/bench/bench_poly [--json out.json] [--filter NAME] [--repeat N]
+#include <openvdb/tools/VolumeToMesh.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "frep/parser.h"
+#include "polygonizer/export_mesher.h"
+#include "voxel/sampler.h"
+#include "voxel/volume_vdb.h"
+
+namespace {
+
+using namespace hg;
+namespace fs = std::filesystem;
+
+template <class F>
+double bestOf(int repeat, F f) {
+    double best = 1e30;
+    for (int i = 0; i < repeat; ++i) {
+        auto t0 = std::chrono::steady_clock::now();
+        f();
+        best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    }
+    return best;
+}
+
+struct Source {
+    std::string name;
+    std::string text;  // program text, or "" with a file
+    fs::path file;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    std::string jsonPath, filter;
+    int repeat = 3;
+    for (int i = 1; i < argc; ++i) {
+        std::string arg = argv[i];
+        if (arg == "--json" && i + 1 < argc) jsonPath = argv[++i];
+        else if (arg == "--filter" && i + 1 < argc) filter = argv[++i];
+        else if (arg == "--repeat" && i + 1 < argc) repeat = std::max(1, std::atoi(argv[++i]));
+        else {
+            std::fprintf(stderr, "usage: %s [--json FILE] [--filter NAME] [--repeat N]\n", argv[0]);
+            return 2;
+        }
+    }
+    std::vector<Source> sources = {
+        {"sphere", "q(x[3], a[1]) { q = 0.64 - (x[1]^2 + x[2]^2 + x[3]^2); }", {}},
+        {"torus", "q(x[3], a[1]) { array c[3]; c = [0, 0, 0]; q = hfTorusY(x, c, 0.6, 0.2); }", {}},
+    };
+    for (const char* n : {"key_dryad", "key_orant", "key_knot", "path_boulder"})
+        sources.push_back({n, "", fs::path(HG_SOURCE_DIR) / "content" / "hyperfun" / (std::string(n) + ".hf")});
+
+    nlohmann::json rows = nlohmann::json::array();
+    std::printf("| model | res | triangles (ours) | ours (ms) | volumeToMesh (ms) | polygons (OpenVDB) | volumeToMesh / ours |\n");
+    std::printf("|---|---:|---:|---:|---:|---:|---:|\n");
+    for (const Source& s : sources) {
+        if (!filter.empty() && s.name.find(filter) == std::string::npos) continue;
+        frep::ParseResult r = s.text.empty() ? frep::parseFile(s.file.string()) : frep::parseProgram(s.text, s.name);
+        if (!r.ok()) continue;
+        auto program = std::make_shared<const frep::Program>(std::move(*r.program));
+        frep::Model model(program, program->defaultBody());
+        for (int res : {128, 256}) {
+            voxel::VolumeRequest req;
+            req.resolution = res;
+            voxel::VoxelizeResult v = voxel::voxelize(model, req);
+            if (!v.volume) continue;
+            poly::Mesh mesh;
+            double ours = bestOf(repeat, [&] { mesh = poly::meshVolume(*v.volume); });
+            std::vector<openvdb::Vec3s> points;
+            std::vector<openvdb::Vec3I> tris;
+            std::vector<openvdb::Vec4I> quads;
+            double theirs = bestOf(repeat, [&] {
+                points.clear(); tris.clear(); quads.clear();
+                openvdb::tools::volumeToMesh(voxel::vdb(*v.volume), points, tris, quads, 0.0, 0.0, false);
+            });
+            std::size_t polys = tris.size() + 2 * quads.size();
+            std::printf("| %s | %d^3 | %zu | %.1f | %.1f | %zu | %.2fx |\n", s.name.c_str(), res, mesh.triangleCount(),
+                        ours * 1e3, theirs * 1e3, polys, theirs / ours);
+            std::fflush(stdout);
+            rows.push_back({{"model", s.name}, {"res", res}, {"triangles", mesh.triangleCount()}, {"ours_ms", ours * 1e3},
+                            {"volume_to_mesh_ms", theirs * 1e3}, {"openvdb_triangles", polys}});
+        }
+    }
+    if (!jsonPath.empty()) std::ofstream(jsonPath) << rows.dump(2) << "\n";
+    return 0;
+}
