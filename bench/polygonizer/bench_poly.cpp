@@ -16,6 +16,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "../bench_common.h"
+
 #include "frep/parser.h"
 #include "polygonizer/export_mesher.h"
 #include "voxel/sampler.h"
@@ -24,18 +26,8 @@
 namespace {
 
 using namespace hg;
+using bench::bestOf;
 namespace fs = std::filesystem;
-
-template <class F>
-double bestOf(int repeat, F f) {
-    double best = 1e30;
-    for (int i = 0; i < repeat; ++i) {
-        auto t0 = std::chrono::steady_clock::now();
-        f();
-        best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
-    }
-    return best;
-}
 
 struct Source {
     std::string name;
@@ -46,18 +38,11 @@ struct Source {
 }  // namespace
 
 int main(int argc, char** argv) {
-    std::string jsonPath, filter;
-    int repeat = 3;
-    for (int i = 1; i < argc; ++i) {
-        std::string arg = argv[i];
-        if (arg == "--json" && i + 1 < argc) jsonPath = argv[++i];
-        else if (arg == "--filter" && i + 1 < argc) filter = argv[++i];
-        else if (arg == "--repeat" && i + 1 < argc) repeat = std::max(1, std::atoi(argv[++i]));
-        else {
-            std::fprintf(stderr, "usage: %s [--json FILE] [--filter NAME] [--repeat N]\n", argv[0]);
-            return 2;
-        }
-    }
+    bench::BenchArgs args;
+    if (!bench::parseBenchArgs(argc, argv, args)) return 2;
+    const std::string& jsonPath = args.jsonPath;
+    const std::string& filter = args.filter;
+    const int repeat = args.repeat;
     std::vector<Source> sources = {
         {"sphere", "q(x[3], a[1]) { q = 0.64 - (x[1]^2 + x[2]^2 + x[3]^2); }", {}},
         {"torus", "q(x[3], a[1]) { array c[3]; c = [0, 0, 0]; q = hfTorusY(x, c, 0.6, 0.2); }", {}},

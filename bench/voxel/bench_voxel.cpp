@@ -19,6 +19,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "../bench_common.h"
+
 #include "frep/model.h"
 #include "frep/parser.h"
 #include "voxel/dense_field.h"
@@ -27,6 +29,7 @@
 namespace {
 
 using namespace hg;
+using bench::bestOf;
 namespace fs = std::filesystem;
 
 struct Subject {
@@ -79,32 +82,14 @@ void addSubject(std::vector<Subject>& out, const fs::path& file, const std::stri
     out.push_back(std::move(s));
 }
 
-template <class F>
-double bestOf(int repeat, F f) {
-    double best = 1e30;
-    for (int i = 0; i < repeat; ++i) {
-        auto t0 = std::chrono::steady_clock::now();
-        f();
-        best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
-    }
-    return best;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
-    std::string jsonPath, filter;
-    int repeat = 3;
-    for (int i = 1; i < argc; ++i) {
-        std::string arg = argv[i];
-        if (arg == "--json" && i + 1 < argc) jsonPath = argv[++i];
-        else if (arg == "--filter" && i + 1 < argc) filter = argv[++i];
-        else if (arg == "--repeat" && i + 1 < argc) repeat = std::max(1, std::atoi(argv[++i]));
-        else {
-            std::fprintf(stderr, "usage: %s [--json FILE] [--filter NAME] [--repeat N]\n", argv[0]);
-            return 2;
-        }
-    }
+    bench::BenchArgs args;
+    if (!bench::parseBenchArgs(argc, argv, args)) return 2;
+    const std::string& jsonPath = args.jsonPath;
+    const std::string& filter = args.filter;
+    const int repeat = args.repeat;
     std::vector<Subject> subjects;
     fs::path corpus = fs::path(HG_SHARED_DIR) / "hyperfun" / "corpus";
     if (fs::exists(corpus)) {

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "frep/parser.h"
+#include "voxel/vdb_io.h"
 
 namespace hg::garden::cli {
 
@@ -42,6 +43,28 @@ std::optional<LoadedModel> loadModel(const ModelOptions& options) {
     if (body < 0) return std::nullopt;
     lm.model.emplace(lm.program, body, options.parameters);
     return lm;
+}
+
+bool boxOption(const std::vector<double>& numbers, std::optional<frep::Box3>& box) {
+    box.reset();
+    if (numbers.empty()) return true;
+    if (numbers.size() != 6) {
+        std::cerr << "error: --box expects six numbers: x0,y0,z0,x1,y1,z1\n";
+        return false;
+    }
+    frep::Box3 b;
+    for (int a = 0; a < 3; ++a) {
+        b.lo[a] = numbers[static_cast<size_t>(a)];
+        b.hi[a] = numbers[static_cast<size_t>(a + 3)];
+    }
+    box = b;
+    return true;
+}
+
+bool outputWritable(const std::string& path) {
+    std::string why = voxel::checkWritable(path);
+    if (!why.empty()) std::cerr << "error: " << why << "\n";
+    return why.empty();
 }
 
 }  // namespace hg::garden::cli

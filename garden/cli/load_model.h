@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "frep/bounds.h"
 #include "frep/model.h"
 #include "garden/cli/commands.h"
 
@@ -24,5 +25,13 @@ std::optional<LoadedModel> loadModel(const ModelOptions& options);
 // The body named `name` (case-insensitive), or the default body for "".
 // Returns -1 and prints the available bodies when there is no such body.
 int pickBody(const frep::Program& program, const std::string& name, const std::string& file);
+
+// The --box option: none when it was not given; false (after printing why)
+// when it is not six numbers.
+bool boxOption(const std::vector<double>& numbers, std::optional<frep::Box3>& box);
+
+// Whether the output file can be written (checked before any work); prints
+// why not.
+bool outputWritable(const std::string& path);
 
 }  // namespace hg::garden::cli

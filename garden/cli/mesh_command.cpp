@@ -28,14 +28,9 @@ int runMesh(const MeshOptions& o) {
         std::cerr << "error: --mm-per-unit must be positive\n";
         return 2;
     }
-    if (!o.box.empty() && o.box.size() != 6) {
-        std::cerr << "error: --box expects six numbers: x0,y0,z0,x1,y1,z1\n";
-        return 2;
-    }
-    if (std::string why = voxel::checkWritable(o.output); !why.empty()) {
-        std::cerr << "error: " << why << "\n";
-        return 1;
-    }
+    voxel::VolumeRequest req;
+    if (!boxOption(o.box, req.box)) return 2;
+    if (!outputWritable(o.output)) return 1;
     voxel::Volume volume;
     if (endsWith(o.model.file, ".vdb")) {
         if (std::string why = voxel::readVolume(o.model.file, volume); !why.empty()) {
@@ -50,16 +45,7 @@ int runMesh(const MeshOptions& o) {
         }
         auto loaded = loadModel(o.model);
         if (!loaded) return 1;
-        voxel::VolumeRequest req;
         req.resolution = o.resolution;
-        if (o.box.size() == 6) {
-            frep::Box3 b;
-            for (int a = 0; a < 3; ++a) {
-                b.lo[a] = o.box[static_cast<size_t>(a)];
-                b.hi[a] = o.box[static_cast<size_t>(a + 3)];
-            }
-            req.box = b;
-        }
         req.source = {o.model.file, loaded->model->body().spelling, o.model.parameters};
         voxel::VoxelizeResult r = voxel::voxelize(*loaded->model, req);
         if (!r.volume) {

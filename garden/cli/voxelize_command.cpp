@@ -40,14 +40,6 @@ int fail(const std::string& file, const std::string& why) {
 
 voxel::VolumeRequest makeRequest(const VoxelizeOptions& o, const frep::Model& model) {
     voxel::VolumeRequest r;
-    if (o.box.size() == 6) {
-        frep::Box3 b;
-        for (int a = 0; a < 3; ++a) {
-            b.lo[a] = o.box[static_cast<size_t>(a)];
-            b.hi[a] = o.box[static_cast<size_t>(a + 3)];
-        }
-        r.box = b;
-    }
     r.resolution = o.resolution;
     r.band = o.band;
     r.source.file = o.model.file;
@@ -87,14 +79,9 @@ int runVoxelize(const VoxelizeOptions& o) {
         std::cerr << "error: --dense writes an unclamped source cache; --levelset needs the narrow band\n";
         return 2;
     }
-    if (!o.box.empty() && o.box.size() != 6) {
-        std::cerr << "error: --box expects six numbers: x0,y0,z0,x1,y1,z1\n";
-        return 2;
-    }
-    if (std::string why = voxel::checkWritable(o.output); !why.empty()) {
-        std::cerr << "error: " << why << "\n";
-        return 1;
-    }
+    std::optional<frep::Box3> box;
+    if (!boxOption(o.box, box)) return 2;
+    if (!outputWritable(o.output)) return 1;
     std::unique_ptr<tbb::global_control> threads;
     if (o.threads > 0)
         threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
@@ -103,6 +90,7 @@ int runVoxelize(const VoxelizeOptions& o) {
     if (!loaded) return 1;
     const frep::Model& model = *loaded->model;
     voxel::VolumeRequest request = makeRequest(o, model);
+    request.box = box;
     std::printf("body: %s, path: %s\n", request.source.body.c_str(), model.pathDescription().c_str());
     if (o.dense) return runDense(o, model, request);
 
