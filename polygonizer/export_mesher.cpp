@@ -1,6 +1,5 @@
 #include "polygonizer/export_mesher.h"
 
-#include <openvdb/tools/Morphology.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -21,34 +20,50 @@ using openvdb::Coord;
 constexpr int kB = 8;            // block edge: one OpenVDB leaf of cells
 constexpr int kHalo = kB + 3;    // voxels origin-1 .. origin+9 (cells, edges and their gradients)
 
-// Cells (named by their low corner) that can hold surface: every cell with
-// an active voxel among its corners, and cells on the index box's faces with
-// an inside voxel (where a cut solid is capped). Blocks are this mask's
-// leaves.
-openvdb::MaskGrid::Ptr candidateCells(const voxel::Volume& volume) {
+// Blocks (8^3 cells, named by their cells' low corners) that can hold
+// surface: every leaf of the grid and the blocks just below it in x, y and z
+// (whose cells reach into the leaf), and the blocks of inside voxels on the
+// index box's faces (where a cut solid is capped). Sorted, so the mesh does
+// not depend on the thread count.
+std::vector<Coord> candidateBlocks(const voxel::Volume& volume) {
     const openvdb::FloatGrid& grid = voxel::vdb(volume);
-    auto mask = openvdb::MaskGrid::create();
-    mask->tree().topologyUnion(grid.tree());
+    std::vector<Coord> out;
+    auto addWithLowerNeighbours = [&out](const Coord& origin) {
+        for (int n = 0; n < 8; ++n)
+            out.push_back(origin - Coord((n & 1) * kB, ((n >> 1) & 1) * kB, ((n >> 2) & 1) * kB));
+    };
+    for (auto leaf = grid.tree().cbeginLeaf(); leaf; ++leaf) addWithLowerNeighbours(leaf->origin());
+    // The index box's faces, an 8x8 patch at a time: a tile answers for its
+    // whole patch, a leaf's voxels are read from its buffer.
     const voxel::IndexBox& b = volume.frame.indexBox;
-    openvdb::FloatGrid::ConstAccessor acc = grid.getConstAccessor();
-    openvdb::MaskGrid::Accessor m = mask->getAccessor();
     for (int a = 0; a < 3; ++a) {
         int u = (a + 1) % 3, v = (a + 2) % 3;
         for (int side = 0; side < 2; ++side)
-            for (int i = b.lo[u]; i <= b.hi[u]; ++i)
-                for (int j = b.lo[v]; j <= b.hi[v]; ++j) {
+            for (int i0 = b.lo[u] & ~(kB - 1); i0 <= b.hi[u]; i0 += kB)
+                for (int j0 = b.lo[v] & ~(kB - 1); j0 <= b.hi[v]; j0 += kB) {
                     Coord c;
                     c[a] = side ? b.hi[a] : b.lo[a];
-                    c[u] = i;
-                    c[v] = j;
-                    if (acc.getValue(c) > 0.0f) m.setValueOn(c);
+                    c[u] = i0;
+                    c[v] = j0;
+                    const Coord block = c & ~(kB - 1);
+                    const auto* leaf = grid.tree().probeConstLeaf(block);
+                    bool inside = false;
+                    if (!leaf) {
+                        inside = grid.tree().getValue(block) > 0.0f;
+                    } else {
+                        for (int i = std::max(i0, b.lo[u]); i <= std::min(i0 + kB - 1, b.hi[u]) && !inside; ++i)
+                            for (int j = std::max(j0, b.lo[v]); j <= std::min(j0 + kB - 1, b.hi[v]) && !inside; ++j) {
+                                c[u] = i;
+                                c[v] = j;
+                                inside = leaf->getValue(c) > 0.0f;
+                            }
+                    }
+                    if (inside) addWithLowerNeighbours(block);
                 }
     }
-    // A voxel is a corner of the cells whose low corners lie one step below
-    // it; the 26-neighbour dilation is a superset that keeps it simple.
-    openvdb::tools::dilateActiveValues(mask->tree(), 1, openvdb::tools::NN_FACE_EDGE_VERTEX,
-                                       openvdb::tools::IGNORE_TILES);
-    return mask;
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
 }
 
 // The grid's values around one block, copied once from the (up to 27)
@@ -86,7 +101,6 @@ struct Halo {
 };
 
 struct Block {
-    const openvdb::MaskTree::LeafNodeType* cells = nullptr;
     Coord origin;
     std::array<std::int32_t, 3 * kB * kB * kB> edgeVertex{};  // owned crossings: local index or -1
     std::vector<float> positions, normals;
@@ -108,6 +122,7 @@ void placeVertices(Block& b, const Halo& h, const voxel::VolumeFrame& frame) {
     for (int x = 0; x <= kB; ++x)
         for (int y = 0; y <= kB; ++y)
             for (int z = 0; z <= kB; ++z) b.inside[cornerSlot(x, y, z)] = h.at(x, y, z) > 0.0f;
+    if (b.inside.none() || b.inside.all()) return;  // no edge of the block crosses
     const double step = frame.voxelSize;
     auto grad = [&h](int x, int y, int z) {
         return openvdb::Vec3d(0.5 * static_cast<double>(h.at(x + 1, y, z) - h.at(x - 1, y, z)),
@@ -143,26 +158,38 @@ void placeVertices(Block& b, const Halo& h, const voxel::VolumeFrame& frame) {
 // Pass 2: the block's candidate cells, with vertices from the blocks that
 // own their edges (this one or its +x/+y/+z neighbours).
 void triangulate(Block& b, const std::vector<Block>& blocks) {
+    if (b.inside.none() || b.inside.all()) return;
     const auto& table = cellTable();
-    for (auto it = b.cells->cbeginValueOn(); it; ++it) {
-        const Coord cell = it.getCoord() - b.origin;
-        const int cx = cell.x(), cy = cell.y(), cz = cell.z();
-        int mask = 0;
-        for (int c = 0; c < 8; ++c)
-            if (b.inside[cornerSlot(cx + (c & 1), cy + ((c >> 1) & 1), cz + ((c >> 2) & 1))]) mask |= 1 << c;
-        if (mask == 0 || mask == 255) continue;
-        ++b.surfaceCells;
-        const CellCase& cc = table[static_cast<size_t>(mask)];
-        for (int t = 0; t < 3 * cc.triangleCount; ++t) {
-            const int e = cc.edges[static_cast<size_t>(t)];
-            const int c0 = kEdgeCorners[static_cast<size_t>(e)][0];
-            int ex = cx + (c0 & 1), ey = cy + ((c0 >> 1) & 1), ez = cz + ((c0 >> 2) & 1);
-            int nb = (ex >= kB) + 2 * (ey >= kB) + 4 * (ez >= kB);
-            const Block& owner = blocks[static_cast<size_t>(b.neighbour[static_cast<size_t>(nb)])];
-            std::int32_t local = owner.edgeVertex[edgeSlot(kEdgeAxis[static_cast<size_t>(e)], ex % kB, ey % kB, ez % kB)];
-            b.indices.push_back(owner.firstVertex + static_cast<std::uint32_t>(local));
-        }
-    }
+    for (int cx = 0; cx < kB; ++cx)
+        for (int cy = 0; cy < kB; ++cy)
+            for (int cz = 0; cz < kB; ++cz) {
+                int mask = 0;
+                for (int c = 0; c < 8; ++c)
+                    if (b.inside[cornerSlot(cx + (c & 1), cy + ((c >> 1) & 1), cz + ((c >> 2) & 1))]) mask |= 1 << c;
+                if (mask == 0 || mask == 255) continue;
+                ++b.surfaceCells;
+                const CellCase& cc = table[static_cast<size_t>(mask)];
+                for (int t = 0; t < cc.triangleCount; ++t) {
+                    std::uint32_t tri[3];
+                    bool found = true;
+                    for (int k = 0; k < 3; ++k) {
+                        const int e = cc.edges[static_cast<size_t>(3 * t + k)];
+                        const int c0 = kEdgeCorners[static_cast<size_t>(e)][0];
+                        int ex = cx + (c0 & 1), ey = cy + ((c0 >> 1) & 1), ez = cz + ((c0 >> 2) & 1);
+                        int nb = (ex >= kB) + 2 * (ey >= kB) + 4 * (ez >= kB);
+                        std::int32_t owner = b.neighbour[static_cast<size_t>(nb)];
+                        // Only a sign change between two tiles (a program discontinuous
+                        // across its own surface) has no owning block.
+                        if (owner < 0) { found = false; break; }
+                        const Block& o = blocks[static_cast<size_t>(owner)];
+                        std::int32_t local =
+                            o.edgeVertex[edgeSlot(kEdgeAxis[static_cast<size_t>(e)], ex % kB, ey % kB, ez % kB)];
+                        if (local < 0) { found = false; break; }
+                        tri[k] = o.firstVertex + static_cast<std::uint32_t>(local);
+                    }
+                    if (found) b.indices.insert(b.indices.end(), tri, tri + 3);
+                }
+            }
 }
 
 }  // namespace
@@ -170,19 +197,16 @@ void triangulate(Block& b, const std::vector<Block>& blocks) {
 Mesh meshVolume(const voxel::Volume& volume, ExportStats* stats) {
     auto start = std::chrono::steady_clock::now();
     const openvdb::FloatTree& tree = voxel::vdb(volume).tree();
-    openvdb::MaskGrid::Ptr cells = candidateCells(volume);
-
-    std::vector<Block> blocks;
-    blocks.reserve(cells->tree().leafCount());
+    const std::vector<Coord> origins = candidateBlocks(volume);
+    std::vector<Block> blocks(origins.size());
     std::unordered_map<Coord, std::int32_t> indexOf;
-    for (auto leaf = cells->tree().cbeginLeaf(); leaf; ++leaf) {
-        indexOf.emplace(leaf->origin(), static_cast<std::int32_t>(blocks.size()));
-        blocks.emplace_back();
-        blocks.back().cells = leaf.getLeaf();
-        blocks.back().origin = leaf->origin();
+    for (size_t i = 0; i < origins.size(); ++i) {
+        blocks[i].origin = origins[i];
+        indexOf.emplace(origins[i], static_cast<std::int32_t>(i));
     }
-    // Every edge a candidate cell uses starts at a corner next to an active
-    // voxel, whose block is a candidate block too (the mask is dilated).
+    // An edge a cell uses starts in the cell's block or one above it; a
+    // crossing edge has a leaf voxel (or a capped face voxel) at one end, so
+    // its block is a candidate too (leaves and their lower neighbours).
     for (Block& b : blocks)
         for (int n = 0; n < 8; ++n) {
             auto it = indexOf.find(b.origin + Coord((n & 1) * kB, ((n >> 1) & 1) * kB, ((n >> 2) & 1) * kB));
@@ -213,7 +237,7 @@ Mesh meshVolume(const voxel::Volume& volume, ExportStats* stats) {
         mesh.positions.insert(mesh.positions.end(), b.positions.begin(), b.positions.end());
         mesh.normals.insert(mesh.normals.end(), b.normals.begin(), b.normals.end());
         mesh.indices.insert(mesh.indices.end(), b.indices.begin(), b.indices.end());
-        st.cells += b.cells->onVoxelCount();
+        st.cells += kB * kB * kB;
         st.surfaceCells += b.surfaceCells;
     }
     st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
