@@ -1,0 +1,43 @@
+// How a volume's index box is cut into chunks: cubes of 16 or 32 level-0
+// voxels aligned with OpenVDB leaves (multiples of 8), each meshed at its
+// own level of detail. Chunks are numbered x fastest, then y, then z.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+#include "voxel/volume_frame.h"
+
+namespace hg::poly {
+
+struct ChunkKey {
+    int x = 0, y = 0, z = 0;  // chunk index: voxels [key * size, key * size + size)
+};
+
+class ChunkLayout {
+public:
+    // `chunkSize` must be 16 or 32.
+    ChunkLayout(const voxel::VolumeFrame& frame, int chunkSize);
+
+    int chunkSize() const { return size_; }
+    std::size_t count() const { return static_cast<std::size_t>(n_[0]) * static_cast<std::size_t>(n_[1]) * static_cast<std::size_t>(n_[2]); }
+    const std::array<int, 3>& dims() const { return n_; }
+    ChunkKey key(std::size_t index) const;
+    std::size_t index(const ChunkKey& k) const;
+    bool contains(const ChunkKey& k) const;
+    // The six face neighbours that exist, as indices.
+    std::vector<std::size_t> faceNeighbours(std::size_t index) const;
+    // The chunk's voxels (index space) and its extent in the model frame.
+    voxel::IndexBox voxels(std::size_t index) const;
+    void modelBox(std::size_t index, double lo[3], double hi[3]) const;
+    const voxel::VolumeFrame& frame() const { return frame_; }
+
+private:
+    voxel::VolumeFrame frame_;
+    int size_;
+    std::array<int, 3> first_{};  // key of the chunk holding the index box's low corner
+    std::array<int, 3> n_{};
+};
+
+}  // namespace hg::poly
