@@ -1,8 +1,7 @@
 // View-dependent level selection: every chunk meets the pixel error, face
 // neighbours differ by at most one level (for many cameras, near, far and
 // inside), the nearest chunk is at full detail and a far camera sees all
-// coarse, and the
-// detail sphere and the tool force full detail around them.
+// coarse, and the detail sphere and the tool force full detail around them.
 #include <gtest/gtest.h>
 
 #include <cmath>
