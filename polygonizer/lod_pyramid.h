@@ -1,0 +1,34 @@
+// The volume at every level of detail: level L holds the level-0 value at
+// every 2^L-th voxel (point sampling, as Transvoxel expects: a coarse
+// sample is a fine sample, so the surfaces of neighbouring levels meet at
+// the shared samples). Kept up to date locally: after the grid changes in a
+// box, update(box) recomputes exactly the coarse voxels that sample it.
+#pragma once
+
+#include <memory>
+
+#include "voxel/volume.h"
+
+namespace hg::poly {
+
+class LodPyramid {
+public:
+    // `volume` must outlive the pyramid; level 0 is its grid, not a copy.
+    LodPyramid(const voxel::Volume& volume, int levels);
+    ~LodPyramid();
+    LodPyramid(const LodPyramid&) = delete;
+    LodPyramid& operator=(const LodPyramid&) = delete;
+
+    int levels() const;
+    // Level-L voxel (i, j, k): the level-0 value at (i, j, k) * 2^L.
+    float value(int level, int i, int j, int k) const;
+    // The level-L voxels that sample the level-0 `box`, recomputed.
+    // Returns how many voxels were written (over all coarse levels).
+    std::size_t update(const voxel::IndexBox& box);
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace hg::poly

@@ -1,0 +1,68 @@
+// The LOD pyramid: every coarse voxel is the level-0 value at its scaled
+// position (tiles included), and a local update after a region resample
+// gives the same levels as building the pyramid again, touching only the
+// voxels that sample the region.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "frep/parser.h"
+#include "polygonizer/lod_pyramid.h"
+#include "voxel/sampler.h"
+
+namespace hg::poly {
+namespace {
+
+frep::Model sphere(double r2) {
+    frep::ParseResult p = frep::parseProgram("q(x[3], a[1]) { q = a[1] - (x[1]^2 + x[2]^2 + x[3]^2); }", "s.hf");
+    auto program = std::make_shared<const frep::Program>(std::move(*p.program));
+    return frep::Model(program, 0, {r2});
+}
+
+voxel::Volume sample(const frep::Model& m) {
+    voxel::VolumeRequest req;
+    req.resolution = 96;
+    frep::Box3 b;
+    for (int a = 0; a < 3; ++a) { b.lo[a] = -1; b.hi[a] = 1; }
+    req.box = b;
+    voxel::VoxelizeResult r = voxel::voxelize(m, req);
+    EXPECT_TRUE(r.volume) << r.error;
+    return std::move(*r.volume);
+}
+
+void expectSampled(const voxel::Volume& v, const LodPyramid& p, const voxel::IndexBox& box) {
+    for (int l = 1; l < p.levels(); ++l)
+        for (int i = box.lo[0] >> l; i <= box.hi[0] >> l; ++i)
+            for (int j = box.lo[1] >> l; j <= box.hi[1] >> l; ++j)
+                for (int k = box.lo[2] >> l; k <= box.hi[2] >> l; ++k)
+                    ASSERT_EQ(p.value(l, i, j, k), v.value(i << l, j << l, k << l)) << "level " << l << " at " << i << "," << j << "," << k;
+}
+
+TEST(LodPyramid, CoarseVoxelsAreFineSamples) {
+    frep::Model m = sphere(0.5);
+    voxel::Volume v = sample(m);
+    LodPyramid p(v, 4);
+    EXPECT_EQ(p.levels(), 4);
+    expectSampled(v, p, v.frame.indexBox);
+}
+
+TEST(LodPyramid, LocalUpdateEqualsARebuild) {
+    frep::Model small = sphere(0.3), large = sphere(0.5);
+    voxel::Volume v = sample(small);
+    LodPyramid p(v, 4);
+    const voxel::IndexBox region = voxel::IndexBox::fromCorners(10, 20, 30, 60, 50, 77);
+    voxel::resampleRegion(v, large, region);
+    std::size_t written = p.update(region);
+    EXPECT_LE(written, region.volume() / 8 + region.volume() / 64 + region.volume() / 512 + 3000);
+    LodPyramid rebuilt(v, 4);
+    const voxel::IndexBox& all = v.frame.indexBox;
+    for (int l = 1; l < 4; ++l)
+        for (int i = all.lo[0] >> l; i <= all.hi[0] >> l; ++i)
+            for (int j = all.lo[1] >> l; j <= all.hi[1] >> l; ++j)
+                for (int k = all.lo[2] >> l; k <= all.hi[2] >> l; ++k)
+                    ASSERT_EQ(p.value(l, i, j, k), rebuilt.value(l, i, j, k)) << "level " << l;
+    EXPECT_THROW(LodPyramid(v, 0), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace hg::poly
