@@ -35,7 +35,8 @@ struct LodPyramid::Impl {
         for (int i = ceilShift(box.lo[0], level); i <= floorShift(box.hi[0], level); ++i)
             for (int j = ceilShift(box.lo[1], level); j <= floorShift(box.hi[1], level); ++j)
                 for (int k = ceilShift(box.lo[2], level); k <= floorShift(box.hi[2], level); ++k) {
-                    const Coord fine(i << level, j << level, k << level);
+                    const int s = 1 << level;  // multiply: shifting a negative index left is undefined
+                    const Coord fine(i * s, j * s, k * s);
                     const float v = in.getValue(fine);
                     if (std::fabs(v) < band) out.setValueOn(Coord(i, j, k), v);
                     else out.setValueOff(Coord(i, j, k), v);

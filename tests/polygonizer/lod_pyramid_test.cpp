@@ -35,7 +35,7 @@ void expectSampled(const voxel::Volume& v, const LodPyramid& p, const voxel::Ind
         for (int i = box.lo[0] >> l; i <= box.hi[0] >> l; ++i)
             for (int j = box.lo[1] >> l; j <= box.hi[1] >> l; ++j)
                 for (int k = box.lo[2] >> l; k <= box.hi[2] >> l; ++k)
-                    ASSERT_EQ(p.value(l, i, j, k), v.value(i << l, j << l, k << l)) << "level " << l << " at " << i << "," << j << "," << k;
+                    ASSERT_EQ(p.value(l, i, j, k), v.value(i * (1 << l), j * (1 << l), k * (1 << l))) << "level " << l << " at " << i << "," << j << "," << k;
 }
 
 TEST(LodPyramid, CoarseVoxelsAreFineSamples) {
