@@ -161,24 +161,10 @@ struct ArcLoop {
     }
 };
 
-void arcLoopBase(const ArcLoop& k, const float* px, const float* py, const float* pz, float* out, size_t n) {
-    k.run(px, py, pz, out, n);
-}
-#if HG_SIMD_AVX2
-HG_TARGET_AVX2 void arcLoopAvx2(const ArcLoop& k, const float* px, const float* py, const float* pz, float* out,
-                                size_t n) {
-    k.run(px, py, pz, out, n);
-}
-#endif
-
 }  // namespace
 
 void arcPieceBatch(const float* px, const float* py, const float* pz, float* out, size_t n, const double* q) {
-    const ArcLoop k(q);
-#if HG_SIMD_AVX2
-    if (simd::avx2()) return arcLoopAvx2(k, px, py, pz, out, n);
-#endif
-    arcLoopBase(k, px, py, pz, out, n);
+    simd::run(ArcLoop(q), px, py, pz, out, n);
 }
 
 // Bounds over a box, in the piece's frame:

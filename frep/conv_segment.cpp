@@ -87,24 +87,10 @@ struct SegmentLoop {
     }
 };
 
-void segmentLoopBase(const SegmentLoop& k, const float* px, const float* py, const float* pz, float* out, size_t n) {
-    k.run(px, py, pz, out, n);
-}
-#if HG_SIMD_AVX2
-HG_TARGET_AVX2 void segmentLoopAvx2(const SegmentLoop& k, const float* px, const float* py, const float* pz,
-                                    float* out, size_t n) {
-    k.run(px, py, pz, out, n);
-}
-#endif
-
 }  // namespace
 
 void convSegmentBatch(const float* px, const float* py, const float* pz, float* out, size_t n, const double* q) {
-    const SegmentLoop k(q);
-#if HG_SIMD_AVX2
-    if (simd::avx2()) return segmentLoopAvx2(k, px, py, pz, out, n);
-#endif
-    segmentLoopBase(k, px, py, pz, out, n);
+    simd::run(SegmentLoop(q), px, py, pz, out, n);
 }
 
 Interval convSegmentBounds(const Interval& px, const Interval& py, const Interval& pz, const double* q) {

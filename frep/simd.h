@@ -5,6 +5,8 @@
 // Elsewhere only the baseline exists.
 #pragma once
 
+#include <cstddef>
+
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #define HG_SIMD_AVX2 1
 #define HG_TARGET_AVX2 __attribute__((target("avx2")))
@@ -36,6 +38,29 @@ inline bool avx2() {
 #else
     return false;
 #endif
+}
+
+// One instantiation per build of a fused kernel's loop: `Loop` has an
+// HG_ALWAYS_INLINE run(px, py, pz, out, n), compiled into each.
+template <class Loop>
+void runBaseline(const Loop& k, const float* px, const float* py, const float* pz, float* out, std::size_t n) {
+    k.run(px, py, pz, out, n);
+}
+#if HG_SIMD_AVX2
+template <class Loop>
+HG_TARGET_AVX2 void runAvx2(const Loop& k, const float* px, const float* py, const float* pz, float* out,
+                            std::size_t n) {
+    k.run(px, py, pz, out, n);
+}
+#endif
+
+// Runs the loop in the AVX2 build where it runs, else in the baseline.
+template <class Loop>
+void run(const Loop& k, const float* px, const float* py, const float* pz, float* out, std::size_t n) {
+#if HG_SIMD_AVX2
+    if (avx2()) return runAvx2(k, px, py, pz, out, n);
+#endif
+    runBaseline(k, px, py, pz, out, n);
 }
 
 }  // namespace hg::frep::simd

@@ -7,23 +7,14 @@ namespace hg::poly {
 
 namespace {
 
-std::array<std::array<int, 2>, 12> makeEdges(std::array<int, 12>& axis) {
+// Edges along x, then y, then z; each from its corner with the bit clear.
+std::array<std::array<int, 2>, 12> makeEdges() {
     std::array<std::array<int, 2>, 12> edges{};
-    int e = 0;
+    std::size_t e = 0;
     for (int a = 0; a < 3; ++a)
         for (int c = 0; c < 8; ++c)
-            if (!(c & (1 << a))) {
-                edges[static_cast<std::size_t>(e)] = {c, c | (1 << a)};
-                axis[static_cast<std::size_t>(e)] = a;
-                ++e;
-            }
+            if (!(c & (1 << a))) edges[e++] = {c, c | (1 << a)};
     return edges;
-}
-
-std::array<int, 12> edgeAxes() {
-    std::array<int, 12> axis{};
-    makeEdges(axis);
-    return axis;
 }
 
 int edgeBetween(int c0, int c1) {
@@ -90,10 +81,14 @@ CellCase triangulate(int mask) {
 
 }  // namespace
 
-const std::array<int, 12> kEdgeAxis = edgeAxes();
-const std::array<std::array<int, 2>, 12> kEdgeCorners = [] {
+const std::array<std::array<int, 2>, 12> kEdgeCorners = makeEdges();
+const std::array<int, 12> kEdgeAxis = [] {
     std::array<int, 12> axis{};
-    return makeEdges(axis);
+    for (std::size_t e = 0; e < 12; ++e) {
+        const int bit = kEdgeCorners[e][0] ^ kEdgeCorners[e][1];
+        axis[e] = bit == 1 ? 0 : bit == 2 ? 1 : 2;
+    }
+    return axis;
 }();
 
 const std::array<CellCase, 256>& cellTable() {

@@ -1,7 +1,5 @@
 #include "polygonizer/stl_io.h"
 
-#include <unistd.h>
-
 #include <cctype>
 #include <cerrno>
 #include <charconv>
@@ -12,6 +10,8 @@
 #include <limits>
 #include <string_view>
 #include <vector>
+
+#include "voxel/atomic_write.h"
 
 namespace hg::poly {
 
@@ -362,12 +362,9 @@ std::string writeStl(const Mesh& mesh, const std::string& path, bool ascii, doub
         if (!std::isfinite(scaled[i])) return cannot + "vertex " + std::to_string(i / 3) + " is not finite";
     }
 
-    const std::string tmp = path + ".partial-" + std::to_string(::getpid());
-    std::string why = writeContents(mesh, scaled, tmp, path, ascii, sanitizeName(solidName));
-    if (why.empty() && std::rename(tmp.c_str(), path.c_str()) != 0)
-        why = cannot + "cannot move the finished file into place: " + std::strerror(errno);
-    if (!why.empty()) std::remove(tmp.c_str());
-    return why;
+    return voxel::writeAtomically(path, [&](const std::string& tmp) {
+        return writeContents(mesh, scaled, tmp, path, ascii, sanitizeName(solidName));
+    });
 }
 
 StlReadResult readStl(const std::string& path) {

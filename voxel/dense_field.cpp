@@ -69,9 +69,7 @@ Volume volumeFromDense(DenseField&& field, const VolumeFrame& frame, double scal
     // Unclamped: the background only matters outside the box, where the
     // field was not sampled; the clamped outside value is the honest guess.
     openvdb::FloatGrid::Ptr grid = openvdb::FloatGrid::create(-frame.band);
-    auto xform = openvdb::math::Transform::createLinearTransform(frame.voxelSize);
-    xform->postTranslate(openvdb::Vec3d(frame.modelBox.lo[0], frame.modelBox.lo[1], frame.modelBox.lo[2]));
-    grid->setTransform(xform);
+    grid->setTransform(frameTransform(frame));
     grid->setName(source.body);
     if (!field.box.empty()) {
         openvdb::tools::Dense<float, openvdb::tools::LayoutXYZ> dense(toCoordBBox(field.box), field.values.data());

@@ -84,12 +84,6 @@ std::unique_ptr<FloatLeaf> makeLeaf(const LeafSamples& s, float background, floa
     return leaf;
 }
 
-openvdb::math::Transform::Ptr frameTransform(const VolumeFrame& frame) {
-    auto xform = openvdb::math::Transform::createLinearTransform(frame.voxelSize);
-    xform->postTranslate(openvdb::Vec3d(frame.modelBox.lo[0], frame.modelBox.lo[1], frame.modelBox.lo[2]));
-    return xform;
-}
-
 }  // namespace
 
 std::string resolveModelBox(const frep::Model& model, const VolumeRequest& request, frep::Box3& box, bool& estimated) {
@@ -171,12 +165,12 @@ VoxelizeResult voxelize(const frep::Model& model, const VolumeRequest& request, 
     grid->setTransform(frameTransform(frame));
     grid->setName(request.source.body);
     openvdb::FloatTree& tree = grid->tree();
+    // Top boxes stop at task boxes, so only task outputs hold leaves, and
+    // those were built on the workers.
     const std::size_t tops = walk.outputs.size() - built.size();
     for (std::size_t i = 0; i < walk.outputs.size(); ++i) {
-        const WalkOutput& out = walk.outputs[i];
-        for (const BoxFill& f : out.fills)
+        for (const BoxFill& f : walk.outputs[i].fills)
             if (f.value != -band) tree.fill(toCoordBBox(f.box), f.value, false);
-        for (const LeafSamples& s : out.leaves) tree.addLeaf(makeLeaf(s, -band, band).release());
         if (i >= tops)
             for (auto& leaf : built[i - tops]) tree.addLeaf(leaf.release());
     }

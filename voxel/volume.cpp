@@ -11,6 +11,12 @@ void ensureOpenVdbInitialized() {
     std::call_once(once, [] { openvdb::initialize(); });
 }
 
+openvdb::math::Transform::Ptr frameTransform(const VolumeFrame& frame) {
+    auto xform = openvdb::math::Transform::createLinearTransform(frame.voxelSize);
+    xform->postTranslate(openvdb::Vec3d(frame.modelBox.lo[0], frame.modelBox.lo[1], frame.modelBox.lo[2]));
+    return xform;
+}
+
 Volume::Volume() : grid_(std::make_unique<VolumeGrid>()) {
     ensureOpenVdbInitialized();
     grid_->grid = openvdb::FloatGrid::create(-frame.band);

@@ -25,6 +25,10 @@ inline IndexBox toIndexBox(const openvdb::CoordBBox& b) {
     return IndexBox::fromCorners(b.min().x(), b.min().y(), b.min().z(), b.max().x(), b.max().y(), b.max().z());
 }
 
+// The frame as an OpenVDB transform: voxel size, index (0,0,0) at the model
+// box's low corner.
+openvdb::math::Transform::Ptr frameTransform(const VolumeFrame& frame);
+
 // Makes sure openvdb::initialize() has run (idempotent, thread-safe).
 void ensureOpenVdbInitialized();
 
