@@ -91,6 +91,22 @@ float LodPyramid::value(int level, int i, int j, int k) const {
     return impl_->grid(level).tree().getValue(Coord(i, j, k));
 }
 
+void LodPyramid::gather(int level, const voxel::IndexBox& box, float* out) const {
+    const openvdb::FloatGrid& grid = impl_->grid(level);
+    openvdb::FloatGrid::ConstAccessor acc = grid.getConstAccessor();
+    const voxel::IndexBox& inside = impl_->volume->frame.indexBox;
+    const float background = grid.background();
+    const int s = 1 << level;
+    for (int k = box.lo[2]; k <= box.hi[2]; ++k) {
+        const bool kIn = k * s >= inside.lo[2] && k * s <= inside.hi[2];
+        for (int j = box.lo[1]; j <= box.hi[1]; ++j) {
+            const bool jkIn = kIn && j * s >= inside.lo[1] && j * s <= inside.hi[1];
+            for (int i = box.lo[0]; i <= box.hi[0]; ++i)
+                *out++ = jkIn && i * s >= inside.lo[0] && i * s <= inside.hi[0] ? acc.getValue(Coord(i, j, k)) : background;
+        }
+    }
+}
+
 std::size_t LodPyramid::update(const voxel::IndexBox& box) {
     std::size_t n = 0;
     for (int l = 1; l < levels(); ++l) n += impl_->resample(l, box);

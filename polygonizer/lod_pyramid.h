@@ -22,6 +22,11 @@ public:
     int levels() const;
     // Level-L voxel (i, j, k): the level-0 value at (i, j, k) * 2^L.
     float value(int level, int i, int j, int k) const;
+    // The level-L voxels of `box` (level-L indices) into `out`, x fastest,
+    // then y, then z. Voxels whose level-0 position lies outside the frame's
+    // index box read the background (outside), as the export mesher sees
+    // them, so a solid cut by the box is capped the same way.
+    void gather(int level, const voxel::IndexBox& box, float* out) const;
     // The level-L voxels that sample the level-0 `box`, recomputed.
     // Returns how many voxels were written (over all coarse levels).
     std::size_t update(const voxel::IndexBox& box);

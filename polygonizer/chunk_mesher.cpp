@@ -1,0 +1,300 @@
+#include "polygonizer/chunk_mesher.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <unordered_map>
+
+#include "polygonizer/cell_table.h"
+#include "polygonizer/transition_table.h"
+
+namespace hg::poly {
+
+std::vector<ChunkLod> chunkLods(const ChunkLayout& layout, const std::vector<int>& levels) {
+    if (levels.size() != layout.count()) throw std::invalid_argument("one level per chunk expected");
+    std::vector<ChunkLod> out(levels.size());
+    for (std::size_t i = 0; i < levels.size(); ++i) {
+        out[i].level = levels[i];
+        const ChunkKey k = layout.key(i);
+        for (int f = 0; f < kChunkFaces; ++f) {
+            int d[3] = {0, 0, 0};
+            d[f / 2] = f % 2 ? 1 : -1;
+            const ChunkKey n{k.x + d[0], k.y + d[1], k.z + d[2]};
+            if (!layout.contains(n)) continue;
+            const int ln = levels[layout.index(n)];
+            if (std::abs(ln - levels[i]) > 1)
+                throw std::invalid_argument("chunks " + std::to_string(i) + " and " + std::to_string(layout.index(n)) +
+                                            " are face neighbours " + std::to_string(std::abs(ln - levels[i])) +
+                                            " levels apart (at most 1)");
+            if (ln == levels[i] - 1) out[i].transitionFaces = static_cast<std::uint8_t>(out[i].transitionFaces | (1 << f));
+        }
+    }
+    return out;
+}
+
+namespace {
+
+using Vec3 = std::array<double, 3>;
+
+// Samples of one level in a box (level indices), x fastest.
+struct SampleBlock {
+    voxel::IndexBox box;
+    std::vector<float> v;
+
+    void fill(const LodPyramid& pyramid, int level, const voxel::IndexBox& b) {
+        box = b;
+        v.resize(static_cast<std::size_t>(b.volume()));
+        pyramid.gather(level, b, v.data());
+    }
+    float at(const int p[3]) const {
+        return v[static_cast<std::size_t>((p[2] - box.lo[2]) * box.extent(1) + (p[1] - box.lo[1])) *
+                     static_cast<std::size_t>(box.extent(0)) +
+                 static_cast<std::size_t>(p[0] - box.lo[0])];
+    }
+    // Central differences, in this level's sample units.
+    Vec3 gradient(const int p[3]) const {
+        Vec3 g{};
+        for (int a = 0; a < 3; ++a) {
+            int lo[3] = {p[0], p[1], p[2]}, hi[3] = {p[0], p[1], p[2]};
+            --lo[a];
+            ++hi[a];
+            g[static_cast<std::size_t>(a)] = 0.5 * (static_cast<double>(at(hi)) - static_cast<double>(at(lo)));
+        }
+        return g;
+    }
+};
+
+class ChunkMesher {
+public:
+    ChunkMesher(const LodPyramid& pyramid, const ChunkLayout& layout, std::size_t chunk, const ChunkLod& lod)
+        : frame_(layout.frame()), lod_(lod) {
+        if (lod.level < 0 || lod.level >= pyramid.levels())
+            throw std::invalid_argument("chunk level " + std::to_string(lod.level) + " is not in the pyramid");
+        if (lod.level == 0 && lod.transitionFaces)
+            throw std::invalid_argument("a level-0 chunk has no finer neighbour to stitch to");
+        const ChunkKey k = layout.key(chunk);
+        const int key[3] = {k.x, k.y, k.z};
+        cell_ = 1 << lod.level;
+        n_ = layout.chunkSize() >> lod.level;
+        for (int a = 0; a < 3; ++a) origin_[a] = key[a] * layout.chunkSize();
+        voxel::IndexBox coarse;
+        for (int a = 0; a < 3; ++a) {
+            coarse.lo[a] = (origin_[a] >> lod.level) - 1;
+            coarse.hi[a] = (origin_[a] >> lod.level) + n_ + 1;
+        }
+        coarse_.fill(pyramid, lod.level, coarse);
+        regularVertex_.assign(3 * static_cast<std::size_t>(n_ + 1) * static_cast<std::size_t>(n_ + 1) *
+                                  static_cast<std::size_t>(n_ + 1), -1);
+        pyramid_ = &pyramid;
+    }
+
+    Mesh run(ChunkMeshStats& stats) {
+        regularCells(stats);
+        for (int f = 0; f < kChunkFaces; ++f)
+            if (lod_.transitionFaces & (1 << f)) transitionFace(f, stats);
+        return std::move(mesh_);
+    }
+
+private:
+    // --- coarse (the chunk's level) samples, chunk-local indices 0..n -----
+    float coarseValue(const int p[3]) const {
+        const int q[3] = {p[0] + coarse_.box.lo[0] + 1, p[1] + coarse_.box.lo[1] + 1, p[2] + coarse_.box.lo[2] + 1};
+        return coarse_.at(q);
+    }
+    // Level-0 index position, shrunk away from transition faces unless the
+    // sample also lies on a face without transitions (pinned).
+    Vec3 coarsePosition(const int p[3]) const {
+        Vec3 pos{};
+        std::uint8_t on = 0;
+        for (int a = 0; a < 3; ++a) {
+            pos[static_cast<std::size_t>(a)] = static_cast<double>(origin_[a] + p[a] * cell_);
+            if (p[a] == 0) on = static_cast<std::uint8_t>(on | (1 << (2 * a)));
+            if (p[a] == n_) on = static_cast<std::uint8_t>(on | (1 << (2 * a + 1)));
+        }
+        if (on == 0 || (on & ~lod_.transitionFaces)) return pos;
+        const double w = 0.5 * cell_;
+        for (int f = 0; f < kChunkFaces; ++f)
+            if (on & (1 << f)) pos[static_cast<std::size_t>(f / 2)] += f % 2 ? -w : w;
+        return pos;
+    }
+    Vec3 coarseGradient(const int p[3]) const {
+        const int q[3] = {p[0] + coarse_.box.lo[0] + 1, p[1] + coarse_.box.lo[1] + 1, p[2] + coarse_.box.lo[2] + 1};
+        return coarse_.gradient(q);
+    }
+
+    // The crossing on the coarse edge from sample p along `axis`.
+    std::uint32_t coarseVertex(const int p[3], int axis) {
+        const std::size_t m = static_cast<std::size_t>(n_ + 1);
+        const std::size_t slot = ((static_cast<std::size_t>(axis) * m + static_cast<std::size_t>(p[2])) * m +
+                                  static_cast<std::size_t>(p[1])) * m + static_cast<std::size_t>(p[0]);
+        if (regularVertex_[slot] >= 0) return static_cast<std::uint32_t>(regularVertex_[slot]);
+        int q[3] = {p[0], p[1], p[2]};
+        ++q[axis];
+        const std::uint32_t id = addVertex(coarsePosition(p), coarsePosition(q), coarseValue(p), coarseValue(q),
+                                           coarseGradient(p), coarseGradient(q));
+        regularVertex_[slot] = static_cast<std::int32_t>(id);
+        return id;
+    }
+
+    // --- fine (level - 1) samples on transition faces, chunk-local 0..2n --
+    float fineValue(const SampleBlock& b, const int p[3]) const {
+        const int q[3] = {p[0] + (origin_[0] >> (lod_.level - 1)), p[1] + (origin_[1] >> (lod_.level - 1)),
+                          p[2] + (origin_[2] >> (lod_.level - 1))};
+        return b.at(q);
+    }
+    Vec3 fineGradient(const SampleBlock& b, const int p[3]) const {
+        const int q[3] = {p[0] + (origin_[0] >> (lod_.level - 1)), p[1] + (origin_[1] >> (lod_.level - 1)),
+                          p[2] + (origin_[2] >> (lod_.level - 1))};
+        return b.gradient(q);
+    }
+    std::uint32_t fineVertex(const SampleBlock& b, const int p[3], int axis) {
+        const std::uint32_t m = static_cast<std::uint32_t>(2 * n_ + 1);
+        const std::uint32_t key = ((static_cast<std::uint32_t>(axis) * m + static_cast<std::uint32_t>(p[2])) * m +
+                                   static_cast<std::uint32_t>(p[1])) * m + static_cast<std::uint32_t>(p[0]);
+        auto it = fineVertex_.find(key);
+        if (it != fineVertex_.end()) return it->second;
+        int q[3] = {p[0], p[1], p[2]};
+        ++q[axis];
+        const int half = cell_ / 2;
+        Vec3 pp{}, pq{};
+        for (int a = 0; a < 3; ++a) {
+            pp[static_cast<std::size_t>(a)] = static_cast<double>(origin_[a] + p[a] * half);
+            pq[static_cast<std::size_t>(a)] = static_cast<double>(origin_[a] + q[a] * half);
+        }
+        const std::uint32_t id =
+            addVertex(pp, pq, fineValue(b, p), fineValue(b, q), fineGradient(b, p), fineGradient(b, q));
+        fineVertex_.emplace(key, id);
+        return id;
+    }
+
+    // The crossing between p (the lower end) and q, in model units. Clamped
+    // away from the ends like the export mesher's, for the same reason
+    // (zero-area triangles at grid points).
+    std::uint32_t addVertex(const Vec3& p, const Vec3& q, float vp, float vq, const Vec3& gp, const Vec3& gq) {
+        const double d0 = vp, d1 = vq;
+        const double t = std::clamp(d0 / (d0 - d1), 1e-3, 1.0 - 1e-3);
+        Vec3 g{};
+        double len2 = 0.0;
+        for (std::size_t a = 0; a < 3; ++a) {
+            const double x = p[a] + t * (q[a] - p[a]);
+            mesh_.positions.push_back(static_cast<float>(frame_.modelBox.lo[a] + x * frame_.voxelSize));
+            g[a] = gp[a] * (1.0 - t) + gq[a] * t;
+            len2 += g[a] * g[a];
+        }
+        const double inv = len2 > 0.0 ? -1.0 / std::sqrt(len2) : 0.0;  // f grows inwards
+        for (std::size_t a = 0; a < 3; ++a) mesh_.normals.push_back(static_cast<float>(g[a] * inv));
+        return static_cast<std::uint32_t>(mesh_.positions.size() / 3 - 1);
+    }
+
+    void regularCells(ChunkMeshStats& stats) {
+        const auto& table = cellTable();
+        stats.regularCells += static_cast<std::size_t>(n_) * static_cast<std::size_t>(n_) * static_cast<std::size_t>(n_);
+        for (int z = 0; z < n_; ++z)
+            for (int y = 0; y < n_; ++y)
+                for (int x = 0; x < n_; ++x) {
+                    int mask = 0;
+                    for (int c = 0; c < 8; ++c) {
+                        const int p[3] = {x + (c & 1), y + ((c >> 1) & 1), z + ((c >> 2) & 1)};
+                        if (coarseValue(p) > 0.0f) mask |= 1 << c;
+                    }
+                    if (mask == 0 || mask == 255) continue;
+                    ++stats.surfaceCells;
+                    const CellCase& cc = table[static_cast<std::size_t>(mask)];
+                    for (int i = 0; i < 3 * cc.triangleCount; ++i) {
+                        const int e = cc.edges[static_cast<std::size_t>(i)];
+                        const int c0 = kEdgeCorners[static_cast<std::size_t>(e)][0];
+                        const int p[3] = {x + (c0 & 1), y + ((c0 >> 1) & 1), z + ((c0 >> 2) & 1)};
+                        mesh_.indices.push_back(coarseVertex(p, kEdgeAxis[static_cast<std::size_t>(e)]));
+                    }
+                }
+    }
+
+    // Face f: axis a = f / 2, on the low (f even) or high side. Cell-local
+    // (u, v, w) maps to axes (a + 1, a + 2, a) with w pointing into the
+    // chunk: right-handed on the low side; on the high side w flips, and so
+    // does the winding.
+    void transitionFace(int f, ChunkMeshStats& stats) {
+        const int a = f / 2, u = (a + 1) % 3, v = (a + 2) % 3;
+        const bool high = f % 2 != 0;
+        const int finePlane = high ? 2 * n_ : 0;
+        SampleBlock fine;
+        voxel::IndexBox box;
+        const int fl = lod_.level - 1;
+        for (int b = 0; b < 3; ++b) {
+            const int base = origin_[b] >> fl;
+            box.lo[b] = base - 1;
+            box.hi[b] = base + 2 * n_ + 1;
+        }
+        box.lo[a] = (origin_[a] >> fl) + finePlane - 1;
+        box.hi[a] = (origin_[a] >> fl) + finePlane + 1;
+        fine.fill(*pyramid_, fl, box);
+
+        const TransitionGeometry& g = transitionGeometry();
+        const auto& table = transitionTable();
+        static constexpr int kBackOf[4] = {0, 2, 6, 8};
+        stats.transitionCells += static_cast<std::size_t>(n_) * static_cast<std::size_t>(n_);
+        for (int cv = 0; cv < n_; ++cv)
+            for (int cu = 0; cu < n_; ++cu) {
+                int fineAt[9][3];
+                int mask = 0;
+                for (int t = 0; t < 9; ++t) {
+                    fineAt[t][a] = finePlane;
+                    fineAt[t][u] = 2 * cu + t % 3;
+                    fineAt[t][v] = 2 * cv + t / 3;
+                    if (fineValue(fine, fineAt[t]) > 0.0f) mask |= 1 << t;
+                }
+                if (mask == 0 || mask == 511) continue;
+                ++stats.surfaceCells;
+                const TransitionCase& tc = table[static_cast<std::size_t>(mask)];
+                for (int tri = 0; tri < tc.triangleCount; ++tri) {
+                    std::uint32_t idx[3];
+                    for (int k = 0; k < 3; ++k) {
+                        const auto& edge = g.edges[tc.edges[static_cast<std::size_t>(3 * tri + k)]];
+                        if (edge[0] < 9) {  // both on the fine side (fine-back edges never cross)
+                            const int* p = fineAt[edge[0]];
+                            const int* q = fineAt[edge[1]];
+                            int axis = p[u] != q[u] ? u : v;
+                            idx[k] = fineVertex(fine, p[axis] < q[axis] ? p : q, axis);
+                        } else {  // both on the back: a coarse edge of the shrunk cells
+                            const int t0 = kBackOf[edge[0] - 9], t1 = kBackOf[edge[1] - 9];
+                            int p[3], q[3];
+                            p[a] = q[a] = high ? n_ : 0;
+                            p[u] = cu + (t0 % 3) / 2;
+                            p[v] = cv + (t0 / 3) / 2;
+                            q[u] = cu + (t1 % 3) / 2;
+                            q[v] = cv + (t1 / 3) / 2;
+                            int axis = p[u] != q[u] ? u : v;
+                            idx[k] = coarseVertex(p[axis] < q[axis] ? p : q, axis);
+                        }
+                    }
+                    if (high) std::swap(idx[1], idx[2]);
+                    mesh_.indices.insert(mesh_.indices.end(), idx, idx + 3);
+                }
+            }
+    }
+
+    const voxel::VolumeFrame& frame_;
+    ChunkLod lod_;
+    const LodPyramid* pyramid_ = nullptr;
+    int cell_ = 1, n_ = 0;
+    int origin_[3] = {0, 0, 0};  // level-0 index of the chunk's low corner
+    SampleBlock coarse_;
+    std::vector<std::int32_t> regularVertex_;
+    std::unordered_map<std::uint32_t, std::uint32_t> fineVertex_;
+    Mesh mesh_;
+};
+
+}  // namespace
+
+Mesh meshChunk(const LodPyramid& pyramid, const ChunkLayout& layout, std::size_t chunk, const ChunkLod& lod,
+               ChunkMeshStats* stats) {
+    ChunkMesher mesher(pyramid, layout, chunk, lod);
+    ChunkMeshStats local;
+    Mesh m = mesher.run(local);
+    if (stats) *stats = local;
+    return m;
+}
+
+}  // namespace hg::poly
