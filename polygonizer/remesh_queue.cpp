@@ -1,0 +1,161 @@
+#include "polygonizer/remesh_queue.h"
+
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <chrono>
+#include <tuple>
+
+#include "polygonizer/lod_selection.h"
+
+namespace hg::poly {
+
+RemeshQueue::RemeshQueue(const LodPyramid& pyramid, const ChunkLayout& layout, const std::vector<int>& levels)
+    : pyramid_(pyramid), layout_(layout), slots_(layout.count()) {
+    const std::vector<ChunkLod> lods = chunkLods(layout, levels);
+    for (std::size_t i = 0; i < slots_.size(); ++i) {
+        slots_[i].target = lods[i];
+        markDirty(i);
+    }
+}
+
+void RemeshQueue::markDirty(std::size_t chunk) {
+    Slot& s = slots_[chunk];
+    s.dirty = true;
+    ++s.stamp;  // a mesh staged before this no longer counts
+}
+
+void RemeshQueue::setLevels(const std::vector<int>& levels) {
+    const std::vector<ChunkLod> lods = chunkLods(layout_, levels);
+    for (std::size_t i = 0; i < slots_.size(); ++i) {
+        if (lods[i] == slots_[i].target) continue;
+        slots_[i].target = lods[i];
+        markDirty(i);
+    }
+}
+
+void RemeshQueue::markChanged(const voxel::IndexBox& box) {
+    const int size = layout_.chunkSize();
+    for (std::size_t i = 0; i < slots_.size(); ++i) {
+        // A chunk reads its level's samples from its low corner to one past
+        // its high corner, and one more on each side for gradients.
+        const voxel::IndexBox v = layout_.voxels(i);
+        const int cell = 1 << std::max(slots_[i].target.level, slots_[i].shownLod.level);
+        bool touches = true;
+        for (int a = 0; a < 3 && touches; ++a)
+            touches = box.hi[a] >= v.lo[a] - cell && box.lo[a] <= v.lo[a] + size + cell;
+        if (touches) markDirty(i);
+    }
+}
+
+void RemeshQueue::setPriority(std::size_t chunk, int priority) { slots_[chunk].priority = priority; }
+
+void RemeshQueue::clearPriorities() {
+    for (Slot& s : slots_) s.priority = 0;
+}
+
+std::size_t RemeshQueue::pending() const {
+    return static_cast<std::size_t>(std::count_if(slots_.begin(), slots_.end(), [](const Slot& s) { return s.dirty; }));
+}
+
+// Dirty chunks without a current staged mesh: explicit priority, then
+// nearest, then coarser first (cheaper, and it covers more).
+std::vector<std::size_t> RemeshQueue::order() const {
+    std::vector<std::tuple<int, double, int, std::size_t>> keyed;
+    for (std::size_t i = 0; i < slots_.size(); ++i) {
+        const Slot& s = slots_[i];
+        if (!s.dirty || (s.staged && s.stagedStamp == s.stamp)) continue;
+        keyed.emplace_back(-s.priority, distanceToChunk(layout_, i, viewer_), -s.target.level, i);
+    }
+    std::sort(keyed.begin(), keyed.end());
+    std::vector<std::size_t> out;
+    out.reserve(keyed.size());
+    for (const auto& k : keyed) out.push_back(std::get<3>(k));
+    return out;
+}
+
+RemeshReport RemeshQueue::process(const RemeshBudget& budget) {
+    const auto start = std::chrono::steady_clock::now();
+    auto elapsedMs = [&start] {
+        return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    };
+    RemeshReport report;
+    const std::vector<std::size_t> todo = order();
+    const std::size_t batch = static_cast<std::size_t>(std::max(1, tbb::this_task_arena::max_concurrency()));
+    std::size_t next = 0;
+    while (next < todo.size()) {
+        // The first batch always runs, so every call makes progress; the
+        // caller decides whether there is time for a call at all.
+        if (report.meshed > 0 && budget.milliseconds > 0.0 && elapsedMs() >= budget.milliseconds) break;
+        std::size_t take = std::min(batch, todo.size() - next);
+        if (budget.chunks > 0) take = std::min(take, budget.chunks - report.meshed);
+        if (take == 0) break;
+        std::vector<std::shared_ptr<const Mesh>> made(take);
+        tbb::parallel_for(std::size_t{0}, take, [&](std::size_t k) {
+            const std::size_t i = todo[next + k];
+            made[k] = std::make_shared<const Mesh>(meshChunk(pyramid_, layout_, i, slots_[i].target));
+        });
+        for (std::size_t k = 0; k < take; ++k) {
+            report.chunks.push_back(todo[next + k]);
+            Slot& s = slots_[todo[next + k]];
+            s.staged = std::move(made[k]);
+            s.stagedLod = s.target;
+            s.stagedStamp = s.stamp;
+            report.triangles += s.staged->triangleCount();
+        }
+        report.meshed += take;
+        next += take;
+    }
+    report.shown = showCompleteGroups();
+    report.pending = pending();
+    report.seconds = elapsedMs() / 1000.0;
+    return report;
+}
+
+// Groups of dirty chunks touching each other (26 neighbours), shown when
+// every member has a current staged mesh.
+std::size_t RemeshQueue::showCompleteGroups() {
+    std::vector<int> group(slots_.size(), -1);
+    std::size_t shown = 0;
+    std::vector<std::size_t> members, stack;
+    int groups = 0;
+    for (std::size_t seed = 0; seed < slots_.size(); ++seed) {
+        if (!slots_[seed].dirty || group[seed] >= 0) continue;
+        members.clear();
+        stack.assign(1, seed);
+        group[seed] = groups;
+        bool complete = true;
+        while (!stack.empty()) {
+            const std::size_t i = stack.back();
+            stack.pop_back();
+            members.push_back(i);
+            const Slot& s = slots_[i];
+            complete = complete && s.staged && s.stagedStamp == s.stamp;
+            const ChunkKey k = layout_.key(i);
+            for (int dz = -1; dz <= 1; ++dz)
+                for (int dy = -1; dy <= 1; ++dy)
+                    for (int dx = -1; dx <= 1; ++dx) {
+                        const ChunkKey m{k.x + dx, k.y + dy, k.z + dz};
+                        if (!layout_.contains(m)) continue;
+                        const std::size_t j = layout_.index(m);
+                        if (!slots_[j].dirty || group[j] >= 0) continue;
+                        group[j] = groups;
+                        stack.push_back(j);
+                    }
+        }
+        ++groups;
+        if (!complete) continue;
+        for (std::size_t i : members) {
+            Slot& s = slots_[i];
+            s.shown = std::move(s.staged);
+            s.shownLod = s.stagedLod;
+            s.dirty = false;
+            ++s.version;
+            ++shown;
+        }
+    }
+    return shown;
+}
+
+}  // namespace hg::poly

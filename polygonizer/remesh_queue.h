@@ -1,0 +1,89 @@
+// Keeps every chunk's mesh up to date as the grid and the levels of detail
+// change, a budget at a time (DESIGN §5, incremental):
+//
+//   markChanged(box)  the grid changed there (after LodPyramid::update):
+//                     chunks that read it are dirty;
+//   setLevels(levels) new levels (selectLevels): chunks whose level or
+//                     transition faces change are dirty;
+//   process(budget)   meshes dirty chunks on TBB workers, explicit priority
+//                     first, then nearest to the viewer, then coarser,
+//                     until the budget (milliseconds or chunks) is spent;
+//                     one batch (a chunk per worker) always runs.
+//
+// A chunk keeps showing its old mesh until its new one is ready, and new
+// meshes are shown a group at a time: a group is a set of dirty chunks
+// touching each other (faces, edges or corners), shown together once all are
+// meshed. Every chunk next to a group is then already up to date, so the
+// surface on screen is always one closed surface of one consistent
+// configuration: never a hole or a crack, even halfway through an update.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "polygonizer/chunk_mesher.h"
+
+namespace hg::poly {
+
+struct RemeshBudget {
+    double milliseconds = 0.0;  // 0: no time limit
+    std::size_t chunks = 0;     // 0: no count limit
+};
+
+struct RemeshReport {
+    std::size_t meshed = 0;     // chunks meshed in this call
+    std::vector<std::size_t> chunks;  // which, in the order they were taken
+    std::size_t shown = 0;      // chunks whose new mesh became visible
+    std::size_t pending = 0;    // dirty chunks left (meshed or not, not yet shown)
+    std::size_t triangles = 0;  // triangles meshed in this call
+    double seconds = 0.0;
+};
+
+class RemeshQueue {
+public:
+    // Every chunk starts dirty at `levels`; nothing is shown before the
+    // first process(). `pyramid` and `layout` must outlive the queue.
+    RemeshQueue(const LodPyramid& pyramid, const ChunkLayout& layout, const std::vector<int>& levels);
+
+    void setLevels(const std::vector<int>& levels);
+    void markChanged(const voxel::IndexBox& box);
+    void setViewer(const std::array<double, 3>& position) { viewer_ = position; }
+    // Higher goes first (the active tool's chunks, say); 0 by default.
+    void setPriority(std::size_t chunk, int priority);
+    void clearPriorities();
+
+    RemeshReport process(const RemeshBudget& budget);
+
+    // What is on screen: the mesh (null before the chunk's first mesh), the
+    // level it was made at, and a counter that grows when it is replaced
+    // (what a renderer compares to know it must upload again).
+    std::shared_ptr<const Mesh> mesh(std::size_t chunk) const { return slots_[chunk].shown; }
+    const ChunkLod& shownLod(std::size_t chunk) const { return slots_[chunk].shownLod; }
+    std::uint64_t version(std::size_t chunk) const { return slots_[chunk].version; }
+    std::size_t pending() const;
+    std::size_t count() const { return slots_.size(); }
+
+private:
+    struct Slot {
+        std::shared_ptr<const Mesh> shown, staged;
+        ChunkLod shownLod, target, stagedLod;
+        bool dirty = false;
+        std::uint64_t stamp = 0, stagedStamp = 0;  // staged is current when the stamps agree
+        std::uint64_t version = 0;
+        int priority = 0;
+    };
+
+    void markDirty(std::size_t chunk);
+    std::vector<std::size_t> order() const;
+    std::size_t showCompleteGroups();
+
+    const LodPyramid& pyramid_;
+    const ChunkLayout& layout_;
+    std::vector<Slot> slots_;
+    std::array<double, 3> viewer_{};
+};
+
+}  // namespace hg::poly
