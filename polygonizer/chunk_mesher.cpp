@@ -190,15 +190,29 @@ private:
 
     void regularCells(ChunkMeshStats& stats) {
         const auto& table = cellTable();
+        const int m = n_ + 1;
         stats.regularCells += static_cast<std::size_t>(n_) * static_cast<std::size_t>(n_) * static_cast<std::size_t>(n_);
+        // Signs first, one byte per sample: the cell loop then reads bytes.
+        std::vector<std::uint8_t> inside(static_cast<std::size_t>(m) * static_cast<std::size_t>(m) * static_cast<std::size_t>(m));
+        std::size_t count = 0;
+        for (int z = 0; z < m; ++z)
+            for (int y = 0; y < m; ++y)
+                for (int x = 0; x < m; ++x) {
+                    const int p[3] = {x, y, z};
+                    const bool in = coarseValue(p) > 0.0f;
+                    inside[static_cast<std::size_t>((z * m + y) * m + x)] = in;
+                    count += in;
+                }
+        if (count == 0 || count == inside.size()) return;
+        const std::size_t corner[8] = {0, 1, static_cast<std::size_t>(m), static_cast<std::size_t>(m + 1),
+                                       static_cast<std::size_t>(m * m), static_cast<std::size_t>(m * m + 1),
+                                       static_cast<std::size_t>(m * m + m), static_cast<std::size_t>(m * m + m + 1)};
         for (int z = 0; z < n_; ++z)
             for (int y = 0; y < n_; ++y)
                 for (int x = 0; x < n_; ++x) {
+                    const std::uint8_t* c = &inside[static_cast<std::size_t>((z * m + y) * m + x)];
                     int mask = 0;
-                    for (int c = 0; c < 8; ++c) {
-                        const int p[3] = {x + (c & 1), y + ((c >> 1) & 1), z + ((c >> 2) & 1)};
-                        if (coarseValue(p) > 0.0f) mask |= 1 << c;
-                    }
+                    for (int k = 0; k < 8; ++k) mask |= c[corner[k]] << k;
                     if (mask == 0 || mask == 255) continue;
                     ++stats.surfaceCells;
                     const CellCase& cc = table[static_cast<std::size_t>(mask)];

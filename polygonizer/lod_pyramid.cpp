@@ -92,19 +92,41 @@ float LodPyramid::value(int level, int i, int j, int k) const {
 }
 
 void LodPyramid::gather(int level, const voxel::IndexBox& box, float* out) const {
-    const openvdb::FloatGrid& grid = impl_->grid(level);
-    openvdb::FloatGrid::ConstAccessor acc = grid.getConstAccessor();
+    // A leaf at a time (one probe per 8^3 block, then its buffer), not a
+    // tree lookup per voxel: this is most of a chunk remesh otherwise.
+    const openvdb::FloatTree& tree = impl_->grid(level).tree();
+    const float background = tree.background();
+    // The level-L indices whose level-0 position lies in the index box.
     const voxel::IndexBox& inside = impl_->volume->frame.indexBox;
-    const float background = grid.background();
-    const int s = 1 << level;
-    for (int k = box.lo[2]; k <= box.hi[2]; ++k) {
-        const bool kIn = k * s >= inside.lo[2] && k * s <= inside.hi[2];
-        for (int j = box.lo[1]; j <= box.hi[1]; ++j) {
-            const bool jkIn = kIn && j * s >= inside.lo[1] && j * s <= inside.hi[1];
-            for (int i = box.lo[0]; i <= box.hi[0]; ++i)
-                *out++ = jkIn && i * s >= inside.lo[0] && i * s <= inside.hi[0] ? acc.getValue(Coord(i, j, k)) : background;
-        }
+    int in[2][3];
+    for (int a = 0; a < 3; ++a) {
+        in[0][a] = ceilShift(inside.lo[a], level);
+        in[1][a] = floorShift(inside.hi[a], level);
     }
+    const int ex = box.extent(0), ey = box.extent(1);
+    auto slot = [&](int i, int j, int k) {
+        return static_cast<std::size_t>((k - box.lo[2]) * ey + (j - box.lo[1])) * static_cast<std::size_t>(ex) +
+               static_cast<std::size_t>(i - box.lo[0]);
+    };
+    using Leaf = openvdb::FloatTree::LeafNodeType;
+    for (int bz = box.lo[2] & ~7; bz <= box.hi[2]; bz += 8)
+        for (int by = box.lo[1] & ~7; by <= box.hi[1]; by += 8)
+            for (int bx = box.lo[0] & ~7; bx <= box.hi[0]; bx += 8) {
+                const Leaf* leaf = tree.probeConstLeaf(Coord(bx, by, bz));
+                const float tile = leaf ? 0.0f : tree.getValue(Coord(bx, by, bz));
+                const float* data = leaf ? leaf->buffer().data() : nullptr;
+                for (int k = std::max(bz, box.lo[2]); k <= std::min(bz + 7, box.hi[2]); ++k)
+                    for (int j = std::max(by, box.lo[1]); j <= std::min(by + 7, box.hi[1]); ++j) {
+                        const bool jkIn = k >= in[0][2] && k <= in[1][2] && j >= in[0][1] && j <= in[1][1];
+                        float* dst = out + slot(box.lo[0], j, k);
+                        for (int i = std::max(bx, box.lo[0]); i <= std::min(bx + 7, box.hi[0]); ++i) {
+                            float v = background;
+                            if (jkIn && i >= in[0][0] && i <= in[1][0])
+                                v = data ? data[((i & 7) << 6) | ((j & 7) << 3) | (k & 7)] : tile;
+                            dst[i - box.lo[0]] = v;
+                        }
+                    }
+            }
 }
 
 std::size_t LodPyramid::update(const voxel::IndexBox& box) {

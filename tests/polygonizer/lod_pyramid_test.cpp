@@ -64,5 +64,30 @@ TEST(LodPyramid, LocalUpdateEqualsARebuild) {
     EXPECT_THROW(LodPyramid(v, 0), std::invalid_argument);
 }
 
+TEST(LodPyramid, GatherReadsTheLevelInsideTheIndexBoxAndBackgroundOutside) {
+    frep::Model m = sphere(0.5);
+    voxel::Volume v = sample(m);
+    LodPyramid p(v, 3);
+    const voxel::IndexBox& in = v.frame.indexBox;
+    for (int l = 0; l < 3; ++l) {
+        // A box reaching past the index box on every side, unaligned.
+        voxel::IndexBox box = voxel::IndexBox::fromCorners((in.lo[0] >> l) - 5, (in.lo[1] >> l) - 3, (in.lo[2] >> l) - 9,
+                                                           (in.hi[0] >> l) + 4, (in.hi[1] >> l) + 7, (in.hi[2] >> l) + 2);
+        std::vector<float> out(static_cast<std::size_t>(box.volume()));
+        p.gather(l, box, out.data());
+        std::size_t n = 0, outside = 0;
+        for (int k = box.lo[2]; k <= box.hi[2]; ++k)
+            for (int j = box.lo[1]; j <= box.hi[1]; ++j)
+                for (int i = box.lo[0]; i <= box.hi[0]; ++i, ++n) {
+                    const int s = 1 << l;
+                    const bool inside = in.contains(i * s, j * s, k * s);
+                    outside += !inside;
+                    const float expected = inside ? p.value(l, i, j, k) : -v.frame.band;
+                    ASSERT_EQ(out[n], expected) << "level " << l << " at " << i << "," << j << "," << k;
+                }
+        EXPECT_GT(outside, 0u);
+    }
+}
+
 }  // namespace
 }  // namespace hg::poly
