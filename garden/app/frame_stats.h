@@ -1,0 +1,47 @@
+// What one frame cost and did, collected every frame (DESIGN §6: stats are
+// always on) and shown by the overlay, written by `replay --stats`.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace hg::garden {
+
+// The stages a frame's budget is split between, in the order they run.
+enum class Stage : int { Input = 0, Lod, Morph, Remesh, Upload, Render, Count };
+constexpr int kStageCount = static_cast<int>(Stage::Count);
+const char* stageName(Stage s);
+
+struct FrameStats {
+    std::uint64_t frame = 0;
+    double budgetMs = 11.1;
+    double totalMs = 0.0;                       // CPU time of the whole frame
+    std::array<double, kStageCount> stageMs{};  // CPU time per stage
+    std::size_t morphSamples = 0;               // samples blended this frame
+    std::size_t morphPending = 0;               // samples left in the morph update
+    std::size_t chunksMeshed = 0;
+    std::size_t chunksShown = 0;
+    std::size_t remeshPending = 0;              // dirty chunks left, all sculptures
+    std::size_t uploadBytes = 0;
+    std::size_t uploadsPending = 0;
+    std::size_t trianglesDrawn = 0;
+    std::size_t drawCalls = 0;
+};
+
+// The last N frames, for the frame-time graph.
+class FrameHistory {
+public:
+    explicit FrameHistory(std::size_t capacity = 240) : capacity_(capacity) {}
+    void push(const FrameStats& s);
+    const std::vector<FrameStats>& frames() const { return frames_; }  // oldest first
+    const FrameStats* last() const { return frames_.empty() ? nullptr : &frames_.back(); }
+
+private:
+    std::size_t capacity_;
+    std::vector<FrameStats> frames_;
+};
+
+}  // namespace hg::garden
