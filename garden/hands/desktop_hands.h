@@ -1,0 +1,46 @@
+// The desktop mapping onto hands (DESIGN §6): keys and mouse become a
+// navigation hand and a tool hand, so the tools and the navigator run the
+// same code on the desktop, in XR and in scripts.
+//
+//   W A S D       navigation thumbstick (forward, left, back, right)
+//   Q / E         down / up (thumbstick of the tool hand, y axis)
+//   right button  mouse look (drag)
+//   wheel         walking speed (each notch x1.25)
+//   left button   tool trigger; the tool hand's aim is the ray under the mouse
+//   space         stick click: fly / walk
+//   O             primary button: orbit the selected sculpture
+//   Ctrl+Z / Ctrl+Y  undo / redo
+#pragma once
+
+#include <glm/mat4x4.hpp>
+
+#include "garden/hands/hand_state.h"
+
+namespace hg::garden {
+
+// The raw state of keys and mouse this frame, as the window saw it.
+struct DesktopInput {
+    bool forward = false, back = false, left = false, right = false, up = false, down = false;
+    bool lookButton = false;   // right button held
+    bool toolButton = false;   // left button held
+    bool flyToggle = false, orbitToggle = false, undo = false, redo = false;  // pressed this frame
+    glm::vec2 mouse{0.0f};     // pixels, origin top-left
+    glm::vec2 mouseDelta{0.0f};
+    float wheel = 0.0f;        // notches this frame
+    glm::vec2 viewport{1280.0f, 720.0f};
+};
+
+struct DesktopMapping {
+    float lookRadiansPerPixel = 0.004f;
+    float speedStep = 1.25f;
+};
+
+// `view` and `projection` are the camera's this frame: the tool's aim is the
+// ray through the mouse. Hands keep the speed scale from frame to frame.
+Hands mapDesktop(const DesktopInput& in, const glm::mat4& view, const glm::mat4& projection, const DesktopMapping& m,
+                 float previousSpeedScale);
+
+// The world ray through a pixel (origin at the camera, unit direction).
+Pose rayThroughPixel(glm::vec2 pixel, glm::vec2 viewport, const glm::mat4& view, const glm::mat4& projection);
+
+}  // namespace hg::garden

@@ -1,0 +1,52 @@
+// The hands every tool reads (DESIGN §6): one type for the desktop (mouse
+// and keys mapped onto two hands), OpenXR (two controllers) and scripts
+// (recorded hands). Tools never see a device.
+#pragma once
+
+#include <cstdint>
+
+#include <glm/gtc/quaternion.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+namespace hg::garden {
+
+struct Pose {
+    glm::vec3 position{0.0f};                     // world, metres
+    glm::quat orientation{1.0f, 0.0f, 0.0f, 0.0f};  // -z forward, +y up (OpenXR's convention)
+
+    glm::vec3 forward() const { return orientation * glm::vec3(0.0f, 0.0f, -1.0f); }
+    glm::vec3 up() const { return orientation * glm::vec3(0.0f, 1.0f, 0.0f); }
+    glm::vec3 right() const { return orientation * glm::vec3(1.0f, 0.0f, 0.0f); }
+};
+
+// Buttons, as bits of HandState::buttons.
+enum HandButton : std::uint32_t {
+    kButtonPrimary = 1u << 0,    // A / X, or the desktop's orbit toggle
+    kButtonSecondary = 1u << 1,  // B / Y
+    kButtonMenu = 1u << 2,
+    kButtonThumbstick = 1u << 3,  // stick click: fly / walk toggle
+    kButtonUndo = 1u << 4,
+    kButtonRedo = 1u << 5,
+};
+
+struct HandState {
+    bool tracked = false;
+    Pose grip;                 // where the hand holds
+    Pose aim;                  // the pointing ray: the desktop's mouse ray
+    float trigger = 0.0f;      // 0..1: the tool acts
+    float squeeze = 0.0f;      // 0..1: grabs the world
+    glm::vec2 thumbstick{0.0f};  // -1..1 each: x right, y forward
+    std::uint32_t buttons = 0;
+
+    bool pressed(HandButton b) const { return (buttons & b) != 0; }
+};
+
+struct Hands {
+    HandState tool;        // the dominant hand: tools
+    HandState navigation;  // the other hand: moving about, grabbing the world
+    glm::vec2 look{0.0f};  // radians to turn this frame (yaw right, pitch up): desktop mouse look, XR snap turn
+    float speedScale = 1.0f;  // multiplies walking speed (desktop: the wheel)
+};
+
+}  // namespace hg::garden
