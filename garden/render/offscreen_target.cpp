@@ -12,14 +12,22 @@ namespace {
 // glReadPixels returns rows bottom-up; images (PNG, tests) are top-down.
 template <typename T>
 void flipRows(std::vector<T>& data, std::size_t rowElements, int height) {
-    std::vector<T> row(rowElements);
     for (int y = 0; y < height / 2; ++y) {
-        T* a = data.data() + static_cast<std::size_t>(y) * rowElements;
-        T* b = data.data() + static_cast<std::size_t>(height - 1 - y) * rowElements;
-        std::copy(a, a + rowElements, row.begin());
-        std::copy(b, b + rowElements, a);
-        std::copy(row.begin(), row.end(), b);
+        T* top = data.data() + static_cast<std::size_t>(y) * rowElements;
+        T* bottom = data.data() + static_cast<std::size_t>(height - 1 - y) * rowElements;
+        std::swap_ranges(top, top + rowElements, bottom);
     }
+}
+
+// Runs read() with `fbo` bound for reading, then restores the binding.
+template <typename Read>
+auto readFrom(GLuint fbo, Read read) {
+    GLint previous = 0;
+    glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &previous);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo);
+    auto result = read();
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(previous));
+    return result;
 }
 
 }  // namespace
@@ -60,21 +68,11 @@ void OffscreenTarget::bind() const {
 void OffscreenTarget::unbind() { glBindFramebuffer(GL_FRAMEBUFFER, 0); }
 
 std::vector<std::uint8_t> OffscreenTarget::readColor() const {
-    GLint previous = 0;
-    glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &previous);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_.get());
-    auto rows = readColorRows(width_, height_);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(previous));
-    return rows;
+    return readFrom(fbo_.get(), [this] { return readColorRows(width_, height_); });
 }
 
 std::vector<float> OffscreenTarget::readDepth() const {
-    GLint previous = 0;
-    glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &previous);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_.get());
-    auto rows = readDepthRows(width_, height_);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(previous));
-    return rows;
+    return readFrom(fbo_.get(), [this] { return readDepthRows(width_, height_); });
 }
 
 std::vector<std::uint8_t> readColorRows(int width, int height) {

@@ -70,8 +70,9 @@ Renderer::Renderer()
     ground_ = {g.uniform("uViewProjection"), g.uniform("uGroundColor"), g.uniform("uLineColor"),
                g.uniform("uSpacing"),        g.uniform("uLineWidth"),   g.uniform("uMajorEvery")};
     const ShaderProgram& f = flatProgram_;
-    flat_ = {f.uniform("uModel"), f.uniform("uView"), f.uniform("uProjection"), f.uniform("uDepthPull"),
-             f.uniform("uColor")};
+    flat_ = {f.uniform("uModel"), f.uniform("uView"), f.uniform("uProjection"), f.uniform("uColor")};
+    f.use();
+    glUniform1f(f.uniform("uDepthPull"), kDepthPull);
 
     // Ground: two triangles whose corners drawGround rewrites (72 bytes) for
     // the ground's extent.
@@ -286,7 +287,6 @@ void Renderer::drawFlat(GLenum primitive, GLuint vao, GLsizei count, bool indexe
                         const glm::vec4& color, bool depthTested) {
     flatProgram_.use();
     setMat4(flat_.model, model);
-    glUniform1f(flat_.depthPull, kDepthPull);
     glUniform4fv(flat_.color, 1, glm::value_ptr(color));
     const bool blend = color.a < 1.0f;
     if (blend) {

@@ -148,7 +148,7 @@ private:
         GLint viewProjection, groundColor, lineColor, spacing, lineWidth, majorEvery;
     } ground_{};
     struct {
-        GLint model, view, projection, depthPull, color;
+        GLint model, view, projection, color;
     } flat_{};
 
     std::unordered_map<ChunkId, ChunkBuffers> chunks_;
