@@ -1,0 +1,78 @@
+// Move-only owners of OpenGL object names, so buffers, vertex arrays,
+// programs and framebuffers are deleted exactly once, on the thread and
+// context that created them (whoever destroys one must have that context
+// current).
+#pragma once
+
+#include <epoxy/gl.h>
+
+#include <utility>
+
+namespace hg::garden::gl {
+
+// Tag::destroy deletes a name; Tag::create (where GL has a glGen*) makes one.
+template <typename Tag>
+class Handle {
+public:
+    Handle() = default;
+    explicit Handle(GLuint name) : name_(name) {}
+    static Handle create() { return Handle(Tag::create()); }
+    ~Handle() { reset(); }
+    Handle(Handle&& o) noexcept : name_(std::exchange(o.name_, 0u)) {}
+    Handle& operator=(Handle&& o) noexcept {
+        if (this != &o) {
+            reset();
+            name_ = std::exchange(o.name_, 0u);
+        }
+        return *this;
+    }
+    Handle(const Handle&) = delete;
+    Handle& operator=(const Handle&) = delete;
+
+    GLuint get() const { return name_; }
+    explicit operator bool() const { return name_ != 0; }
+    void reset() {
+        if (name_ != 0) Tag::destroy(name_);
+        name_ = 0;
+    }
+
+private:
+    GLuint name_ = 0;
+};
+
+struct BufferTag {
+    static GLuint create() { GLuint n = 0; glGenBuffers(1, &n); return n; }
+    static void destroy(GLuint n) { glDeleteBuffers(1, &n); }
+};
+struct VertexArrayTag {
+    static GLuint create() { GLuint n = 0; glGenVertexArrays(1, &n); return n; }
+    static void destroy(GLuint n) { glDeleteVertexArrays(1, &n); }
+};
+struct FramebufferTag {
+    static GLuint create() { GLuint n = 0; glGenFramebuffers(1, &n); return n; }
+    static void destroy(GLuint n) { glDeleteFramebuffers(1, &n); }
+};
+struct RenderbufferTag {
+    static GLuint create() { GLuint n = 0; glGenRenderbuffers(1, &n); return n; }
+    static void destroy(GLuint n) { glDeleteRenderbuffers(1, &n); }
+};
+struct TextureTag {
+    static GLuint create() { GLuint n = 0; glGenTextures(1, &n); return n; }
+    static void destroy(GLuint n) { glDeleteTextures(1, &n); }
+};
+struct ShaderTag {
+    static void destroy(GLuint n) { glDeleteShader(n); }
+};
+struct ProgramTag {
+    static void destroy(GLuint n) { glDeleteProgram(n); }
+};
+
+using Buffer = Handle<BufferTag>;
+using VertexArray = Handle<VertexArrayTag>;
+using Framebuffer = Handle<FramebufferTag>;
+using Renderbuffer = Handle<RenderbufferTag>;
+using Texture = Handle<TextureTag>;
+using Shader = Handle<ShaderTag>;
+using Program = Handle<ProgramTag>;
+
+}  // namespace hg::garden::gl

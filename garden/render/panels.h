@@ -1,0 +1,23 @@
+// Dear ImGui panels of the desktop garden. They need only an ImGui context
+// inside a frame (between ImGui::NewFrame and ImGui::Render), not GL, so
+// they run headless in tests.
+#pragma once
+
+#include <glm/vec2.hpp>
+
+#include "garden/app/frame_stats.h"
+
+namespace hg::garden {
+
+// A window with the last frame's time per stage against the budget, the
+// morph, remesh and upload counters and queues, triangles and draw calls,
+// and a graph of the frame time over the history with the budget as a line.
+void drawStatsPanel(const FrameHistory& history);
+
+// The morph selector inside the current window: a triangle whose corners
+// carry labels[0..2] (bottom left, bottom right, top); clicking or dragging
+// in it moves `point`, kept inside the triangle, in the local frame of
+// morph_triangle.h (weights by triangleWeights). True when `point` changed.
+bool morphTriangleWidget(const char* const labels[3], glm::vec2& point, float side = 180.0f);
+
+}  // namespace hg::garden

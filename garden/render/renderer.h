@@ -1,0 +1,170 @@
+// The garden's OpenGL 3.3 core renderer: sculpture chunks in GPU buffers
+// keyed by a stable chunk id, lit with a material per sculpture; the ground
+// with its grid; lines (the morph triangle on the ground, tool gizmos) and
+// the detail sphere.
+//
+// Colours. RenderMaterial, ground, line, sphere and clear colours are sRGB display
+// values (what a colour picker shows); light colours and the ambient term
+// are linear intensities. Shading runs in linear space and the shaders
+// encode the result to sRGB before it is written to the plain RGBA8
+// framebuffer. Lines and the sphere are unlit and written as given.
+//
+// A frame: beginFrame (clears the bound framebuffer), draws, endFrame.
+// Chunk uploads may happen between frames (the scheduler's upload stage
+// runs before the render stage); their bytes count towards the stats that
+// endFrame returns. The Renderer needs its GL context current whenever one
+// of its functions runs, its destructor included.
+#pragma once
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+#include "garden/render/gl_objects.h"
+#include "garden/render/shader_program.h"
+#include "polygonizer/mesh.h"
+
+namespace hg::garden {
+
+using ChunkId = std::uint64_t;
+
+struct RenderMaterial {
+    glm::vec3 baseColor{0.8f, 0.8f, 0.8f};  // sRGB
+    float specular = 0.25f;                  // strength of the Blinn-Phong highlight, 0..1
+    float shininess = 32.0f;                 // Blinn-Phong exponent: higher is smaller, sharper
+};
+
+struct DirectionalLight {
+    glm::vec3 direction{0.0f, 1.0f, 0.0f};  // from the scene towards the light; normalized on use
+    glm::vec3 color{1.0f, 1.0f, 1.0f};      // linear intensity
+};
+
+constexpr int kMaxLights = 3;
+
+struct View {
+    glm::mat4 view{1.0f};
+    glm::mat4 projection{1.0f};
+    glm::vec3 eye{0.0f};                               // world position of the camera (specular)
+    glm::ivec2 viewport{1, 1};                         // pixels of the bound framebuffer
+    glm::vec4 clearColor{0.62f, 0.74f, 0.86f, 1.0f};  // sRGB sky
+    std::vector<DirectionalLight> lights;              // at most kMaxLights
+    glm::vec3 ambient{0.2f, 0.2f, 0.2f};               // linear
+};
+
+struct GroundStyle {
+    glm::vec3 color{0.42f, 0.47f, 0.38f};      // sRGB
+    glm::vec3 lineColor{0.26f, 0.30f, 0.24f};  // sRGB
+    float spacing = 1.0f;                      // metres between grid lines
+    int majorEvery = 10;                       // a wider line every N lines (0: none)
+    float lineWidth = 1.5f;                    // pixels
+    float halfExtent = 100.0f;                 // the plane spans [-h, h] in x and z, at y = 0
+};
+
+enum class LineMode { Segments, Strip, Loop };
+
+struct RenderStats {
+    std::size_t trianglesDrawn = 0;
+    std::size_t drawCalls = 0;
+    std::size_t bytesUploaded = 0;
+};
+
+class Renderer {
+public:
+    // Compiles the programs; throws GlError naming a shader that fails.
+    Renderer();
+    ~Renderer();
+    Renderer(const Renderer&) = delete;
+    Renderer& operator=(const Renderer&) = delete;
+
+    // --- chunk buffers -------------------------------------------------------
+    // Uploads `mesh` for `id` unless that id already holds `version`; returns
+    // the bytes sent to the GPU (0 when it was current). An empty mesh is
+    // recorded (has() is true) and draws nothing. Throws std::invalid_argument
+    // for a malformed mesh (sizes not multiples of 3, normals of another
+    // length than positions, an index past the last vertex).
+    std::size_t upload(ChunkId id, std::uint64_t version, const poly::Mesh& mesh);
+    bool has(ChunkId id, std::uint64_t version) const;
+    bool has(ChunkId id) const;
+    void drop(ChunkId id);
+    std::size_t chunkCount() const { return chunks_.size(); }
+    std::size_t residentBytes() const { return residentBytes_; }
+
+    // --- a frame -------------------------------------------------------------
+    // Sets the viewport and GL state (depth test, back-face culling, no
+    // blending), clears colour and depth. Throws std::invalid_argument for
+    // more than kMaxLights lights.
+    void beginFrame(const View& view);
+    // Draws an uploaded chunk with `model` (rotation, translation, uniform or
+    // not scale: normals use the inverse transpose). False when `id` has no
+    // buffers, so the caller can see it is not resident yet.
+    bool drawChunk(ChunkId id, const glm::mat4& model, const RenderMaterial& material);
+    void drawGround(const GroundStyle& ground);
+    // Unlit lines of one pixel; `depthTested` false draws them over
+    // everything (gizmos that must stay visible).
+    void drawLines(const std::vector<glm::vec3>& points, const glm::vec4& color, LineMode mode = LineMode::Strip,
+                   bool depthTested = true);
+    // The detail sphere: wireframe (three great circles and the outline seen
+    // from the eye) or a solid shell, blended when color.a < 1 (draw it
+    // after the opaque geometry).
+    void drawSphere(const glm::vec3& center, float radius, const glm::vec4& color, bool wireframe);
+
+    const RenderStats& stats() const { return stats_; }
+    // The frame's stats (uploads since the last endFrame included); resets them.
+    RenderStats endFrame();
+
+private:
+    struct ChunkBuffers {
+        std::uint64_t version = 0;
+        gl::VertexArray vao;
+        gl::Buffer vertices;  // positions, then normals
+        gl::Buffer indices;
+        GLsizei indexCount = 0;
+        bool hasNormals = false;
+        std::size_t bytes = 0;
+    };
+    struct LitUniforms {
+        GLint eye, ambient, lightCount, lightDir, lightColor;
+    };
+
+    // Frame lighting for the bound program whose locations are `u`.
+    void setLighting(const LitUniforms& u) const;
+    void drawFlat(GLenum primitive, GLuint vao, GLsizei count, bool indexed, const glm::mat4& model,
+                  const glm::vec4& color, bool depthTested);
+
+    ShaderProgram meshProgram_;
+    ShaderProgram groundProgram_;
+    ShaderProgram flatProgram_;
+    LitUniforms meshLit_{}, groundLit_{};
+    struct {
+        GLint model, normalMatrix, viewProjection, baseColor, specular, shininess, hasNormals;
+    } mesh_{};
+    struct {
+        GLint viewProjection, groundColor, lineColor, spacing, lineWidth, majorEvery;
+    } ground_{};
+    struct {
+        GLint model, view, projection, color;
+    } flat_{};
+
+    std::unordered_map<ChunkId, ChunkBuffers> chunks_;
+    std::size_t residentBytes_ = 0;
+
+    gl::VertexArray groundVao_;
+    gl::Buffer groundVbo_;
+    gl::VertexArray streamVao_;  // lines: points re-sent each call
+    gl::Buffer streamVbo_;
+    gl::VertexArray sphereVao_;  // unit sphere for the solid detail sphere
+    gl::Buffer sphereVbo_;
+    gl::Buffer sphereEbo_;
+    GLsizei sphereIndexCount_ = 0;
+
+    View view_;
+    RenderStats stats_;
+};
+
+}  // namespace hg::garden

@@ -1,0 +1,98 @@
+#include <imgui.h>
+
+#include <algorithm>
+#include <cstdio>
+
+#include "garden/render/panels.h"
+
+namespace hg::garden {
+namespace {
+
+float totalMsAt(void* data, int index) {
+    const auto* frames = static_cast<const std::vector<FrameStats>*>(data);
+    return static_cast<float>((*frames)[static_cast<std::size_t>(index)].totalMs);
+}
+
+const ImU32 kOverBudget = IM_COL32(230, 80, 60, 255);
+const ImU32 kBudgetLine = IM_COL32(240, 200, 60, 220);
+// Fixed, since the window fits its contents (no available width to fill).
+constexpr float kGraphWidth = 300.0f;
+
+void counterRow(const char* name, std::size_t value) {
+    ImGui::TableNextRow();
+    ImGui::TableSetColumnIndex(0);
+    ImGui::TextUnformatted(name);
+    ImGui::TableSetColumnIndex(1);
+    ImGui::Text("%zu", value);
+}
+
+void frameGraph(const FrameHistory& history, double budgetMs) {
+    const auto& frames = history.frames();
+    double worst = 0.0, sum = 0.0;
+    for (const FrameStats& f : frames) {
+        worst = std::max(worst, f.totalMs);
+        sum += f.totalMs;
+    }
+    // Room above the budget so the line sits inside the graph; taller spikes
+    // raise the scale.
+    const float top = static_cast<float>(std::max(1.5 * budgetMs, 1.1 * worst));
+    char caption[64];
+    std::snprintf(caption, sizeof caption, "avg %.2f  max %.2f ms", sum / static_cast<double>(frames.size()), worst);
+    ImGui::PlotLines("##frame_ms", totalMsAt, const_cast<std::vector<FrameStats>*>(&frames),
+                     static_cast<int>(frames.size()), 0, caption, 0.0f, top,
+                     ImVec2(kGraphWidth, 80.0f));
+    const ImVec2 lo = ImGui::GetItemRectMin();
+    const ImVec2 hi = ImGui::GetItemRectMax();
+    const float y = hi.y - (hi.y - lo.y) * static_cast<float>(budgetMs) / top;
+    ImGui::GetWindowDrawList()->AddLine(ImVec2(lo.x, y), ImVec2(hi.x, y), kBudgetLine, 1.0f);
+}
+
+}  // namespace
+
+void drawStatsPanel(const FrameHistory& history) {
+    // Always fitted to its contents: they change from "no frames yet" to the
+    // full panel, and a size fitted once would clip them.
+    if (!ImGui::Begin("Frame stats", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+        ImGui::End();
+        return;
+    }
+    const FrameStats* last = history.last();
+    if (!last) {
+        ImGui::TextUnformatted("no frames yet");
+        ImGui::End();
+        return;
+    }
+    const bool over = last->totalMs > last->budgetMs;
+    if (over) ImGui::PushStyleColor(ImGuiCol_Text, kOverBudget);
+    ImGui::Text("frame %llu: %.2f of %.2f ms", static_cast<unsigned long long>(last->frame), last->totalMs,
+                last->budgetMs);
+    if (over) ImGui::PopStyleColor();
+
+    // Each stage as a bar filled by its share of the budget.
+    for (int s = 0; s < kStageCount; ++s) {
+        const double ms = last->stageMs[static_cast<std::size_t>(s)];
+        char text[32];
+        std::snprintf(text, sizeof text, "%.2f ms", ms);
+        const float share = last->budgetMs > 0.0 ? static_cast<float>(ms / last->budgetMs) : 0.0f;
+        ImGui::ProgressBar(std::min(share, 1.0f), ImVec2(160.0f, 0.0f), text);
+        ImGui::SameLine();
+        ImGui::TextUnformatted(stageName(static_cast<Stage>(s)));
+    }
+
+    if (ImGui::BeginTable("##counters", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp)) {
+        counterRow("morph samples", last->morphSamples);
+        counterRow("morph samples pending", last->morphPending);
+        counterRow("chunks meshed", last->chunksMeshed);
+        counterRow("chunks shown", last->chunksShown);
+        counterRow("remesh pending", last->remeshPending);
+        counterRow("upload bytes", last->uploadBytes);
+        counterRow("uploads pending", last->uploadsPending);
+        counterRow("triangles drawn", last->trianglesDrawn);
+        counterRow("draw calls", last->drawCalls);
+        ImGui::EndTable();
+    }
+    frameGraph(history, last->budgetMs);
+    ImGui::End();
+}
+
+}  // namespace hg::garden
