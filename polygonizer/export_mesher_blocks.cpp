@@ -1,0 +1,200 @@
+#include "polygonizer/export_mesher_blocks.h"
+
+#include <algorithm>
+
+#include "polygonizer/cell_table.h"
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
+namespace hg::poly {
+
+namespace {
+
+constexpr int kB = kBlockSize;
+constexpr int kRow = kB + 1;  // corners per row of a block
+constexpr std::uint16_t kAllInside = (1u << kRow) - 1;
+
+// popcount of a byte. (The x86-64 baseline has no popcount instruction, and
+// the library call is far slower than a table.)
+struct ByteCounts {
+    std::array<std::uint8_t, 256> n{};
+    constexpr ByteCounts() {
+        for (int i = 1; i < 256; ++i) n[static_cast<std::size_t>(i)] = static_cast<std::uint8_t>((i & 1) + n[static_cast<std::size_t>(i >> 1)]);
+    }
+};
+constexpr ByteCounts kByteCounts;
+unsigned bitCount(unsigned byte) { return kByteCounts.n[byte]; }
+
+// Bits 0..63 of one leaf row: value > 0 (false for NaN, as the compare is).
+std::uint64_t insideBits(const float* v) {
+    std::uint64_t w = 0;
+#if defined(__SSE2__)
+    const __m128 zero = _mm_setzero_ps();
+    for (int i = 0; i < 64; i += 4)
+        w |= static_cast<std::uint64_t>(_mm_movemask_ps(_mm_cmpgt_ps(_mm_loadu_ps(v + i), zero))) << i;
+#else
+    for (int i = 0; i < 64; ++i) w |= static_cast<std::uint64_t>(v[i] > 0.0f) << i;
+#endif
+    return w;
+}
+
+// Case index of cell (x, y, z): bit c set when corner c is inside.
+unsigned cellCase(const std::array<std::uint16_t, 81>& rows, int x, int y, int z) {
+    const unsigned r00 = rows[static_cast<std::size_t>(x * kRow + y)] >> z;
+    const unsigned r10 = rows[static_cast<std::size_t>((x + 1) * kRow + y)] >> z;
+    const unsigned r01 = rows[static_cast<std::size_t>(x * kRow + y + 1)] >> z;
+    const unsigned r11 = rows[static_cast<std::size_t>((x + 1) * kRow + y + 1)] >> z;
+    return (r00 & 1) | (r10 & 1) << 1 | (r01 & 1) << 2 | (r11 & 1) << 3 | (r00 & 2) << 3 | (r10 & 2) << 4 |
+           (r01 & 2) << 5 | (r11 & 2) << 6;
+}
+
+// Bit z set when cell (x, y, z) has corners of both signs.
+unsigned surfaceCellsOfColumn(const std::array<std::uint16_t, 81>& rows, int x, int y) {
+    const unsigned r00 = rows[static_cast<std::size_t>(x * kRow + y)];
+    const unsigned r10 = rows[static_cast<std::size_t>((x + 1) * kRow + y)];
+    const unsigned r01 = rows[static_cast<std::size_t>(x * kRow + y + 1)];
+    const unsigned r11 = rows[static_cast<std::size_t>((x + 1) * kRow + y + 1)];
+    const unsigned any = r00 | r10 | r01 | r11, all = r00 & r10 & r01 & r11;
+    return ((any | any >> 1) & ~(all & all >> 1)) & 0xFFu;
+}
+
+// The crossings of the owned edges along `axis` in row (x, y), bit z.
+unsigned crossingsOfRow(const std::array<std::uint16_t, 81>& rows, int axis, int x, int y) {
+    const unsigned r = rows[static_cast<std::size_t>(x * kRow + y)];
+    const unsigned other = axis == 0   ? rows[static_cast<std::size_t>((x + 1) * kRow + y)]
+                           : axis == 1 ? rows[static_cast<std::size_t>(x * kRow + y + 1)]
+                                       : r >> 1;
+    return (r ^ other) & 0xFFu;
+}
+
+// Cell edge e, as the grid edge it is: its axis and the offset of its low
+// end from the cell's low corner.
+struct EdgeStep {
+    int axis, dx, dy, dz;
+};
+
+std::array<EdgeStep, 12> makeEdgeSteps() {
+    std::array<EdgeStep, 12> s{};
+    for (std::size_t e = 0; e < 12; ++e) {
+        const int c0 = kEdgeCorners[e][0];
+        s[e] = {kEdgeAxis[e], c0 & 1, (c0 >> 1) & 1, (c0 >> 2) & 1};
+    }
+    return s;
+}
+
+constexpr std::uint32_t kNoVertex = 0xFFFFFFFFu;
+
+// The global index of the vertex on grid edge (axis, x, y, z), block-local
+// with x, y, z in 0..8: owned by the block (all below 8) or an upper
+// neighbour.
+std::uint32_t vertexIndex(const std::array<EdgeOwner, 8>& owners, int axis, int x, int y, int z) {
+    const EdgeOwner& o = owners[static_cast<std::size_t>((x >> 3) | (y >> 3) << 1 | (z >> 3) << 2)];
+    if (!o.edges) return kNoVertex;
+    const auto row = static_cast<std::size_t>((x & (kB - 1)) * kB + (y & (kB - 1)));
+    const unsigned bit = static_cast<unsigned>(z & (kB - 1));
+    const unsigned bits = o.edges->cross[static_cast<std::size_t>(axis)][row];
+    if (!((bits >> bit) & 1u)) return kNoVertex;
+    return o.firstVertex + o.edges->base[static_cast<std::size_t>(axis)][row] + bitCount(bits & ((1u << bit) - 1));
+}
+
+}  // namespace
+
+SignMask leafMask(const float* values) {
+    SignMask m;
+    for (std::size_t x = 0; x < 8; ++x) m.w[x] = insideBits(values + 64 * x);
+    return m;
+}
+
+SignMask uniformMask(float value) {
+    SignMask m;
+    m.w.fill(value > 0.0f ? ~std::uint64_t{0} : 0);
+    return m;
+}
+
+BlockCounts analyseBlock(const std::array<const SignMask*, 8>& m, BlockEdges& edges) {
+    // Corner rows: z 0..7 from the block's (or its +x / +y neighbours') bits,
+    // z = 8 from the +z neighbours' first voxel in the row.
+    std::array<std::uint16_t, 81> rows;
+    bool uniform = true;
+    for (int x = 0; x <= kB; ++x)
+        for (int y = 0; y <= kB; ++y) {
+            const std::size_t d = static_cast<std::size_t>((x >> 3) | (y >> 3) << 1);
+            const auto word = static_cast<std::size_t>(x & (kB - 1));
+            const unsigned shift = 8u * static_cast<unsigned>(y & (kB - 1));
+            const auto low = static_cast<unsigned>((m[d]->w[word] >> shift) & 0xFFu);
+            const auto top = static_cast<unsigned>((m[d + 4]->w[word] >> shift) & 1u);
+            const auto r = static_cast<std::uint16_t>(low | top << 8);
+            rows[static_cast<std::size_t>(x * kRow + y)] = r;
+            uniform = uniform && (r == 0 || r == kAllInside) && r == rows[0];
+        }
+    BlockCounts counts;
+    if (uniform) return counts;
+    edges.rows = rows;
+    for (int axis = 0; axis < 3; ++axis)
+        for (int x = 0; x < kB; ++x)
+            for (int y = 0; y < kB; ++y) {
+                const auto row = static_cast<std::size_t>(x * kB + y);
+                const unsigned c = crossingsOfRow(rows, axis, x, y);
+                edges.cross[static_cast<std::size_t>(axis)][row] = static_cast<std::uint8_t>(c);
+                edges.base[static_cast<std::size_t>(axis)][row] = static_cast<std::uint16_t>(counts.vertices);
+                counts.vertices += bitCount(c);
+            }
+    const auto& table = cellTable();
+    for (int x = 0; x < kB; ++x)
+        for (int y = 0; y < kB; ++y)
+            for (unsigned cells = surfaceCellsOfColumn(rows, x, y); cells; cells &= cells - 1) {
+                counts.triangles += table[cellCase(rows, x, y, lowestBit(cells))].triangleCount;
+                ++counts.surfaceCells;
+            }
+    return counts;
+}
+
+std::uint32_t triangulateBlock(const BlockEdges& e, const std::array<EdgeOwner, 8>& owners, std::uint32_t* out) {
+    static const std::array<EdgeStep, 12> steps = makeEdgeSteps();
+    const auto& table = cellTable();
+    std::uint32_t written = 0;
+    for (int x = 0; x < kB; ++x)
+        for (int y = 0; y < kB; ++y)
+            for (unsigned cells = surfaceCellsOfColumn(e.rows, x, y); cells; cells &= cells - 1) {
+                const int z = lowestBit(cells);
+                const CellCase& cc = table[cellCase(e.rows, x, y, z)];
+                for (std::size_t t = 0; t < cc.triangleCount; ++t) {
+                    std::uint32_t tri[3];
+                    bool found = true;
+                    for (std::size_t k = 0; k < 3 && found; ++k) {
+                        const EdgeStep& s = steps[cc.edges[3 * t + k]];
+                        tri[k] = vertexIndex(owners, s.axis, x + s.dx, y + s.dy, z + s.dz);
+                        found = tri[k] != kNoVertex;
+                    }
+                    if (!found) continue;
+                    std::copy(tri, tri + 3, out + 3 * written);
+                    ++written;
+                }
+            }
+    return written;
+}
+
+BlockTable::BlockTable(const std::array<int, 3>& lo, const std::array<int, 3>& hi) : lo_(lo) {
+    for (std::size_t a = 0; a < 3; ++a) {
+        size_[a] = static_cast<unsigned>(std::max(0, hi[a] - lo[a] + 1));
+        bricks3_[a] = (size_[a] + kSide - 1) / kSide;
+    }
+    bricks_.resize(bricks3_[0] * bricks3_[1] * bricks3_[2]);
+}
+
+void BlockTable::mark(int x, int y, int z) {
+    const unsigned ux = static_cast<unsigned>(x - lo_[0]), uy = static_cast<unsigned>(y - lo_[1]),
+                   uz = static_cast<unsigned>(z - lo_[2]);
+    std::unique_ptr<std::int32_t[]>& brick = bricks_[brickIndex(ux, uy, uz)];
+    if (!brick) {
+        brick.reset(new std::int32_t[kSide * kSide * kSide]);
+        std::fill(brick.get(), brick.get() + kSide * kSide * kSide, -1);
+    }
+    std::int32_t& slot = brick[cellIndex(ux, uy, uz)];
+    marked_ += slot < 0;
+    slot = 0;
+}
+
+}  // namespace hg::poly

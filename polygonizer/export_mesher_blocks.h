@@ -1,0 +1,119 @@
+// The export mesher's per-block bit work, apart from the grid (no OpenVDB
+// here): which corners of a block of 8^3 cells are inside, which of the
+// edges it owns cross the surface and what local number each crossing's
+// vertex gets, and its cells' triangles. Plus the block table that finds a
+// block's neighbours without a hash map. export_mesher.cpp drives it.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace hg::poly {
+
+constexpr int kBlockSize = 8;  // cells per block side: one OpenVDB leaf
+
+// Which of a block's 8^3 voxels are inside (value > 0): word x, bit 8y + z,
+// the order of an OpenVDB leaf's buffer.
+struct SignMask {
+    std::array<std::uint64_t, 8> w;
+};
+
+SignMask leafMask(const float* values);  // 512 values, x-major, z fastest
+SignMask uniformMask(float value);
+
+// The edges a block owns (low end in the block) that cross, and the local
+// number of their vertices: axis by axis, row (8x + y) by row, z upwards.
+// A vertex's number is then base + the crossings below it in its row, which
+// any block can work out for its neighbour's edges.
+struct BlockEdges {
+    std::array<std::uint16_t, 81> rows;                   // [9x + y], bit z: corner (x, y, z) inside, 0..8
+    std::array<std::array<std::uint8_t, 64>, 3> cross;    // [axis][8x + y], bit z
+    std::array<std::array<std::uint16_t, 64>, 3> base;    // [axis][8x + y]: the row's first local number
+};
+
+struct BlockCounts {
+    std::uint32_t vertices = 0;      // owned crossing edges
+    std::uint32_t triangles = 0;     // of the block's cells, by the cell table
+    std::uint32_t surfaceCells = 0;  // cells with both inside and outside corners
+};
+
+// From the inside bits of the block (m[0]) and its upper neighbours (m[d]
+// at offset (d & 1, d >> 1 & 1, d >> 2 & 1)): fills `edges` unless every
+// corner has the same sign (then the counts are zero and `edges` untouched).
+BlockCounts analyseBlock(const std::array<const SignMask*, 8>& m, BlockEdges& edges);
+
+// Where the vertices of edges owned by the block or an upper neighbour are.
+struct EdgeOwner {
+    const BlockEdges* edges = nullptr;  // none: no vertex there
+    std::uint32_t firstVertex = 0;
+};
+
+// Writes the triangles of the block's surface cells (three vertex indices
+// each, counter-clockwise from outside) and returns how many. A triangle
+// with an edge that has no owner is left out.
+std::uint32_t triangulateBlock(const BlockEdges& e, const std::array<EdgeOwner, 8>& owners, std::uint32_t* out);
+
+inline int lowestBit(unsigned bits) { return __builtin_ctz(bits); }
+
+// Candidate number by block coordinates (a block's origin / 8), -1 where
+// there is none: a dense grid of 16^3-block bricks over a fixed extent,
+// each allocated when a block in it is first marked. Lookups are a few
+// shifts, and blocks are numbered in one fixed order.
+class BlockTable {
+public:
+    // Inclusive extent in block coordinates.
+    BlockTable(const std::array<int, 3>& lo, const std::array<int, 3>& hi);
+
+    std::int32_t find(int x, int y, int z) const {
+        const unsigned ux = static_cast<unsigned>(x - lo_[0]), uy = static_cast<unsigned>(y - lo_[1]),
+                       uz = static_cast<unsigned>(z - lo_[2]);
+        if (ux >= size_[0] || uy >= size_[1] || uz >= size_[2]) return -1;
+        const std::int32_t* brick = bricks_[brickIndex(ux, uy, uz)].get();
+        return brick ? brick[cellIndex(ux, uy, uz)] : -1;
+    }
+    // The block must lie in the extent.
+    void mark(int x, int y, int z);
+    std::size_t marked() const { return marked_; }
+    // Numbers the marked blocks 0, 1, ... brick by brick and calls
+    // f(x, y, z) for each in that order.
+    template <class F>
+    void number(F f);
+
+private:
+    static constexpr unsigned kLog = 4, kSide = 1u << kLog;
+    std::size_t brickIndex(unsigned ux, unsigned uy, unsigned uz) const {
+        return ((ux >> kLog) * bricks3_[1] + (uy >> kLog)) * bricks3_[2] + (uz >> kLog);
+    }
+    static std::size_t cellIndex(unsigned ux, unsigned uy, unsigned uz) {
+        return (((ux & (kSide - 1)) << kLog | (uy & (kSide - 1))) << kLog) | (uz & (kSide - 1));
+    }
+
+    std::array<int, 3> lo_;
+    std::array<unsigned, 3> size_;     // blocks
+    std::array<std::size_t, 3> bricks3_;  // bricks
+    std::vector<std::unique_ptr<std::int32_t[]>> bricks_;
+    std::size_t marked_ = 0;
+};
+
+template <class F>
+void BlockTable::number(F f) {
+    std::int32_t next = 0;
+    for (std::size_t bx = 0; bx < bricks3_[0]; ++bx)
+        for (std::size_t by = 0; by < bricks3_[1]; ++by)
+            for (std::size_t bz = 0; bz < bricks3_[2]; ++bz) {
+                std::int32_t* brick = bricks_[(bx * bricks3_[1] + by) * bricks3_[2] + bz].get();
+                if (!brick) continue;
+                for (unsigned c = 0; c < kSide * kSide * kSide; ++c) {
+                    if (brick[c] < 0) continue;
+                    brick[c] = next++;
+                    f(lo_[0] + static_cast<int>(bx * kSide + (c >> (2 * kLog))),
+                      lo_[1] + static_cast<int>(by * kSide + ((c >> kLog) & (kSide - 1))),
+                      lo_[2] + static_cast<int>(bz * kSide + (c & (kSide - 1))));
+                }
+            }
+}
+
+}  // namespace hg::poly
