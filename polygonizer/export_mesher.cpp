@@ -6,12 +6,12 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstring>
 #include <memory>
 
-#include "polygonizer/cell_table.h"
 #include "polygonizer/export_mesher_blocks.h"
 #include "voxel/volume_vdb.h"
 
@@ -24,11 +24,11 @@
 //      faces; each gets its 512 inside bits (one compare per voxel);
 //   1. per candidate, from its own bits and its seven upper neighbours': the
 //      9^3 corner signs as bit rows, the edges it owns that cross (low end in
-//      the block), and how many vertices and triangles it will make. Nothing
-//      but bits is read, so the many blocks with no crossing cost ~100 ops;
+//      the block), and how many vertices and triangles it will make. Only
+//      bits are read, so the many blocks without a crossing cost little;
 //   2. one serial prefix sum gives each block its first vertex and first
-//      triangle, so the output is allocated once and written in place,
-//      in the same order whatever the number of threads;
+//      triangle, so the output is allocated once and written in place, in
+//      the same order whatever the number of threads;
 //   3. per block with a crossing: the values around it (an 11^3 halo), one
 //      vertex per owned crossing edge with its gradient normal, then its
 //      cells' triangles. A vertex's index in its owner block is a popcount
@@ -47,23 +47,36 @@ using Leaf = Tree::LeafNodeType;
 using Accessor = openvdb::tree::ValueAccessor<const Tree, false>;
 
 constexpr int kB = kBlockSize;
-constexpr int kHalo = kB + 3;  // voxels -1 .. 9 of a block: its corners and their gradients
+constexpr int kHalo = kB + 3;                          // voxels -1 .. 9 of a block: its corners and their gradients
 constexpr int kStride[3] = {kHalo * kHalo, kHalo, 1};  // a halo step along x, y, z
 
 Coord blockOf(const Coord& origin) { return Coord(origin.x() >> 3, origin.y() >> 3, origin.z() >> 3); }
 Coord originOf(const Coord& block) { return Coord(block.x() * kB, block.y() * kB, block.z() * kB); }
-Coord offset(int d) { return Coord(d & 1, (d >> 1) & 1, (d >> 2) & 1); }  // d in 0..7: the upper neighbours
-std::int32_t find(const BlockTable& table, const Coord& block) { return table.find(block.x(), block.y(), block.z()); }
+Coord upper(int d) { return Coord(d & 1, (d >> 1) & 1, (d >> 2) & 1); }  // d in 0..7: the block and its upper neighbours
 
-struct Candidate {
-    Coord origin;
-    const Leaf* leaf = nullptr;  // or a tile of value `tile`
+// A candidate's values: its leaf's buffer, or one tile value.
+struct Values {
+    const float* data = nullptr;
     float tile = 0.0f;
-    SignMask inside;
+};
+
+struct BlockState {
     BlockCounts counts;
+    const BlockEdges* edges = nullptr;  // where the block is not uniform
     std::uint32_t firstVertex = 0;
-    std::size_t firstTriangle = 0;
     std::uint32_t written = 0;  // triangles phase 3 wrote (fewer only where an edge has no owner)
+    std::size_t firstTriangle = 0;
+};
+
+// Everything per candidate, by candidate number (BlockTable's order).
+struct Candidates {
+    BlockTable table;
+    std::vector<Coord> origins;
+    std::vector<Values> values;
+    std::vector<SignMask> inside;
+    std::vector<BlockState> state;
+
+    std::int32_t find(const Coord& block) const { return table.find(block.x(), block.y(), block.z()); }
 };
 
 // The index box's faces, an 8x8 patch at a time: blocks holding an inside
@@ -98,32 +111,6 @@ void markCappedFaces(const voxel::IndexBox& b, Accessor& acc, Mark mark) {
     }
 }
 
-// Phase 0: candidates in a fixed order (BlockTable's), so the mesh does not
-// depend on the thread count.
-std::vector<Candidate> findCandidates(const voxel::Volume& volume, BlockTable& table,
-                                      std::vector<const Leaf*>& leaves) {
-    const Tree& tree = voxel::vdb(volume).tree();
-    auto markWithLowerNeighbours = [&table](const Coord& origin) {
-        const Coord b = blockOf(origin);
-        for (int d = 0; d < 8; ++d) {
-            const Coord n = b - offset(d);
-            table.mark(n.x(), n.y(), n.z());
-        }
-    };
-    for (const Leaf* leaf : leaves) markWithLowerNeighbours(leaf->origin());
-    Accessor acc(tree);
-    markCappedFaces(volume.frame.indexBox, acc, markWithLowerNeighbours);
-
-    std::vector<Candidate> out;
-    out.reserve(table.marked());
-    table.number([&out](int x, int y, int z) {
-        out.emplace_back();
-        out.back().origin = originOf(Coord(x, y, z));
-    });
-    for (const Leaf* leaf : leaves) out[static_cast<std::size_t>(find(table, blockOf(leaf->origin())))].leaf = leaf;
-    return out;
-}
-
 // The table's extent in blocks: every leaf, the index box, one block below.
 BlockTable makeTable(const voxel::IndexBox& box, const std::vector<const Leaf*>& leaves) {
     Coord lo(box.lo[0], box.lo[1], box.lo[2]), hi(box.hi[0], box.hi[1], box.hi[2]);
@@ -136,52 +123,68 @@ BlockTable makeTable(const voxel::IndexBox& box, const std::vector<const Leaf*>&
     return BlockTable({blo.x(), blo.y(), blo.z()}, {bhi.x(), bhi.y(), bhi.z()});
 }
 
-struct Context {
-    const voxel::VolumeFrame* frame;
-    const BlockTable* table;
-    std::vector<Candidate>* candidates;
-    BlockEdges* edges;  // one per candidate, written where the block is not uniform
-};
-
-// The inside bits of the block at `block`: a candidate's, else its tile's.
-const SignMask& maskAt(const Context& ctx, const Coord& block, Accessor& acc, SignMask& scratch) {
-    const std::int32_t i = find(*ctx.table, block);
-    if (i >= 0) return (*ctx.candidates)[static_cast<std::size_t>(i)].inside;
-    scratch = uniformMask(acc.getValue(originOf(block)));
-    return scratch;
+template <class Body>
+void forEach(std::size_t n, const Tree& tree, Body body) {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n), [&](const tbb::blocked_range<std::size_t>& r) {
+        Accessor acc(tree);
+        for (std::size_t i = r.begin(); i != r.end(); ++i) body(i, acc);
+    });
 }
 
-// Phase 1.
-void classify(const Context& ctx, std::size_t i, Accessor& acc) {
-    Candidate& c = (*ctx.candidates)[i];
-    const Coord b = blockOf(c.origin);
-    std::array<SignMask, 8> scratch;
+// Phase 0: candidates numbered in a fixed order (BlockTable's), so the mesh
+// does not depend on the thread count; their values and inside bits.
+Candidates findCandidates(const voxel::Volume& volume) {
+    const Tree& tree = voxel::vdb(volume).tree();
+    std::vector<const Leaf*> leaves;
+    leaves.reserve(tree.leafCount());
+    tree.getNodes(leaves);
+    Candidates c{makeTable(volume.frame.indexBox, leaves), {}, {}, {}, {}};
+    auto markWithLowerNeighbours = [&c](const Coord& origin) {
+        const Coord b = blockOf(origin);
+        for (int d = 0; d < 8; ++d) {
+            const Coord n = b - upper(d);
+            c.table.mark(n.x(), n.y(), n.z());
+        }
+    };
+    for (const Leaf* leaf : leaves) markWithLowerNeighbours(leaf->origin());
+    Accessor acc(tree);
+    markCappedFaces(volume.frame.indexBox, acc, markWithLowerNeighbours);
+
+    c.origins.reserve(c.table.marked());
+    c.table.number([&c](int x, int y, int z) { c.origins.push_back(originOf(Coord(x, y, z))); });
+    const std::size_t n = c.origins.size();
+    c.values.resize(n);
+    c.inside.resize(n);
+    c.state.resize(n);
+    for (const Leaf* leaf : leaves) c.values[static_cast<std::size_t>(c.find(blockOf(leaf->origin())))].data = leaf->buffer().data();
+    forEach(n, tree, [&c](std::size_t i, Accessor& a) {
+        Values& v = c.values[i];
+        if (!v.data) v.tile = a.getValue(c.origins[i]);
+        c.inside[i] = v.data ? leafMask(v.data) : uniformMask(v.tile);
+    });
+    return c;
+}
+
+// Phase 1 for candidate i. Edge data goes to `pool` (in whatever order the
+// threads come: only the pointer is kept, so the mesh does not depend on it).
+void classify(Candidates& c, std::size_t i, Accessor& acc, BlockEdges* pool, std::atomic<std::size_t>& used) {
+    const Coord b = blockOf(c.origins[i]);
+    std::array<SignMask, 8> tiles;
     std::array<const SignMask*, 8> m;
-    m[0] = &c.inside;
-    for (int d = 1; d < 8; ++d)
-        m[static_cast<std::size_t>(d)] = &maskAt(ctx, b + offset(d), acc, scratch[static_cast<std::size_t>(d)]);
-    c.counts = analyseBlock(m, ctx.edges[i]);
-}
-
-// The values of the block's 27 neighbours (itself included): leaf buffers
-// or tile values.
-struct Neighbourhood {
-    std::array<const float*, 27> data;
-    std::array<float, 27> tile;
-};
-
-Neighbourhood neighbourhood(const Context& ctx, const Coord& origin, Accessor& acc) {
-    Neighbourhood n;
-    const Coord b = blockOf(origin);
-    for (int k = 0; k < 27; ++k) {
-        const Coord d(k % 3 - 1, k / 3 % 3 - 1, k / 9 - 1);
-        const std::int32_t i = find(*ctx.table, b + d);
-        const Candidate* c = i >= 0 ? &(*ctx.candidates)[static_cast<std::size_t>(i)] : nullptr;
-        const auto s = static_cast<std::size_t>(k);
-        n.data[s] = c && c->leaf ? c->leaf->buffer().data() : nullptr;
-        n.tile[s] = c ? c->tile : (n.data[s] ? 0.0f : acc.getValue(originOf(b + d)));
+    for (std::size_t d = 0; d < 8; ++d) {
+        const std::int32_t j = d ? c.find(b + upper(static_cast<int>(d))) : static_cast<std::int32_t>(i);
+        if (j >= 0) {
+            m[d] = &c.inside[static_cast<std::size_t>(j)];
+        } else {
+            tiles[d] = uniformMask(acc.getValue(originOf(b + upper(static_cast<int>(d)))));
+            m[d] = &tiles[d];
+        }
     }
-    return n;
+    CornerRows rows;
+    if (!cornerRows(m, rows)) return;
+    BlockEdges& e = pool[used++];
+    c.state[i].counts = analyseBlock(rows, e);
+    c.state[i].edges = &e;
 }
 
 // The grid's values around one block (voxels -1 .. 9 in each axis), copied
@@ -191,24 +194,33 @@ struct Halo {
     std::array<float, kHalo * kHalo * kHalo> v;
     static constexpr int index(int x, int y, int z) { return ((x + 1) * kHalo + (y + 1)) * kHalo + (z + 1); }
 
-    void fill(const Neighbourhood& n) {
-        const int lo[3] = {-1, 0, kB}, hi[3] = {-1, kB - 1, kB + 1};
-        for (int k = 0; k < 27; ++k) {
-            const int px = k % 3, py = k / 3 % 3, pz = k / 9;
-            const float* data = n.data[static_cast<std::size_t>(k)];
-            const int count = hi[pz] - lo[pz] + 1;
-            for (int x = lo[px]; x <= hi[px]; ++x)
-                for (int y = lo[py]; y <= hi[py]; ++y) {
-                    float* dst = &v[static_cast<std::size_t>(index(x, y, lo[pz]))];
-                    if (!data) {
-                        std::fill(dst, dst + count, n.tile[static_cast<std::size_t>(k)]);
-                        continue;
-                    }
-                    // Leaf offsets are x-major, z fastest, like the halo.
-                    const int lx = x & (kB - 1), ly = y & (kB - 1), lz = lo[pz] & (kB - 1);
-                    std::memcpy(dst, data + (lx * kB + ly) * kB + lz, sizeof(float) * static_cast<std::size_t>(count));
-                }
+    void fill(const Candidates& c, const Coord& origin, Accessor& acc) {
+        // The 27 neighbours (offsets -1..1, x fastest), each a leaf buffer or
+        // a row of its tile value: `mask` is 0 for a tile, so every voxel of
+        // the neighbour reads that row, and the copy below needs no branch.
+        std::array<const float*, 27> data;
+        std::array<int, 27> mask;
+        std::array<std::array<float, kB>, 27> tileRows;
+        const Coord b = blockOf(origin);
+        for (std::size_t k = 0; k < 27; ++k) {
+            const Coord d(static_cast<int>(k % 3) - 1, static_cast<int>(k / 3 % 3) - 1, static_cast<int>(k / 9) - 1);
+            const std::int32_t j = c.find(b + d);
+            const Values val = j >= 0 ? c.values[static_cast<std::size_t>(j)] : Values{nullptr, acc.getValue(originOf(b + d))};
+            mask[k] = val.data ? -1 : 0;
+            if (!val.data) tileRows[k].fill(val.tile);
+            data[k] = val.data ? val.data : tileRows[k].data();
         }
+        // Row (x, y) of the halo: z = -1 from the neighbour below, 0..7 from
+        // the block's column, 8..9 from the one above.
+        for (int x = -1; x <= kB + 1; ++x)
+            for (int y = -1; y <= kB + 1; ++y) {
+                const auto s = static_cast<std::size_t>(((x + kB) >> 3) + 3 * ((y + kB) >> 3));
+                const int row = ((x & (kB - 1)) * kB + (y & (kB - 1))) * kB;  // leaf offset of (x, y, 0)
+                float* dst = &v[static_cast<std::size_t>(index(x, y, -1))];
+                dst[0] = data[s][(row + kB - 1) & mask[s]];
+                std::memcpy(dst + 1, data[s + 9] + (row & mask[s + 9]), kB * sizeof(float));
+                std::memcpy(dst + 1 + kB, data[s + 18] + (row & mask[s + 18]), 2 * sizeof(float));
+            }
     }
 };
 
@@ -220,16 +232,12 @@ struct Output {
 
 // Phase 3a: one vertex per owned crossing edge, in the order BlockEdges
 // numbers them (axis, then row, then z).
-void placeVertices(const Candidate& c, const BlockEdges& e, const Halo& h, const voxel::VolumeFrame& frame,
-                   const Output& out) {
+void placeVertices(const Coord& origin, std::uint32_t firstVertex, const BlockEdges& e, const Halo& h,
+                   const voxel::VolumeFrame& frame, const Output& out) {
     const float* v = h.v.data();
-    auto grad = [v](int p) {
-        return openvdb::Vec3d(0.5 * static_cast<double>(v[p + kStride[0]] - v[p - kStride[0]]),
-                              0.5 * static_cast<double>(v[p + kStride[1]] - v[p - kStride[1]]),
-                              0.5 * static_cast<double>(v[p + kStride[2]] - v[p - kStride[2]]));
-    };
+    auto grad = [v](int p, int a) { return v[p + kStride[a]] - v[p - kStride[a]]; };  // twice the gradient
     const double step = frame.voxelSize;
-    std::size_t k = 3 * static_cast<std::size_t>(c.firstVertex);
+    std::size_t k = 3 * static_cast<std::size_t>(firstVertex);
     for (int axis = 0; axis < 3; ++axis)
         for (int row = 0; row < kB * kB; ++row) {
             unsigned bits = e.cross[static_cast<std::size_t>(axis)][static_cast<std::size_t>(row)];
@@ -242,62 +250,54 @@ void placeVertices(const Candidate& c, const BlockEdges& e, const Halo& h, const
                 // gives zero-area triangles that slicers flag.
                 const double d0 = v[p], d1 = v[q];
                 const double t = std::clamp(d0 / (d0 - d1), 1e-3, 1.0 - 1e-3);
-                auto pos = frame.position(c.origin.x() + x, c.origin.y() + y, c.origin.z() + z);
+                auto pos = frame.position(origin.x() + x, origin.y() + y, origin.z() + z);
                 pos[static_cast<std::size_t>(axis)] += t * step;
-                const openvdb::Vec3d g = grad(p) * (1.0 - t) + grad(q) * t;
-                const double len = g.length();
-                const openvdb::Vec3d n = len > 0 ? -g / len : openvdb::Vec3d(0, 0, 0);  // f grows inwards
+                const auto tf = static_cast<float>(t);
+                float g[3];
+                for (int a = 0; a < 3; ++a) g[a] = grad(p, a) * (1.0f - tf) + grad(q, a) * tf;
+                const float len2 = g[0] * g[0] + g[1] * g[1] + g[2] * g[2];
+                const float scale = len2 > 0.0f ? -1.0f / std::sqrt(len2) : 0.0f;  // f grows inwards
                 for (std::size_t a = 0; a < 3; ++a) {
                     out.positions[k + a] = static_cast<float>(pos[a]);
-                    out.normals[k + a] = static_cast<float>(n[static_cast<int>(a)]);
+                    out.normals[k + a] = g[a] * scale;
                 }
                 k += 3;
             }
         }
 }
 
-// Phase 3 for one block.
-void meshBlock(const Context& ctx, std::size_t i, Accessor& acc, const Output& out) {
-    Candidate& c = (*ctx.candidates)[i];
-    const BlockEdges& e = ctx.edges[i];
-    if (c.counts.vertices > 0) {
+// Phase 3 for candidate i.
+void meshBlock(Candidates& c, std::size_t i, Accessor& acc, const voxel::VolumeFrame& frame, const Output& out) {
+    BlockState& s = c.state[i];
+    if (s.counts.vertices > 0) {
         Halo h;
-        h.fill(neighbourhood(ctx, c.origin, acc));
-        placeVertices(c, e, h, *ctx.frame, out);
+        h.fill(c, c.origins[i], acc);
+        placeVertices(c.origins[i], s.firstVertex, *s.edges, h, frame, out);
     }
     // The blocks that own this block's cells' edges: itself and its upper
     // neighbours (those without a crossing own no vertex).
     std::array<EdgeOwner, 8> owners{};
-    const Coord b = blockOf(c.origin);
+    const Coord b = blockOf(c.origins[i]);
     for (int d = 0; d < 8; ++d) {
-        const std::int32_t j = find(*ctx.table, b + offset(d));
+        const std::int32_t j = d ? c.find(b + upper(d)) : static_cast<std::int32_t>(i);
         if (j < 0) continue;
-        const Candidate& o = (*ctx.candidates)[static_cast<std::size_t>(j)];
-        if (o.counts.vertices == 0) continue;
-        owners[static_cast<std::size_t>(d)] = {&ctx.edges[static_cast<std::size_t>(j)], o.firstVertex};
+        const BlockState& o = c.state[static_cast<std::size_t>(j)];
+        if (o.counts.vertices > 0) owners[static_cast<std::size_t>(d)] = {o.edges, o.firstVertex};
     }
-    c.written = triangulateBlock(e, owners, out.indices + 3 * c.firstTriangle);
+    s.written = triangulateBlock(*s.edges, owners, out.indices + 3 * s.firstTriangle);
 }
 
 // Blocks whose triangles lost an edge without an owner (only a sign change
 // between two tiles, a program discontinuous across its own surface, has
 // none) wrote fewer than they reserved: close the gaps.
-void compact(const std::vector<Candidate>& candidates, std::vector<std::uint32_t>& indices) {
+void compact(const std::vector<BlockState>& state, std::vector<std::uint32_t>& indices) {
     std::size_t to = 0;
-    for (const Candidate& c : candidates) {
-        const std::size_t from = 3 * c.firstTriangle, n = 3 * static_cast<std::size_t>(c.written);
+    for (const BlockState& s : state) {
+        const std::size_t from = 3 * s.firstTriangle, n = 3 * static_cast<std::size_t>(s.written);
         if (from != to) std::memmove(indices.data() + to, indices.data() + from, n * sizeof(std::uint32_t));
         to += n;
     }
     indices.resize(to);
-}
-
-template <class Body>
-void forEach(std::size_t n, const Tree& tree, Body body) {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n), [&](const tbb::blocked_range<std::size_t>& r) {
-        Accessor acc(tree);
-        for (std::size_t i = r.begin(); i != r.end(); ++i) body(i, acc);
-    });
 }
 
 }  // namespace
@@ -305,42 +305,29 @@ void forEach(std::size_t n, const Tree& tree, Body body) {
 Mesh meshVolume(const voxel::Volume& volume, ExportStats* stats) {
     const auto start = std::chrono::steady_clock::now();
     const Tree& tree = voxel::vdb(volume).tree();
-    std::vector<const Leaf*> leaves;
-    leaves.reserve(tree.leafCount());
-    tree.getNodes(leaves);
 
-    // Phase 0.
-    BlockTable table = makeTable(volume.frame.indexBox, leaves);
-    std::vector<Candidate> candidates = findCandidates(volume, table, leaves);
-    forEach(candidates.size(), tree, [&](std::size_t i, Accessor& acc) {
-        Candidate& c = candidates[i];
-        if (c.leaf) {
-            c.inside = leafMask(c.leaf->buffer().data());
-        } else {
-            c.tile = acc.getValue(c.origin);
-            c.inside = uniformMask(c.tile);
-        }
-    });
+    Candidates c = findCandidates(volume);
+    const std::size_t n = c.origins.size();
 
-    // Phase 1. Edge data is left uninitialized: only non-uniform blocks
-    // write theirs, and only those are read.
-    std::unique_ptr<BlockEdges[]> edges(new BlockEdges[candidates.size()]);
-    const Context ctx{&volume.frame, &table, &candidates, edges.get()};
-    forEach(candidates.size(), tree, [&](std::size_t i, Accessor& acc) { classify(ctx, i, acc); });
+    // Phase 1. The pool is left uninitialized: only the blocks that are not
+    // uniform (a minority) write a slot, so only their pages are touched.
+    std::unique_ptr<BlockEdges[]> pool(new BlockEdges[n]);
+    std::atomic<std::size_t> used{0};
+    forEach(n, tree, [&](std::size_t i, Accessor& acc) { classify(c, i, acc, pool.get(), used); });
 
     // Phase 2.
     std::uint32_t vertices = 0;
     std::size_t triangles = 0;
     ExportStats st;
     std::vector<std::uint32_t> active;
-    for (std::size_t i = 0; i < candidates.size(); ++i) {
-        Candidate& c = candidates[i];
-        c.firstVertex = vertices;
-        c.firstTriangle = triangles;
-        vertices += c.counts.vertices;
-        triangles += c.counts.triangles;
-        st.surfaceCells += c.counts.surfaceCells;
-        if (c.counts.vertices > 0 || c.counts.triangles > 0) active.push_back(static_cast<std::uint32_t>(i));
+    for (std::size_t i = 0; i < n; ++i) {
+        BlockState& s = c.state[i];
+        s.firstVertex = vertices;
+        s.firstTriangle = triangles;
+        vertices += s.counts.vertices;
+        triangles += s.counts.triangles;
+        st.surfaceCells += s.counts.surfaceCells;
+        if (s.counts.vertices > 0 || s.counts.triangles > 0) active.push_back(static_cast<std::uint32_t>(i));
     }
     Mesh mesh;
     // Zero-filling the output is a large share of the serial time: split it.
@@ -350,12 +337,13 @@ Mesh meshVolume(const voxel::Volume& volume, ExportStats* stats) {
 
     // Phase 3.
     const Output out{mesh.positions.data(), mesh.normals.data(), mesh.indices.data()};
-    forEach(active.size(), tree, [&](std::size_t k, Accessor& acc) { meshBlock(ctx, active[k], acc, out); });
+    forEach(active.size(), tree,
+            [&](std::size_t k, Accessor& acc) { meshBlock(c, active[k], acc, volume.frame, out); });
     bool complete = true;
-    for (std::uint32_t i : active) complete = complete && candidates[i].written == candidates[i].counts.triangles;
-    if (!complete) compact(candidates, mesh.indices);
+    for (std::uint32_t i : active) complete = complete && c.state[i].written == c.state[i].counts.triangles;
+    if (!complete) compact(c.state, mesh.indices);
 
-    st.cells = candidates.size() * static_cast<std::size_t>(kB * kB * kB);
+    st.cells = n * static_cast<std::size_t>(kB * kB * kB);
     st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (stats) *stats = st;
     return mesh;

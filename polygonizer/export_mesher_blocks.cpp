@@ -84,6 +84,16 @@ std::array<EdgeStep, 12> makeEdgeSteps() {
     return s;
 }
 
+// Bit e set when the case's triangles use cell edge e.
+std::array<std::uint16_t, 256> makeUsedEdges() {
+    std::array<std::uint16_t, 256> used{};
+    const auto& table = cellTable();
+    for (std::size_t c = 0; c < 256; ++c)
+        for (std::size_t t = 0; t < 3 * static_cast<std::size_t>(table[c].triangleCount); ++t)
+            used[c] = static_cast<std::uint16_t>(used[c] | 1u << table[c].edges[t]);
+    return used;
+}
+
 constexpr std::uint32_t kNoVertex = 0xFFFFFFFFu;
 
 // The global index of the vertex on grid edge (axis, x, y, z), block-local
@@ -113,11 +123,10 @@ SignMask uniformMask(float value) {
     return m;
 }
 
-BlockCounts analyseBlock(const std::array<const SignMask*, 8>& m, BlockEdges& edges) {
-    // Corner rows: z 0..7 from the block's (or its +x / +y neighbours') bits,
-    // z = 8 from the +z neighbours' first voxel in the row.
-    std::array<std::uint16_t, 81> rows;
-    bool uniform = true;
+bool cornerRows(const std::array<const SignMask*, 8>& m, CornerRows& rows) {
+    // z 0..7 from the block's (or its +x / +y neighbours') bits, z = 8 from
+    // the +z neighbours' first voxel in the row.
+    unsigned any = 0, all = kAllInside;
     for (int x = 0; x <= kB; ++x)
         for (int y = 0; y <= kB; ++y) {
             const std::size_t d = static_cast<std::size_t>((x >> 3) | (y >> 3) << 1);
@@ -125,12 +134,16 @@ BlockCounts analyseBlock(const std::array<const SignMask*, 8>& m, BlockEdges& ed
             const unsigned shift = 8u * static_cast<unsigned>(y & (kB - 1));
             const auto low = static_cast<unsigned>((m[d]->w[word] >> shift) & 0xFFu);
             const auto top = static_cast<unsigned>((m[d + 4]->w[word] >> shift) & 1u);
-            const auto r = static_cast<std::uint16_t>(low | top << 8);
-            rows[static_cast<std::size_t>(x * kRow + y)] = r;
-            uniform = uniform && (r == 0 || r == kAllInside) && r == rows[0];
+            const unsigned r = low | top << 8;
+            rows[static_cast<std::size_t>(x * kRow + y)] = static_cast<std::uint16_t>(r);
+            any |= r;
+            all &= r;
         }
+    return any != 0 && all != kAllInside;
+}
+
+BlockCounts analyseBlock(const CornerRows& rows, BlockEdges& edges) {
     BlockCounts counts;
-    if (uniform) return counts;
     edges.rows = rows;
     for (int axis = 0; axis < 3; ++axis)
         for (int x = 0; x < kB; ++x)
@@ -153,27 +166,40 @@ BlockCounts analyseBlock(const std::array<const SignMask*, 8>& m, BlockEdges& ed
 
 std::uint32_t triangulateBlock(const BlockEdges& e, const std::array<EdgeOwner, 8>& owners, std::uint32_t* out) {
     static const std::array<EdgeStep, 12> steps = makeEdgeSteps();
+    static const std::array<std::uint16_t, 256> usedEdges = makeUsedEdges();
     const auto& table = cellTable();
-    std::uint32_t written = 0;
+    std::uint32_t* const first = out;
     for (int x = 0; x < kB; ++x)
         for (int y = 0; y < kB; ++y)
             for (unsigned cells = surfaceCellsOfColumn(e.rows, x, y); cells; cells &= cells - 1) {
                 const int z = lowestBit(cells);
-                const CellCase& cc = table[cellCase(e.rows, x, y, z)];
-                for (std::size_t t = 0; t < cc.triangleCount; ++t) {
-                    std::uint32_t tri[3];
-                    bool found = true;
-                    for (std::size_t k = 0; k < 3 && found; ++k) {
-                        const EdgeStep& s = steps[cc.edges[3 * t + k]];
-                        tri[k] = vertexIndex(owners, s.axis, x + s.dx, y + s.dy, z + s.dz);
-                        found = tri[k] != kNoVertex;
-                    }
-                    if (!found) continue;
-                    std::copy(tri, tri + 3, out + 3 * written);
-                    ++written;
+                const unsigned c = cellCase(e.rows, x, y, z);
+                // Each crossing edge's vertex once, then the case's triangles.
+                std::array<std::uint32_t, 12> vertex;
+                bool complete = true;
+                for (unsigned used = usedEdges[c]; used; used &= used - 1) {
+                    const auto k = static_cast<std::size_t>(lowestBit(used));
+                    const EdgeStep& s = steps[k];
+                    vertex[k] = vertexIndex(owners, s.axis, x + s.dx, y + s.dy, z + s.dz);
+                    complete = complete && vertex[k] != kNoVertex;
+                }
+                const CellCase& cc = table[c];
+                const std::size_t n = 3 * static_cast<std::size_t>(cc.triangleCount);
+                if (complete) {
+                    for (std::size_t t = 0; t < n; ++t) out[t] = vertex[cc.edges[t]];
+                    out += n;
+                    continue;
+                }
+                for (std::size_t t = 0; t < n; t += 3) {
+                    const std::uint32_t a = vertex[cc.edges[t]], b = vertex[cc.edges[t + 1]],
+                                        d = vertex[cc.edges[t + 2]];
+                    if (a == kNoVertex || b == kNoVertex || d == kNoVertex) continue;
+                    *out++ = a;
+                    *out++ = b;
+                    *out++ = d;
                 }
             }
-    return written;
+    return static_cast<std::uint32_t>((out - first) / 3);
 }
 
 BlockTable::BlockTable(const std::array<int, 3>& lo, const std::array<int, 3>& hi) : lo_(lo) {

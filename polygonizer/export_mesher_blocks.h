@@ -24,14 +24,23 @@ struct SignMask {
 SignMask leafMask(const float* values);  // 512 values, x-major, z fastest
 SignMask uniformMask(float value);
 
+// A block's corner signs, 0..8 in each axis: [9x + y], bit z set when
+// corner (x, y, z) is inside.
+using CornerRows = std::array<std::uint16_t, 81>;
+
+// From the inside bits of the block (m[0]) and its upper neighbours (m[d]
+// at offset (d & 1, d >> 1 & 1, d >> 2 & 1)). False when every corner has
+// the same sign (no cell of the block touches the surface).
+bool cornerRows(const std::array<const SignMask*, 8>& m, CornerRows& rows);
+
 // The edges a block owns (low end in the block) that cross, and the local
 // number of their vertices: axis by axis, row (8x + y) by row, z upwards.
 // A vertex's number is then base + the crossings below it in its row, which
 // any block can work out for its neighbour's edges.
 struct BlockEdges {
-    std::array<std::uint16_t, 81> rows;                   // [9x + y], bit z: corner (x, y, z) inside, 0..8
-    std::array<std::array<std::uint8_t, 64>, 3> cross;    // [axis][8x + y], bit z
-    std::array<std::array<std::uint16_t, 64>, 3> base;    // [axis][8x + y]: the row's first local number
+    CornerRows rows;
+    std::array<std::array<std::uint8_t, 64>, 3> cross;  // [axis][8x + y], bit z
+    std::array<std::array<std::uint16_t, 64>, 3> base;  // [axis][8x + y]: the row's first local number
 };
 
 struct BlockCounts {
@@ -40,10 +49,7 @@ struct BlockCounts {
     std::uint32_t surfaceCells = 0;  // cells with both inside and outside corners
 };
 
-// From the inside bits of the block (m[0]) and its upper neighbours (m[d]
-// at offset (d & 1, d >> 1 & 1, d >> 2 & 1)): fills `edges` unless every
-// corner has the same sign (then the counts are zero and `edges` untouched).
-BlockCounts analyseBlock(const std::array<const SignMask*, 8>& m, BlockEdges& edges);
+BlockCounts analyseBlock(const CornerRows& rows, BlockEdges& edges);
 
 // Where the vertices of edges owned by the block or an upper neighbour are.
 struct EdgeOwner {
