@@ -12,6 +12,10 @@
 #include <cstring>
 #include <memory>
 
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
+
 #include "polygonizer/export_mesher_blocks.h"
 #include "voxel/volume_vdb.h"
 
@@ -266,6 +270,13 @@ void placeVertices(const Coord& origin, std::uint32_t firstVertex, const BlockEd
         }
 }
 
+// The next block's own leaf, read while this one is meshed: its halo copy
+// otherwise waits on memory (leaves were last read in phase 0).
+void prefetchValues(const Values& v) {
+    if (!v.data) return;
+    for (int i = 0; i < kB * kB * kB; i += 16) __builtin_prefetch(v.data + i);
+}
+
 // Phase 3 for candidate i.
 void meshBlock(Candidates& c, std::size_t i, Accessor& acc, const voxel::VolumeFrame& frame, const Output& out) {
     BlockState& s = c.state[i];
@@ -300,6 +311,22 @@ void compact(const std::vector<BlockState>& state, std::vector<std::uint32_t>& i
     indices.resize(to);
 }
 
+// Sizes an output array. Large ones ask for transparent huge pages first:
+// faulting in fresh memory 4 KiB at a time is otherwise a large share of
+// the mesher's time on big meshes (the kernel's policy decides; without
+// support this is a plain resize).
+template <class T>
+void allocate(std::vector<T>& v, std::size_t n) {
+    v.reserve(n);
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+    constexpr std::uintptr_t kHuge = std::uintptr_t{1} << 21;
+    const auto begin = reinterpret_cast<std::uintptr_t>(v.data());
+    const std::uintptr_t lo = (begin + kHuge - 1) & ~(kHuge - 1), hi = (begin + n * sizeof(T)) & ~(kHuge - 1);
+    if (hi > lo) madvise(reinterpret_cast<void*>(lo), hi - lo, MADV_HUGEPAGE);
+#endif
+    v.resize(n);
+}
+
 }  // namespace
 
 Mesh meshVolume(const voxel::Volume& volume, ExportStats* stats) {
@@ -331,14 +358,16 @@ Mesh meshVolume(const voxel::Volume& volume, ExportStats* stats) {
     }
     Mesh mesh;
     // Zero-filling the output is a large share of the serial time: split it.
-    tbb::parallel_invoke([&] { mesh.positions.resize(3 * static_cast<std::size_t>(vertices)); },
-                         [&] { mesh.normals.resize(3 * static_cast<std::size_t>(vertices)); },
-                         [&] { mesh.indices.resize(3 * triangles); });
+    tbb::parallel_invoke([&] { allocate(mesh.positions, 3 * static_cast<std::size_t>(vertices)); },
+                         [&] { allocate(mesh.normals, 3 * static_cast<std::size_t>(vertices)); },
+                         [&] { allocate(mesh.indices, 3 * triangles); });
 
     // Phase 3.
     const Output out{mesh.positions.data(), mesh.normals.data(), mesh.indices.data()};
-    forEach(active.size(), tree,
-            [&](std::size_t k, Accessor& acc) { meshBlock(c, active[k], acc, volume.frame, out); });
+    forEach(active.size(), tree, [&](std::size_t k, Accessor& acc) {
+        if (k + 1 < active.size()) prefetchValues(c.values[active[k + 1]]);
+        meshBlock(c, active[k], acc, volume.frame, out);
+    });
     bool complete = true;
     for (std::uint32_t i : active) complete = complete && c.state[i].written == c.state[i].counts.triangles;
     if (!complete) compact(c.state, mesh.indices);

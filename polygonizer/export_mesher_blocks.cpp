@@ -41,7 +41,7 @@ std::uint64_t insideBits(const float* v) {
 }
 
 // Case index of cell (x, y, z): bit c set when corner c is inside.
-unsigned cellCase(const std::array<std::uint16_t, 81>& rows, int x, int y, int z) {
+unsigned cellCase(const CornerRows& rows, int x, int y, int z) {
     const unsigned r00 = rows[static_cast<std::size_t>(x * kRow + y)] >> z;
     const unsigned r10 = rows[static_cast<std::size_t>((x + 1) * kRow + y)] >> z;
     const unsigned r01 = rows[static_cast<std::size_t>(x * kRow + y + 1)] >> z;
@@ -51,7 +51,7 @@ unsigned cellCase(const std::array<std::uint16_t, 81>& rows, int x, int y, int z
 }
 
 // Bit z set when cell (x, y, z) has corners of both signs.
-unsigned surfaceCellsOfColumn(const std::array<std::uint16_t, 81>& rows, int x, int y) {
+unsigned surfaceCellsOfColumn(const CornerRows& rows, int x, int y) {
     const unsigned r00 = rows[static_cast<std::size_t>(x * kRow + y)];
     const unsigned r10 = rows[static_cast<std::size_t>((x + 1) * kRow + y)];
     const unsigned r01 = rows[static_cast<std::size_t>(x * kRow + y + 1)];
@@ -60,53 +60,60 @@ unsigned surfaceCellsOfColumn(const std::array<std::uint16_t, 81>& rows, int x, 
     return ((any | any >> 1) & ~(all & all >> 1)) & 0xFFu;
 }
 
-// The crossings of the owned edges along `axis` in row (x, y), bit z.
-unsigned crossingsOfRow(const std::array<std::uint16_t, 81>& rows, int axis, int x, int y) {
-    const unsigned r = rows[static_cast<std::size_t>(x * kRow + y)];
-    const unsigned other = axis == 0   ? rows[static_cast<std::size_t>((x + 1) * kRow + y)]
-                           : axis == 1 ? rows[static_cast<std::size_t>(x * kRow + y + 1)]
-                                       : r >> 1;
-    return (r ^ other) & 0xFFu;
-}
+// The vertex of every crossing edge a block's cells use, by the edge's low
+// end: [((axis * 9 + x) * 9 + y) * 9 + z], x, y, z in 0..8. Only crossing
+// edges' entries are written (and only they are read).
+using EdgeIndices = std::array<std::uint32_t, 3 * kRow * kRow * kRow>;
 
-// Cell edge e, as the grid edge it is: its axis and the offset of its low
-// end from the cell's low corner.
-struct EdgeStep {
-    int axis, dx, dy, dz;
-};
-
-std::array<EdgeStep, 12> makeEdgeSteps() {
-    std::array<EdgeStep, 12> s{};
+// Cell edge e's entry relative to its cell's low corner's.
+std::array<int, 12> makeEdgeOffsets() {
+    std::array<int, 12> off{};
     for (std::size_t e = 0; e < 12; ++e) {
         const int c0 = kEdgeCorners[e][0];
-        s[e] = {kEdgeAxis[e], c0 & 1, (c0 >> 1) & 1, (c0 >> 2) & 1};
+        off[e] = ((kEdgeAxis[e] * kRow + (c0 & 1)) * kRow + ((c0 >> 1) & 1)) * kRow + ((c0 >> 2) & 1);
     }
-    return s;
-}
-
-// Bit e set when the case's triangles use cell edge e.
-std::array<std::uint16_t, 256> makeUsedEdges() {
-    std::array<std::uint16_t, 256> used{};
-    const auto& table = cellTable();
-    for (std::size_t c = 0; c < 256; ++c)
-        for (std::size_t t = 0; t < 3 * static_cast<std::size_t>(table[c].triangleCount); ++t)
-            used[c] = static_cast<std::uint16_t>(used[c] | 1u << table[c].edges[t]);
-    return used;
+    return off;
 }
 
 constexpr std::uint32_t kNoVertex = 0xFFFFFFFFu;
 
-// The global index of the vertex on grid edge (axis, x, y, z), block-local
-// with x, y, z in 0..8: owned by the block (all below 8) or an upper
-// neighbour.
-std::uint32_t vertexIndex(const std::array<EdgeOwner, 8>& owners, int axis, int x, int y, int z) {
-    const EdgeOwner& o = owners[static_cast<std::size_t>((x >> 3) | (y >> 3) << 1 | (z >> 3) << 2)];
-    if (!o.edges) return kNoVertex;
-    const auto row = static_cast<std::size_t>((x & (kB - 1)) * kB + (y & (kB - 1)));
-    const unsigned bit = static_cast<unsigned>(z & (kB - 1));
-    const unsigned bits = o.edges->cross[static_cast<std::size_t>(axis)][row];
-    if (!((bits >> bit) & 1u)) return kNoVertex;
-    return o.firstVertex + o.edges->base[static_cast<std::size_t>(axis)][row] + bitCount(bits & ((1u << bit) - 1));
+// The crossings of the edges along `axis` that start in row (x, y) of the
+// block's corners, bit z (0..8; 0..7 along z).
+unsigned crossingsOfCornerRow(const CornerRows& rows, int axis, int x, int y) {
+    const unsigned r = rows[static_cast<std::size_t>(x * kRow + y)];
+    if (axis == 2) return (r ^ r >> 1) & 0xFFu;
+    const unsigned other = rows[static_cast<std::size_t>(axis == 0 ? (x + 1) * kRow + y : x * kRow + y + 1)];
+    return r ^ other;
+}
+
+// Fills `vertex` for the crossing edges of the block's cells, row by row:
+// an owner numbers a row's crossings consecutively from its base, so each
+// row costs one look-up in its owner (the block or an upper neighbour).
+// False when some crossing has no owner (its entry is kNoVertex).
+bool edgeIndices(const BlockEdges& e, const std::array<EdgeOwner, 8>& owners, EdgeIndices& vertex) {
+    bool complete = true;
+    for (int axis = 0; axis < 3; ++axis)
+        for (int x = 0; x < (axis == 0 ? kB : kRow); ++x)
+            for (int y = 0; y < (axis == 1 ? kB : kRow); ++y) {
+                const unsigned c = crossingsOfCornerRow(e.rows, axis, x, y);
+                if (!c) continue;
+                const auto d = static_cast<std::size_t>((x >> 3) | (y >> 3) << 1);
+                const auto row = static_cast<std::size_t>((x & (kB - 1)) * kB + (y & (kB - 1)));
+                std::uint32_t* dst = vertex.data() + ((axis * kRow + x) * kRow + y) * kRow;
+                // z 0..7 belong to owner d, z = 8 to the one above it (its z = 0).
+                const EdgeOwner& low = owners[d];
+                std::uint32_t next = low.edges ? low.firstVertex + low.edges->base[static_cast<std::size_t>(axis)][row] : kNoVertex;
+                for (unsigned bits = c & 0xFFu; bits; bits &= bits - 1) {
+                    dst[lowestBit(bits)] = next;
+                    if (next != kNoVertex) ++next;
+                }
+                complete = complete && (low.edges || !(c & 0xFFu));
+                if (!(c & 0x100u)) continue;
+                const EdgeOwner& high = owners[d + 4];
+                dst[kB] = high.edges ? high.firstVertex + high.edges->base[static_cast<std::size_t>(axis)][row] : kNoVertex;
+                complete = complete && high.edges;
+            }
+    return complete;
 }
 
 }  // namespace
@@ -149,7 +156,7 @@ BlockCounts analyseBlock(const CornerRows& rows, BlockEdges& edges) {
         for (int x = 0; x < kB; ++x)
             for (int y = 0; y < kB; ++y) {
                 const auto row = static_cast<std::size_t>(x * kB + y);
-                const unsigned c = crossingsOfRow(rows, axis, x, y);
+                const unsigned c = crossingsOfCornerRow(rows, axis, x, y) & 0xFFu;
                 edges.cross[static_cast<std::size_t>(axis)][row] = static_cast<std::uint8_t>(c);
                 edges.base[static_cast<std::size_t>(axis)][row] = static_cast<std::uint16_t>(counts.vertices);
                 counts.vertices += bitCount(c);
@@ -165,34 +172,26 @@ BlockCounts analyseBlock(const CornerRows& rows, BlockEdges& edges) {
 }
 
 std::uint32_t triangulateBlock(const BlockEdges& e, const std::array<EdgeOwner, 8>& owners, std::uint32_t* out) {
-    static const std::array<EdgeStep, 12> steps = makeEdgeSteps();
-    static const std::array<std::uint16_t, 256> usedEdges = makeUsedEdges();
+    static const std::array<int, 12> offsets = makeEdgeOffsets();
     const auto& table = cellTable();
+    EdgeIndices vertex;
+    const bool complete = edgeIndices(e, owners, vertex);
     std::uint32_t* const first = out;
     for (int x = 0; x < kB; ++x)
         for (int y = 0; y < kB; ++y)
             for (unsigned cells = surfaceCellsOfColumn(e.rows, x, y); cells; cells &= cells - 1) {
                 const int z = lowestBit(cells);
-                const unsigned c = cellCase(e.rows, x, y, z);
-                // Each crossing edge's vertex once, then the case's triangles.
-                std::array<std::uint32_t, 12> vertex;
-                bool complete = true;
-                for (unsigned used = usedEdges[c]; used; used &= used - 1) {
-                    const auto k = static_cast<std::size_t>(lowestBit(used));
-                    const EdgeStep& s = steps[k];
-                    vertex[k] = vertexIndex(owners, s.axis, x + s.dx, y + s.dy, z + s.dz);
-                    complete = complete && vertex[k] != kNoVertex;
-                }
-                const CellCase& cc = table[c];
+                const std::uint32_t* v = vertex.data() + ((x * kRow + y) * kRow + z);
+                const CellCase& cc = table[cellCase(e.rows, x, y, z)];
                 const std::size_t n = 3 * static_cast<std::size_t>(cc.triangleCount);
                 if (complete) {
-                    for (std::size_t t = 0; t < n; ++t) out[t] = vertex[cc.edges[t]];
+                    for (std::size_t t = 0; t < n; ++t) out[t] = v[offsets[cc.edges[t]]];
                     out += n;
                     continue;
                 }
                 for (std::size_t t = 0; t < n; t += 3) {
-                    const std::uint32_t a = vertex[cc.edges[t]], b = vertex[cc.edges[t + 1]],
-                                        d = vertex[cc.edges[t + 2]];
+                    const std::uint32_t a = v[offsets[cc.edges[t]]], b = v[offsets[cc.edges[t + 1]]],
+                                        d = v[offsets[cc.edges[t + 2]]];
                     if (a == kNoVertex || b == kNoVertex || d == kNoVertex) continue;
                     *out++ = a;
                     *out++ = b;
