@@ -244,8 +244,8 @@ void placeVertices(const Coord& origin, std::uint32_t firstVertex, const BlockEd
     std::size_t k = 3 * static_cast<std::size_t>(firstVertex);
     for (int axis = 0; axis < 3; ++axis)
         for (int row = 0; row < kB * kB; ++row) {
-            unsigned bits = e.cross[static_cast<std::size_t>(axis)][static_cast<std::size_t>(row)];
             const int x = row / kB, y = row % kB;
+            unsigned bits = crossings(e.rows, axis, x, y) & 0xFFu;
             while (bits) {
                 const int z = lowestBit(bits);
                 bits &= bits - 1;
@@ -311,19 +311,27 @@ void compact(const std::vector<BlockState>& state, std::vector<std::uint32_t>& i
     indices.resize(to);
 }
 
-// Sizes an output array. Large ones ask for transparent huge pages first:
-// faulting in fresh memory 4 KiB at a time is otherwise a large share of
-// the mesher's time on big meshes (the kernel's policy decides; without
-// support this is a plain resize).
+// Asks for transparent huge pages on the whole 2 MiB pages of a large
+// buffer before it is first touched: faulting fresh memory in 4 KiB at a
+// time is otherwise a large share of the mesher's time on big meshes. The
+// kernel's policy decides; elsewhere this does nothing.
+void adviseHugePages(const void* data, std::size_t bytes) {
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+    constexpr std::uintptr_t kHuge = std::uintptr_t{1} << 21;
+    const auto begin = reinterpret_cast<std::uintptr_t>(data);
+    const std::uintptr_t lo = (begin + kHuge - 1) & ~(kHuge - 1), hi = (begin + bytes) & ~(kHuge - 1);
+    if (hi > lo) madvise(reinterpret_cast<void*>(lo), hi - lo, MADV_HUGEPAGE);
+#else
+    (void)data;
+    (void)bytes;
+#endif
+}
+
+// Sizes an output array, on huge pages where it is large.
 template <class T>
 void allocate(std::vector<T>& v, std::size_t n) {
     v.reserve(n);
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-    constexpr std::uintptr_t kHuge = std::uintptr_t{1} << 21;
-    const auto begin = reinterpret_cast<std::uintptr_t>(v.data());
-    const std::uintptr_t lo = (begin + kHuge - 1) & ~(kHuge - 1), hi = (begin + n * sizeof(T)) & ~(kHuge - 1);
-    if (hi > lo) madvise(reinterpret_cast<void*>(lo), hi - lo, MADV_HUGEPAGE);
-#endif
+    adviseHugePages(v.data(), n * sizeof(T));
     v.resize(n);
 }
 
@@ -339,6 +347,7 @@ Mesh meshVolume(const voxel::Volume& volume, ExportStats* stats) {
     // Phase 1. The pool is left uninitialized: only the blocks that are not
     // uniform (a minority) write a slot, so only their pages are touched.
     std::unique_ptr<BlockEdges[]> pool(new BlockEdges[n]);
+    adviseHugePages(pool.get(), n * sizeof(BlockEdges));
     std::atomic<std::size_t> used{0};
     forEach(n, tree, [&](std::size_t i, Accessor& acc) { classify(c, i, acc, pool.get(), used); });
 

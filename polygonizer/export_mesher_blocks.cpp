@@ -41,7 +41,7 @@ std::uint64_t insideBits(const float* v) {
 }
 
 // Case index of cell (x, y, z): bit c set when corner c is inside.
-unsigned cellCase(const CornerRows& rows, int x, int y, int z) {
+inline unsigned cellCase(const CornerRows& rows, int x, int y, int z) {
     const unsigned r00 = rows[static_cast<std::size_t>(x * kRow + y)] >> z;
     const unsigned r10 = rows[static_cast<std::size_t>((x + 1) * kRow + y)] >> z;
     const unsigned r01 = rows[static_cast<std::size_t>(x * kRow + y + 1)] >> z;
@@ -51,7 +51,7 @@ unsigned cellCase(const CornerRows& rows, int x, int y, int z) {
 }
 
 // Bit z set when cell (x, y, z) has corners of both signs.
-unsigned surfaceCellsOfColumn(const CornerRows& rows, int x, int y) {
+inline unsigned surfaceCellsOfColumn(const CornerRows& rows, int x, int y) {
     const unsigned r00 = rows[static_cast<std::size_t>(x * kRow + y)];
     const unsigned r10 = rows[static_cast<std::size_t>((x + 1) * kRow + y)];
     const unsigned r01 = rows[static_cast<std::size_t>(x * kRow + y + 1)];
@@ -77,32 +77,31 @@ std::array<int, 12> makeEdgeOffsets() {
 
 constexpr std::uint32_t kNoVertex = 0xFFFFFFFFu;
 
-// The crossings of the edges along `axis` that start in row (x, y) of the
-// block's corners, bit z (0..8; 0..7 along z).
-unsigned crossingsOfCornerRow(const CornerRows& rows, int axis, int x, int y) {
-    const unsigned r = rows[static_cast<std::size_t>(x * kRow + y)];
-    if (axis == 2) return (r ^ r >> 1) & 0xFFu;
-    const unsigned other = rows[static_cast<std::size_t>(axis == 0 ? (x + 1) * kRow + y : x * kRow + y + 1)];
-    return r ^ other;
-}
-
 // Fills `vertex` for the crossing edges of the block's cells, row by row:
 // an owner numbers a row's crossings consecutively from its base, so each
 // row costs one look-up in its owner (the block or an upper neighbour).
 // False when some crossing has no owner (its entry is kNoVertex).
 bool edgeIndices(const BlockEdges& e, const std::array<EdgeOwner, 8>& owners, EdgeIndices& vertex) {
     bool complete = true;
+    // The block's own rows come in its numbering's order: count, not look up.
+    std::uint32_t own = owners[0].firstVertex;
     for (int axis = 0; axis < 3; ++axis)
         for (int x = 0; x < (axis == 0 ? kB : kRow); ++x)
             for (int y = 0; y < (axis == 1 ? kB : kRow); ++y) {
-                const unsigned c = crossingsOfCornerRow(e.rows, axis, x, y);
+                const unsigned c = crossings(e.rows, axis, x, y);
                 if (!c) continue;
                 const auto d = static_cast<std::size_t>((x >> 3) | (y >> 3) << 1);
                 const auto row = static_cast<std::size_t>((x & (kB - 1)) * kB + (y & (kB - 1)));
                 std::uint32_t* dst = vertex.data() + ((axis * kRow + x) * kRow + y) * kRow;
                 // z 0..7 belong to owner d, z = 8 to the one above it (its z = 0).
                 const EdgeOwner& low = owners[d];
-                std::uint32_t next = low.edges ? low.firstVertex + low.edges->base[static_cast<std::size_t>(axis)][row] : kNoVertex;
+                std::uint32_t next = kNoVertex;
+                if (d == 0) {
+                    next = own;
+                    own += bitCount(c & 0xFFu);
+                } else if (low.edges) {
+                    next = low.firstVertex + low.edges->base[static_cast<std::size_t>(axis)][row];
+                }
                 for (unsigned bits = c & 0xFFu; bits; bits &= bits - 1) {
                     dst[lowestBit(bits)] = next;
                     if (next != kNoVertex) ++next;
@@ -156,8 +155,7 @@ BlockCounts analyseBlock(const CornerRows& rows, BlockEdges& edges) {
         for (int x = 0; x < kB; ++x)
             for (int y = 0; y < kB; ++y) {
                 const auto row = static_cast<std::size_t>(x * kB + y);
-                const unsigned c = crossingsOfCornerRow(rows, axis, x, y) & 0xFFu;
-                edges.cross[static_cast<std::size_t>(axis)][row] = static_cast<std::uint8_t>(c);
+                const unsigned c = crossings(rows, axis, x, y) & 0xFFu;
                 edges.base[static_cast<std::size_t>(axis)][row] = static_cast<std::uint16_t>(counts.vertices);
                 counts.vertices += bitCount(c);
             }

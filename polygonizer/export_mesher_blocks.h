@@ -33,13 +33,21 @@ using CornerRows = std::array<std::uint16_t, 81>;
 // the same sign (no cell of the block touches the surface).
 bool cornerRows(const std::array<const SignMask*, 8>& m, CornerRows& rows);
 
-// The edges a block owns (low end in the block) that cross, and the local
-// number of their vertices: axis by axis, row (8x + y) by row, z upwards.
-// A vertex's number is then base + the crossings below it in its row, which
-// any block can work out for its neighbour's edges.
+// The crossings of the edges along `axis` (0..2: x, y, z) that start in row
+// (x, y) of the corners, bit z: 0..8 along x and y, 0..7 along z. Those
+// with x, y and z below 8 are the block's own.
+inline unsigned crossings(const CornerRows& rows, int axis, int x, int y) {
+    const unsigned r = rows[static_cast<std::size_t>(x * 9 + y)];
+    if (axis == 2) return (r ^ r >> 1) & 0xFFu;
+    return r ^ rows[static_cast<std::size_t>(axis == 0 ? (x + 1) * 9 + y : x * 9 + y + 1)];
+}
+
+// What a block that is not uniform keeps for phase 3: its corners and the
+// local number of its own crossings' vertices, axis by axis, row (8x + y) by
+// row, z upwards. A vertex's number is then base + the crossings below it in
+// its row, which any block can work out for its neighbour's edges.
 struct BlockEdges {
     CornerRows rows;
-    std::array<std::array<std::uint8_t, 64>, 3> cross;  // [axis][8x + y], bit z
     std::array<std::array<std::uint16_t, 64>, 3> base;  // [axis][8x + y]: the row's first local number
 };
 
