@@ -160,11 +160,15 @@ Candidates findCandidates(const voxel::Volume& volume) {
     c.values.resize(n);
     c.inside.resize(n);
     c.state.resize(n);
-    for (const Leaf* leaf : leaves) c.values[static_cast<std::size_t>(c.find(blockOf(leaf->origin())))].data = leaf->buffer().data();
     forEach(n, tree, [&c](std::size_t i, Accessor& a) {
         Values& v = c.values[i];
-        if (!v.data) v.tile = a.getValue(c.origins[i]);
-        c.inside[i] = v.data ? leafMask(v.data) : uniformMask(v.tile);
+        if (const Leaf* leaf = a.probeConstLeaf(c.origins[i])) {
+            v.data = leaf->buffer().data();
+            c.inside[i] = leafMask(v.data);
+        } else {
+            v.tile = a.getValue(c.origins[i]);
+            c.inside[i] = uniformMask(v.tile);
+        }
     });
     return c;
 }
