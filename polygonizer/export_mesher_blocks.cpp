@@ -65,14 +65,28 @@ inline unsigned surfaceCellsOfColumn(const CornerRows& rows, int x, int y) {
 // edges' entries are written (and only they are read).
 using EdgeIndices = std::array<std::uint32_t, 3 * kRow * kRow * kRow>;
 
-// Cell edge e's entry relative to its cell's low corner's.
-std::array<int, 12> makeEdgeOffsets() {
-    std::array<int, 12> off{};
+// The cell table with each triangle corner's edge replaced by that edge's
+// entry in EdgeIndices relative to the cell's low corner's: one load fewer
+// per corner in the triangle loop.
+struct CaseOffsets {
+    std::uint8_t corners = 0;  // 3 per triangle
+    std::array<std::int16_t, 36> offset{};
+};
+
+std::array<CaseOffsets, 256> makeCaseOffsets() {
+    std::array<int, 12> edge{};
     for (std::size_t e = 0; e < 12; ++e) {
         const int c0 = kEdgeCorners[e][0];
-        off[e] = ((kEdgeAxis[e] * kRow + (c0 & 1)) * kRow + ((c0 >> 1) & 1)) * kRow + ((c0 >> 2) & 1);
+        edge[e] = ((kEdgeAxis[e] * kRow + (c0 & 1)) * kRow + ((c0 >> 1) & 1)) * kRow + ((c0 >> 2) & 1);
     }
-    return off;
+    std::array<CaseOffsets, 256> out{};
+    const auto& table = cellTable();
+    for (std::size_t c = 0; c < 256; ++c) {
+        out[c].corners = static_cast<std::uint8_t>(3 * table[c].triangleCount);
+        for (std::size_t k = 0; k < out[c].corners; ++k)
+            out[c].offset[k] = static_cast<std::int16_t>(edge[table[c].edges[k]]);
+    }
+    return out;
 }
 
 constexpr std::uint32_t kNoVertex = 0xFFFFFFFFu;
@@ -170,8 +184,7 @@ BlockCounts analyseBlock(const CornerRows& rows, BlockEdges& edges) {
 }
 
 std::uint32_t triangulateBlock(const BlockEdges& e, const std::array<EdgeOwner, 8>& owners, std::uint32_t* out) {
-    static const std::array<int, 12> offsets = makeEdgeOffsets();
-    const auto& table = cellTable();
+    static const std::array<CaseOffsets, 256> cases = makeCaseOffsets();
     EdgeIndices vertex;
     const bool complete = edgeIndices(e, owners, vertex);
     std::uint32_t* const first = out;
@@ -180,16 +193,14 @@ std::uint32_t triangulateBlock(const BlockEdges& e, const std::array<EdgeOwner, 
             for (unsigned cells = surfaceCellsOfColumn(e.rows, x, y); cells; cells &= cells - 1) {
                 const int z = lowestBit(cells);
                 const std::uint32_t* v = vertex.data() + ((x * kRow + y) * kRow + z);
-                const CellCase& cc = table[cellCase(e.rows, x, y, z)];
-                const std::size_t n = 3 * static_cast<std::size_t>(cc.triangleCount);
+                const CaseOffsets& cc = cases[cellCase(e.rows, x, y, z)];
                 if (complete) {
-                    for (std::size_t t = 0; t < n; ++t) out[t] = v[offsets[cc.edges[t]]];
-                    out += n;
+                    for (std::size_t k = 0; k < cc.corners; ++k) out[k] = v[cc.offset[k]];
+                    out += cc.corners;
                     continue;
                 }
-                for (std::size_t t = 0; t < n; t += 3) {
-                    const std::uint32_t a = v[offsets[cc.edges[t]]], b = v[offsets[cc.edges[t + 1]]],
-                                        d = v[offsets[cc.edges[t + 2]]];
+                for (std::size_t k = 0; k < cc.corners; k += 3) {
+                    const std::uint32_t a = v[cc.offset[k]], b = v[cc.offset[k + 1]], d = v[cc.offset[k + 2]];
                     if (a == kNoVertex || b == kNoVertex || d == kNoVertex) continue;
                     *out++ = a;
                     *out++ = b;
