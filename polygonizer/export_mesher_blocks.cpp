@@ -212,19 +212,23 @@ std::uint32_t triangulateBlock(const BlockEdges& e, const std::array<EdgeOwner, 
 
 BlockTable::BlockTable(const std::array<int, 3>& lo, const std::array<int, 3>& hi) : lo_(lo) {
     for (std::size_t a = 0; a < 3; ++a) {
-        size_[a] = static_cast<unsigned>(std::max(0, hi[a] - lo[a] + 1));
-        bricks3_[a] = (size_[a] + kSide - 1) / kSide;
+        size_[a] = hi[a] < lo[a] ? 0u : static_cast<unsigned>(static_cast<long long>(hi[a]) - lo[a] + 1);
+        bricks_[a] = (size_[a] + kSide - 1) / kSide;
     }
-    bricks_.resize(bricks3_[0] * bricks3_[1] * bricks3_[2]);
+    // Compared by division: the product may not fit.
+    useMap_ = bricks_[0] && bricks_[1] && bricks_[2] && bricks_[1] * bricks_[2] > kMaxDense / bricks_[0];
+    if (!useMap_) dense_.resize(bricks_[0] * bricks_[1] * bricks_[2]);
 }
 
 void BlockTable::mark(int x, int y, int z) {
     const unsigned ux = static_cast<unsigned>(x - lo_[0]), uy = static_cast<unsigned>(y - lo_[1]),
                    uz = static_cast<unsigned>(z - lo_[2]);
-    std::unique_ptr<std::int32_t[]>& brick = bricks_[brickIndex(ux, uy, uz)];
+    const BrickKey k{ux >> kLog, uy >> kLog, uz >> kLog};
+    std::int32_t*& brick = useMap_ ? map_[k] : dense_[(k[0] * bricks_[1] + k[1]) * bricks_[2] + k[2]];
     if (!brick) {
-        brick.reset(new std::int32_t[kSide * kSide * kSide]);
-        std::fill(brick.get(), brick.get() + kSide * kSide * kSide, -1);
+        storage_.emplace_back(new std::int32_t[kCells]);
+        brick = storage_.back().get();
+        std::fill(brick, brick + kCells, -1);
     }
     std::int32_t& slot = brick[cellIndex(ux, uy, uz)];
     marked_ += slot < 0;

@@ -8,6 +8,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <vector>
 
@@ -73,9 +74,11 @@ std::uint32_t triangulateBlock(const BlockEdges& e, const std::array<EdgeOwner, 
 inline int lowestBit(unsigned bits) { return __builtin_ctz(bits); }
 
 // Candidate number by block coordinates (a block's origin / 8), -1 where
-// there is none: a dense grid of 16^3-block bricks over a fixed extent,
-// each allocated when a block in it is first marked. Lookups are a few
-// shifts, and blocks are numbered in one fixed order.
+// there is none: 16^3-block bricks over a fixed extent, each allocated when
+// a block in it is first marked, found through a dense directory (a map
+// instead where the extent is too large to cover, which only a malformed
+// grid with leaves far apart has). Lookups are a few shifts, and blocks are
+// numbered in one fixed order.
 class BlockTable {
 public:
     // Inclusive extent in block coordinates.
@@ -85,49 +88,61 @@ public:
         const unsigned ux = static_cast<unsigned>(x - lo_[0]), uy = static_cast<unsigned>(y - lo_[1]),
                        uz = static_cast<unsigned>(z - lo_[2]);
         if (ux >= size_[0] || uy >= size_[1] || uz >= size_[2]) return -1;
-        const std::int32_t* brick = bricks_[brickIndex(ux, uy, uz)].get();
+        const std::int32_t* brick = brickAt({ux >> kLog, uy >> kLog, uz >> kLog});
         return brick ? brick[cellIndex(ux, uy, uz)] : -1;
     }
     // The block must lie in the extent.
     void mark(int x, int y, int z);
     std::size_t marked() const { return marked_; }
-    // Numbers the marked blocks 0, 1, ... brick by brick and calls
-    // f(x, y, z) for each in that order.
+    // Numbers the marked blocks 0, 1, ... brick by brick (x, then y, then z)
+    // and calls f(x, y, z) for each in that order.
     template <class F>
     void number(F f);
 
 private:
-    static constexpr unsigned kLog = 4, kSide = 1u << kLog;
-    std::size_t brickIndex(unsigned ux, unsigned uy, unsigned uz) const {
-        return ((ux >> kLog) * bricks3_[1] + (uy >> kLog)) * bricks3_[2] + (uz >> kLog);
+    using BrickKey = std::array<unsigned, 3>;
+    static constexpr unsigned kLog = 4, kSide = 1u << kLog, kCells = kSide * kSide * kSide;
+    static constexpr std::size_t kMaxDense = std::size_t{1} << 22;  // directory entries
+
+    const std::int32_t* brickAt(const BrickKey& k) const {
+        if (!useMap_) return dense_[(k[0] * bricks_[1] + k[1]) * bricks_[2] + k[2]];
+        const auto it = map_.find(k);
+        return it == map_.end() ? nullptr : it->second;
     }
     static std::size_t cellIndex(unsigned ux, unsigned uy, unsigned uz) {
         return (((ux & (kSide - 1)) << kLog | (uy & (kSide - 1))) << kLog) | (uz & (kSide - 1));
     }
 
     std::array<int, 3> lo_;
-    std::array<unsigned, 3> size_;     // blocks
-    std::array<std::size_t, 3> bricks3_;  // bricks
-    std::vector<std::unique_ptr<std::int32_t[]>> bricks_;
+    std::array<unsigned, 3> size_;        // blocks
+    std::array<std::size_t, 3> bricks_;   // bricks
+    bool useMap_ = false;
+    std::vector<std::int32_t*> dense_;
+    std::map<BrickKey, std::int32_t*> map_;  // ordered: numbers blocks as the dense directory does
+    std::vector<std::unique_ptr<std::int32_t[]>> storage_;
     std::size_t marked_ = 0;
 };
 
 template <class F>
 void BlockTable::number(F f) {
     std::int32_t next = 0;
-    for (std::size_t bx = 0; bx < bricks3_[0]; ++bx)
-        for (std::size_t by = 0; by < bricks3_[1]; ++by)
-            for (std::size_t bz = 0; bz < bricks3_[2]; ++bz) {
-                std::int32_t* brick = bricks_[(bx * bricks3_[1] + by) * bricks3_[2] + bz].get();
-                if (!brick) continue;
-                for (unsigned c = 0; c < kSide * kSide * kSide; ++c) {
-                    if (brick[c] < 0) continue;
-                    brick[c] = next++;
-                    f(lo_[0] + static_cast<int>(bx * kSide + (c >> (2 * kLog))),
-                      lo_[1] + static_cast<int>(by * kSide + ((c >> kLog) & (kSide - 1))),
-                      lo_[2] + static_cast<int>(bz * kSide + (c & (kSide - 1))));
-                }
-            }
+    auto numberBrick = [&](const BrickKey& k, std::int32_t* brick) {
+        for (unsigned c = 0; c < kCells; ++c) {
+            if (brick[c] < 0) continue;
+            brick[c] = next++;
+            f(lo_[0] + static_cast<int>(k[0] * kSide + (c >> (2 * kLog))),
+              lo_[1] + static_cast<int>(k[1] * kSide + ((c >> kLog) & (kSide - 1))),
+              lo_[2] + static_cast<int>(k[2] * kSide + (c & (kSide - 1))));
+        }
+    };
+    if (useMap_) {
+        for (const auto& [k, brick] : map_) numberBrick(k, brick);
+        return;
+    }
+    for (unsigned bx = 0; bx < bricks_[0]; ++bx)
+        for (unsigned by = 0; by < bricks_[1]; ++by)
+            for (unsigned bz = 0; bz < bricks_[2]; ++bz)
+                if (std::int32_t* brick = dense_[(bx * bricks_[1] + by) * bricks_[2] + bz]) numberBrick({bx, by, bz}, brick);
 }
 
 }  // namespace hg::poly
