@@ -35,9 +35,10 @@
 //      the same order whatever the number of threads;
 //   3. per block with a crossing: the values around it (an 11^3 halo), one
 //      vertex per owned crossing edge with its gradient normal, then its
-//      cells' triangles. A vertex's index in its owner block is a popcount
-//      over the owner's crossing bits, so neighbours need no shared map:
-//      the mesh is welded by construction.
+//      cells' triangles. An edge's vertex number is its owner's first
+//      vertex plus the owner's count of crossings before it (kept per row
+//      of edges), so neighbours need no shared map: the mesh is welded by
+//      construction.
 
 namespace hg::poly {
 

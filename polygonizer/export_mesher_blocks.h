@@ -58,9 +58,13 @@ struct BlockCounts {
     std::uint32_t surfaceCells = 0;  // cells with both inside and outside corners
 };
 
+// For a block that is not uniform: fills `edges` and counts what the block
+// will make.
 BlockCounts analyseBlock(const CornerRows& rows, BlockEdges& edges);
 
-// Where the vertices of edges owned by the block or an upper neighbour are.
+// Where the vertices of the edges a block owns are: owners[d] in
+// triangulateBlock is the block itself (d = 0) or its upper neighbour at
+// offset (d & 1, d >> 1 & 1, d >> 2 & 1).
 struct EdgeOwner {
     const BlockEdges* edges = nullptr;  // none: no vertex there
     std::uint32_t firstVertex = 0;
@@ -71,7 +75,7 @@ struct EdgeOwner {
 // with an edge that has no owner is left out.
 std::uint32_t triangulateBlock(const BlockEdges& e, const std::array<EdgeOwner, 8>& owners, std::uint32_t* out);
 
-inline int lowestBit(unsigned bits) { return __builtin_ctz(bits); }
+inline int lowestBit(unsigned bits) { return __builtin_ctz(bits); }  // bits != 0
 
 // Candidate number by block coordinates (a block's origin / 8), -1 where
 // there is none: 16^3-block bricks over a fixed extent, each allocated when
