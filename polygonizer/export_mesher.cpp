@@ -1,43 +1,96 @@
 #include "polygonizer/export_mesher.h"
 
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
 
 #include <algorithm>
 #include <array>
-#include <bitset>
+#include <atomic>
 #include <chrono>
 #include <cmath>
-#include <unordered_map>
+#include <cstring>
+#include <memory>
 
-#include "polygonizer/cell_table.h"
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
+
+#include "polygonizer/export_mesher_blocks.h"
 #include "voxel/volume_vdb.h"
+
+// How the work goes (block = one OpenVDB leaf of cells, 8^3, named by its
+// cells' low corner; a block's corners run 0..8 and so reach one voxel into
+// its +x, +y and +z neighbours):
+//
+//   0. candidates: the grid's leaves, the blocks just below them (whose
+//      cells reach into a leaf) and the inside blocks on the index box's
+//      faces; each gets its 512 inside bits (one compare per voxel);
+//   1. per candidate, from its own bits and its seven upper neighbours': the
+//      9^3 corner signs as bit rows, the edges it owns that cross (low end in
+//      the block), and how many vertices and triangles it will make. Only
+//      bits are read, so the many blocks without a crossing cost little;
+//   2. one serial prefix sum gives each block its first vertex and first
+//      triangle, so the output is allocated once and written in place, in
+//      the same order whatever the number of threads;
+//   3. per block with a crossing: the values around it (an 11^3 halo), one
+//      vertex per owned crossing edge with its gradient normal, then its
+//      cells' triangles. An edge's vertex number is its owner's first
+//      vertex plus the owner's count of crossings before it (kept per row
+//      of edges), so neighbours need no shared map: the mesh is welded by
+//      construction.
 
 namespace hg::poly {
 
 namespace {
 
 using openvdb::Coord;
-constexpr int kB = 8;            // block edge: one OpenVDB leaf of cells
-constexpr int kHalo = kB + 3;    // voxels origin-1 .. origin+9 (cells, edges and their gradients)
+using Tree = openvdb::FloatTree;
+using Leaf = Tree::LeafNodeType;
+// Not registered with the tree: cheap to make per task, and the tree is not
+// changed while we read it.
+using Accessor = openvdb::tree::ValueAccessor<const Tree, false>;
 
-// Blocks (8^3 cells, named by their cells' low corners) that can hold
-// surface: every leaf of the grid and the blocks just below it in x, y and z
-// (whose cells reach into the leaf), and the blocks of inside voxels on the
-// index box's faces (where a cut solid is capped). Sorted, so the mesh does
-// not depend on the thread count.
-std::vector<Coord> candidateBlocks(const voxel::Volume& volume) {
-    const openvdb::FloatGrid& grid = voxel::vdb(volume);
-    std::vector<Coord> out;
-    auto addWithLowerNeighbours = [&out](const Coord& origin) {
-        for (int n = 0; n < 8; ++n)
-            out.push_back(origin - Coord((n & 1) * kB, ((n >> 1) & 1) * kB, ((n >> 2) & 1) * kB));
-    };
-    for (auto leaf = grid.tree().cbeginLeaf(); leaf; ++leaf) addWithLowerNeighbours(leaf->origin());
-    // The index box's faces, an 8x8 patch at a time: a tile answers for its
-    // whole patch, a leaf's voxels are read from its buffer.
-    const voxel::IndexBox& b = volume.frame.indexBox;
+constexpr int kB = kBlockSize;
+constexpr int kHalo = kB + 3;                          // voxels -1 .. 9 of a block: its corners and their gradients
+constexpr int kStride[3] = {kHalo * kHalo, kHalo, 1};  // a halo step along x, y, z
+
+Coord blockOf(const Coord& origin) { return Coord(origin.x() >> 3, origin.y() >> 3, origin.z() >> 3); }
+Coord originOf(const Coord& block) { return Coord(block.x() * kB, block.y() * kB, block.z() * kB); }
+Coord upper(int d) { return Coord(d & 1, (d >> 1) & 1, (d >> 2) & 1); }  // d in 0..7: the block and its upper neighbours
+
+// A candidate's values: its leaf's buffer, or one tile value.
+struct Values {
+    const float* data = nullptr;
+    float tile = 0.0f;
+};
+
+struct BlockState {
+    BlockCounts counts;
+    const BlockEdges* edges = nullptr;  // where the block is not uniform
+    std::uint32_t firstVertex = 0;
+    std::uint32_t written = 0;  // triangles phase 3 wrote (fewer only where an edge has no owner)
+    std::size_t firstTriangle = 0;
+};
+
+// Everything per candidate, by candidate number (BlockTable's order).
+struct Candidates {
+    BlockTable table;
+    std::vector<Coord> origins;
+    std::vector<Values> values;
+    std::vector<SignMask> inside;
+    std::vector<BlockState> state;
+
+    std::int32_t find(const Coord& block) const { return table.find(block.x(), block.y(), block.z()); }
+};
+
+// The index box's faces, an 8x8 patch at a time: blocks holding an inside
+// voxel on a face, where a solid cut by the box is capped. A tile answers
+// for its whole patch, a leaf's voxels are read from its buffer.
+template <class Mark>
+void markCappedFaces(const voxel::IndexBox& b, Accessor& acc, Mark mark) {
     for (int a = 0; a < 3; ++a) {
-        int u = (a + 1) % 3, v = (a + 2) % 3;
+        const int u = (a + 1) % 3, v = (a + 2) % 3;
         for (int side = 0; side < 2; ++side)
             for (int i0 = b.lo[u] & ~(kB - 1); i0 <= b.hi[u]; i0 += kB)
                 for (int j0 = b.lo[v] & ~(kB - 1); j0 <= b.hi[v]; j0 += kB) {
@@ -46,10 +99,10 @@ std::vector<Coord> candidateBlocks(const voxel::Volume& volume) {
                     c[u] = i0;
                     c[v] = j0;
                     const Coord block = c & ~(kB - 1);
-                    const auto* leaf = grid.tree().probeConstLeaf(block);
+                    const Leaf* leaf = acc.probeConstLeaf(block);
                     bool inside = false;
                     if (!leaf) {
-                        inside = grid.tree().getValue(block) > 0.0f;
+                        inside = acc.getValue(block) > 0.0f;
                     } else {
                         for (int i = std::max(i0, b.lo[u]); i <= std::min(i0 + kB - 1, b.hi[u]) && !inside; ++i)
                             for (int j = std::max(j0, b.lo[v]); j <= std::min(j0 + kB - 1, b.hi[v]) && !inside; ++j) {
@@ -58,188 +111,282 @@ std::vector<Coord> candidateBlocks(const voxel::Volume& volume) {
                                 inside = leaf->getValue(c) > 0.0f;
                             }
                     }
-                    if (inside) addWithLowerNeighbours(block);
+                    if (inside) mark(block);
                 }
     }
-    std::sort(out.begin(), out.end());
-    out.erase(std::unique(out.begin(), out.end()), out.end());
-    return out;
 }
 
-// The grid's values around one block, copied once from the (up to 27)
-// leaves and tiles it overlaps: the inner loops then index an array.
-struct Halo {
-    std::array<float, kHalo * kHalo * kHalo> v;
-    float at(int x, int y, int z) const {  // block-local, -1 .. 9
-        return v[static_cast<size_t>(((x + 1) * kHalo + (y + 1)) * kHalo + (z + 1))];
+// The table's extent in blocks: every leaf, the index box, one block below.
+BlockTable makeTable(const voxel::IndexBox& box, const std::vector<const Leaf*>& leaves) {
+    Coord lo(box.lo[0], box.lo[1], box.lo[2]), hi(box.hi[0], box.hi[1], box.hi[2]);
+    if (box.empty()) lo = hi = Coord(0, 0, 0);
+    for (const Leaf* leaf : leaves) {
+        lo.minComponent(leaf->origin());
+        hi.maxComponent(leaf->origin());
     }
-    void fill(const openvdb::FloatTree& tree, const Coord& origin) {
-        // Region by region: each of the 27 neighbours is a leaf (copy its
-        // overlapping box straight from its buffer) or a tile (one value).
-        using Leaf = openvdb::FloatTree::LeafNodeType;
-        const int lo[3] = {-1, 0, kB}, hi[3] = {-1, kB - 1, kB + 1};
-        for (int n = 0; n < 27; ++n) {
-            const int px = n % 3, py = n / 3 % 3, pz = n / 9;
-            const Coord o = origin + Coord((px - 1) * kB, (py - 1) * kB, (pz - 1) * kB);
-            const Leaf* leaf = tree.probeConstLeaf(o);
-            const float tile = leaf ? 0.0f : tree.getValue(o);
-            const float* data = leaf ? leaf->buffer().data() : nullptr;
-            for (int x = lo[px]; x <= hi[px]; ++x)
-                for (int y = lo[py]; y <= hi[py]; ++y) {
-                    float* dst = &v[static_cast<size_t>(((x + 1) * kHalo + (y + 1)) * kHalo + (lo[pz] + 1))];
-                    const int count = hi[pz] - lo[pz] + 1;
-                    if (!data) {
-                        std::fill(dst, dst + count, tile);
-                        continue;
-                    }
-                    // Leaf offsets are x-major, z fastest, like the halo.
-                    const int lx = x - (px - 1) * kB, ly = y - (py - 1) * kB, lz = lo[pz] - (pz - 1) * kB;
-                    std::copy_n(data + (lx * kB + ly) * kB + lz, count, dst);
-                }
+    const Coord blo = blockOf(lo) - Coord(1, 1, 1), bhi = blockOf(hi);
+    return BlockTable({blo.x(), blo.y(), blo.z()}, {bhi.x(), bhi.y(), bhi.z()});
+}
+
+template <class Body>
+void forEach(std::size_t n, const Tree& tree, Body body) {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n), [&](const tbb::blocked_range<std::size_t>& r) {
+        Accessor acc(tree);
+        for (std::size_t i = r.begin(); i != r.end(); ++i) body(i, acc);
+    });
+}
+
+// Phase 0: candidates numbered in a fixed order (BlockTable's), so the mesh
+// does not depend on the thread count; their values and inside bits.
+Candidates findCandidates(const voxel::Volume& volume) {
+    const Tree& tree = voxel::vdb(volume).tree();
+    std::vector<const Leaf*> leaves;
+    leaves.reserve(tree.leafCount());
+    tree.getNodes(leaves);
+    Candidates c{makeTable(volume.frame.indexBox, leaves), {}, {}, {}, {}};
+    auto markWithLowerNeighbours = [&c](const Coord& origin) {
+        const Coord b = blockOf(origin);
+        for (int d = 0; d < 8; ++d) {
+            const Coord n = b - upper(d);
+            c.table.mark(n.x(), n.y(), n.z());
+        }
+    };
+    for (const Leaf* leaf : leaves) markWithLowerNeighbours(leaf->origin());
+    Accessor acc(tree);
+    markCappedFaces(volume.frame.indexBox, acc, markWithLowerNeighbours);
+
+    c.origins.reserve(c.table.marked());
+    c.table.number([&c](int x, int y, int z) { c.origins.push_back(originOf(Coord(x, y, z))); });
+    const std::size_t n = c.origins.size();
+    c.values.resize(n);
+    c.inside.resize(n);
+    c.state.resize(n);
+    forEach(n, tree, [&c](std::size_t i, Accessor& a) {
+        Values& v = c.values[i];
+        if (const Leaf* leaf = a.probeConstLeaf(c.origins[i])) {
+            v.data = leaf->buffer().data();
+            c.inside[i] = leafMask(v.data);
+        } else {
+            v.tile = a.getValue(c.origins[i]);
+            c.inside[i] = uniformMask(v.tile);
+        }
+    });
+    return c;
+}
+
+// Phase 1 for candidate i. Edge data goes to `pool` (in whatever order the
+// threads come: only the pointer is kept, so the mesh does not depend on it).
+void classify(Candidates& c, std::size_t i, Accessor& acc, BlockEdges* pool, std::atomic<std::size_t>& used) {
+    const Coord b = blockOf(c.origins[i]);
+    std::array<SignMask, 8> tiles;
+    std::array<const SignMask*, 8> m;
+    for (std::size_t d = 0; d < 8; ++d) {
+        const std::int32_t j = d ? c.find(b + upper(static_cast<int>(d))) : static_cast<std::int32_t>(i);
+        if (j >= 0) {
+            m[d] = &c.inside[static_cast<std::size_t>(j)];
+        } else {
+            tiles[d] = uniformMask(acc.getValue(originOf(b + upper(static_cast<int>(d)))));
+            m[d] = &tiles[d];
         }
     }
-};
-
-struct Block {
-    Coord origin;
-    std::array<std::int32_t, 3 * kB * kB * kB> edgeVertex{};  // owned crossings: local index or -1
-    std::vector<float> positions, normals;
-    std::vector<std::uint32_t> indices;
-    std::uint32_t firstVertex = 0;
-    std::array<std::int32_t, 8> neighbour{};  // block index at origin + 8 * (dx, dy, dz), dx..dz in {0, 1}
-    std::bitset<(kB + 1) * (kB + 1) * (kB + 1)> inside;  // corners 0..8 of the block's cells
-    std::size_t surfaceCells = 0;
-};
-
-
-size_t edgeSlot(int axis, int x, int y, int z) { return static_cast<size_t>(((axis * kB + x) * kB + y) * kB + z); }
-
-// Pass 1: the crossings on edges whose low end lies in the block.
-size_t cornerSlot(int x, int y, int z) { return static_cast<size_t>((x * (kB + 1) + y) * (kB + 1) + z); }
-
-void placeVertices(Block& b, const Halo& h, const voxel::VolumeFrame& frame) {
-    b.edgeVertex.fill(-1);
-    for (int x = 0; x <= kB; ++x)
-        for (int y = 0; y <= kB; ++y)
-            for (int z = 0; z <= kB; ++z) b.inside[cornerSlot(x, y, z)] = h.at(x, y, z) > 0.0f;
-    if (b.inside.none() || b.inside.all()) return;  // no edge of the block crosses
-    const double step = frame.voxelSize;
-    auto grad = [&h](int x, int y, int z) {
-        return openvdb::Vec3d(0.5 * static_cast<double>(h.at(x + 1, y, z) - h.at(x - 1, y, z)),
-                              0.5 * static_cast<double>(h.at(x, y + 1, z) - h.at(x, y - 1, z)),
-                              0.5 * static_cast<double>(h.at(x, y, z + 1) - h.at(x, y, z - 1)));
-    };
-    for (int x = 0; x < kB; ++x)
-        for (int y = 0; y < kB; ++y)
-            for (int z = 0; z < kB; ++z) {
-                const float v0 = h.at(x, y, z);
-                for (int axis = 0; axis < 3; ++axis) {
-                    int x1 = x + (axis == 0), y1 = y + (axis == 1), z1 = z + (axis == 2);
-                    const float v1 = h.at(x1, y1, z1);
-                    if ((v0 > 0.0f) == (v1 > 0.0f)) continue;
-                    // Clamped away from the ends: a vertex exactly on a grid point
-                    // gives zero-area triangles that slicers flag.
-                    const double d0 = v0, d1 = v1;
-                    const double t = std::clamp(d0 / (d0 - d1), 1e-3, 1.0 - 1e-3);
-                    auto p = frame.position(b.origin.x() + x, b.origin.y() + y, b.origin.z() + z);
-                    p[static_cast<size_t>(axis)] += t * step;
-                    openvdb::Vec3d g = grad(x, y, z) * (1.0 - t) + grad(x1, y1, z1) * t;
-                    double len = g.length();
-                    openvdb::Vec3d n = len > 0 ? -g / len : openvdb::Vec3d(0, 0, 0);  // f grows inwards
-                    b.edgeVertex[edgeSlot(axis, x, y, z)] = static_cast<std::int32_t>(b.positions.size() / 3);
-                    for (int a = 0; a < 3; ++a) {
-                        b.positions.push_back(static_cast<float>(p[static_cast<size_t>(a)]));
-                        b.normals.push_back(static_cast<float>(n[a]));
-                    }
-                }
-            }
+    CornerRows rows;
+    if (!cornerRows(m, rows)) return;
+    BlockEdges& e = pool[used++];
+    c.state[i].counts = analyseBlock(rows, e);
+    c.state[i].edges = &e;
 }
 
-// Pass 2: the block's candidate cells, with vertices from the blocks that
-// own their edges (this one or its +x/+y/+z neighbours).
-void triangulate(Block& b, const std::vector<Block>& blocks) {
-    if (b.inside.none() || b.inside.all()) return;
-    const auto& table = cellTable();
-    for (int cx = 0; cx < kB; ++cx)
-        for (int cy = 0; cy < kB; ++cy)
-            for (int cz = 0; cz < kB; ++cz) {
-                int mask = 0;
-                for (int c = 0; c < 8; ++c)
-                    if (b.inside[cornerSlot(cx + (c & 1), cy + ((c >> 1) & 1), cz + ((c >> 2) & 1))]) mask |= 1 << c;
-                if (mask == 0 || mask == 255) continue;
-                ++b.surfaceCells;
-                const CellCase& cc = table[static_cast<size_t>(mask)];
-                for (int t = 0; t < cc.triangleCount; ++t) {
-                    std::uint32_t tri[3];
-                    bool found = true;
-                    for (int k = 0; k < 3; ++k) {
-                        const int e = cc.edges[static_cast<size_t>(3 * t + k)];
-                        const int c0 = kEdgeCorners[static_cast<size_t>(e)][0];
-                        int ex = cx + (c0 & 1), ey = cy + ((c0 >> 1) & 1), ez = cz + ((c0 >> 2) & 1);
-                        int nb = (ex >= kB) + 2 * (ey >= kB) + 4 * (ez >= kB);
-                        std::int32_t owner = b.neighbour[static_cast<size_t>(nb)];
-                        // Only a sign change between two tiles (a program discontinuous
-                        // across its own surface) has no owning block.
-                        if (owner < 0) { found = false; break; }
-                        const Block& o = blocks[static_cast<size_t>(owner)];
-                        std::int32_t local =
-                            o.edgeVertex[edgeSlot(kEdgeAxis[static_cast<size_t>(e)], ex % kB, ey % kB, ez % kB)];
-                        if (local < 0) { found = false; break; }
-                        tri[k] = o.firstVertex + static_cast<std::uint32_t>(local);
-                    }
-                    if (found) b.indices.insert(b.indices.end(), tri, tri + 3);
-                }
+// The grid's values around one block (voxels -1 .. 9 in each axis), copied
+// once from the leaves and tiles it overlaps: the vertex loop then indexes
+// an array.
+struct Halo {
+    std::array<float, kHalo * kHalo * kHalo> v;
+    static constexpr int index(int x, int y, int z) { return ((x + 1) * kHalo + (y + 1)) * kHalo + (z + 1); }
+
+    void fill(const Candidates& c, const Coord& origin, Accessor& acc) {
+        // The 27 neighbours (offsets -1..1, x fastest), each a leaf buffer or
+        // a row of its tile value: `mask` is 0 for a tile, so every voxel of
+        // the neighbour reads that row, and the copy below needs no branch.
+        std::array<const float*, 27> data;
+        std::array<int, 27> mask;
+        std::array<std::array<float, kB>, 27> tileRows;
+        const Coord b = blockOf(origin);
+        for (std::size_t k = 0; k < 27; ++k) {
+            const Coord d(static_cast<int>(k % 3) - 1, static_cast<int>(k / 3 % 3) - 1, static_cast<int>(k / 9) - 1);
+            const std::int32_t j = c.find(b + d);
+            const Values val = j >= 0 ? c.values[static_cast<std::size_t>(j)] : Values{nullptr, acc.getValue(originOf(b + d))};
+            mask[k] = val.data ? -1 : 0;
+            if (!val.data) tileRows[k].fill(val.tile);
+            data[k] = val.data ? val.data : tileRows[k].data();
+        }
+        // Row (x, y) of the halo: z = -1 from the neighbour below, 0..7 from
+        // the block's column, 8..9 from the one above.
+        for (int x = -1; x <= kB + 1; ++x)
+            for (int y = -1; y <= kB + 1; ++y) {
+                const auto s = static_cast<std::size_t>(((x + kB) >> 3) + 3 * ((y + kB) >> 3));
+                const int row = ((x & (kB - 1)) * kB + (y & (kB - 1))) * kB;  // leaf offset of (x, y, 0)
+                float* dst = &v[static_cast<std::size_t>(index(x, y, -1))];
+                dst[0] = data[s][(row + kB - 1) & mask[s]];
+                std::memcpy(dst + 1, data[s + 9] + (row & mask[s + 9]), kB * sizeof(float));
+                std::memcpy(dst + 1 + kB, data[s + 18] + (row & mask[s + 18]), 2 * sizeof(float));
             }
+    }
+};
+
+struct Output {
+    float* positions;
+    float* normals;
+    std::uint32_t* indices;
+};
+
+// Phase 3a: one vertex per owned crossing edge, in the order BlockEdges
+// numbers them (axis, then row, then z).
+void placeVertices(const Coord& origin, std::uint32_t firstVertex, const BlockEdges& e, const Halo& h,
+                   const voxel::VolumeFrame& frame, const Output& out) {
+    const float* v = h.v.data();
+    auto grad = [v](int p, int a) { return v[p + kStride[a]] - v[p - kStride[a]]; };  // twice the gradient
+    const double step = frame.voxelSize;
+    std::size_t k = 3 * static_cast<std::size_t>(firstVertex);
+    for (int axis = 0; axis < 3; ++axis)
+        for (int row = 0; row < kB * kB; ++row) {
+            const int x = row / kB, y = row % kB;
+            unsigned bits = crossings(e.rows, axis, x, y) & 0xFFu;
+            while (bits) {
+                const int z = lowestBit(bits);
+                bits &= bits - 1;
+                const int p = Halo::index(x, y, z), q = p + kStride[axis];
+                // Clamped away from the ends: a vertex exactly on a grid point
+                // gives zero-area triangles that slicers flag.
+                const double d0 = v[p], d1 = v[q];
+                const double t = std::clamp(d0 / (d0 - d1), 1e-3, 1.0 - 1e-3);
+                auto pos = frame.position(origin.x() + x, origin.y() + y, origin.z() + z);
+                pos[static_cast<std::size_t>(axis)] += t * step;
+                const auto tf = static_cast<float>(t);
+                float g[3];
+                for (int a = 0; a < 3; ++a) g[a] = grad(p, a) * (1.0f - tf) + grad(q, a) * tf;
+                const float len2 = g[0] * g[0] + g[1] * g[1] + g[2] * g[2];
+                const float scale = len2 > 0.0f ? -1.0f / std::sqrt(len2) : 0.0f;  // f grows inwards
+                for (std::size_t a = 0; a < 3; ++a) {
+                    out.positions[k + a] = static_cast<float>(pos[a]);
+                    out.normals[k + a] = g[a] * scale;
+                }
+                k += 3;
+            }
+        }
+}
+
+// The next block's own leaf, read while this one is meshed: its halo copy
+// otherwise waits on memory (leaves were last read in phase 0).
+void prefetchValues(const Values& v) {
+    if (!v.data) return;
+    for (int i = 0; i < kB * kB * kB; i += 16) __builtin_prefetch(v.data + i);
+}
+
+// Phase 3 for candidate i.
+void meshBlock(Candidates& c, std::size_t i, Accessor& acc, const voxel::VolumeFrame& frame, const Output& out) {
+    BlockState& s = c.state[i];
+    if (s.counts.vertices > 0) {
+        Halo h;
+        h.fill(c, c.origins[i], acc);
+        placeVertices(c.origins[i], s.firstVertex, *s.edges, h, frame, out);
+    }
+    // The blocks that own this block's cells' edges: itself and its upper
+    // neighbours (those without a crossing own no vertex).
+    std::array<EdgeOwner, 8> owners{};
+    const Coord b = blockOf(c.origins[i]);
+    for (int d = 0; d < 8; ++d) {
+        const std::int32_t j = d ? c.find(b + upper(d)) : static_cast<std::int32_t>(i);
+        if (j < 0) continue;
+        const BlockState& o = c.state[static_cast<std::size_t>(j)];
+        if (o.counts.vertices > 0) owners[static_cast<std::size_t>(d)] = {o.edges, o.firstVertex};
+    }
+    s.written = triangulateBlock(*s.edges, owners, out.indices + 3 * s.firstTriangle);
+}
+
+// Blocks whose triangles lost an edge without an owner (only a sign change
+// between two tiles, a program discontinuous across its own surface, has
+// none) wrote fewer than they reserved: close the gaps.
+void compact(const std::vector<BlockState>& state, std::vector<std::uint32_t>& indices) {
+    std::size_t to = 0;
+    for (const BlockState& s : state) {
+        const std::size_t from = 3 * s.firstTriangle, n = 3 * static_cast<std::size_t>(s.written);
+        if (from != to) std::memmove(indices.data() + to, indices.data() + from, n * sizeof(std::uint32_t));
+        to += n;
+    }
+    indices.resize(to);
+}
+
+// Asks for transparent huge pages on the whole 2 MiB pages of a large
+// buffer before it is first touched: faulting fresh memory in 4 KiB at a
+// time is otherwise a large share of the mesher's time on big meshes. The
+// kernel's policy decides; elsewhere this does nothing.
+void adviseHugePages(const void* data, std::size_t bytes) {
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+    constexpr std::uintptr_t kHuge = std::uintptr_t{1} << 21;
+    const auto begin = reinterpret_cast<std::uintptr_t>(data);
+    const std::uintptr_t lo = (begin + kHuge - 1) & ~(kHuge - 1), hi = (begin + bytes) & ~(kHuge - 1);
+    if (hi > lo) madvise(reinterpret_cast<void*>(lo), hi - lo, MADV_HUGEPAGE);
+#else
+    (void)data;
+    (void)bytes;
+#endif
+}
+
+// Sizes an output array, on huge pages where it is large.
+template <class T>
+void allocate(std::vector<T>& v, std::size_t n) {
+    v.reserve(n);
+    adviseHugePages(v.data(), n * sizeof(T));
+    v.resize(n);
 }
 
 }  // namespace
 
 Mesh meshVolume(const voxel::Volume& volume, ExportStats* stats) {
-    auto start = std::chrono::steady_clock::now();
-    const openvdb::FloatTree& tree = voxel::vdb(volume).tree();
-    const std::vector<Coord> origins = candidateBlocks(volume);
-    std::vector<Block> blocks(origins.size());
-    std::unordered_map<Coord, std::int32_t> indexOf;
-    for (size_t i = 0; i < origins.size(); ++i) {
-        blocks[i].origin = origins[i];
-        indexOf.emplace(origins[i], static_cast<std::int32_t>(i));
-    }
-    // An edge a cell uses starts in the cell's block or one above it; a
-    // crossing edge has a leaf voxel (or a capped face voxel) at one end, so
-    // its block is a candidate too (leaves and their lower neighbours).
-    for (Block& b : blocks)
-        for (int n = 0; n < 8; ++n) {
-            auto it = indexOf.find(b.origin + Coord((n & 1) * kB, ((n >> 1) & 1) * kB, ((n >> 2) & 1) * kB));
-            b.neighbour[static_cast<size_t>(n)] = it == indexOf.end() ? -1 : it->second;
-        }
+    const auto start = std::chrono::steady_clock::now();
+    const Tree& tree = voxel::vdb(volume).tree();
 
-    const voxel::VolumeFrame& frame = volume.frame;
-    tbb::parallel_for(std::size_t{0}, blocks.size(), [&](std::size_t i) {
-        Halo h;
-        h.fill(tree, blocks[i].origin);
-        placeVertices(blocks[i], h, frame);
-    });
+    Candidates c = findCandidates(volume);
+    const std::size_t n = c.origins.size();
+
+    // Phase 1. The pool is left uninitialized: only the blocks that are not
+    // uniform (a minority) write a slot, so only their pages are touched.
+    std::unique_ptr<BlockEdges[]> pool(new BlockEdges[n]);
+    adviseHugePages(pool.get(), n * sizeof(BlockEdges));
+    std::atomic<std::size_t> used{0};
+    forEach(n, tree, [&](std::size_t i, Accessor& acc) { classify(c, i, acc, pool.get(), used); });
+
+    // Phase 2.
     std::uint32_t vertices = 0;
-    for (Block& b : blocks) {
-        b.firstVertex = vertices;
-        vertices += static_cast<std::uint32_t>(b.positions.size() / 3);
-    }
-    tbb::parallel_for(std::size_t{0}, blocks.size(), [&](std::size_t i) { triangulate(blocks[i], blocks); });
-
-    Mesh mesh;
-    ExportStats st;
     std::size_t triangles = 0;
-    for (const Block& b : blocks) triangles += b.indices.size();
-    mesh.positions.reserve(3 * vertices);
-    mesh.normals.reserve(3 * vertices);
-    mesh.indices.reserve(triangles);
-    for (const Block& b : blocks) {
-        mesh.positions.insert(mesh.positions.end(), b.positions.begin(), b.positions.end());
-        mesh.normals.insert(mesh.normals.end(), b.normals.begin(), b.normals.end());
-        mesh.indices.insert(mesh.indices.end(), b.indices.begin(), b.indices.end());
-        st.cells += kB * kB * kB;
-        st.surfaceCells += b.surfaceCells;
+    ExportStats st;
+    std::vector<std::uint32_t> active;
+    for (std::size_t i = 0; i < n; ++i) {
+        BlockState& s = c.state[i];
+        s.firstVertex = vertices;
+        s.firstTriangle = triangles;
+        vertices += s.counts.vertices;
+        triangles += s.counts.triangles;
+        st.surfaceCells += s.counts.surfaceCells;
+        if (s.counts.vertices > 0 || s.counts.triangles > 0) active.push_back(static_cast<std::uint32_t>(i));
     }
+    Mesh mesh;
+    // Zero-filling the output is a large share of the serial time: split it.
+    tbb::parallel_invoke([&] { allocate(mesh.positions, 3 * static_cast<std::size_t>(vertices)); },
+                         [&] { allocate(mesh.normals, 3 * static_cast<std::size_t>(vertices)); },
+                         [&] { allocate(mesh.indices, 3 * triangles); });
+
+    // Phase 3.
+    const Output out{mesh.positions.data(), mesh.normals.data(), mesh.indices.data()};
+    forEach(active.size(), tree, [&](std::size_t k, Accessor& acc) {
+        if (k + 1 < active.size()) prefetchValues(c.values[active[k + 1]]);
+        meshBlock(c, active[k], acc, volume.frame, out);
+    });
+    bool complete = true;
+    for (std::uint32_t i : active) complete = complete && c.state[i].written == c.state[i].counts.triangles;
+    if (!complete) compact(c.state, mesh.indices);
+
+    st.cells = n * static_cast<std::size_t>(kB * kB * kB);
     st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (stats) *stats = st;
     return mesh;

@@ -1,6 +1,7 @@
-// Export meshing benchmark: poly::meshVolume (one level, welded) against
-// OpenVDB's tools::volumeToMesh on the same grid (isovalue 0, adaptivity 0),
-// at 128^3 and 256^3, for our sculptures and an analytic sphere and torus.
+// Export meshing benchmark: poly::meshVolume (one level, welded triangles
+// with gradient normals) against OpenVDB's tools::volumeToMesh on the same
+// grid (isovalue 0, adaptivity 0: shared points, quads, no normals), at
+// 128^3 and 256^3, for our sculptures and an analytic sphere and torus.
 // Prints a Markdown table; --json FILE writes the rows too.
 //
 //   ./build/release/bench/bench_poly [--json out.json] [--filter NAME] [--repeat N]
@@ -51,8 +52,9 @@ int main(int argc, char** argv) {
         sources.push_back({n, "", fs::path(HG_SOURCE_DIR) / "content" / "hyperfun" / (std::string(n) + ".hf")});
 
     nlohmann::json rows = nlohmann::json::array();
-    std::printf("| model | res | triangles (ours) | ours (ms) | volumeToMesh (ms) | polygons (OpenVDB) | volumeToMesh / ours |\n");
-    std::printf("|---|---:|---:|---:|---:|---:|---:|\n");
+    std::printf("| model | res | triangles (ours) | vertices (ours) | ours (ms) | volumeToMesh (ms) | polygons (OpenVDB) "
+                "| points (OpenVDB) | volumeToMesh / ours |\n");
+    std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|\n");
     for (const Source& s : sources) {
         if (!filter.empty() && s.name.find(filter) == std::string::npos) continue;
         frep::ParseResult r = s.text.empty() ? frep::parseFile(s.file.string()) : frep::parseProgram(s.text, s.name);
@@ -74,11 +76,14 @@ int main(int argc, char** argv) {
                 openvdb::tools::volumeToMesh(voxel::vdb(*v.volume), points, tris, quads, 0.0, 0.0, false);
             });
             std::size_t polys = tris.size() + 2 * quads.size();
-            std::printf("| %s | %d^3 | %zu | %.1f | %.1f | %zu | %.2fx |\n", s.name.c_str(), res, mesh.triangleCount(),
-                        ours * 1e3, theirs * 1e3, polys, theirs / ours);
+            std::printf("| %s | %d^3 | %zu | %zu | %.1f | %.1f | %zu | %zu | %.2fx |\n", s.name.c_str(), res,
+                        mesh.triangleCount(), mesh.vertexCount(), ours * 1e3, theirs * 1e3, polys, points.size(),
+                        theirs / ours);
             std::fflush(stdout);
-            rows.push_back({{"model", s.name}, {"res", res}, {"triangles", mesh.triangleCount()}, {"ours_ms", ours * 1e3},
-                            {"volume_to_mesh_ms", theirs * 1e3}, {"openvdb_triangles", polys}});
+            rows.push_back({{"model", s.name}, {"res", res}, {"triangles", mesh.triangleCount()},
+                            {"vertices", mesh.vertexCount()}, {"ours_ms", ours * 1e3},
+                            {"volume_to_mesh_ms", theirs * 1e3}, {"openvdb_triangles", polys},
+                            {"openvdb_points", points.size()}});
         }
     }
     if (!jsonPath.empty()) std::ofstream(jsonPath) << rows.dump(2) << "\n";
