@@ -16,11 +16,13 @@ namespace {
 
 using voxel::FloatLeaf;
 using Clock = std::chrono::steady_clock;
+static_assert(FloatLeaf::DIM == kBlendBlock && kBlockEdge == kBlendBlock, "blocks are OpenVDB leaves");
 
 // The one formula both paths use, so that they agree bit for bit (the build
-// never contracts a*b+c into a fused multiply-add).
-inline float blendValue(float a, float b, float c, const float w[3], float band) {
-    float v = w[0] * a + w[1] * b + w[2] * c;
+// never contracts a*b+c into a fused multiply-add, and vector and scalar
+// IEEE arithmetic round alike).
+inline float blendValue(float a, float b, float c, float w0, float w1, float w2, float band) {
+    float v = w0 * a + w1 * b + w2 * c;
     return std::min(std::max(v, -band), band);
 }
 
@@ -30,11 +32,8 @@ inline std::uint32_t bits(float v) {
     return u;
 }
 
-inline int floorMultiple(int v, int m) { return v >= 0 ? v / m * m : -((-v + m - 1) / m) * m; }
-inline int ceilMultiple(int v, int m) { return -floorMultiple(-v, m); }
-
 // The voxels an item blends: start + stride * (x, y, z) for x < count[0], ...
-// numbered x fastest (the dense fields' order).
+// numbered x fastest.
 struct Lattice {
     int start[3] = {0, 0, 0};
     int count[3] = {0, 0, 0};
@@ -77,41 +76,161 @@ std::vector<std::array<int, 3>> blockOrigins(const voxel::IndexBox& box) {
 }
 
 struct BlendInputs {
-    const float* f[3];
+    const BlockedField* f[3];
     float w[3];
     float band;
+    voxel::IndexBox box;
 };
 
 BlendInputs inputs(const MorphSources& s, const MorphWeights& weights) {
     BlendInputs in{};
     for (std::size_t i = 0; i < 3; ++i) {
-        in.f[i] = s.fields[i].values.data();
+        in.f[i] = &s.fields[i];
         in.w[i] = static_cast<float>(weights.w[i]);
     }
     in.band = s.frame.band;
+    in.box = s.frame.indexBox;
     return in;
+}
+
+// One block's stored values in leaf order, which of them are active
+// (inside the band) as bytes, and the same as a leaf's mask.
+struct BlockValues {
+    float v[kBlockVoxels];
+    std::uint8_t on[kBlockVoxels];
+    FloatLeaf::NodeMaskType mask;
+};
+
+// Eight 0/1 bytes (the first in the lowest byte) to eight bits: each byte's
+// bit lands in the top byte of the product at its own place, with no carry.
+inline std::uint64_t packBits(const std::uint8_t* bytes) {
+    std::uint64_t x;
+    std::memcpy(&x, bytes, sizeof x);
+    return (x * 0x0102040810204080ULL) >> 56;
+}
+// The inverse: bit i of `b` to byte i (0 or 1). Byte i of the repeated
+// word keeps only bit i; adding 0x7f carries any set bit into the byte's top
+// bit, never into the next byte.
+inline void unpackBits(std::uint64_t b, std::uint8_t* bytes) {
+    const std::uint64_t x = ((((b * 0x0101010101010101ULL) & 0x8040201008040201ULL) + 0x7f7f7f7f7f7f7f7fULL) >> 7) &
+                            0x0101010101010101ULL;
+    std::memcpy(bytes, &x, sizeof x);
+}
+static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, "packBits and unpackBits read bytes little-endian");
+
+// Per voxel: 1 where the value's bits or the active state differ.
+void diffBytes(const std::uint32_t* __restrict oldBits, const std::uint32_t* __restrict newBits,
+               const std::uint8_t* __restrict oldOn, const std::uint8_t* __restrict newOn, std::uint8_t* __restrict diff) {
+    for (int i = 0; i < kBlockVoxels; ++i)
+        diff[i] = static_cast<std::uint8_t>((oldBits[i] != newBits[i]) | (oldOn[i] != newOn[i]));
+}
+
+// The blend of one block's 512 values. Restrict parameters (GCC ignores
+// restrict on local pointers) let -O2 vectorize it without alias checks.
+void blendRun(const float* __restrict a, const float* __restrict b, const float* __restrict c, float* __restrict v,
+              float w0, float w1, float w2, float band) {
+    for (int i = 0; i < kBlockVoxels; ++i) v[i] = blendValue(a[i], b[i], c[i], w0, w1, w2, band);
+}
+
+void activeBytes(const float* __restrict v, std::uint8_t* __restrict on, float band) {
+    for (int i = 0; i < kBlockVoxels; ++i) on[i] = std::fabs(v[i]) < band;
+}
+
+// The whole block at `o`: every voxel of it inside the index box blended,
+// the rest the background (outside, inactive).
+void blendBlock(const std::array<int, 3>& o, const BlendInputs& in, BlockValues& out) {
+    const float band = in.band;
+    // Edge blocks hold 0 beyond the box in the sources: blended like the
+    // rest, then replaced.
+    blendRun(in.f[0]->block(o), in.f[1]->block(o), in.f[2]->block(o), out.v, in.w[0], in.w[1], in.w[2], band);
+    const bool whole = in.box.contains(o[0], o[1], o[2]) &&
+                       in.box.contains(o[0] + kBlendBlock - 1, o[1] + kBlendBlock - 1, o[2] + kBlendBlock - 1);
+    if (!whole) {
+        // The block's voxels inside the box, per axis, in block coordinates.
+        int lo[3], hi[3];
+        for (int a = 0; a < 3; ++a) {
+            lo[a] = std::max(0, in.box.lo[a] - o[static_cast<std::size_t>(a)]);
+            hi[a] = std::min(kBlendBlock - 1, in.box.hi[a] - o[static_cast<std::size_t>(a)]);
+        }
+        for (int x = 0; x < kBlendBlock; ++x)
+            for (int y = 0; y < kBlendBlock; ++y) {
+                float* row = out.v + blockOffset(x, y, 0);
+                if (x < lo[0] || x > hi[0] || y < lo[1] || y > hi[1]) {
+                    std::fill(row, row + kBlendBlock, -band);
+                    continue;
+                }
+                for (int z = 0; z < lo[2]; ++z) row[z] = -band;
+                for (int z = hi[2] + 1; z < kBlendBlock; ++z) row[z] = -band;
+            }
+    }
+    activeBytes(out.v, out.on, band);
+    // The leaf mask: word w holds voxels 64w .. 64w+63, bit i voxel 64w+i.
+    for (openvdb::Index w = 0; w < FloatLeaf::NodeMaskType::WORD_COUNT; ++w) {
+        std::uint64_t word = 0;
+        for (openvdb::Index byte = 0; byte < 8; ++byte) word |= packBits(out.on + 64 * w + 8 * byte) << (8 * byte);
+        out.mask.getWord<std::uint64_t>(w) = word;
+    }
+}
+
+// Which voxels of a block differ, summed up: how many, and their bounding
+// box (from ORs over the block's 64 rows of 8 bytes along z).
+struct BlockChange {
+    std::uint64_t count = 0;
+    int lo[3] = {0, 0, 0}, hi[3] = {-1, -1, -1};
+};
+
+BlockChange summarize(const std::uint8_t* diff, const std::array<int, 3>& o) {
+    BlockChange c;
+    std::uint64_t rows[64];
+    std::memcpy(rows, diff, sizeof rows);
+    std::uint64_t anyZ = 0;
+    unsigned anyX = 0, anyY = 0;
+    for (unsigned x = 0; x < 8; ++x)
+        for (unsigned y = 0; y < 8; ++y) {
+            const std::uint64_t r = rows[x * 8 + y];
+            anyZ |= r;
+            if (r) { anyX |= 1u << x; anyY |= 1u << y; }
+        }
+    if (!anyZ) return c;
+    for (int i = 0; i < kBlockVoxels; ++i) c.count += diff[i];
+    unsigned anyZbits = 0;
+    for (unsigned z = 0; z < 8; ++z)
+        if ((anyZ >> (8 * z)) & 0xff) anyZbits |= 1u << z;
+    const unsigned masks[3] = {anyX, anyY, anyZbits};
+    for (int a = 0; a < 3; ++a) {
+        c.lo[a] = o[static_cast<std::size_t>(a)] + __builtin_ctz(masks[a]);
+        c.hi[a] = o[static_cast<std::size_t>(a)] + 31 - __builtin_clz(masks[a]);
+    }
+    return c;
 }
 
 // A block whose 512 stored values all clamp alike (and so are inactive)
 // becomes a tile of that value: the narrow band's rule, as in the sampler.
-bool uniformClamped(const FloatLeaf& leaf, float band, float& value) {
-    if (!leaf.getValueMask().isOff()) return false;
-    const std::uint32_t first = bits(leaf.getValue(0));
+bool uniformClamped(const float* v, const FloatLeaf::NodeMaskType& on, float band, float& value) {
+    if (!on.isOff()) return false;
+    const std::uint32_t first = bits(v[0]);
     if (first != bits(band) && first != bits(-band)) return false;
-    for (openvdb::Index i = 1; i < FloatLeaf::SIZE; ++i)
-        if (bits(leaf.getValue(i)) != first) return false;
-    value = leaf.getValue(0);
+    for (int i = 1; i < kBlockVoxels; ++i)
+        if (bits(v[i]) != first) return false;
+    value = v[0];
     return true;
+}
+
+bool uniformClamped(const FloatLeaf& leaf, float band, float& value) {
+    return uniformClamped(leaf.buffer().data(), leaf.getValueMask(), band, value);
+}
+
+void storeBlock(FloatLeaf& leaf, const BlockValues& b) {
+    std::memcpy(leaf.buffer().data(), b.v, sizeof b.v);
+    leaf.setValueMask(b.mask);
 }
 
 std::string checkResult(const MorphSources& s, const voxel::Volume& result) {
     const voxel::VolumeFrame& a = s.frame;
     const voxel::VolumeFrame& b = result.frame;
-    if (!(a.indexBox == b.indexBox) || a.voxelSize != b.voxelSize || a.band != b.band || a.resolution != b.resolution)
-        return "the morph result is not in the sources' frame";
-    for (int i = 0; i < 3; ++i)
-        if (a.modelBox.lo[i] != b.modelBox.lo[i] || a.modelBox.hi[i] != b.modelBox.hi[i])
-            return "the morph result is not in the sources' frame";
+    bool same = a.indexBox == b.indexBox && a.voxelSize == b.voxelSize && a.band == b.band && a.resolution == b.resolution;
+    for (int i = 0; i < 3; ++i) same = same && a.modelBox.lo[i] == b.modelBox.lo[i] && a.modelBox.hi[i] == b.modelBox.hi[i];
+    if (!same) return "the morph result is not in the sources' frame";
     return checkSources(s);
 }
 
@@ -134,34 +253,22 @@ voxel::Volume blendMorph(const MorphSources& sources, const MorphWeights& weight
     std::string why = checkSources(sources);
     if (!why.empty()) throw std::invalid_argument(why);
     voxel::Volume result = makeMorphVolume(sources);
-    const voxel::DenseField& field = sources.fields[0];
-    const voxel::IndexBox& box = sources.frame.indexBox;
     const BlendInputs in = inputs(sources, weights);
-    const std::vector<std::array<int, 3>> origins = blockOrigins(box);
+    const std::vector<std::array<int, 3>> origins = blockOrigins(in.box);
     std::vector<std::unique_ptr<FloatLeaf>> leaves(origins.size());
     std::vector<char> insideTile(origins.size(), 0);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, origins.size()), [&](const tbb::blocked_range<std::size_t>& r) {
+        BlockValues values;
         for (std::size_t b = r.begin(); b != r.end(); ++b) {
             const auto& o = origins[b];
-            auto leaf = std::make_unique<FloatLeaf>(openvdb::Coord(o[0], o[1], o[2]), -in.band, false);
-            Lattice l = itemLattice(o, BlendPass::Fine, box);
-            for (int z = 0; z < l.count[2]; ++z)
-                for (int y = 0; y < l.count[1]; ++y) {
-                    const int k = l.start[2] + z, j = l.start[1] + y;
-                    std::size_t d = field.at(l.start[0], j, k);
-                    for (int x = 0; x < l.count[0]; ++x, ++d) {
-                        float v = blendValue(in.f[0][d], in.f[1][d], in.f[2][d], in.w, in.band);
-                        openvdb::Index off = FloatLeaf::coordToOffset(openvdb::Coord(l.start[0] + x, j, k));
-                        leaf->setValueOnly(off, v);
-                        leaf->setActiveState(off, std::fabs(v) < in.band);
-                    }
-                }
+            blendBlock(o, in, values);
             float uniform = 0.0f;
-            if (uniformClamped(*leaf, in.band, uniform)) {
+            if (uniformClamped(values.v, values.mask, in.band, uniform)) {
                 insideTile[b] = uniform > 0.0f;  // outside: the background already
                 continue;
             }
-            leaves[b] = std::move(leaf);
+            leaves[b] = std::make_unique<FloatLeaf>(openvdb::Coord(o[0], o[1], o[2]), -in.band, false);
+            storeBlock(*leaves[b], values);
         }
     });
     openvdb::FloatTree& tree = voxel::vdb(result).tree();
@@ -175,6 +282,10 @@ voxel::Volume blendMorph(const MorphSources& sources, const MorphWeights& weight
 
 // --- the budgeted partial update ------------------------------------------
 
+// Lookups only, one per worker: not registered with the tree (registration
+// is a concurrent map insert per accessor).
+using Accessor = openvdb::tree::ValueAccessor<openvdb::FloatTree, false>;
+
 struct MorphBlender::Impl {
     const MorphSources& sources;
     voxel::Volume& result;
@@ -186,6 +297,7 @@ struct MorphBlender::Impl {
     std::uint32_t nextDone = 0;      // samples of items[next] already blended
     std::uint64_t total = 0;
     std::uint64_t consumed = 0;
+    std::array<double, 3> sortedFor{};  // the viewer the list is sorted for
 
     Impl(const MorphSources& s, voxel::Volume& r) : sources(s), result(r) {}
 
@@ -195,27 +307,48 @@ struct MorphBlender::Impl {
                 (model[2] - f.modelBox.lo[2]) / f.voxelSize};
     }
 
-    void sortRange(std::size_t first, std::size_t last) {
+    // Nearest first: by the distance from the viewer to the centre of the
+    // `region`-aligned cube holding the block (the block itself for the
+    // fine pass; kCoarseRegion for the coarse pass, whose items are tiny:
+    // inside a region they go in memory order, so that tree lookups and the
+    // sources' reads stay coherent). Ties by z, y, x of the origin.
+    void sortRange(std::size_t first, std::size_t last, int region) {
         if (first >= last) return;
-        auto key = [&](const BlendItem& it) {
+        struct Keyed {
+            double d;
+            std::array<int, 3> zyx;
+            BlendItem item;
+        };
+        std::vector<Keyed> keyed;
+        keyed.reserve(last - first);
+        for (std::size_t i = first; i < last; ++i) {
+            const BlendItem& it = items[i];
             double d = 0.0;
             for (std::size_t a = 0; a < 3; ++a) {
-                double c = it.origin[a] + 0.5 * (kBlendBlock - 1) - viewer[a];
+                double c = floorMultiple(it.origin[a], region) + 0.5 * (region - 1) - viewer[a];
                 d += c * c;
             }
-            return d;
-        };
-        std::sort(items.begin() + static_cast<std::ptrdiff_t>(first), items.begin() + static_cast<std::ptrdiff_t>(last),
-                  [&](const BlendItem& a, const BlendItem& b) {
-                      double ka = key(a), kb = key(b);
-                      if (ka != kb) return ka < kb;
-                      return std::array<int, 3>{a.origin[2], a.origin[1], a.origin[0]} <
-                             std::array<int, 3>{b.origin[2], b.origin[1], b.origin[0]};
-                  });
+            keyed.push_back({d, {it.origin[2], it.origin[1], it.origin[0]}, it});
+        }
+        std::sort(keyed.begin(), keyed.end(), [](const Keyed& a, const Keyed& b) {
+            return a.d != b.d ? a.d < b.d : a.zyx < b.zyx;
+        });
+        for (std::size_t i = first; i < last; ++i) items[i] = keyed[i - first].item;
     }
 
+    // Sorts what is left of each pass for the current viewer.
+    void sortFrom(std::size_t first) {
+        if (first < coarseItems) {
+            sortRange(first, coarseItems, kCoarseRegion);
+            sortRange(coarseItems, items.size(), kBlendBlock);
+        } else {
+            sortRange(first, items.size(), kBlendBlock);
+        }
+        sortedFor = viewer;
+    }
+
+    // The items depend on the frame only; their order on the viewer.
     void build() {
-        items.clear();
         const voxel::IndexBox& box = sources.frame.indexBox;
         std::vector<std::array<int, 3>> origins = blockOrigins(box);
         for (const auto& o : origins) {
@@ -224,13 +357,16 @@ struct MorphBlender::Impl {
         }
         coarseItems = items.size();
         for (const auto& o : origins) items.push_back({o, BlendPass::Fine, itemLattice(o, BlendPass::Fine, box).size()});
-        sortRange(0, coarseItems);
-        sortRange(coarseItems, items.size());
+        for (const auto& it : items) total += it.samples;
+        sortFrom(0);
+    }
+
+    void restart() {
+        if (items.empty()) build();
+        else if (viewer != sortedFor) sortFrom(0);
         next = 0;
         nextDone = 0;
         consumed = 0;
-        total = 0;
-        for (const auto& it : items) total += it.samples;
     }
 
     // One item's share of a batch.
@@ -239,9 +375,10 @@ struct MorphBlender::Impl {
         std::uint32_t s0 = 0, s1 = 0;   // sample range of the item
         bool finishes = false;          // s1 is the item's end
         FloatLeaf* leaf = nullptr;
-        std::vector<float> pending;     // new values when the block was a tile
-        float tileValue = 0.0f;
+        float tileValue = 0.0f;         // the block's value when it has no leaf
         bool tileActive = false;
+        bool whole = false;             // blended as a whole block
+        bool fresh = false;             // its leaf was made in this batch
         std::uint64_t changed = 0;
         int lo[3] = {0, 0, 0}, hi[3] = {-1, -1, -1};
         bool collapse = false;
@@ -258,69 +395,113 @@ struct MorphBlender::Impl {
         }
     };
 
-    // Calls visit(i, j, k, denseOffset, n) for samples [s0, s1) of the
-    // lattice, in runs along x (n samples, `stride` apart).
+    // Calls visit(i, j, k, leafOffset) for samples [s0, s1) of the lattice.
     template <class Visit>
-    static void forRuns(const Lattice& l, std::uint32_t s0, std::uint32_t s1, const voxel::DenseField& field,
-                        Visit&& visit) {
+    static void forSamples(const Lattice& l, const std::array<int, 3>& o, std::uint32_t s0, std::uint32_t s1,
+                           Visit&& visit) {
         const std::uint32_t nx = static_cast<std::uint32_t>(l.count[0]), ny = static_cast<std::uint32_t>(l.count[1]);
-        std::uint32_t r = s0;
-        while (r < s1) {
-            const std::uint32_t x = r % nx, y = (r / nx) % ny, z = r / (nx * ny);
-            const std::uint32_t n = std::min(nx - x, s1 - r);
-            const int i = l.start[0] + l.stride * static_cast<int>(x);
-            const int j = l.start[1] + l.stride * static_cast<int>(y);
-            const int k = l.start[2] + l.stride * static_cast<int>(z);
-            visit(i, j, k, field.at(i, j, k), n);
-            r += n;
+        for (std::uint32_t r = s0; r < s1; ++r) {
+            const int i = l.start[0] + l.stride * static_cast<int>(r % nx);
+            const int j = l.start[1] + l.stride * static_cast<int>((r / nx) % ny);
+            const int k = l.start[2] + l.stride * static_cast<int>(r / (nx * ny));
+            visit(i, j, k, blockOffset(i - o[0], j - o[1], k - o[2]));
         }
     }
 
     // Blends the segment's samples; writes them straight into the block's
     // leaf when it has one (each block appears once per batch, so workers
     // never share a leaf), else keeps them for after the leaf is made.
-    void blendSegment(Segment& s, const BlendInputs& in, openvdb::FloatTree& tree) const {
+    // `acc` is the worker's own (unregistered) accessor: lookups only.
+    void blendSegment(Segment& s, const BlendInputs& in, Accessor& acc) const {
         const BlendItem& item = items[s.item];
-        const Lattice l = itemLattice(item.origin, item.pass, sources.frame.indexBox);
-        const voxel::DenseField& field = sources.fields[0];
         const openvdb::Coord origin(item.origin[0], item.origin[1], item.origin[2]);
-        s.leaf = tree.probeLeaf(origin);  // a lookup; the leaf is written by this segment only
-        if (!s.leaf) {
-            s.tileActive = tree.probeValue(origin, s.tileValue);
-            s.pending.reserve(s.s1 - s.s0);
+        s.leaf = acc.probeLeaf(origin);  // the leaf is written by this segment only
+        if (!s.leaf) s.tileActive = acc.probeValue(origin, s.tileValue);
+        s.whole = item.pass == BlendPass::Fine && s.s0 == 0 && s.finishes;
+        if (s.whole) blendWholeBlock(s, in);
+        else blendSamples(s, in);
+    }
+
+    // Most of the work: a whole block at once, compared and stored as 512
+    // values and one mask.
+    void blendWholeBlock(Segment& s, const BlendInputs& in) const {
+        const auto& o = items[s.item].origin;
+        BlockValues values;
+        blendBlock(o, in, values);
+        std::uint8_t diff[kBlockVoxels];
+        if (s.leaf) {
+            const float* old = s.leaf->buffer().data();
+            if (std::memcmp(old, values.v, sizeof values.v) == 0 && s.leaf->getValueMask() == values.mask) return;
+            std::uint32_t oldBits[kBlockVoxels], newBits[kBlockVoxels];
+            std::uint8_t oldOn[kBlockVoxels];
+            std::memcpy(oldBits, old, sizeof oldBits);
+            std::memcpy(newBits, values.v, sizeof newBits);
+            const auto& mask = s.leaf->getValueMask();
+            for (openvdb::Index w = 0; w < FloatLeaf::NodeMaskType::WORD_COUNT; ++w)
+                for (openvdb::Index byte = 0; byte < 8; ++byte)
+                    unpackBits((mask.getWord<std::uint64_t>(w) >> (8 * byte)) & 0xff, oldOn + 64 * w + 8 * byte);
+            diffBytes(oldBits, newBits, oldOn, values.on, diff);
+        } else {
+            std::uint32_t oldBits[kBlockVoxels], newBits[kBlockVoxels];
+            std::uint8_t oldOn[kBlockVoxels];
+            std::fill(oldBits, oldBits + kBlockVoxels, bits(s.tileValue));
+            std::fill(oldOn, oldOn + kBlockVoxels, static_cast<std::uint8_t>(s.tileActive));
+            std::memcpy(newBits, values.v, sizeof newBits);
+            diffBytes(oldBits, newBits, oldOn, values.on, diff);
         }
-        const std::size_t stride = static_cast<std::size_t>(l.stride);
-        forRuns(l, s.s0, s.s1, field, [&](int i, int j, int k, std::size_t d, std::uint32_t n) {
-            for (std::uint32_t x = 0; x < n; ++x, d += stride) {
-                const int ix = i + l.stride * static_cast<int>(x);
-                const float v = blendValue(in.f[0][d], in.f[1][d], in.f[2][d], in.w, in.band);
-                const bool on = std::fabs(v) < in.band;
-                if (s.leaf) {
-                    const openvdb::Index off = FloatLeaf::coordToOffset(openvdb::Coord(ix, j, k));
-                    if (bits(s.leaf->getValue(off)) == bits(v) && s.leaf->isValueOn(off) == on) continue;
-                    s.leaf->setValueOnly(off, v);
-                    s.leaf->setActiveState(off, on);
-                    s.noteChange(ix, j, k);
-                } else {
-                    s.pending.push_back(v);
-                    if (bits(s.tileValue) != bits(v) || s.tileActive != on) s.noteChange(ix, j, k);
-                }
+        const BlockChange c = summarize(diff, o);
+        if (c.count == 0) return;
+        s.changed = c.count;
+        std::copy(c.lo, c.lo + 3, s.lo);
+        std::copy(c.hi, c.hi + 3, s.hi);
+        if (s.leaf) storeBlock(*s.leaf, values);  // else writeNewLeaf() blends it again
+    }
+
+    // Part of a block, or the coarse lattice: sample by sample. The coarse
+    // lattice reads the sources' compact copies (the same floats).
+    void blendSamples(Segment& s, const BlendInputs& in) const {
+        const BlendItem& item = items[s.item];
+        const auto& o = item.origin;
+        const Lattice l = itemLattice(o, item.pass, in.box);
+        const float* src[3];
+        for (std::size_t f = 0; f < 3; ++f)
+            src[f] = item.pass == BlendPass::Coarse ? in.f[f]->coarse(o) : in.f[f]->block(o);
+        forSamples(l, o, s.s0, s.s1, [&](int i, int j, int k, int off) {
+            const int at = item.pass == BlendPass::Coarse ? coarseOffset(i - o[0], j - o[1], k - o[2]) : off;
+            const float v = blendValue(src[0][at], src[1][at], src[2][at], in.w[0], in.w[1], in.w[2], in.band);
+            const bool on = std::fabs(v) < in.band;
+            const auto index = static_cast<openvdb::Index>(off);
+            if (s.leaf) {
+                if (bits(s.leaf->getValue(index)) == bits(v) && s.leaf->isValueOn(index) == on) return;
+                s.leaf->setValueOnly(index, v);
+                s.leaf->setActiveState(index, on);
+                s.noteChange(i, j, k);
+            } else if (bits(s.tileValue) != bits(v) || s.tileActive != on) {
+                s.noteChange(i, j, k);  // writeNewLeaf() blends it again
             }
         });
     }
 
-    // Writes the values kept for a block that was a tile into its new leaf.
-    void writePending(Segment& s, const BlendInputs& in) const {
+    // A block that was a tile and changed, into its new leaf. It is blended
+    // again rather than kept: most tiles do not change (far inside or
+    // outside), and keeping every tile's values would cost an allocation each.
+    void writeNewLeaf(Segment& s, const BlendInputs& in) const {
         const BlendItem& item = items[s.item];
-        const Lattice l = itemLattice(item.origin, item.pass, sources.frame.indexBox);
-        std::size_t p = 0;
-        forRuns(l, s.s0, s.s1, sources.fields[0], [&](int i, int j, int k, std::size_t, std::uint32_t n) {
-            for (std::uint32_t x = 0; x < n; ++x, ++p) {
-                const openvdb::Index off =
-                    FloatLeaf::coordToOffset(openvdb::Coord(i + l.stride * static_cast<int>(x), j, k));
-                s.leaf->setValueOnly(off, s.pending[p]);
-                s.leaf->setActiveState(off, std::fabs(s.pending[p]) < in.band);
-            }
+        const auto& o = item.origin;
+        if (s.whole) {
+            BlockValues values;
+            blendBlock(o, in, values);
+            storeBlock(*s.leaf, values);
+            return;
+        }
+        const Lattice l = itemLattice(o, item.pass, in.box);
+        const float* a = in.f[0]->block(o);
+        const float* b = in.f[1]->block(o);
+        const float* c = in.f[2]->block(o);
+        forSamples(l, o, s.s0, s.s1, [&](int, int, int, int off) {
+            const float v = blendValue(a[off], b[off], c[off], in.w[0], in.w[1], in.w[2], in.band);
+            s.leaf->setValueOnly(static_cast<openvdb::Index>(off), v);
+            s.leaf->setActiveState(static_cast<openvdb::Index>(off), std::fabs(v) < in.band);
         });
     }
 
@@ -328,8 +509,8 @@ struct MorphBlender::Impl {
     // coarse pass (so that no block appears twice in one batch).
     void runBatch(std::uint64_t samples, BlendStep& report) {
         std::vector<Segment> segs;
-        const std::uint64_t samplesBefore = report.samples;
         const std::size_t passEnd = next < coarseItems ? coarseItems : items.size();
+        std::uint64_t batchSamples = 0;
         while (samples > 0 && next < passEnd) {
             const BlendItem& item = items[next];
             Segment s;
@@ -338,8 +519,7 @@ struct MorphBlender::Impl {
             s.s1 = static_cast<std::uint32_t>(std::min<std::uint64_t>(item.samples, nextDone + samples));
             s.finishes = s.s1 == item.samples;
             samples -= s.s1 - s.s0;
-            report.samples += s.s1 - s.s0;
-            consumed += s.s1 - s.s0;
+            batchSamples += s.s1 - s.s0;
             if (s.finishes) {
                 ++next;
                 nextDone = 0;
@@ -349,33 +529,41 @@ struct MorphBlender::Impl {
             segs.push_back(std::move(s));
         }
         if (segs.empty()) return;
-        const std::uint64_t batchSamples = report.samples - samplesBefore;
+        report.samples += batchSamples;
+        consumed += batchSamples;
 
         const BlendInputs in = inputs(sources, weights);
         openvdb::FloatTree& tree = voxel::vdb(result).tree();
+        // About 4096 samples per task.
         const std::size_t grain = std::max<std::size_t>(1, 4096 / (1 + batchSamples / segs.size()));
         // 1. Blend (in place where the block has a leaf).
         tbb::parallel_for(tbb::blocked_range<std::size_t>(0, segs.size(), grain),
                           [&](const tbb::blocked_range<std::size_t>& r) {
-                              for (std::size_t i = r.begin(); i != r.end(); ++i) blendSegment(segs[i], in, tree);
+                              Accessor acc(tree);
+                              for (std::size_t i = r.begin(); i != r.end(); ++i) blendSegment(segs[i], in, acc);
                           });
         // 2. Leaves for blocks that were tiles and changed (this changes the
         //    tree: one thread). touchLeaf keeps the tile's value elsewhere.
+        bool any = false;
         for (Segment& s : segs) {
+            any = any || (s.finishes && items[s.item].pass == BlendPass::Fine);
             if (s.leaf || s.changed == 0) continue;
             const auto& o = items[s.item].origin;
             s.leaf = tree.touchLeaf(openvdb::Coord(o[0], o[1], o[2]));
+            s.fresh = true;
+            any = true;
         }
         // 3. Fill the new leaves; decide which finished blocks become tiles.
-        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, segs.size(), grain),
-                          [&](const tbb::blocked_range<std::size_t>& r) {
-                              for (std::size_t i = r.begin(); i != r.end(); ++i) {
-                                  Segment& s = segs[i];
-                                  if (!s.pending.empty() && s.changed > 0) writePending(s, in);
-                                  if (s.leaf && s.finishes && items[s.item].pass == BlendPass::Fine)
-                                      s.collapse = uniformClamped(*s.leaf, in.band, s.collapseValue);
-                              }
-                          });
+        if (any)
+            tbb::parallel_for(tbb::blocked_range<std::size_t>(0, segs.size(), grain),
+                              [&](const tbb::blocked_range<std::size_t>& r) {
+                                  for (std::size_t i = r.begin(); i != r.end(); ++i) {
+                                      Segment& s = segs[i];
+                                      if (s.fresh) writeNewLeaf(s, in);
+                                      if (s.leaf && s.finishes && items[s.item].pass == BlendPass::Fine)
+                                          s.collapse = uniformClamped(*s.leaf, in.band, s.collapseValue);
+                                  }
+                              });
         // 4. Tiles for uniform blocks (one thread), and the report.
         for (Segment& s : segs) {
             const auto& o = items[s.item].origin;
@@ -399,7 +587,7 @@ MorphBlender::~MorphBlender() = default;
 void MorphBlender::restart(const MorphWeights& weights, const std::array<double, 3>& viewer) {
     impl_->weights = weights;
     impl_->viewer = impl_->toIndex(viewer);
-    impl_->build();
+    impl_->restart();
 }
 
 void MorphBlender::setViewer(const std::array<double, 3>& viewer) {
@@ -407,13 +595,7 @@ void MorphBlender::setViewer(const std::array<double, 3>& viewer) {
     m.viewer = m.toIndex(viewer);
     // The item in progress stays first; the rest of its pass and the whole
     // of a later pass are sorted again.
-    std::size_t first = m.next + (m.nextDone > 0 ? 1 : 0);
-    if (first < m.coarseItems) {
-        m.sortRange(first, m.coarseItems);
-        m.sortRange(m.coarseItems, m.items.size());
-    } else {
-        m.sortRange(first, m.items.size());
-    }
+    m.sortFrom(m.next + (m.nextDone > 0 ? 1 : 0));
 }
 
 BlendStep MorphBlender::step(const BlendBudget& budget) {

@@ -46,6 +46,7 @@ namespace hg::garden {
 
 constexpr int kBlendBlock = 8;     // block edge: one OpenVDB leaf
 constexpr int kCoarseStride = 4;   // the coarse pass's lattice (LOD level 2)
+constexpr int kCoarseRegion = 32;  // the coarse pass goes nearest region of 32^3 first
 
 // An empty result (every voxel outside) in the sources' frame.
 voxel::Volume makeMorphVolume(const MorphSources& sources);

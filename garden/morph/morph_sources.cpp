@@ -22,11 +22,9 @@ frep::Box3 unionBox(const std::array<frep::Box3, 3>& boxes) {
 }
 
 std::string checkSources(const MorphSources& s) {
-    for (std::size_t i = 0; i < 3; ++i) {
-        const voxel::DenseField& f = s.fields[i];
-        if (!(f.box == s.frame.indexBox)) return "morph source " + std::to_string(i) + " does not cover the shared frame";
-        if (f.values.size() != f.box.volume()) return "morph source " + std::to_string(i) + " has the wrong number of values";
-    }
+    for (std::size_t i = 0; i < 3; ++i)
+        if (s.fields[i].size() == 0 || !(s.fields[i].box() == s.frame.indexBox))
+            return "morph source " + std::to_string(i) + " does not cover the shared frame";
     return "";
 }
 
@@ -61,6 +59,18 @@ double surfaceGradient(const voxel::DenseField& field) {
     return median;
 }
 
+MorphSources morphSourcesFromDense(const voxel::VolumeFrame& frame, const std::array<voxel::DenseField, 3>& dense,
+                                   const std::array<double, 3>& normalization) {
+    MorphSources s;
+    s.frame = frame;
+    s.normalization = normalization;
+    for (std::size_t i = 0; i < 3; ++i) {
+        s.surfaceGradient[i] = surfaceGradient(dense[i]);
+        s.fields[i] = BlockedField(dense[i]);
+    }
+    return s;
+}
+
 MorphSourcesResult buildMorphSources(const std::array<const frep::Model*, 3>& models, const frep::Box3& box,
                                      int resolution, float band, std::uint64_t memoryLimit) {
     auto start = std::chrono::steady_clock::now();
@@ -75,8 +85,8 @@ MorphSourcesResult buildMorphSources(const std::array<const frep::Model*, 3>& mo
             r.error = "morph source " + std::to_string(i) + ": " + d.error;
             return r;
         }
-        s.fields[i] = std::move(d.field);
-        s.surfaceGradient[i] = surfaceGradient(s.fields[i]);
+        s.surfaceGradient[i] = surfaceGradient(d.field);
+        s.fields[i] = BlockedField(d.field);  // the dense copy goes at the end of this iteration
     }
     r.sources = std::move(s);
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -1,9 +1,10 @@
 // The three morph sources in one shared model frame: each source's f times
 // its own normalization (so it rises by about one unit per voxel of the
 // shared frame), sampled densely and unclamped over the frame's whole index
-// box (voxel::sampleDense). Blending clamped narrow-band values would be
-// wrong away from the band (DESIGN §4); these caches are what the blend
-// reads, and what the balancing factors are measured on.
+// box (voxel::sampleDense) and kept block by block (blocked_field.h).
+// Blending clamped narrow-band values would be wrong away from the band
+// (DESIGN §4); these caches are what the blend reads, and what the
+// balancing factors are measured on.
 #pragma once
 
 #include <array>
@@ -12,6 +13,7 @@
 #include <string>
 
 #include "frep/model.h"
+#include "garden/morph/blocked_field.h"
 #include "voxel/dense_field.h"
 #include "voxel/volume_frame.h"
 
@@ -19,7 +21,7 @@ namespace hg::garden {
 
 struct MorphSources {
     voxel::VolumeFrame frame;                  // shared by the sources and the result
-    std::array<voxel::DenseField, 3> fields;   // each covers frame.indexBox exactly
+    std::array<BlockedField, 3> fields;        // each covers frame.indexBox exactly
     std::array<double, 3> normalization{1.0, 1.0, 1.0};  // field = f_i * normalization[i]
     std::array<double, 3> surfaceGradient{1.0, 1.0, 1.0};  // median |grad field_i| per voxel at its surface
 };
@@ -35,6 +37,11 @@ struct MorphSourcesResult {
 // (voxel::estimateNormalization). `memoryLimit` as for sampleDense.
 MorphSourcesResult buildMorphSources(const std::array<const frep::Model*, 3>& models, const frep::Box3& box,
                                      int resolution, float band = 3.0f, std::uint64_t memoryLimit = 0);
+
+// Sources from three dense caches of frame.indexBox: measures each one's
+// surface gradient and keeps it block by block.
+MorphSources morphSourcesFromDense(const voxel::VolumeFrame& frame, const std::array<voxel::DenseField, 3>& dense,
+                                   const std::array<double, 3>& normalization = {1.0, 1.0, 1.0});
 
 // "" when the three fields cover the frame's index box; else what is wrong.
 std::string checkSources(const MorphSources& sources);

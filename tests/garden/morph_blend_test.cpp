@@ -105,9 +105,9 @@ TEST_F(MorphBlend, FromScratchIsTheClampedWeightedSumOfUnclampedSources) {
                     ASSERT_FALSE(s.on[o]);
                     continue;
                 }
-                const std::size_t d = sources->fields[0].at(i, j, k);
-                const float raw = w[0] * sources->fields[0].values[d] + w[1] * sources->fields[1].values[d] +
-                                  w[2] * sources->fields[2].values[d];
+                const float f[3] = {sources->fields[0].value(i, j, k), sources->fields[1].value(i, j, k),
+                                    sources->fields[2].value(i, j, k)};
+                const float raw = w[0] * f[0] + w[1] * f[1] + w[2] * f[2];
                 const float expected = std::min(std::max(raw, -band), band);
                 ASSERT_EQ(bits(s.value[o]), bits(expected)) << i << " " << j << " " << k;
                 ASSERT_EQ(s.on[o] != 0, std::fabs(expected) < band);
@@ -115,8 +115,7 @@ TEST_F(MorphBlend, FromScratchIsTheClampedWeightedSumOfUnclampedSources) {
                 surface += s.on[o] != 0;
                 // Somewhere a source is beyond the band while the blend is
                 // inside it: clamped sources would have given another value.
-                for (std::size_t f = 0; f < 3; ++f)
-                    beyondBand += std::fabs(sources->fields[f].values[d]) > band && std::fabs(raw) < band;
+                for (float source : f) beyondBand += std::fabs(source) > band && std::fabs(raw) < band;
             }
     EXPECT_GT(inside, 1000u);
     EXPECT_GT(surface, 1000u);
@@ -230,21 +229,34 @@ TEST_F(MorphBlend, CoarseLatticeFirstThenNearestBlocksFirst) {
     const voxel::VolumeFrame& f = sources->frame;
     const double vi[3] = {(viewer[0] - f.modelBox.lo[0]) / f.voxelSize, (viewer[1] - f.modelBox.lo[1]) / f.voxelSize,
                           (viewer[2] - f.modelBox.lo[2]) / f.voxelSize};
-    auto distance = [&](const BlendItem& it) {
+    // Distance from the viewer to the centre of the region-aligned cube
+    // holding the item's block.
+    auto distance = [&](const BlendItem& it, int region) {
         double d = 0;
-        for (std::size_t a = 0; a < 3; ++a) d += std::pow(it.origin[a] + 3.5 - vi[a], 2);
+        for (std::size_t a = 0; a < 3; ++a) {
+            int lo = static_cast<int>(std::floor(it.origin[a] / static_cast<double>(region))) * region;
+            d += std::pow(lo + 0.5 * (region - 1) - vi[a], 2);
+        }
         return d;
     };
-    // Every coarse item before every fine one; each pass nearest-first.
+    // Every coarse item before every fine one. The fine pass goes nearest
+    // block first; the coarse pass nearest 32^3 region first, and inside a
+    // region in z, y, x order.
     std::size_t coarse = 0;
     std::uint64_t coarseSamples = 0;
     while (coarse < list.size() && list[coarse].pass == BlendPass::Coarse) coarseSamples += list[coarse++].samples;
     ASSERT_GT(coarse, 0u);
     for (std::size_t i = coarse; i < list.size(); ++i) ASSERT_EQ(list[i].pass, BlendPass::Fine);
-    for (std::size_t i = 1; i < list.size(); ++i)
-        if (i != coarse) {
-            ASSERT_LE(distance(list[i - 1]), distance(list[i])) << i;
+    for (std::size_t i = coarse + 1; i < list.size(); ++i)
+        ASSERT_LE(distance(list[i - 1], kBlendBlock), distance(list[i], kBlendBlock)) << i;
+    for (std::size_t i = 1; i < coarse; ++i) {
+        double a = distance(list[i - 1], kCoarseRegion), b = distance(list[i], kCoarseRegion);
+        ASSERT_LE(a, b) << i;
+        if (a == b) {
+            auto zyx = [](const BlendItem& it) { return std::array<int, 3>{it.origin[2], it.origin[1], it.origin[0]}; };
+            ASSERT_LT(zyx(list[i - 1]), zyx(list[i])) << i;
         }
+    }
     // The coarse pass is the voxels whose indices are multiples of 4.
     std::uint64_t lattice = 0;
     for (int k = f.indexBox.lo[2]; k <= f.indexBox.hi[2]; ++k)
@@ -281,8 +293,8 @@ TEST_F(MorphBlend, CoarseLatticeFirstThenNearestBlocksFirst) {
     // nearest of all blocks (brute force), and after its samples it is right.
     const BlendItem first = list[coarse];
     double best = INFINITY;
-    for (const auto& it : list) best = std::min(best, distance(it));
-    EXPECT_EQ(distance(first), best);
+    for (const auto& it : list) best = std::min(best, distance(it, kBlendBlock));
+    EXPECT_EQ(distance(first, kBlendBlock), best);
     budget.maxSamples = first.samples;
     s = blender.step(budget);
     EXPECT_EQ(s.blocksFinished, 1u);
@@ -325,9 +337,12 @@ TEST_F(MorphBlend, ViewerMovesMidUpdate) {
     const auto& list = blender.workList();
     const voxel::VolumeFrame& f = sources->frame;
     auto distance = [&](const BlendItem& it) {
+        const int region = it.pass == BlendPass::Coarse ? kCoarseRegion : kBlendBlock;
         double d = 0;
-        for (std::size_t a = 0; a < 3; ++a)
-            d += std::pow(it.origin[a] + 3.5 - (elsewhere[a] - f.modelBox.lo[a]) / f.voxelSize, 2);
+        for (std::size_t a = 0; a < 3; ++a) {
+            int lo = static_cast<int>(std::floor(it.origin[a] / static_cast<double>(region))) * region;
+            d += std::pow(lo + 0.5 * (region - 1) - (elsewhere[a] - f.modelBox.lo[a]) / f.voxelSize, 2);
+        }
         return d;
     };
     for (std::size_t i = blender.cursor() + 2; i < list.size(); ++i)

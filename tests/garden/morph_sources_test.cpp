@@ -39,16 +39,26 @@ double radiusAlongX(const voxel::Volume& v) {
 
 TEST(MorphSources, BalancingFactorsEqualizeGradientsOfSpheresOfDifferentScale) {
     frep::Model wide = test::modelFromSource(kWide), steep = test::modelFromSource(kSteep);
-    MorphSources s;
-    ASSERT_EQ(voxel::makeFrame(cube(1.2), 48, 3.0f, s.frame), "");
-    const double h = s.frame.voxelSize;
+    voxel::VolumeFrame frame;
+    ASSERT_EQ(voxel::makeFrame(cube(1.2), 48, 3.0f, frame), "");
+    const double h = frame.voxelSize;
     // Raw f (scale 1): the fields rise at very different rates.
     const frep::Model* models[3] = {&wide, &steep, &wide};
+    std::array<voxel::DenseField, 3> dense;
     for (std::size_t i = 0; i < 3; ++i) {
-        voxel::DenseResult d = voxel::sampleDense(*models[i], s.frame, 1.0, s.frame.indexBox);
+        voxel::DenseResult d = voxel::sampleDense(*models[i], frame, 1.0, frame.indexBox);
         ASSERT_TRUE(d.error.empty()) << d.error;
-        s.fields[i] = std::move(d.field);
-        s.surfaceGradient[i] = surfaceGradient(s.fields[i]);
+        dense[i] = std::move(d.field);
+    }
+    MorphSources s = morphSourcesFromDense(frame, dense);
+    EXPECT_EQ(checkSources(s), "");
+    for (std::size_t i = 0; i < 3; ++i) {
+        EXPECT_EQ(s.surfaceGradient[i], surfaceGradient(dense[i]));
+        // The blocked copy holds the same values.
+        for (int k = frame.indexBox.lo[2]; k <= frame.indexBox.hi[2]; k += 5)
+            for (int j = frame.indexBox.lo[1]; j <= frame.indexBox.hi[1]; j += 3)
+                for (int n = frame.indexBox.lo[0]; n <= frame.indexBox.hi[0]; ++n)
+                    ASSERT_EQ(s.fields[i].value(n, j, k), dense[i].value(n, j, k));
     }
     EXPECT_NEAR(s.surfaceGradient[0], 2.0 * h, 0.05 * 2.0 * h);
     EXPECT_NEAR(s.surfaceGradient[1], 120.0 * h, 0.05 * 120.0 * h);
@@ -71,14 +81,17 @@ TEST(MorphSources, BuiltSourcesAreNormalizedToTheSharedFrame) {
     MorphSources s = test::threeSources(m, 32);
     EXPECT_EQ(checkSources(s), "");
     for (std::size_t i = 0; i < 3; ++i) {
-        EXPECT_TRUE(s.fields[i].box == s.frame.indexBox);
+        EXPECT_TRUE(s.fields[i].box() == s.frame.indexBox);
         // Each source rises by about one unit per voxel: balance about 1.
         EXPECT_NEAR(s.surfaceGradient[i], 1.0, 0.2) << i;
         EXPECT_NEAR(balancingFactors(s.surfaceGradient)[i], 1.0, 0.25) << i;
     }
     // Unclamped: far from the surface the values go well past the band.
     float lowest = 0.0f;
-    for (float v : s.fields[2].values) lowest = std::min(lowest, v);
+    const voxel::IndexBox& b = s.frame.indexBox;
+    for (int k = b.lo[2]; k <= b.hi[2]; ++k)
+        for (int j = b.lo[1]; j <= b.hi[1]; ++j)
+            for (int i = b.lo[0]; i <= b.hi[0]; ++i) lowest = std::min(lowest, s.fields[2].value(i, j, k));
     EXPECT_LT(lowest, -3.0f * s.frame.band);
 }
 
