@@ -298,6 +298,7 @@ struct MorphBlender::Impl {
     std::uint64_t total = 0;
     std::uint64_t consumed = 0;
     std::array<double, 3> sortedFor{};  // the viewer the list is sorted for
+    bool wholeListSorted = false;       // ... all of it, not only what was left
 
     Impl(const MorphSources& s, voxel::Volume& r) : sources(s), result(r) {}
 
@@ -345,6 +346,7 @@ struct MorphBlender::Impl {
             sortRange(first, items.size(), kBlendBlock);
         }
         sortedFor = viewer;
+        wholeListSorted = first == 0;
     }
 
     // The items depend on the frame only; their order on the viewer.
@@ -363,7 +365,7 @@ struct MorphBlender::Impl {
 
     void restart() {
         if (items.empty()) build();
-        else if (viewer != sortedFor) sortFrom(0);
+        else if (!wholeListSorted || viewer != sortedFor) sortFrom(0);
         next = 0;
         nextDone = 0;
         consumed = 0;
@@ -410,8 +412,9 @@ struct MorphBlender::Impl {
 
     // Blends the segment's samples; writes them straight into the block's
     // leaf when it has one (each block appears once per batch, so workers
-    // never share a leaf), else keeps them for after the leaf is made.
-    // `acc` is the worker's own (unregistered) accessor: lookups only.
+    // never share a leaf), else only notes whether the tile changes (the
+    // leaf is made afterwards, on one thread). `acc` is the worker's own
+    // (unregistered) accessor: lookups only.
     void blendSegment(Segment& s, const BlendInputs& in, Accessor& acc) const {
         const BlendItem& item = items[s.item];
         const openvdb::Coord origin(item.origin[0], item.origin[1], item.origin[2]);

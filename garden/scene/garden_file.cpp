@@ -311,8 +311,7 @@ Garden parseGarden(const std::string& text, const std::string& file, const std::
             g.materials.push_back(m);
         }
     }
-    Material stone;
-    stone.name = "";
+    const Material stone{};  // the default: grey, half rough
     Material lawn;
     lawn.color = {0.18f, 0.32f, 0.12f};
     lawn.roughness = 0.9f;

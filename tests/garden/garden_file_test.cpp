@@ -3,7 +3,9 @@
 // repository's default garden.
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <functional>
+#include <sstream>
 #include <nlohmann/json.hpp>
 
 #include "garden/scene/garden_file.h"
@@ -259,6 +261,21 @@ TEST_F(GardenFile, BrokenSculptureFilesShowAsMissing) {
         << load.sculptures[4].error;
     // The morph needs all three sources.
     EXPECT_NE(load.morphError.find("'two' is missing"), std::string::npos) << load.morphError;
+}
+
+TEST_F(GardenFile, TheDocumentedExampleLoads) {
+    std::ifstream in(std::string(HG_SOURCE_DIR) + "/docs/garden-format.md");
+    std::stringstream text;
+    text << in.rdbuf();
+    const std::string doc = text.str();
+    const std::size_t start = doc.find("```json\n");
+    ASSERT_NE(start, std::string::npos);
+    const std::size_t end = doc.find("```", start + 8);
+    GardenLoad load = loadGarden(write("example.json", doc.substr(start + 8, end - start - 8)));
+    ASSERT_TRUE(load.ok()) << load.error;
+    EXPECT_EQ(load.missingCount(), 0u);
+    EXPECT_TRUE(load.morphError.empty());
+    EXPECT_EQ(load.garden->sculptures.size(), 3u);
 }
 
 TEST(DefaultGarden, LoadsWithEverySculpture) {
