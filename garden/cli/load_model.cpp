@@ -5,7 +5,7 @@
 #include <iostream>
 #include <sstream>
 
-#include "frep/parser.h"
+#include "garden/scene/model_file.h"
 #include "voxel/vdb_io.h"
 
 namespace hg::garden::cli {
@@ -25,23 +25,19 @@ bool parseNumberList(const std::string& text, std::vector<double>& out) {
 }
 
 int pickBody(const frep::Program& program, const std::string& name, const std::string& file) {
-    int body = name.empty() ? program.defaultBody() : program.findBody(name);
-    if (body >= 0) return body;
-    std::cerr << file << ": error: no body named '" << name << "'; the file defines:";
-    for (const auto& b : program.bodies) std::cerr << " " << b.spelling;
-    std::cerr << "\n";
-    return -1;
+    std::string why;
+    int body = findBodyOrExplain(program, name, file, why);
+    std::cerr << why;
+    return body;
 }
 
 std::optional<LoadedModel> loadModel(const ModelOptions& options) {
-    frep::ParseResult parsed = frep::parseFile(options.file);
-    for (const auto& d : parsed.errors) std::cerr << frep::formatDiagnostic(d);
-    if (!parsed.ok()) return std::nullopt;
+    ModelFile file = loadModelFile(options.file, options.body, options.parameters);
+    std::cerr << file.error;
+    if (!file.ok()) return std::nullopt;
     LoadedModel lm;
-    lm.program = std::make_shared<const frep::Program>(std::move(*parsed.program));
-    int body = pickBody(*lm.program, options.body, options.file);
-    if (body < 0) return std::nullopt;
-    lm.model.emplace(lm.program, body, options.parameters);
+    lm.program = std::move(file.program);
+    lm.model = std::move(file.model);
     return lm;
 }
 

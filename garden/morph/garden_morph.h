@@ -1,0 +1,31 @@
+// From a loaded garden to the morph's inputs: the triangle (the sources'
+// positions on the ground), the shared model frame (the union of the
+// sources' model boxes unless the file gives one), the source caches and
+// the balancing factors (given in the file, or computed from the caches).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+
+#include "garden/morph/morph_sources.h"
+#include "garden/morph/morph_weights.h"
+#include "garden/scene/garden_file.h"
+
+namespace hg::garden {
+
+// Corner i is source i's position (x, z). The garden must have a morph.
+MorphTriangle morphTriangle(const Garden& garden);
+
+// The shared model box: $.morph.result.box, else the union of the sources'
+// boxes (given, or estimated by interval subdivision). "" on success, else
+// why not (a source is missing, or its box cannot be estimated).
+std::string morphModelBox(const GardenLoad& load, frep::Box3& box);
+
+// The three caches at $.morph.result.resolution and band.
+MorphSourcesResult buildGardenMorphSources(const GardenLoad& load, std::uint64_t memoryLimit = 0);
+
+// $.morph.balance when given, else balancingFactors(sources.surfaceGradient).
+std::array<double, 3> morphBalance(const MorphSpec& spec, const MorphSources& sources);
+
+}  // namespace hg::garden

@@ -1,0 +1,401 @@
+#include "garden/scene/garden_file.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "garden/scene/json_reader.h"
+#include "garden/scene/model_file.h"
+#include "voxel/volume_frame.h"
+
+namespace hg::garden {
+
+namespace {
+
+using json = nlohmann::json;
+
+constexpr int kVersion = 1;
+// A morph triangle smaller than this (square metres) has no usable inside.
+constexpr double kMinTriangleArea = 1e-4;
+
+struct Reader {
+    std::string folder;
+    std::map<std::string, Material> materials;
+
+    Material material(const json& v, const std::string& path) const {
+        if (v.is_string()) {
+            std::string name = v.get<std::string>();
+            auto it = materials.find(name);
+            if (it != materials.end()) return it->second;
+            std::vector<std::string> names;
+            for (const auto& m : materials) names.push_back(m.first);
+            std::string hint = nearMiss(name, names);
+            throw JsonError(path, "no material named '" + name + "' in $.materials" +
+                                      (hint.empty() ? std::string() : " (did you mean '" + hint + "'?)"));
+        }
+        if (!v.is_object()) throw JsonError(path, "expected a material name or a material object");
+        return materialObject(v, path, "");
+    }
+
+    static Material materialObject(const json& v, const std::string& path, const std::string& name) {
+        ObjectReader o(v, path, {"color", "roughness", "metallic"});
+        o.finish();
+        Material m;
+        m.name = name;
+        if (auto* c = o.optional("color")) m.color = readColor(*c, o.pathOf("color"));
+        if (auto* r = o.optional("roughness")) m.roughness = static_cast<float>(readNumber(*r, o.pathOf("roughness"), 0, 1));
+        if (auto* r = o.optional("metallic")) m.metallic = static_cast<float>(readNumber(*r, o.pathOf("metallic"), 0, 1));
+        return m;
+    }
+
+    static frep::Box3 box(const json& v, const std::string& path) {
+        ObjectReader o(v, path, {"min", "max"});
+        o.finish();
+        Vec3 lo = readVec3(o.required("min"), o.pathOf("min"));
+        Vec3 hi = readVec3(o.required("max"), o.pathOf("max"));
+        frep::Box3 b;
+        static const char* axes[] = {"x", "y", "z"};
+        for (int a = 0; a < 3; ++a) {
+            if (!(lo[static_cast<std::size_t>(a)] < hi[static_cast<std::size_t>(a)]))
+                throw JsonError(path, std::string("min must be below max on every axis (") + axes[a] + ": " +
+                                          formatNumber(lo[static_cast<std::size_t>(a)]) + " >= " +
+                                          formatNumber(hi[static_cast<std::size_t>(a)]) + ")");
+            b.lo[a] = lo[static_cast<std::size_t>(a)];
+            b.hi[a] = hi[static_cast<std::size_t>(a)];
+        }
+        return b;
+    }
+
+    static Placement placement(const json& v, const std::string& path, Placement p) {
+        ObjectReader o(v, path, {"position", "yaw", "scale"});
+        o.finish();
+        if (auto* x = o.optional("position")) p.position = readVec3(*x, o.pathOf("position"));
+        if (auto* x = o.optional("yaw")) p.yawDegrees = readNumber(*x, o.pathOf("yaw"), -360, 360);
+        if (auto* x = o.optional("scale")) p.scale = readPositive(*x, o.pathOf("scale"));
+        return p;
+    }
+
+    static int resolution(const json& v, const std::string& path) {
+        return readInt(v, path, voxel::kMinResolution, voxel::kMaxResolution);
+    }
+    static float band(const json& v, const std::string& path) {
+        return static_cast<float>(readNumber(v, path, voxel::kMinBand, voxel::kMaxBand));
+    }
+
+    std::string resolve(const std::string& file) const {
+        std::filesystem::path p(file);
+        if (p.is_absolute()) return p.lexically_normal().string();
+        return (std::filesystem::path(folder) / p).lexically_normal().string();
+    }
+
+    SculptureSpec sculpture(const json& v, const std::string& path, const Material& fallback) const {
+        ObjectReader o(v, path, {"name", "file", "body", "a", "box", "resolution", "band", "placement", "material"});
+        o.finish();
+        SculptureSpec s;
+        s.name = readString(o.required("name"), o.pathOf("name"));
+        s.fileAsWritten = readString(o.required("file"), o.pathOf("file"));
+        s.file = resolve(s.fileAsWritten);
+        if (auto* x = o.optional("body")) s.body = readString(*x, o.pathOf("body"));
+        if (auto* x = o.optional("a")) s.a = readNumbers(*x, o.pathOf("a"));
+        if (auto* x = o.optional("box")) s.box = box(*x, o.pathOf("box"));
+        if (auto* x = o.optional("resolution")) s.resolution = resolution(*x, o.pathOf("resolution"));
+        if (auto* x = o.optional("band")) s.band = band(*x, o.pathOf("band"));
+        if (auto* x = o.optional("placement")) s.placement = placement(*x, o.pathOf("placement"), Placement{});
+        s.material = fallback;
+        if (auto* x = o.optional("material")) s.material = material(*x, o.pathOf("material"));
+        return s;
+    }
+
+    PathSpec path(const json& v, const std::string& at, const Material& fallback) const {
+        ObjectReader o(v, at, {"name", "points", "width", "closed", "material"});
+        o.finish();
+        PathSpec p;
+        if (auto* x = o.optional("name")) p.name = readString(*x, o.pathOf("name"));
+        const json& points = o.required("points");
+        std::string pointsPath = o.pathOf("points");
+        if (!points.is_array() || points.size() < 2)
+            throw JsonError(pointsPath, "expected an array of at least 2 points [x, z]");
+        for (std::size_t i = 0; i < points.size(); ++i) p.points.push_back(readVec2(points[i], indexPath(pointsPath, i)));
+        if (auto* x = o.optional("width")) p.width = readPositive(*x, o.pathOf("width"));
+        if (auto* x = o.optional("closed")) p.closed = readBool(*x, o.pathOf("closed"));
+        p.material = fallback;
+        if (auto* x = o.optional("material")) p.material = material(*x, o.pathOf("material"));
+        return p;
+    }
+
+    static Light light(const json& v, const std::string& path) {
+        if (!v.is_object()) throw JsonError(path, "expected an object");
+        Light l;
+        auto typeIt = v.find("type");
+        if (typeIt == v.end()) throw JsonError(path, "missing key 'type'");
+        std::string type = readString(*typeIt, childPath(path, "type"));
+        if (type == "ambient") {
+            ObjectReader o(v, path, {"type", "color", "intensity"});
+            o.finish();
+            l.kind = Light::Kind::Ambient;
+            l.intensity = 0.25;
+        } else if (type == "directional") {
+            ObjectReader o(v, path, {"type", "color", "intensity", "direction"});
+            o.finish();
+            l.kind = Light::Kind::Directional;
+            if (auto* x = o.optional("direction")) {
+                Vec3 d = readVec3(*x, o.pathOf("direction"));
+                double n = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+                if (!(n > 1e-9)) throw JsonError(o.pathOf("direction"), "expected a non-zero direction");
+                l.direction = {d[0] / n, d[1] / n, d[2] / n};
+            }
+        } else if (type == "point") {
+            ObjectReader o(v, path, {"type", "color", "intensity", "position", "range"});
+            o.finish();
+            l.kind = Light::Kind::Point;
+            if (auto* x = o.optional("position")) l.position = readVec3(*x, o.pathOf("position"));
+            if (auto* x = o.optional("range")) l.range = readPositive(*x, o.pathOf("range"));
+        } else {
+            throw JsonError(childPath(path, "type"),
+                            "unknown light type '" + type + "'; expected one of: ambient directional point");
+        }
+        if (auto it = v.find("color"); it != v.end()) l.color = readColor(*it, childPath(path, "color"));
+        if (auto it = v.find("intensity"); it != v.end()) l.intensity = readNumber(*it, childPath(path, "intensity"), 0, 1e6);
+        return l;
+    }
+
+    static StartPose start(const json& v, const std::string& path) {
+        ObjectReader o(v, path, {"position", "look_at"});
+        o.finish();
+        StartPose s;
+        if (auto* x = o.optional("position")) s.position = readVec3(*x, o.pathOf("position"));
+        if (auto* x = o.optional("look_at")) s.lookAt = readVec3(*x, o.pathOf("look_at"));
+        double d = 0.0;
+        for (std::size_t a = 0; a < 3; ++a) d += (s.lookAt[a] - s.position[a]) * (s.lookAt[a] - s.position[a]);
+        if (!(d > 1e-12)) throw JsonError(o.pathOf("look_at"), "must differ from the position");
+        return s;
+    }
+
+    static Ground ground(const json& v, const std::string& path, const Reader& r, const Material& fallback) {
+        ObjectReader o(v, path, {"height", "size", "material"});
+        o.finish();
+        Ground g;
+        g.material = fallback;
+        if (auto* x = o.optional("height")) g.height = readNumber(*x, o.pathOf("height"));
+        if (auto* x = o.optional("size")) {
+            g.size = readVec2(*x, o.pathOf("size"));
+            if (!(g.size[0] > 0 && g.size[1] > 0)) throw JsonError(o.pathOf("size"), "expected two positive numbers");
+        }
+        if (auto* x = o.optional("material")) g.material = r.material(*x, o.pathOf("material"));
+        return g;
+    }
+
+    MorphSpec morph(const json& v, const std::string& path, const Garden& g, const Material& fallback) const {
+        ObjectReader o(v, path, {"sources", "balance", "selector", "result"});
+        o.finish();
+        MorphSpec m;
+        const json& sources = o.required("sources");
+        std::string sourcesPath = o.pathOf("sources");
+        if (!sources.is_array() || sources.size() != 3)
+            throw JsonError(sourcesPath, "expected an array of 3 sculpture names (the triangle's corners)");
+        std::vector<std::string> names;
+        for (const auto& s : g.sculptures) names.push_back(s.name);
+        for (std::size_t i = 0; i < 3; ++i) {
+            std::string at = indexPath(sourcesPath, i);
+            m.sources[i] = readString(sources[i], at);
+            int index = g.findSculpture(m.sources[i]);
+            if (index < 0) {
+                std::string hint = nearMiss(m.sources[i], names);
+                throw JsonError(at, "no sculpture named '" + m.sources[i] + "'" +
+                                        (hint.empty() ? std::string() : " (did you mean '" + hint + "'?)"));
+            }
+            for (std::size_t j = 0; j < i; ++j)
+                if (m.sources[j] == m.sources[i])
+                    throw JsonError(at, "'" + m.sources[i] + "' is already source " + std::to_string(j));
+            m.sourceIndex[i] = static_cast<std::size_t>(index);
+        }
+        std::array<Vec2, 3> c;
+        for (std::size_t i = 0; i < 3; ++i) {
+            const Vec3& p = g.sculptures[m.sourceIndex[i]].placement.position;
+            c[i] = {p[0], p[2]};
+        }
+        double area = 0.5 * std::fabs((c[1][0] - c[0][0]) * (c[2][1] - c[0][1]) - (c[2][0] - c[0][0]) * (c[1][1] - c[0][1]));
+        if (area < kMinTriangleArea)
+            throw JsonError(sourcesPath, "the three sources stand on one line: the morph triangle (their positions "
+                                         "on the ground) has no area");
+        Vec2 centroid = {(c[0][0] + c[1][0] + c[2][0]) / 3.0, (c[0][1] + c[1][1] + c[2][1]) / 3.0};
+        m.selector = centroid;
+        if (auto* x = o.optional("selector")) m.selector = readVec2(*x, o.pathOf("selector"));
+        if (auto* x = o.optional("balance")) {
+            std::string at = o.pathOf("balance");
+            if (x->is_string()) {
+                if (x->get<std::string>() != "computed")
+                    throw JsonError(at, "expected \"computed\" or an array of 3 positive numbers");
+            } else {
+                if (!x->is_array() || x->size() != 3)
+                    throw JsonError(at, "expected \"computed\" or an array of 3 positive numbers");
+                std::array<double, 3> b{};
+                for (std::size_t i = 0; i < 3; ++i) b[i] = readPositive((*x)[i], indexPath(at, i));
+                m.balance = b;
+            }
+        }
+        m.resultPlacement.position = {centroid[0], g.ground.height, centroid[1]};
+        m.material = fallback;
+        if (auto* x = o.optional("result")) {
+            ObjectReader r(*x, o.pathOf("result"), {"name", "placement", "box", "resolution", "band", "material"});
+            r.finish();
+            if (auto* y = r.optional("name")) m.resultName = readString(*y, r.pathOf("name"));
+            if (auto* y = r.optional("placement")) m.resultPlacement = placement(*y, r.pathOf("placement"), m.resultPlacement);
+            if (auto* y = r.optional("box")) m.box = box(*y, r.pathOf("box"));
+            if (auto* y = r.optional("resolution")) m.resolution = resolution(*y, r.pathOf("resolution"));
+            if (auto* y = r.optional("band")) m.band = band(*y, r.pathOf("band"));
+            if (auto* y = r.optional("material")) m.material = material(*y, r.pathOf("material"));
+            if (g.findSculpture(m.resultName) >= 0)
+                throw JsonError(r.pathOf("name"), "'" + m.resultName + "' is already the name of a sculpture");
+        } else if (g.findSculpture(m.resultName) >= 0) {
+            throw JsonError(path, "the result's default name '" + m.resultName +
+                                      "' is already the name of a sculpture; give $.morph.result.name");
+        }
+        return m;
+    }
+};
+
+std::vector<Light> defaultLights() {
+    Light ambient;
+    ambient.kind = Light::Kind::Ambient;
+    ambient.intensity = 0.25;
+    Light sun;
+    sun.kind = Light::Kind::Directional;
+    double n = std::sqrt(0.3 * 0.3 + 1.0 + 0.5 * 0.5);
+    sun.direction = {-0.3 / n, -1.0 / n, -0.5 / n};
+    return {ambient, sun};
+}
+
+}  // namespace
+
+int Garden::findSculpture(const std::string& sculptureName) const {
+    for (std::size_t i = 0; i < sculptures.size(); ++i)
+        if (sculptures[i].name == sculptureName) return static_cast<int>(i);
+    return -1;
+}
+
+std::size_t GardenLoad::missingCount() const {
+    std::size_t n = 0;
+    for (const auto& s : sculptures) n += s.ok() ? 0 : 1;
+    return n;
+}
+
+Garden parseGarden(const std::string& text, const std::string& file, const std::string& folder) {
+    json doc = parseStrictJson(text);
+    ObjectReader top(doc, "$", {"version", "name", "ground", "materials", "sculptures", "paths", "morph", "lights", "start"});
+    top.finish();
+    Garden g;
+    g.file = file;
+    g.folder = folder;
+    const json& version = top.required("version");
+    g.version = readInt(version, top.pathOf("version"), 1, 1 << 20);
+    if (g.version != kVersion)
+        throw JsonError(top.pathOf("version"), "unsupported version " + std::to_string(g.version) +
+                                                   " (this program reads version " + std::to_string(kVersion) + ")");
+    if (auto* x = top.optional("name")) g.name = readString(*x, top.pathOf("name"), true);
+
+    Reader r;
+    r.folder = folder;
+    if (auto* x = top.optional("materials")) {
+        std::string at = top.pathOf("materials");
+        if (!x->is_object()) throw JsonError(at, "expected an object of named materials");
+        for (auto it = x->begin(); it != x->end(); ++it) {
+            Material m = Reader::materialObject(it.value(), childPath(at, it.key()), it.key());
+            r.materials[it.key()] = m;
+            g.materials.push_back(m);
+        }
+    }
+    const Material stone{};  // the default: grey, half rough
+    Material lawn;
+    lawn.color = {0.18f, 0.32f, 0.12f};
+    lawn.roughness = 0.9f;
+    g.ground.material = lawn;
+    if (auto* x = top.optional("ground")) g.ground = Reader::ground(*x, top.pathOf("ground"), r, lawn);
+
+    if (auto* x = top.optional("sculptures")) {
+        std::string at = top.pathOf("sculptures");
+        if (!x->is_array()) throw JsonError(at, "expected an array of sculptures");
+        for (std::size_t i = 0; i < x->size(); ++i) {
+            std::string here = indexPath(at, i);
+            SculptureSpec s = r.sculpture((*x)[i], here, stone);
+            int before = g.findSculpture(s.name);
+            if (before >= 0)
+                throw JsonError(childPath(here, "name"), "'" + s.name + "' is already the name of " +
+                                                             indexPath(at, static_cast<std::size_t>(before)));
+            g.sculptures.push_back(std::move(s));
+        }
+    }
+    if (auto* x = top.optional("paths")) {
+        std::string at = top.pathOf("paths");
+        if (!x->is_array()) throw JsonError(at, "expected an array of paths");
+        Material gravel;
+        gravel.color = {0.55f, 0.52f, 0.47f};
+        gravel.roughness = 1.0f;
+        for (std::size_t i = 0; i < x->size(); ++i) g.paths.push_back(r.path((*x)[i], indexPath(at, i), gravel));
+    }
+    if (auto* x = top.optional("morph")) g.morph = r.morph(*x, top.pathOf("morph"), g, stone);
+    if (auto* x = top.optional("lights")) {
+        std::string at = top.pathOf("lights");
+        if (!x->is_array()) throw JsonError(at, "expected an array of lights");
+        for (std::size_t i = 0; i < x->size(); ++i) g.lights.push_back(Reader::light((*x)[i], indexPath(at, i)));
+    } else {
+        g.lights = defaultLights();
+    }
+    if (auto* x = top.optional("start")) g.start = Reader::start(*x, top.pathOf("start"));
+    return g;
+}
+
+SculptureLoad loadSculpture(const SculptureSpec& spec) {
+    SculptureLoad s;
+    ModelFile mf = loadModelFile(spec.file, spec.body, spec.a);
+    s.program = std::move(mf.program);
+    s.error = std::move(mf.error);
+    if (!mf.model) return s;
+    int aSize = mf.model->body().aSize();
+    if (spec.a.size() > static_cast<std::size_t>(aSize)) {
+        s.error = spec.file + ": error: " + std::to_string(spec.a.size()) + " values given for a[], but body '" +
+                  mf.model->body().spelling + "' declares a[" + std::to_string(aSize) + "]\n";
+        return s;
+    }
+    s.model = std::move(mf.model);
+    return s;
+}
+
+GardenLoad loadGarden(const std::string& path) {
+    GardenLoad load;
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+        load.errorReason = std::string("cannot open the garden file: ") + std::strerror(errno);
+        load.error = path + ": " + load.errorReason;
+        return load;
+    }
+    std::ostringstream text;
+    text << in.rdbuf();
+    std::string folder = std::filesystem::path(path).parent_path().string();
+    if (folder.empty()) folder = ".";
+    try {
+        load.garden = parseGarden(text.str(), path, folder);
+    } catch (const JsonError& e) {
+        load.errorPath = e.path();
+        load.errorReason = e.reason();
+        load.error = path + ": " + e.what();
+        return load;
+    }
+    for (const auto& spec : load.garden->sculptures) load.sculptures.push_back(loadSculpture(spec));
+    if (const auto& m = load.garden->morph) {
+        for (std::size_t i = 0; i < 3; ++i)
+            if (!load.sculptures[m->sourceIndex[i]].ok()) {
+                load.morphError = "morph source '" + m->sources[i] + "' is missing, so there is no metamorphosis";
+                break;
+            }
+    }
+    return load;
+}
+
+}  // namespace hg::garden

@@ -1,0 +1,52 @@
+// Reading a garden file (JSON, docs/garden-format.md). A bad file is refused
+// as a whole with the JSON path of the first problem and what was expected;
+// a sculpture whose HyperFun file is missing or broken does not stop the
+// garden: it is marked missing with the parser's messages.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "frep/model.h"
+#include "garden/scene/garden.h"
+
+namespace hg::garden {
+
+// One sculpture's HyperFun source, ready to sample, or why not.
+struct SculptureLoad {
+    std::shared_ptr<const frep::Program> program;
+    std::optional<frep::Model> model;
+    std::string error;  // "" when `model` is set; else the messages (file:line:col, caret), ending in '\n'
+
+    bool ok() const { return model.has_value(); }
+};
+
+struct GardenLoad {
+    std::optional<Garden> garden;        // none: the file itself is refused
+    std::string error;                   // "FILE: PATH: reason" when refused
+    std::string errorPath;               // JSON path ("$.sculptures[2].box"), "line L, column C", or "" (unreadable)
+    std::string errorReason;
+    std::vector<SculptureLoad> sculptures;  // one per garden->sculptures, in order
+    std::string morphError;              // why the morph cannot run (a source is missing); "" when it can
+
+    bool ok() const { return garden.has_value(); }
+    std::size_t missingCount() const;
+};
+
+// Checks a garden document and returns it; relative sculpture files are
+// resolved against `folder`. Throws JsonError (json_reader.h) at the first
+// problem. Does not read the sculptures' files.
+Garden parseGarden(const std::string& text, const std::string& file, const std::string& folder);
+
+// Reads `path`, parses it, and loads every sculpture's HyperFun body (frep
+// parser and compiler; no sampling).
+GardenLoad loadGarden(const std::string& path);
+
+// The sculpture's model from its file, body and a[] (missing or broken
+// files give an error, not an exception). Used by loadGarden, and again when
+// a file changed on disk.
+SculptureLoad loadSculpture(const SculptureSpec& spec);
+
+}  // namespace hg::garden

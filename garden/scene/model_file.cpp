@@ -1,0 +1,29 @@
+#include "garden/scene/model_file.h"
+
+#include "frep/parser.h"
+
+namespace hg::garden {
+
+int findBodyOrExplain(const frep::Program& program, const std::string& name, const std::string& file,
+                      std::string& why) {
+    int body = name.empty() ? program.defaultBody() : program.findBody(name);
+    if (body >= 0) return body;
+    why = file + ": error: no body named '" + name + "'; the file defines:";
+    for (const auto& b : program.bodies) why += " " + b.spelling;
+    why += "\n";
+    return -1;
+}
+
+ModelFile loadModelFile(const std::string& path, const std::string& body, const std::vector<double>& a) {
+    ModelFile mf;
+    frep::ParseResult parsed = frep::parseFile(path);
+    for (const auto& d : parsed.errors) mf.error += frep::formatDiagnostic(d);
+    if (!parsed.ok()) return mf;
+    mf.program = std::make_shared<const frep::Program>(std::move(*parsed.program));
+    int index = findBodyOrExplain(*mf.program, body, path, mf.error);
+    if (index < 0) return mf;
+    mf.model.emplace(mf.program, index, a);
+    return mf;
+}
+
+}  // namespace hg::garden

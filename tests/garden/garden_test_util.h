@@ -1,0 +1,78 @@
+// Scratch folders, small HyperFun models and morph sources for the garden
+// tests. Models are tiny programs in HyperFun text, sampled at 32^3..48^3.
+#pragma once
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <string>
+
+#include "frep/model.h"
+#include "frep/parser.h"
+#include "garden/morph/morph_sources.h"
+
+namespace hg::garden::test {
+
+inline frep::Model modelFromSource(const std::string& source, std::vector<double> a = {}) {
+    frep::ParseResult r = frep::parseProgram(source, "test.hf");
+    EXPECT_TRUE(r.ok()) << (r.errors.empty() ? "" : frep::formatDiagnostic(r.errors[0]));
+    auto program = std::make_shared<const frep::Program>(std::move(*r.program));
+    return frep::Model(program, program->defaultBody(), std::move(a));
+}
+
+// A sphere of radius sqrt(a[1]) at (a[2], a[3], a[4]); f is not a distance.
+constexpr const char* kSphere =
+    "sphere(x[3], a[4]) { sphere = a[1] - ((x[1]-a[2])^2 + (x[2]-a[3])^2 + (x[3]-a[4])^2); }";
+// A torus about y with a blended box: curved and flat faces, a hole.
+constexpr const char* kTorusBlock =
+    "tb(x[3], a[1]) {\n"
+    "  array c[3], o[3];\n"
+    "  c = [-0.4, -0.9, -0.4];\n"
+    "  o = [0, 0, 0];\n"
+    "  t = hfTorusY(x, o, 0.6, 0.2);\n"
+    "  b = hfBlock(x, c, 0.8, 0.3, 0.8);\n"
+    "  tb = hfBlendUni(t, b, 0.05, 0.1, 0.1);\n"
+    "}\n";
+// A rounded bar along x (superellipsoid), f of a very different scale.
+constexpr const char* kBar =
+    "bar(x[3], a[1]) { bar = 40 * (1 - (x[1]/1.0)^4 - (x[2]/0.3)^4 - (x[3]/0.35)^4); }";
+
+class ScratchDir : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir = std::filesystem::temp_directory_path() /
+              ("hg_garden_" + std::to_string(::getpid()) + "_" +
+               ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        std::filesystem::remove_all(dir);
+        std::filesystem::create_directories(dir);
+    }
+    void TearDown() override { std::filesystem::remove_all(dir); }
+    std::string write(const std::string& name, const std::string& text) const {
+        std::filesystem::path p = dir / name;
+        std::filesystem::create_directories(p.parent_path());
+        std::ofstream(p, std::ios::binary) << text;
+        return p.string();
+    }
+    std::filesystem::path dir;
+};
+
+// Three different small shapes in the box [-1.2, 1.2]^3 at `resolution`:
+// a sphere off centre, the torus block, the bar.
+struct ThreeModels {
+    frep::Model sphere = modelFromSource(kSphere, {0.64, 0.15, 0.1, 0.0});
+    frep::Model torus = modelFromSource(kTorusBlock);
+    frep::Model bar = modelFromSource(kBar);
+};
+
+inline MorphSources threeSources(const ThreeModels& m, int resolution) {
+    frep::Box3 box;
+    for (int a = 0; a < 3; ++a) { box.lo[a] = -1.2; box.hi[a] = 1.2; }
+    MorphSourcesResult r = buildMorphSources({&m.sphere, &m.torus, &m.bar}, box, resolution);
+    EXPECT_TRUE(r.sources.has_value()) << r.error;
+    return std::move(*r.sources);
+}
+
+}  // namespace hg::garden::test
