@@ -2,6 +2,8 @@
 // exit status: 0 on success, 1 when the input has errors, 2 on bad usage.
 #pragma once
 
+#include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -41,6 +43,28 @@ struct MeshOptions {
     double mmPerUnit = 1.0;
 };
 
+struct ReplayCommandOptions {
+    std::string script;
+    bool headless = false;
+    int width = 0, height = 0;        // --offscreen WxH (0: the script's viewport)
+    int screenshotEvery = 0;
+    std::string screenshotDir = ".";
+    std::string statsPath;
+    std::uint64_t morphSamples = 1000000;  // per frame; 0: the scheduler's time budget
+    std::size_t remeshChunks = 16;         // per frame; 0: the scheduler's time budget
+    int resolution = 0;               // every sculpture and the morph at this resolution (0: the garden's)
+    bool noLod = false;               // every chunk at level 0
+};
+
+struct GardenOptions {
+    std::string garden;               // the garden file
+    int width = 1280, height = 720;
+    bool noVsync = false;
+    double budgetMs = 11.1;
+    int frames = 0;                   // stop after N frames (0: until the window closes)
+    std::string screenshotDir = ".";
+};
+
 // "0.5,1,-2" -> {0.5, 1, -2}; false when an item is not a number.
 bool parseNumberList(const std::string& text, std::vector<double>& out);
 
@@ -48,5 +72,7 @@ int runCheck(const ModelOptions& options);
 int runEval(const EvalOptions& options);
 int runVoxelize(const VoxelizeOptions& options);
 int runMesh(const MeshOptions& options);
+int runReplay(const ReplayCommandOptions& options);
+int runGarden(const GardenOptions& options);
 
 }  // namespace hg::garden::cli

@@ -1,8 +1,9 @@
-// hypergarden: the one executable. Subcommands check and evaluate HyperFun
-// files, voxelize them and mesh them to STL; later ones replay, and no
-// subcommand will open the garden.
+// hypergarden: the one executable. With no subcommand it opens the desktop
+// garden; subcommands check and evaluate HyperFun files, voxelize them, mesh
+// them to STL and replay scripted sessions.
 #include <CLI/CLI.hpp>
 
+#include <cstdio>
 #include <iostream>
 
 #include "garden/cli/commands.h"
@@ -10,7 +11,16 @@
 int main(int argc, char** argv) {
     using namespace hg::garden::cli;
     CLI::App app{"Hypergarden: a real-time HyperFun sculpture garden"};
-    app.require_subcommand(1);
+    app.require_subcommand(0, 1);
+    GardenOptions gardenOpts;
+    gardenOpts.garden = HG_DEFAULT_GARDEN;
+    app.add_option("--garden", gardenOpts.garden, "Garden file to open (default: content/gardens/default.json)");
+    app.add_option("--size", gardenOpts.width, "Window width in pixels (height follows 16:9 unless --height)");
+    app.add_option("--height", gardenOpts.height, "Window height in pixels");
+    app.add_flag("--no-vsync", gardenOpts.noVsync, "Do not wait for the display's refresh");
+    app.add_option("--budget-ms", gardenOpts.budgetMs, "Frame budget in milliseconds (default 11.1, 90 Hz)");
+    app.add_option("--frames", gardenOpts.frames, "Close after this many frames (default: when the window closes)");
+    app.add_option("--screenshot-dir", gardenOpts.screenshotDir, "Where F12 screenshots go (default: .)");
 
     ModelOptions checkOpts;
     auto* check = app.add_subcommand("check", "Parse a HyperFun file, list its bodies, evaluation path and model box");
@@ -55,6 +65,20 @@ int main(int argc, char** argv) {
     meshCmd->add_flag("--ascii", meshOpts.ascii, "Write ASCII STL instead of binary");
     meshCmd->add_option("--mm-per-unit", meshOpts.mmPerUnit, "Millimetres per model unit (default 1)");
 
+    ReplayCommandOptions replayOpts;
+    std::string offscreen;
+    auto* replay = app.add_subcommand("replay", "Play a scripted session (docs/replay-format.md)");
+    replay->add_option("script", replayOpts.script, "Replay script (.json)")->required();
+    replay->add_flag("--headless", replayOpts.headless, "No window and no GL: levels, morph and meshing only");
+    replay->add_option("--offscreen", offscreen, "Render offscreen at WxH pixels (default: the script's viewport)");
+    replay->add_option("--screenshot-every", replayOpts.screenshotEvery, "Also a screenshot every N frames");
+    replay->add_option("--screenshot-dir", replayOpts.screenshotDir, "Where screenshots go (default: .)");
+    replay->add_option("--stats", replayOpts.statsPath, "Write per-frame statistics (JSON)");
+    replay->add_option("--morph-samples", replayOpts.morphSamples, "Morph samples per frame (default 1000000; 0: time budget)");
+    replay->add_option("--remesh-chunks", replayOpts.remeshChunks, "Chunks remeshed per frame (default 16; 0: time budget)");
+    replay->add_option("--res", replayOpts.resolution, "Every sculpture and the morph at this resolution");
+    replay->add_flag("--no-lod", replayOpts.noLod, "Every chunk at full detail");
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -65,6 +89,22 @@ int main(int argc, char** argv) {
         std::cerr << "error: --a expects numbers separated by commas, for example --a 0.5,1\n";
         return 2;
     }
+    if (*replay) {
+        if (!offscreen.empty()) {
+            if (replayOpts.headless) {
+                std::cerr << "error: --headless and --offscreen exclude each other\n";
+                return 2;
+            }
+            char x = 0;
+            if (std::sscanf(offscreen.c_str(), "%d%c%d", &replayOpts.width, &x, &replayOpts.height) != 3 || x != 'x' ||
+                replayOpts.width < 16 || replayOpts.height < 16 || replayOpts.width > 8192 || replayOpts.height > 8192) {
+                std::cerr << "error: --offscreen expects WIDTHxHEIGHT, each 16 to 8192 pixels, for example 1280x720\n";
+                return 2;
+            }
+        }
+        return runReplay(replayOpts);
+    }
+    if (app.get_subcommands().empty()) return runGarden(gardenOpts);
     if (*check) return runCheck(checkOpts);
     if (*eval) return runEval(evalOpts);
     if (*vox) {

@@ -1,0 +1,299 @@
+#include "garden/app/garden_session.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "garden/morph/garden_morph.h"
+#include "garden/morph/morph_blend.h"
+#include "garden/morph/morph_sources.h"
+#include "voxel/sampler.h"
+
+namespace hg::garden {
+
+namespace {
+
+glm::mat4 placementMatrix(const Placement& p) {
+    glm::mat4 m = glm::translate(glm::mat4(1.0f), glm::vec3(static_cast<float>(p.position[0]),
+                                                            static_cast<float>(p.position[1]),
+                                                            static_cast<float>(p.position[2])));
+    m = glm::rotate(m, glm::radians(static_cast<float>(p.yawDegrees)), glm::vec3(0.0f, 1.0f, 0.0f));
+    return glm::scale(m, glm::vec3(static_cast<float>(p.scale)));
+}
+
+}  // namespace
+
+glm::vec3 SculptureState::worldCentre() const {
+    if (!volume) return glm::vec3(modelToWorld[3]);
+    const frep::Box3& b = volume->frame.modelBox;
+    const glm::vec4 c(0.5 * (b.lo[0] + b.hi[0]), 0.5 * (b.lo[1] + b.hi[1]), 0.5 * (b.lo[2] + b.hi[2]), 1.0);
+    return glm::vec3(modelToWorld * c);
+}
+
+GardenSession::GardenSession(GardenLoad load, SessionSettings settings)
+    : load_(std::move(load)), settings_(settings), scheduler_(settings.scheduler) {
+    if (settings_.sculptureResolution > 0)
+        for (SculptureSpec& spec : load_.garden->sculptures) spec.resolution = settings_.sculptureResolution;
+    if (settings_.morphResolution > 0 && load_.garden->morph) load_.garden->morph->resolution = settings_.morphResolution;
+    const Garden& g = *load_.garden;
+    const glm::vec3 eye(static_cast<float>(g.start.position[0]), static_cast<float>(g.start.position[1]),
+                        static_cast<float>(g.start.position[2]));
+    const glm::vec3 at(static_cast<float>(g.start.lookAt[0]), static_cast<float>(g.start.lookAt[1]),
+                       static_cast<float>(g.start.lookAt[2]));
+    glm::vec3 dir = at - eye;
+    if (glm::length(dir) < 1e-6f) dir = glm::vec3(0.0f, 0.0f, -1.0f);
+    dir = glm::normalize(dir);
+    navigator_.setPose(eye, std::atan2(dir.x, -dir.z), std::asin(std::clamp(dir.y, -1.0f, 1.0f)));
+    sculptures_.resize(g.sculptures.size());
+    for (std::size_t i = 0; i < g.sculptures.size(); ++i) buildSculpture(i);
+    buildMorph();
+}
+
+GardenSession::~GardenSession() = default;
+
+int GardenSession::findSculpture(const std::string& name) const {
+    for (std::size_t i = 0; i < sculptures_.size(); ++i)
+        if (sculptures_[i].name == name) return static_cast<int>(i);
+    return -1;
+}
+
+std::array<double, 3> GardenSession::toModel(const SculptureState& s, const glm::vec3& world) const {
+    const glm::vec4 m = glm::inverse(s.modelToWorld) * glm::vec4(world, 1.0f);
+    return {m.x, m.y, m.z};
+}
+
+// Builds the pyramid, layout and queue of a sampled sculpture, at the levels
+// the start pose selects.
+static void attachMeshing(SculptureState& s, const SessionSettings& settings) {
+    s.pyramid = std::make_unique<poly::LodPyramid>(*s.volume, settings.maxLevel + 1);
+    s.layout = std::make_unique<poly::ChunkLayout>(s.volume->frame, settings.chunkSize);
+    s.queue = std::make_unique<poly::RemeshQueue>(*s.pyramid, *s.layout,
+                                                  std::vector<int>(s.layout->count(), settings.maxLevel));
+}
+
+void GardenSession::buildSculpture(std::size_t index) {
+    const SculptureSpec& spec = load_.garden->sculptures[index];
+    SculptureState& s = sculptures_[index];
+    s.name = spec.name;
+    s.material = spec.material;
+    s.modelToWorld = placementMatrix(spec.placement);
+    s.scale = spec.placement.scale;
+    const SculptureLoad& l = load_.sculptures[index];
+    if (!l.ok()) {
+        s.error = l.error.empty() ? "the sculpture could not be loaded" : l.error;
+        return;
+    }
+    voxel::VolumeRequest request;
+    request.box = spec.box;
+    request.resolution = spec.resolution;
+    request.band = spec.band;
+    voxel::VoxelizeResult r = voxel::voxelize(*l.model, request);
+    if (!r.volume) {
+        s.error = r.error;
+        return;
+    }
+    s.voxelizeSeconds = r.stats.seconds;
+    s.volume = std::make_unique<voxel::Volume>(std::move(*r.volume));
+    attachMeshing(s, settings_);
+}
+
+void GardenSession::buildMorph() {
+    const Garden& g = *load_.garden;
+    if (!g.morph) return;
+    SculptureState result;
+    result.name = g.morph->resultName;
+    result.morphResult = true;
+    result.material = g.morph->material;
+    result.modelToWorld = placementMatrix(g.morph->resultPlacement);
+    result.scale = g.morph->resultPlacement.scale;
+    MorphSourcesResult built = buildGardenMorphSources(load_);
+    if (!built.sources) {
+        result.error = built.error;
+        sculptures_.push_back(std::move(result));
+        return;
+    }
+    sources_ = std::make_unique<MorphSources>(std::move(*built.sources));
+    balance_ = morphBalance(*g.morph, *sources_);
+    result.volume = std::make_unique<voxel::Volume>(makeMorphVolume(*sources_));
+    attachMeshing(result, settings_);
+    morphIndex_ = static_cast<int>(sculptures_.size());
+    sculptures_.push_back(std::move(result));
+    blender_ = std::make_unique<MorphBlender>(*sources_, *sculptures_.back().volume);
+    setMorphPoint(g.morph->selector[0], g.morph->selector[1]);
+}
+
+std::optional<MorphTriangle> GardenSession::morphTriangle() const {
+    if (!load_.garden->morph) return std::nullopt;
+    return hg::garden::morphTriangle(*load_.garden);
+}
+
+void GardenSession::setMorphPoint(double x, double z) {
+    if (!blender_) return;
+    weights_ = hg::garden::morphWeights(*morphTriangle(), {x, z}, balance_);
+    restartMorph();
+}
+
+void GardenSession::setMorphWeights(const std::array<double, 3>& w) {
+    if (!blender_) return;
+    const double sum = w[0] + w[1] + w[2];
+    weights_ = weightsFromBarycentric({w[0] / sum, w[1] / sum, w[2] / sum});
+    restartMorph();
+}
+
+void GardenSession::setMorphBarycentric(const std::array<double, 3>& b) {
+    if (!blender_) return;
+    const double sum = b[0] + b[1] + b[2];
+    weights_ = weightsFromBarycentric({b[0] / sum, b[1] / sum, b[2] / sum}, balance_);
+    restartMorph();
+}
+
+void GardenSession::restartMorph() {
+    const SculptureState& r = sculptures_[static_cast<std::size_t>(morphIndex_)];
+    blender_->restart(*weights_, toModel(r, navigator_.eye()));
+}
+
+void GardenSession::select(int sculpture) {
+    selected_ = sculpture >= 0 && sculpture < static_cast<int>(sculptures_.size()) ? sculpture : -1;
+    navigator_.setOrbitTarget(selected_ >= 0 ? std::optional<glm::vec3>(sculptures_[static_cast<std::size_t>(selected_)].worldCentre())
+                                             : std::nullopt);
+    if (selected_ < 0 && navigator_.mode() == NavigationMode::Orbit) navigator_.setMode(NavigationMode::Walk);
+}
+
+void GardenSession::beginFrame() {
+    scheduler_.beginFrame();
+    scheduler_.beginStage(Stage::Input);
+}
+
+void GardenSession::input(const Hands& hands, double dt) {
+    scheduler_.beginStage(Stage::Input);
+    hands_ = hands;
+    navigator_.update(hands, dt);
+    // The tool's ray on the morph triangle drawn on the ground picks the
+    // blend (seed 004's selector), while the trigger is held.
+    if (blender_ && hands.tool.tracked && hands.tool.trigger > 0.5f) {
+        const glm::dvec3 o(hands.tool.aim.position), d(hands.tool.aim.forward());
+        const double ground = load_.garden->ground.height;
+        if (d.y < -1e-4) {
+            const double t = (ground - o.y) / d.y;
+            const Point2 p{o.x + t * d.x, o.z + t * d.z};
+            const MorphTriangle tri = *morphTriangle();
+            const Point2 q = clampToTriangle(tri, p);
+            const double dist = std::hypot(p[0] - q[0], p[1] - q[1]);
+            const bool moved = !weights_ || std::hypot(q[0] - weights_->point[0], q[1] - weights_->point[1]) > 0.01;
+            if (dist < 0.25 && moved) setMorphPoint(q[0], q[1]);  // on the triangle, or just beside it
+        }
+    }
+}
+
+void GardenSession::selectLevels() {
+    scheduler_.beginStage(Stage::Lod);
+    for (SculptureState& s : sculptures_) {
+        if (s.missing()) continue;
+        const std::array<double, 3> eye = toModel(s, navigator_.eye());
+        std::vector<int> levels(s.layout->count(), 0);
+        if (settings_.lod) {
+            poly::Camera cam;
+            cam.position = eye;
+            cam.fovY = settings_.fovY;
+            cam.viewportHeight = settings_.viewportHeight;
+            poly::LodSettings lod;
+            lod.pixelError = settings_.pixelError;
+            lod.maxLevel = settings_.maxLevel;
+            if (detail_) {
+                const glm::vec3 c(static_cast<float>(detail_->center[0]), static_cast<float>(detail_->center[1]),
+                                  static_cast<float>(detail_->center[2]));
+                lod.detail = poly::Sphere{toModel(s, c), detail_->radius / s.scale};
+            }
+            levels = poly::selectLevels(*s.layout, cam, lod);
+        }
+        s.queue->setLevels(levels);
+        s.queue->setViewer(eye);
+    }
+}
+
+void GardenSession::morph() {
+    scheduler_.beginStage(Stage::Morph);
+    if (!blender_ || blender_->done()) return;
+    SculptureState& r = sculptures_[static_cast<std::size_t>(morphIndex_)];
+    BlendBudget budget;
+    if (settings_.morphSamplesPerFrame > 0) {
+        budget.maxSamples = settings_.morphSamplesPerFrame;
+    } else {
+        budget.maxSamples = 0;
+        budget.maxMilliseconds = scheduler_.allowanceMs(Stage::Morph);
+    }
+    blender_->setViewer(toModel(r, navigator_.eye()));
+    const BlendStep step = blender_->step(budget);
+    for (const voxel::IndexBox& box : step.changed) {
+        r.pyramid->update(box);
+        r.queue->markChanged(box);
+    }
+    stats().morphSamples += step.samples;
+}
+
+void GardenSession::remesh() {
+    scheduler_.beginStage(Stage::Remesh);
+    // Nearest sculpture first: its chunks matter most on screen.
+    std::vector<std::pair<float, std::size_t>> order;
+    for (std::size_t i = 0; i < sculptures_.size(); ++i)
+        if (!sculptures_[i].missing() && sculptures_[i].queue->pending() > 0)
+            order.emplace_back(glm::length(sculptures_[i].worldCentre() - navigator_.eye()), i);
+    std::sort(order.begin(), order.end());
+    bool meshed = false;
+    std::size_t chunksLeft = settings_.remeshChunksPerFrame;
+    for (const auto& [distance, i] : order) {
+        poly::RemeshBudget budget;
+        if (settings_.remeshChunksPerFrame > 0) {
+            if (chunksLeft == 0) break;
+            budget.chunks = chunksLeft;
+        } else {
+            budget.milliseconds = scheduler_.allowanceMs(Stage::Remesh);
+            if (meshed && budget.milliseconds <= scheduler_.settings().minimumMs) break;
+        }
+        const poly::RemeshReport r = sculptures_[i].queue->process(budget);
+        stats().chunksMeshed += r.meshed;
+        stats().chunksShown += r.shown;
+        meshed = meshed || r.meshed > 0;
+        chunksLeft -= std::min(chunksLeft, r.meshed);
+    }
+}
+
+const FrameStats& GardenSession::endFrame() {
+    FrameStats& st = stats();
+    st.remeshPending = remeshPending();
+    st.morphPending = morphRemaining();
+    return scheduler_.endFrame();
+}
+
+std::size_t GardenSession::remeshPending() const {
+    std::size_t n = 0;
+    for (const SculptureState& s : sculptures_)
+        if (!s.missing()) n += s.queue->pending();
+    return n;
+}
+
+std::uint64_t GardenSession::morphRemaining() const { return blender_ ? blender_->remainingSamples() : 0; }
+
+std::size_t GardenSession::trianglesShown() const {
+    std::size_t n = 0;
+    for (const SculptureState& s : sculptures_) {
+        if (s.missing()) continue;
+        for (std::size_t c = 0; c < s.queue->count(); ++c)
+            if (const auto m = s.queue->mesh(c)) n += m->triangleCount();
+    }
+    return n;
+}
+
+bool GardenSession::idle() const { return (!blender_ || blender_->done()) && remeshPending() == 0; }
+
+const voxel::Volume* GardenSession::morphResult() const {
+    return morphIndex_ >= 0 ? sculptures_[static_cast<std::size_t>(morphIndex_)].volume.get() : nullptr;
+}
+
+std::unique_ptr<voxel::Volume> GardenSession::blendFromScratch() const {
+    if (!blender_) return nullptr;
+    return std::make_unique<voxel::Volume>(blendMorph(*sources_, *weights_));
+}
+
+}  // namespace hg::garden

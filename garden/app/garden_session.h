@@ -1,0 +1,150 @@
+// The garden while it runs, without a window (DESIGN §6): every sculpture
+// as a volume with its LOD pyramid and remesh queue, the metamorphosis (its
+// source caches, its result and the budgeted blend), the navigator and the
+// frame scheduler. One frame is:
+//
+//   beginFrame, input(hands, dt), selectLevels(...), morph(), remesh(),
+//   [the app uploads and renders here], endFrame()
+//
+// The desktop window, `replay` (headless or offscreen) and the tests all
+// drive this same object, so what a script does is what a user sees.
+#pragma once
+
+#include <array>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/mat4x4.hpp>
+
+#include "garden/app/frame_scheduler.h"
+#include "garden/app/navigator.h"
+#include "garden/morph/morph_weights.h"
+#include "garden/scene/garden_file.h"
+#include "polygonizer/lod_selection.h"
+#include "polygonizer/remesh_queue.h"
+
+namespace hg::garden {
+
+class MorphBlender;
+struct MorphSources;
+
+struct SessionSettings {
+    SchedulerSettings scheduler;
+    // The morph's per-frame budget in samples (0: its share of the frame's
+    // time instead, from the scheduler).
+    std::uint64_t morphSamplesPerFrame = 0;
+    // Chunks remeshed per frame (0: the scheduler's remesh allowance). With
+    // both counts fixed a frame does the same work whatever the clock says:
+    // what replays use, so that they are deterministic.
+    std::size_t remeshChunksPerFrame = 0;
+    int chunkSize = 32;
+    int maxLevel = 3;
+    double pixelError = 1.0;
+    double fovY = 1.0471975511965976;  // 60 degrees
+    int viewportHeight = 720;
+    bool lod = true;                   // false: every chunk at level 0
+    // Resolutions instead of the garden file's (0: the file's): tests and
+    // benchmarks run the same garden smaller or larger.
+    int sculptureResolution = 0;
+    int morphResolution = 0;
+};
+
+struct SculptureState {
+    std::string name;
+    std::string error;                 // non-empty: missing (shown as such), nothing else set
+    bool morphResult = false;
+    Material material;
+    glm::mat4 modelToWorld{1.0f};
+    double scale = 1.0;                // metres per model unit
+    std::unique_ptr<voxel::Volume> volume;
+    std::unique_ptr<poly::LodPyramid> pyramid;
+    std::unique_ptr<poly::ChunkLayout> layout;
+    std::unique_ptr<poly::RemeshQueue> queue;
+    double voxelizeSeconds = 0.0;
+
+    bool missing() const { return !error.empty(); }
+    glm::vec3 worldCentre() const;
+};
+
+class GardenSession {
+public:
+    // Samples every sculpture (those that fail become missing) and the
+    // morph's sources; throws nothing for a broken sculpture.
+    GardenSession(GardenLoad load, SessionSettings settings = {});
+    ~GardenSession();
+    GardenSession(const GardenSession&) = delete;
+    GardenSession& operator=(const GardenSession&) = delete;
+
+    const Garden& garden() const { return *load_.garden; }
+    const GardenLoad& load() const { return load_; }
+    std::vector<SculptureState>& sculptures() { return sculptures_; }
+    const std::vector<SculptureState>& sculptures() const { return sculptures_; }
+    Navigator& navigator() { return navigator_; }
+    const Navigator& navigator() const { return navigator_; }
+    FrameScheduler& scheduler() { return scheduler_; }
+    SessionSettings& settings() { return settings_; }
+
+    // --- what the user changes ---------------------------------------
+    // The selector on the ground (x, z), clamped to the triangle.
+    void setMorphPoint(double x, double z);
+    void setMorphWeights(const std::array<double, 3>& w);  // normalized here
+    // A point of the on-screen triangle widget, as barycentric coordinates:
+    // balanced like a point on the ground.
+    void setMorphBarycentric(const std::array<double, 3>& b);
+    const std::optional<MorphWeights>& morphWeights() const { return weights_; }
+    std::optional<MorphTriangle> morphTriangle() const;
+    bool hasMorph() const { return blender_ != nullptr; }
+    // The detail sphere (world), where chunks go to level 0.
+    void setDetail(std::optional<poly::Sphere> world) { detail_ = world; }
+    const std::optional<poly::Sphere>& detail() const { return detail_; }
+    void select(int sculpture);  // -1: none
+    int selected() const { return selected_; }
+    int findSculpture(const std::string& name) const;
+
+    // --- one frame -----------------------------------------------------
+    void beginFrame();
+    void input(const Hands& hands, double dt);
+    void selectLevels();
+    void morph();
+    void remesh();
+    const FrameStats& endFrame();
+    FrameStats& stats() { return scheduler_.stats(); }
+
+    // The morph has nothing left to blend and no chunk waits for a mesh.
+    bool idle() const;
+    std::size_t remeshPending() const;
+    // Triangles of the meshes on show, over every sculpture.
+    std::size_t trianglesShown() const;
+    std::uint64_t morphRemaining() const;
+    // The morph result's grid, and a from-scratch blend at the current
+    // weights (what the result must equal once idle).
+    const voxel::Volume* morphResult() const;
+    std::unique_ptr<voxel::Volume> blendFromScratch() const;
+
+    glm::mat4 view() const { return navigator_.view(); }
+
+private:
+    void buildSculpture(std::size_t index);
+    void buildMorph();
+    void restartMorph();
+    std::array<double, 3> toModel(const SculptureState& s, const glm::vec3& world) const;
+
+    GardenLoad load_;
+    SessionSettings settings_;
+    std::vector<SculptureState> sculptures_;
+    Navigator navigator_;
+    FrameScheduler scheduler_;
+    std::optional<poly::Sphere> detail_;
+    int selected_ = -1;
+    // The morph.
+    std::unique_ptr<MorphSources> sources_;
+    std::unique_ptr<MorphBlender> blender_;
+    std::optional<MorphWeights> weights_;
+    std::array<double, 3> balance_{1.0, 1.0, 1.0};
+    int morphIndex_ = -1;  // the result's index in sculptures_
+    Hands hands_;
+};
+
+}  // namespace hg::garden

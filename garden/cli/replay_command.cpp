@@ -1,0 +1,102 @@
+// `hypergarden replay`: plays a scripted session (docs/replay-format.md),
+// headless or offscreen with screenshots, and writes per-frame statistics.
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+#include "garden/app/garden_session.h"
+#include "garden/cli/commands.h"
+#include "garden/desktop/offscreen_garden.h"
+#include "garden/replay/replay_runner.h"
+#include "garden/scene/json_reader.h"
+#include "voxel/vdb_io.h"
+
+namespace hg::garden::cli {
+
+namespace {
+
+// Prints what is missing from a garden that opened anyway.
+void reportMissing(const GardenSession& session) {
+    for (const SculptureState& s : session.sculptures())
+        if (s.missing()) std::cerr << "warning: sculpture '" << s.name << "' is missing: " << s.error << (s.error.empty() || s.error.back() != '\n' ? "\n" : "");
+}
+
+}  // namespace
+
+int runReplay(const ReplayCommandOptions& options) {
+    ReplayScript script;
+    try {
+        script = loadReplayScript(options.script);
+    } catch (const JsonError& e) {
+        std::cerr << "error: " << options.script << ": " << e.what() << "\n";
+        return 2;
+    }
+    if (!options.statsPath.empty()) {
+        const std::string why = voxel::checkWritable(options.statsPath);
+        if (!why.empty()) {
+            std::cerr << "error: --stats: " << why << "\n";
+            return 2;
+        }
+    }
+    GardenLoad load = loadGarden(script.garden);
+    if (!load.ok()) {
+        std::cerr << "error: " << load.error << "\n";
+        return 2;
+    }
+    SessionSettings settings;
+    settings.scheduler.budgetMs = script.budgetMs;
+    settings.morphSamplesPerFrame = options.morphSamples;
+    settings.remeshChunksPerFrame = options.remeshChunks;
+    settings.lod = !options.noLod;
+    settings.sculptureResolution = options.resolution;
+    settings.morphResolution = options.resolution;
+    int width = script.viewport[0], height = script.viewport[1];
+    if (!options.headless && options.width > 0) {
+        width = options.width;
+        height = options.height;
+    }
+    settings.viewportHeight = height;
+    GardenSession session(std::move(load), settings);
+    reportMissing(session);
+
+    std::unique_ptr<OffscreenGarden> offscreen;
+    if (!options.headless) {
+        std::string why;
+        offscreen = OffscreenGarden::create(width, height, why);
+        if (!offscreen) {
+            std::cerr << "error: " << why << "\n";
+            return 1;
+        }
+    }
+    ReplayOptions ro;
+    ro.screenshotEvery = options.screenshotEvery;
+    ro.screenshotDir = options.screenshotDir;
+    if (!std::filesystem::exists(ro.screenshotDir)) std::filesystem::create_directories(ro.screenshotDir);
+    ReplayResult result = hg::garden::runReplay(script, session, offscreen.get(), ro);
+    for (const std::string& n : result.notes) std::cerr << "note: " << n << "\n";
+    if (!options.statsPath.empty()) {
+        const std::string json = statsJson(script, result);
+        const std::string why = voxel::writeAtomically(options.statsPath, [&json](const std::string& tmp) -> std::string {
+            std::ofstream out(tmp, std::ios::binary);
+            out << json;
+            out.close();
+            return out ? "" : "cannot write " + tmp;
+        });
+        if (!why.empty()) {
+            std::cerr << "error: --stats: " << why << "\n";
+            return 1;
+        }
+    }
+    double total = 0.0;
+    for (const FrameStats& f : result.stats) total += f.totalMs;
+    std::cout << "replayed " << result.frames << " frames of " << script.file << " (mean "
+              << (result.frames ? total / result.frames : 0.0) << " ms per frame, budget " << script.budgetMs
+              << " ms); " << result.screenshots.size() << " screenshots\n";
+    if (!result.ok()) {
+        std::cerr << "error: " << result.error << "\n";
+        return 1;
+    }
+    return 0;
+}
+
+}  // namespace hg::garden::cli

@@ -1,0 +1,198 @@
+#include "garden/desktop/desktop_app.h"
+
+#include <epoxy/gl.h>
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
+#include <chrono>
+#include <cstdio>
+#include <ctime>
+#include <filesystem>
+#include <iostream>
+
+#include "garden/app/garden_session.h"
+#include "garden/desktop/garden_view.h"
+#include "garden/hands/desktop_hands.h"
+#include "garden/render/gl_context.h"
+#include "garden/render/morph_triangle.h"
+#include "garden/render/overlay.h"
+#include "garden/render/panels.h"
+#include "garden/render/screenshot.h"
+
+namespace hg::garden {
+
+namespace {
+
+// Key presses and the wheel arrive as events between frames; the frame
+// reads and clears them.
+struct Events {
+    float wheel = 0.0f;
+    bool f12 = false, space = false, orbit = false, undo = false, redo = false, escape = false;
+};
+
+Events* eventsOf(GLFWwindow* w) { return static_cast<Events*>(glfwGetWindowUserPointer(w)); }
+
+void onScroll(GLFWwindow* w, double, double dy) { eventsOf(w)->wheel += static_cast<float>(dy); }
+
+void onKey(GLFWwindow* w, int key, int, int action, int mods) {
+    if (action != GLFW_PRESS) return;
+    Events& e = *eventsOf(w);
+    const bool ctrl = (mods & GLFW_MOD_CONTROL) != 0;
+    if (key == GLFW_KEY_F12) e.f12 = true;
+    if (key == GLFW_KEY_SPACE) e.space = true;
+    if (key == GLFW_KEY_O) e.orbit = true;
+    if (key == GLFW_KEY_ESCAPE) e.escape = true;
+    if (ctrl && key == GLFW_KEY_Z) e.undo = true;
+    if (ctrl && key == GLFW_KEY_Y) e.redo = true;
+}
+
+std::string timestampedName(const std::string& dir) {
+    const std::time_t t = std::time(nullptr);
+    char name[64];
+    std::strftime(name, sizeof name, "hypergarden-%Y%m%d-%H%M%S.png", std::localtime(&t));
+    return (std::filesystem::path(dir) / name).string();
+}
+
+// The side panel: the garden, what is missing, the morph selector.
+void gardenPanel(GardenSession& session, glm::vec2& selector) {
+    ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
+    ImGui::Begin("Garden");
+    ImGui::Text("%s", session.garden().name.empty() ? session.garden().file.c_str() : session.garden().name.c_str());
+    const char* mode[] = {"walk", "fly", "orbit"};
+    ImGui::Text("%s at (%.1f, %.1f, %.1f)", mode[static_cast<int>(session.navigator().mode())],
+                static_cast<double>(session.navigator().eye().x), static_cast<double>(session.navigator().eye().y),
+                static_cast<double>(session.navigator().eye().z));
+    for (const SculptureState& s : session.sculptures())
+        if (s.missing()) ImGui::TextColored(ImVec4(1, 0.35f, 0.3f, 1), "missing: %s: %s", s.name.c_str(), s.error.c_str());
+    if (session.hasMorph()) {
+        const MorphSpec& m = *session.garden().morph;
+        const char* labels[3] = {m.sources[0].c_str(), m.sources[1].c_str(), m.sources[2].c_str()};
+        if (morphTriangleWidget(labels, selector)) {
+            const glm::vec3 b = triangleWeights(selector);
+            session.setMorphBarycentric({b.x, b.y, b.z});
+        }
+        if (const auto& w = session.morphWeights())
+            ImGui::Text("weights %.2f %.2f %.2f", w->w[0], w->w[1], w->w[2]);
+    }
+    bool lod = session.settings().lod;
+    if (ImGui::Checkbox("level of detail", &lod)) session.settings().lod = lod;
+    ImGui::End();
+}
+
+}  // namespace
+
+int runDesktopGarden(const DesktopOptions& options) {
+    GardenLoad load = loadGarden(options.garden);
+    if (!load.ok()) {
+        std::cerr << "error: " << load.error << "\n";
+        return 2;
+    }
+    try {
+        WindowOptions wo;
+        wo.width = options.width;
+        wo.height = options.height;
+        wo.vsync = options.vsync;
+        wo.title = "Hypergarden - " + options.garden;
+        GlWindow window(wo);
+        Events events;
+        glfwSetWindowUserPointer(window.handle(), &events);
+        glfwSetScrollCallback(window.handle(), onScroll);
+        glfwSetKeyCallback(window.handle(), onKey);
+        Overlay overlay(window);  // after our callbacks: ImGui chains to them
+        Renderer renderer;
+        GardenView view(renderer);
+
+        SessionSettings settings;
+        settings.scheduler.budgetMs = options.budgetMs;
+        settings.viewportHeight = window.framebufferSize().y;
+        GardenSession session(std::move(load), settings);
+        for (const SculptureState& s : session.sculptures())
+            if (s.missing()) std::cerr << "warning: sculpture '" << s.name << "' is missing: " << s.error << "\n";
+
+        glm::vec2 selector = trianglePoint(glm::vec3(1.0f / 3.0f));
+        if (const auto& w = session.morphWeights())
+            selector = trianglePoint(glm::vec3(static_cast<float>(w->barycentric[0]), static_cast<float>(w->barycentric[1]),
+                                               static_cast<float>(w->barycentric[2])));
+        float speed = 1.0f;
+        glm::dvec2 lastMouse(0.0);
+        glfwGetCursorPos(window.handle(), &lastMouse.x, &lastMouse.y);
+        auto last = std::chrono::steady_clock::now();
+        for (int frame = 0; !window.shouldClose() && (options.frames == 0 || frame < options.frames); ++frame) {
+            pollEvents();
+            const auto now = std::chrono::steady_clock::now();
+            const double dt = std::min(0.1, std::chrono::duration<double>(now - last).count());
+            last = now;
+            const glm::ivec2 fb = window.framebufferSize();
+            session.settings().viewportHeight = std::max(fb.y, 1);
+
+            session.beginFrame();
+            DesktopInput in;
+            GLFWwindow* w = window.handle();
+            const bool keys = !overlay.wantsKeyboard(), mouse = !overlay.wantsMouse();
+            in.forward = keys && glfwGetKey(w, GLFW_KEY_W) == GLFW_PRESS;
+            in.back = keys && glfwGetKey(w, GLFW_KEY_S) == GLFW_PRESS;
+            in.left = keys && glfwGetKey(w, GLFW_KEY_A) == GLFW_PRESS;
+            in.right = keys && glfwGetKey(w, GLFW_KEY_D) == GLFW_PRESS;
+            in.up = keys && glfwGetKey(w, GLFW_KEY_E) == GLFW_PRESS;
+            in.down = keys && glfwGetKey(w, GLFW_KEY_Q) == GLFW_PRESS;
+            in.lookButton = mouse && glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS;
+            in.toolButton = mouse && glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
+            glm::dvec2 cursor;
+            glfwGetCursorPos(w, &cursor.x, &cursor.y);
+            const glm::ivec2 ws = window.size();
+            // Mouse in framebuffer pixels (HiDPI: window and framebuffer differ).
+            const glm::vec2 toFb(static_cast<float>(fb.x) / static_cast<float>(std::max(ws.x, 1)),
+                                 static_cast<float>(fb.y) / static_cast<float>(std::max(ws.y, 1)));
+            in.mouse = glm::vec2(cursor) * toFb;
+            in.mouseDelta = glm::vec2(cursor - lastMouse);
+            lastMouse = cursor;
+            in.wheel = mouse ? events.wheel : 0.0f;
+            in.flyToggle = keys && events.space;
+            in.orbitToggle = keys && events.orbit;
+            in.undo = events.undo;
+            in.redo = events.redo;
+            in.viewport = glm::vec2(fb);
+            const float fovY = static_cast<float>(session.settings().fovY);
+            const glm::mat4 projection =
+                glm::perspective(fovY, static_cast<float>(fb.x) / static_cast<float>(std::max(fb.y, 1)), 0.05f, 500.0f);
+            const Hands hands = mapDesktop(in, session.view(), projection, DesktopMapping{}, speed);
+            speed = hands.speedScale;
+            if (events.escape) window.setShouldClose(true);
+            const bool shoot = events.f12;
+            events = Events{};
+
+            session.input(hands, dt);
+            session.selectLevels();
+            session.morph();
+            session.remesh();
+            FrameScheduler& f = session.scheduler();
+            f.beginStage(Stage::Upload);
+            std::size_t pending = 0;
+            session.stats().uploadBytes += view.upload(session, f.allowanceMs(Stage::Upload), pending);
+            session.stats().uploadsPending = pending;
+            f.beginStage(Stage::Render);
+            view.render(session, fb, fovY);
+            const RenderStats r = renderer.endFrame();
+            session.stats().trianglesDrawn = r.trianglesDrawn;
+            session.stats().drawCalls = r.drawCalls;
+            if (shoot) {
+                const std::string path = timestampedName(options.screenshotDir);
+                const std::string why = writeFramebufferPng(path, fb.x, fb.y);
+                std::cerr << (why.empty() ? "screenshot: " + path : "error: " + why) << "\n";
+            }
+            overlay.newFrame();
+            gardenPanel(session, selector);
+            drawStatsPanel(session.scheduler().history());
+            overlay.render();
+            session.endFrame();
+            window.swapBuffers();
+        }
+    } catch (const GlError& e) {
+        std::cerr << "error: " << e.what() << "\n";
+        return 1;
+    }
+    return 0;
+}
+
+}  // namespace hg::garden

@@ -1,0 +1,23 @@
+// The desktop garden: a window onto the garden, walked with the keys and
+// mouse (garden/hands/desktop_hands.h), the morph selected in an on-screen
+// triangle or on the ground, frame stats in an overlay, F12 screenshots.
+#pragma once
+
+#include <string>
+
+namespace hg::garden {
+
+struct DesktopOptions {
+    std::string garden;         // the garden file
+    int width = 1280, height = 720;
+    bool vsync = true;
+    double budgetMs = 11.1;
+    std::string screenshotDir = ".";
+    int frames = 0;             // stop after this many frames (0: until closed); smoke tests
+};
+
+// Runs until the window closes. 0 on a normal close, 1 when the window or
+// GL cannot be had, 2 when the garden file is refused.
+int runDesktopGarden(const DesktopOptions& options);
+
+}  // namespace hg::garden

@@ -1,0 +1,132 @@
+#include "garden/desktop/garden_view.h"
+
+#include <chrono>
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace hg::garden {
+
+namespace {
+
+RenderMaterial renderMaterial(const Material& m) {
+    RenderMaterial r;
+    r.baseColor = glm::vec3(m.color[0], m.color[1], m.color[2]);
+    // Rough surfaces have a weak, wide highlight; smooth ones a sharp one.
+    r.specular = 0.05f + 0.6f * (1.0f - m.roughness) + 0.3f * m.metallic;
+    r.shininess = 4.0f + 200.0f * (1.0f - m.roughness) * (1.0f - m.roughness);
+    return r;
+}
+
+glm::vec3 vec3(const std::array<double, 3>& v) {
+    return {static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2])};
+}
+
+void addLights(const Garden& g, View& v) {
+    glm::vec3 ambient(0.0f);
+    bool anyAmbient = false;
+    for (const Light& l : g.lights) {
+        const glm::vec3 c = glm::vec3(l.color[0], l.color[1], l.color[2]) * static_cast<float>(l.intensity);
+        if (l.kind == Light::Kind::Ambient) {
+            ambient += c;
+            anyAmbient = true;
+        } else if (l.kind == Light::Kind::Directional && v.lights.size() < static_cast<std::size_t>(kMaxLights)) {
+            v.lights.push_back(DirectionalLight{-vec3(l.direction), c});
+        }
+        // Point lights are not drawn by the 3.3 renderer yet; they are kept in the file.
+    }
+    if (v.lights.empty()) {  // a garden without lights still shows its sculptures
+        v.lights.push_back(DirectionalLight{glm::vec3(0.4f, 0.8f, 0.45f), glm::vec3(0.9f)});
+        v.lights.push_back(DirectionalLight{glm::vec3(-0.5f, 0.3f, -0.6f), glm::vec3(0.25f)});
+    }
+    v.ambient = anyAmbient ? ambient : glm::vec3(0.18f);
+}
+
+// A marker for a missing sculpture: a red wire cube of 1 m at its place.
+std::vector<glm::vec3> cubeEdges(const glm::mat4& place, float scaleToMetre) {
+    std::vector<glm::vec3> p;
+    const float h = 0.5f / scaleToMetre;
+    auto corner = [&](int i) {
+        return glm::vec3(place * glm::vec4((i & 1 ? h : -h), (i & 2 ? 2 * h : 0.0f), (i & 4 ? h : -h), 1.0f));
+    };
+    for (int i = 0; i < 8; ++i)
+        for (int b = 0; b < 3; ++b) {
+            const int j = i | (1 << b);
+            if (j != i) {
+                p.push_back(corner(i));
+                p.push_back(corner(j));
+            }
+        }
+    return p;
+}
+
+}  // namespace
+
+std::size_t GardenView::upload(GardenSession& session, double allowanceMs, std::size_t& pendingSculptures) {
+    const auto start = std::chrono::steady_clock::now();
+    std::size_t bytes = 0;
+    pendingSculptures = 0;
+    bool spent = false;
+    for (std::size_t s = 0; s < session.sculptures().size(); ++s) {
+        const SculptureState& st = session.sculptures()[s];
+        if (st.missing()) continue;
+        const poly::RemeshQueue& q = *st.queue;
+        bool stale = false;
+        for (std::size_t c = 0; c < q.count() && !stale; ++c)
+            stale = q.mesh(c) && !renderer_.has(chunkId(s, c), q.version(c));
+        if (!stale) continue;
+        if (spent) {
+            ++pendingSculptures;
+            continue;
+        }
+        for (std::size_t c = 0; c < q.count(); ++c)
+            if (const auto m = q.mesh(c)) bytes += renderer_.upload(chunkId(s, c), q.version(c), *m);
+        spent = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count() >= allowanceMs;
+    }
+    return bytes;
+}
+
+void GardenView::render(const GardenSession& session, glm::ivec2 viewport, float fovY) {
+    const Garden& g = session.garden();
+    View v;
+    v.view = session.navigator().view();
+    v.projection = glm::perspective(fovY, static_cast<float>(viewport.x) / static_cast<float>(std::max(viewport.y, 1)),
+                                    0.05f, 500.0f);
+    v.eye = session.navigator().eye();
+    v.viewport = viewport;
+    addLights(g, v);
+    renderer_.beginFrame(v);
+
+    GroundStyle ground;
+    ground.color = glm::vec3(g.ground.material.color[0], g.ground.material.color[1], g.ground.material.color[2]);
+    ground.lineColor = ground.color * 0.7f;
+    ground.halfExtent = static_cast<float>(std::max(g.ground.size[0], g.ground.size[1]) * 0.5);
+    renderer_.drawGround(ground);
+
+    const auto& sculptures = session.sculptures();
+    for (std::size_t s = 0; s < sculptures.size(); ++s) {
+        const SculptureState& st = sculptures[s];
+        if (st.missing()) {
+            renderer_.drawLines(cubeEdges(st.modelToWorld, static_cast<float>(st.scale)), glm::vec4(0.9f, 0.1f, 0.1f, 1.0f),
+                                LineMode::Segments);
+            continue;
+        }
+        const RenderMaterial m = renderMaterial(st.material);
+        for (std::size_t c = 0; c < st.queue->count(); ++c) renderer_.drawChunk(chunkId(s, c), st.modelToWorld, m);
+    }
+    if (const auto t = session.morphTriangle()) {
+        std::vector<glm::vec3> loop;
+        for (const auto& c : t->corners) loop.emplace_back(static_cast<float>(c[0]), 0.02f, static_cast<float>(c[1]));
+        renderer_.drawLines(loop, glm::vec4(0.95f, 0.85f, 0.2f, 1.0f), LineMode::Loop);
+        if (const auto& w = session.morphWeights()) {
+            const glm::vec3 p(static_cast<float>(w->point[0]), 0.02f, static_cast<float>(w->point[1]));
+            renderer_.drawLines({p - glm::vec3(0.15f, 0, 0), p + glm::vec3(0.15f, 0, 0), p - glm::vec3(0, 0, 0.15f),
+                                 p + glm::vec3(0, 0, 0.15f)},
+                                glm::vec4(0.95f, 0.3f, 0.1f, 1.0f), LineMode::Segments);
+        }
+    }
+    if (const auto& d = session.detail())
+        renderer_.drawSphere(vec3(d->center), static_cast<float>(d->radius), glm::vec4(0.2f, 0.85f, 0.3f, 1.0f), true);
+}
+
+}  // namespace hg::garden

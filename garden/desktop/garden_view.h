@@ -1,0 +1,38 @@
+// Draws a running garden (GardenSession) with the Renderer: the upload
+// stage (new chunk meshes to GPU buffers) and the render stage (ground,
+// sculptures, the morph triangle on the ground, the detail sphere, markers
+// for missing sculptures). Shared by the desktop window and `replay
+// --offscreen`, so screenshots show what the window shows.
+#pragma once
+
+#include <cstddef>
+
+#include <glm/vec2.hpp>
+
+#include "garden/app/garden_session.h"
+#include "garden/render/renderer.h"
+
+namespace hg::garden {
+
+class GardenView {
+public:
+    explicit GardenView(Renderer& renderer) : renderer_(renderer) {}
+
+    // Uploads the chunks whose shown mesh changed. A sculpture's chunks go
+    // up together (its remesh queue shows groups at once, and so must the
+    // GPU); once `allowanceMs` is spent the next sculptures wait for the
+    // next frame. Returns the bytes uploaded; counts what waits.
+    std::size_t upload(GardenSession& session, double allowanceMs, std::size_t& pendingSculptures);
+
+    // Draws into the bound framebuffer of `viewport` pixels.
+    void render(const GardenSession& session, glm::ivec2 viewport, float fovY);
+
+    static ChunkId chunkId(std::size_t sculpture, std::size_t chunk) {
+        return (static_cast<ChunkId>(sculpture) << 32) | static_cast<ChunkId>(chunk);
+    }
+
+private:
+    Renderer& renderer_;
+};
+
+}  // namespace hg::garden

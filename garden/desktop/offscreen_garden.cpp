@@ -1,0 +1,66 @@
+#include "garden/desktop/offscreen_garden.h"
+
+#include <epoxy/gl.h>
+
+#include "garden/desktop/garden_view.h"
+#include "garden/render/gl_context.h"
+#include "garden/render/offscreen_target.h"
+#include "garden/render/screenshot.h"
+
+namespace hg::garden {
+
+struct OffscreenGarden::Impl {
+    GlWindow window;
+    OffscreenTarget target;
+    Renderer renderer;
+    GardenView view{renderer};
+
+    Impl(int width, int height)
+        : window([] {
+              WindowOptions o;
+              o.width = 64;
+              o.height = 64;
+              o.visible = false;
+              o.vsync = false;
+              return o;
+          }()),
+          target(width, height) {}
+};
+
+std::unique_ptr<OffscreenGarden> OffscreenGarden::create(int width, int height, std::string& error) {
+    try {
+        return std::unique_ptr<OffscreenGarden>(new OffscreenGarden(std::make_unique<Impl>(width, height)));
+    } catch (const std::exception& e) {
+        error = std::string("cannot render offscreen: ") + e.what();
+        return nullptr;
+    }
+}
+
+OffscreenGarden::OffscreenGarden(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+OffscreenGarden::~OffscreenGarden() = default;
+
+void OffscreenGarden::render(GardenSession& session) {
+    FrameScheduler& f = session.scheduler();
+    f.beginStage(Stage::Upload);
+    std::size_t pending = 0;
+    session.stats().uploadBytes += impl_->view.upload(session, f.allowanceMs(Stage::Upload), pending);
+    session.stats().uploadsPending = pending;
+    f.beginStage(Stage::Render);
+    impl_->target.bind();
+    impl_->view.render(session, {impl_->target.width(), impl_->target.height()},
+                       static_cast<float>(session.settings().fovY));
+    const RenderStats r = impl_->renderer.endFrame();
+    // The CPU cost of drawing includes waiting for llvmpipe here: a software
+    // GPU; on hardware this is where the driver would queue the frame.
+    glFinish();
+    session.stats().trianglesDrawn = r.trianglesDrawn;
+    session.stats().drawCalls = r.drawCalls;
+    f.endStage();
+}
+
+std::string OffscreenGarden::screenshot(const std::string& path) {
+    impl_->target.bind();
+    return writePng(path, impl_->target.width(), impl_->target.height(), impl_->target.readColor());
+}
+
+}  // namespace hg::garden

@@ -1,0 +1,28 @@
+// `replay --offscreen WxH`: a hidden window's GL context, an offscreen
+// framebuffer and the renderer; each replayed frame is uploaded and drawn,
+// and screenshots are PNGs of that framebuffer.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "garden/replay/replay_runner.h"
+
+namespace hg::garden {
+
+class OffscreenGarden : public FrameRenderer {
+public:
+    // Null with `error` set when there is no display or no GL 3.3 context.
+    static std::unique_ptr<OffscreenGarden> create(int width, int height, std::string& error);
+    ~OffscreenGarden() override;
+
+    void render(GardenSession& session) override;
+    std::string screenshot(const std::string& path) override;
+
+private:
+    struct Impl;
+    explicit OffscreenGarden(std::unique_ptr<Impl> impl);
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace hg::garden

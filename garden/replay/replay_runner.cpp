@@ -1,0 +1,165 @@
+#include "garden/replay/replay_runner.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+
+#include <nlohmann/json.hpp>
+
+namespace hg::garden {
+
+namespace {
+
+constexpr double kDegrees = 3.14159265358979323846 / 180.0;
+
+std::string screenshotPath(const ReplayOptions& o, const std::string& name) {
+    const std::filesystem::path p(name);
+    return p.is_absolute() ? name : (std::filesystem::path(o.screenshotDir) / p).string();
+}
+
+// "" or why the command cannot run.
+std::string apply(const ReplayCommand& c, GardenSession& s, FrameRenderer* renderer, const ReplayOptions& o,
+                  ReplayResult& result, std::vector<std::string>& shotsThisFrame) {
+    switch (c.kind) {
+        case ReplayCommand::Kind::Morph:
+            if (!s.hasMorph()) return "the garden has no metamorphosis to select";
+            s.setMorphPoint(c.pair[0], c.pair[1]);
+            return "";
+        case ReplayCommand::Kind::MorphWeights:
+            if (!s.hasMorph()) return "the garden has no metamorphosis to weigh";
+            s.setMorphWeights(c.vec);
+            return "";
+        case ReplayCommand::Kind::Screenshot:
+            if (!renderer) {
+                result.notes.push_back("frame " + std::to_string(result.frames) + ": screenshot '" + c.text +
+                                       "' skipped (headless)");
+                return "";
+            }
+            shotsThisFrame.push_back(screenshotPath(o, c.text));
+            return "";
+        case ReplayCommand::Kind::Detail:
+            if (c.number <= 0.0) s.setDetail(std::nullopt);
+            else s.setDetail(poly::Sphere{c.vec, c.number});
+            return "";
+        case ReplayCommand::Kind::Pose:
+            s.navigator().setPose(glm::vec3(static_cast<float>(c.vec[0]), static_cast<float>(c.vec[1]),
+                                            static_cast<float>(c.vec[2])),
+                                  static_cast<float>(c.pair[0] * kDegrees), static_cast<float>(c.pair[1] * kDegrees));
+            return "";
+        case ReplayCommand::Kind::Select: {
+            if (c.text.empty()) {
+                s.select(-1);
+                return "";
+            }
+            const int i = s.findSculpture(c.text);
+            if (i < 0) return "no sculpture named '" + c.text + "'";
+            s.select(i);
+            return "";
+        }
+        case ReplayCommand::Kind::Orbit:
+            if (c.flag && s.selected() < 0) return "orbit needs a selected sculpture";
+            s.navigator().setMode(c.flag ? NavigationMode::Orbit : NavigationMode::Walk);
+            return "";
+        case ReplayCommand::Kind::Budget:
+            s.scheduler().setBudgetMs(c.number);
+            return "";
+    }
+    return "";
+}
+
+}  // namespace
+
+ReplayResult runReplay(const ReplayScript& script, GardenSession& session, FrameRenderer* renderer,
+                       const ReplayOptions& options) {
+    ReplayResult result;
+    session.scheduler().setBudgetMs(script.budgetMs);
+    for (std::size_t stepIndex = 0; stepIndex < script.steps.size(); ++stepIndex) {
+        const ReplayStep& step = script.steps[stepIndex];
+        bool settled = false;
+        for (int f = 0; f < step.frames; ++f) {
+            std::vector<std::string> shots;
+            session.beginFrame();
+            if (f == 0)
+                for (std::size_t c = 0; c < step.commands.size(); ++c) {
+                    const std::string why = apply(step.commands[c], session, renderer, options, result, shots);
+                    if (!why.empty()) {
+                        result.error = script.file + ": $.steps[" + std::to_string(stepIndex) + "].commands[" +
+                                       std::to_string(c) + "]: " + why;
+                        session.endFrame();
+                        return result;
+                    }
+                }
+            session.input(step.hands, script.timestep);
+            session.selectLevels();
+            session.morph();
+            session.remesh();
+            if (renderer) renderer->render(session);
+            result.stats.push_back(session.endFrame());
+            ++result.frames;
+            if (renderer && options.screenshotEvery > 0 && result.frames % options.screenshotEvery == 0) {
+                char name[64];
+                std::snprintf(name, sizeof name, "frame_%06d.png", result.frames);
+                shots.push_back(screenshotPath(options, name));
+            }
+            for (const std::string& path : shots) {
+                const std::string why = renderer->screenshot(path);
+                if (!why.empty()) {
+                    result.error = why;
+                    return result;
+                }
+                result.screenshots.push_back(path);
+            }
+            if (step.untilIdle && session.idle()) {
+                settled = true;
+                break;
+            }
+        }
+        if (step.untilIdle && !settled) {
+            result.error = script.file + ": $.steps[" + std::to_string(stepIndex) + "]: still busy after " +
+                           std::to_string(step.frames) + " frames (morph samples left " +
+                           std::to_string(session.morphRemaining()) + ", chunks waiting " +
+                           std::to_string(session.remeshPending()) + ")";
+            return result;
+        }
+    }
+    return result;
+}
+
+std::string statsJson(const ReplayScript& script, const ReplayResult& result) {
+    nlohmann::json frames = nlohmann::json::array();
+    std::array<double, kStageCount> sum{}, worst{};
+    double totalSum = 0.0, totalWorst = 0.0;
+    for (const FrameStats& f : result.stats) {
+        nlohmann::json stages = nlohmann::json::object();
+        for (int s = 0; s < kStageCount; ++s) {
+            const double t = f.stageMs[static_cast<std::size_t>(s)];
+            stages[stageName(static_cast<Stage>(s))] = t;
+            sum[static_cast<std::size_t>(s)] += t;
+            worst[static_cast<std::size_t>(s)] = std::max(worst[static_cast<std::size_t>(s)], t);
+        }
+        totalSum += f.totalMs;
+        totalWorst = std::max(totalWorst, f.totalMs);
+        frames.push_back({{"frame", f.frame}, {"total_ms", f.totalMs}, {"budget_ms", f.budgetMs}, {"stages_ms", stages},
+                          {"morph_samples", f.morphSamples}, {"morph_pending", f.morphPending},
+                          {"chunks_meshed", f.chunksMeshed}, {"chunks_shown", f.chunksShown},
+                          {"remesh_pending", f.remeshPending}, {"upload_bytes", f.uploadBytes},
+                          {"uploads_pending", f.uploadsPending}, {"triangles_drawn", f.trianglesDrawn},
+                          {"draw_calls", f.drawCalls}});
+    }
+    const double n = std::max<double>(1.0, static_cast<double>(result.stats.size()));
+    nlohmann::json mean = nlohmann::json::object(), maxima = nlohmann::json::object();
+    for (int s = 0; s < kStageCount; ++s) {
+        mean[stageName(static_cast<Stage>(s))] = sum[static_cast<std::size_t>(s)] / n;
+        maxima[stageName(static_cast<Stage>(s))] = worst[static_cast<std::size_t>(s)];
+    }
+    nlohmann::json doc = {{"script", script.file},
+                          {"frames", frames},
+                          {"summary", {{"frames", result.stats.size()}, {"mean_total_ms", totalSum / n},
+                                       {"max_total_ms", totalWorst}, {"mean_stage_ms", mean}, {"max_stage_ms", maxima}}},
+                          {"screenshots", result.screenshots},
+                          {"notes", result.notes},
+                          {"error", result.error}};
+    return doc.dump(1) + "\n";
+}
+
+}  // namespace hg::garden

@@ -1,0 +1,47 @@
+// Plays a replay script on a garden session, frame by frame with the
+// script's fixed timestep (docs/replay-format.md). Headless, nothing is
+// drawn; with a FrameRenderer (the offscreen window) each frame is uploaded
+// and drawn, and screenshots are written.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "garden/app/garden_session.h"
+#include "garden/replay/replay_script.h"
+
+namespace hg::garden {
+
+// What `replay --offscreen` plugs in: the upload and render stages of a
+// frame, and a screenshot of the last frame drawn.
+class FrameRenderer {
+public:
+    virtual ~FrameRenderer() = default;
+    virtual void render(GardenSession& session) = 0;
+    // "" on success, else why the file could not be written.
+    virtual std::string screenshot(const std::string& path) = 0;
+};
+
+struct ReplayOptions {
+    int screenshotEvery = 0;         // also a screenshot every N frames (0: only the script's)
+    std::string screenshotDir = ".";  // where screenshots go (relative names)
+};
+
+struct ReplayResult {
+    std::string error;               // non-empty: the replay stopped there
+    int frames = 0;
+    std::vector<FrameStats> stats;   // one per frame
+    std::vector<std::string> screenshots;
+    std::vector<std::string> notes;  // what was skipped (screenshots when headless)
+
+    bool ok() const { return error.empty(); }
+};
+
+ReplayResult runReplay(const ReplayScript& script, GardenSession& session, FrameRenderer* renderer,
+                       const ReplayOptions& options);
+
+// The stats as JSON: the script, per-frame rows (every stage's time,
+// samples, chunks, triangles, queues) and a summary (mean and max per stage).
+std::string statsJson(const ReplayScript& script, const ReplayResult& result);
+
+}  // namespace hg::garden

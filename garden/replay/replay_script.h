@@ -1,0 +1,60 @@
+// A scripted session (docs/replay-format.md): a garden, a fixed timestep,
+// and steps that hold hand states and commands for a number of frames.
+// `hypergarden replay` plays it frame by frame, deterministically: the same
+// script gives the same frames, the same morph and the same meshes.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "garden/hands/hand_state.h"
+
+namespace hg::garden {
+
+struct ReplayCommand {
+    enum class Kind {
+        Morph,         // the selector point on the ground (x, z): weights from the triangle
+        MorphWeights,  // the three weights directly (they are normalized)
+        Screenshot,    // a PNG of this frame (offscreen only), `text` is its file name
+        Detail,        // move the detail sphere (`vec`, `number` = radius); radius 0 removes it
+        Pose,          // put the viewer at `vec` with yaw, pitch (degrees) in `pair`
+        Select,        // select the sculpture named `text` ("" selects none)
+        Orbit,         // orbit the selection (`flag`), or stop
+        Budget,        // the frame budget, milliseconds (`number`)
+    };
+    Kind kind = Kind::Morph;
+    std::array<double, 3> vec{};
+    std::array<double, 2> pair{};
+    double number = 0.0;
+    std::string text;
+    bool flag = false;
+};
+
+struct ReplayStep {
+    int frames = 1;
+    // Run until the morph update and every remesh queue are drained (at
+    // most `frames` frames, then the replay fails: something never settles).
+    bool untilIdle = false;
+    Hands hands;                          // held for every frame of the step
+    std::vector<ReplayCommand> commands;  // run at the step's first frame, in order
+};
+
+struct ReplayScript {
+    std::string file;
+    std::string garden;                // resolved against the script's folder
+    double timestep = 1.0 / 90.0;      // seconds per frame
+    double budgetMs = 11.1;
+    std::array<int, 2> viewport = {1280, 720};
+    std::vector<ReplayStep> steps;
+
+    int totalFrames() const;  // an upper bound: until_idle steps count their maximum
+};
+
+// Throws JsonError (garden/scene/json_reader.h) at the first problem, with
+// its JSON path.
+ReplayScript parseReplayScript(const std::string& text, const std::string& file, const std::string& folder);
+ReplayScript loadReplayScript(const std::string& path);
+
+}  // namespace hg::garden
