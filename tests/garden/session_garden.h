@@ -1,0 +1,43 @@
+// A small garden for the session and replay tests: three balls of different
+// sizes at the morph triangle's corners (4 m apart), the result in the
+// middle, one sculpture whose file is missing, all at 32^3, so a session
+// opens in a fraction of a second.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include "garden_test_util.h"
+
+namespace hg::garden::test {
+
+// Writes ball.hf and garden.json into `dir`; returns the garden's path.
+inline std::string writeSmallGarden(const std::filesystem::path& dir, nlohmann::json patch = nlohmann::json::object()) {
+    std::filesystem::create_directories(dir);
+    std::ofstream(dir / "ball.hf") << "ball(x[3], a[1]) { ball = a[1] - (x[1]^2 + (x[2]-0.5)^2 + x[3]^2); }\n";
+    nlohmann::json j = nlohmann::json::parse(R"({
+      "version": 1,
+      "name": "small",
+      "materials": {"red": {"color": [0.9, 0.1, 0.1], "roughness": 0.6}},
+      "sculptures": [
+        {"name": "a", "file": "ball.hf", "a": [0.25], "resolution": 32, "material": "red",
+         "box": {"min": [-0.6, -0.1, -0.6], "max": [0.6, 1.1, 0.6]}, "placement": {"position": [0, 0, -2.3094]}},
+        {"name": "b", "file": "ball.hf", "a": [0.16], "resolution": 32, "material": "red",
+         "box": {"min": [-0.6, -0.1, -0.6], "max": [0.6, 1.1, 0.6]}, "placement": {"position": [-2, 0, 1.1547]}},
+        {"name": "c", "file": "ball.hf", "a": [0.36], "resolution": 32, "material": "red",
+         "box": {"min": [-0.6, -0.1, -0.6], "max": [0.6, 1.1, 0.6]}, "placement": {"position": [2, 0, 1.1547]}},
+        {"name": "lost", "file": "nowhere.hf", "placement": {"position": [6, 0, 6]}}
+      ],
+      "morph": {"sources": ["a", "b", "c"], "result": {"resolution": 32, "material": "red"}},
+      "start": {"position": [0, 1.7, 8], "look_at": [0, 0.5, 0]}
+    })");
+    j.merge_patch(patch);
+    std::ofstream(dir / "garden.json") << j.dump(2);
+    return (dir / "garden.json").string();
+}
+
+class SmallGarden : public ScratchDir {
+protected:
+    std::string writeGarden(nlohmann::json patch = nlohmann::json::object()) { return writeSmallGarden(dir, patch); }
+};
+
+}  // namespace hg::garden::test
