@@ -16,7 +16,9 @@ namespace hg::garden {
 struct SchedulerSettings {
     double budgetMs = 11.1;
     double morphShare = 0.5;  // of the work time left when the morph stage starts
-    double minimumMs = 0.05;  // a budgeted stage always gets this much (progress)
+    // A budgeted stage always gets this much, even in a frame already over
+    // budget (a slow GPU, a software renderer): updates still progress.
+    double minimumMs = 1.0;
 };
 
 class FrameScheduler {

@@ -70,6 +70,10 @@ static void attachMeshing(SculptureState& s, const SessionSettings& settings) {
     s.layout = std::make_unique<poly::ChunkLayout>(s.volume->frame, settings.chunkSize);
     s.queue = std::make_unique<poly::RemeshQueue>(*s.pyramid, *s.layout,
                                                   std::vector<int>(s.layout->count(), settings.maxLevel));
+    // The coarsest level at once (cheap: a few cells per chunk), so the
+    // garden opens with every sculpture on show; finer levels then stream
+    // in within the frame budget.
+    s.queue->process(poly::RemeshBudget{});
 }
 
 void GardenSession::buildSculpture(std::size_t index) {

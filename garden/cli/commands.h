@@ -62,6 +62,7 @@ struct GardenOptions {
     bool noVsync = false;
     double budgetMs = 11.1;
     int frames = 0;                   // stop after N frames (0: until the window closes)
+    std::string exitScreenshot;       // with frames: a PNG of the last frame
     std::string screenshotDir = ".";
 };
 

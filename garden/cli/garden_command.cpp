@@ -13,6 +13,7 @@ int runGarden(const GardenOptions& options) {
     d.budgetMs = options.budgetMs;
     d.frames = options.frames;
     d.screenshotDir = options.screenshotDir;
+    d.exitScreenshot = options.exitScreenshot;
     return runDesktopGarden(d);
 }
 

@@ -15,12 +15,13 @@ int main(int argc, char** argv) {
     GardenOptions gardenOpts;
     gardenOpts.garden = HG_DEFAULT_GARDEN;
     app.add_option("--garden", gardenOpts.garden, "Garden file to open (default: content/gardens/default.json)");
-    app.add_option("--size", gardenOpts.width, "Window width in pixels (height follows 16:9 unless --height)");
-    app.add_option("--height", gardenOpts.height, "Window height in pixels");
+    app.add_option("--width", gardenOpts.width, "Window width in pixels (default 1280)");
+    app.add_option("--height", gardenOpts.height, "Window height in pixels (default 720)");
     app.add_flag("--no-vsync", gardenOpts.noVsync, "Do not wait for the display's refresh");
     app.add_option("--budget-ms", gardenOpts.budgetMs, "Frame budget in milliseconds (default 11.1, 90 Hz)");
     app.add_option("--frames", gardenOpts.frames, "Close after this many frames (default: when the window closes)");
     app.add_option("--screenshot-dir", gardenOpts.screenshotDir, "Where F12 screenshots go (default: .)");
+    app.add_option("--exit-screenshot", gardenOpts.exitScreenshot, "With --frames: a PNG of the last frame, overlay included");
 
     ModelOptions checkOpts;
     auto* check = app.add_subcommand("check", "Parse a HyperFun file, list its bodies, evaluation path and model box");

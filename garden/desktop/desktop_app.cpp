@@ -56,8 +56,9 @@ std::string timestampedName(const std::string& dir) {
 
 // The side panel: the garden, what is missing, the morph selector.
 void gardenPanel(GardenSession& session, glm::vec2& selector) {
-    ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
-    ImGui::Begin("Garden");
+    // Top right: the stats panel takes the top left.
+    ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x - 10.0f, 10.0f), ImGuiCond_FirstUseEver, ImVec2(1.0f, 0.0f));
+    ImGui::Begin("Garden", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
     ImGui::Text("%s", session.garden().name.empty() ? session.garden().file.c_str() : session.garden().name.c_str());
     const char* mode[] = {"walk", "fly", "orbit"};
     ImGui::Text("%s at (%.1f, %.1f, %.1f)", mode[static_cast<int>(session.navigator().mode())],
@@ -186,6 +187,14 @@ int runDesktopGarden(const DesktopOptions& options) {
             drawStatsPanel(session.scheduler().history());
             overlay.render();
             session.endFrame();
+            const bool lastFrame = options.frames > 0 && frame + 1 == options.frames;
+            if (lastFrame && !options.exitScreenshot.empty()) {
+                const std::string why = writeFramebufferPng(options.exitScreenshot, fb.x, fb.y);
+                if (!why.empty()) {
+                    std::cerr << "error: " << why << "\n";
+                    return 1;
+                }
+            }
             window.swapBuffers();
         }
     } catch (const GlError& e) {

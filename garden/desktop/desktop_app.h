@@ -14,6 +14,7 @@ struct DesktopOptions {
     double budgetMs = 11.1;
     std::string screenshotDir = ".";
     int frames = 0;             // stop after this many frames (0: until closed); smoke tests
+    std::string exitScreenshot; // a PNG of the last frame, overlay included ("" : none)
 };
 
 // Runs until the window closes. 0 on a normal close, 1 when the window or

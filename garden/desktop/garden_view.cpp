@@ -60,6 +60,31 @@ std::vector<glm::vec3> cubeEdges(const glm::mat4& place, float scaleToMetre) {
     return p;
 }
 
+// A path as a flat ribbon just above the ground: one quad per segment
+// (quads overlap at the joints, in one plane and one colour).
+poly::Mesh pathMesh(const PathSpec& path, double groundHeight) {
+    poly::Mesh m;
+    const float y = static_cast<float>(groundHeight) + 0.01f, h = static_cast<float>(path.width) * 0.5f;
+    const std::size_t n = path.points.size(), segments = path.closed ? n : n - 1;
+    for (std::size_t i = 0; i < segments; ++i) {
+        const glm::vec2 a(static_cast<float>(path.points[i][0]), static_cast<float>(path.points[i][1]));
+        const glm::vec2 b(static_cast<float>(path.points[(i + 1) % n][0]), static_cast<float>(path.points[(i + 1) % n][1]));
+        if (glm::length(b - a) < 1e-6f) continue;
+        const glm::vec2 d = glm::normalize(b - a), side(-d.y, d.x);
+        // Extended by half the width at both ends, so joints close.
+        const glm::vec2 a0 = a - d * h, b0 = b + d * h;
+        const glm::vec2 corners[4] = {a0 - side * h, a0 + side * h, b0 + side * h, b0 - side * h};
+        const auto base = static_cast<std::uint32_t>(m.vertexCount());
+        for (const glm::vec2& c : corners) {
+            m.positions.insert(m.positions.end(), {c.x, y, c.y});
+            m.normals.insert(m.normals.end(), {0.0f, 1.0f, 0.0f});
+        }
+        // Counter-clockwise seen from above (+y).
+        m.indices.insert(m.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
+    }
+    return m;
+}
+
 }  // namespace
 
 std::size_t GardenView::upload(GardenSession& session, double allowanceMs, std::size_t& pendingSculptures) {
@@ -67,6 +92,9 @@ std::size_t GardenView::upload(GardenSession& session, double allowanceMs, std::
     std::size_t bytes = 0;
     pendingSculptures = 0;
     bool spent = false;
+    const Garden& g = session.garden();
+    for (std::size_t p = 0; p < g.paths.size(); ++p)
+        if (!renderer_.has(pathId(p))) bytes += renderer_.upload(pathId(p), 1, pathMesh(g.paths[p], g.ground.height));
     for (std::size_t s = 0; s < session.sculptures().size(); ++s) {
         const SculptureState& st = session.sculptures()[s];
         if (st.missing()) continue;
@@ -103,6 +131,8 @@ void GardenView::render(const GardenSession& session, glm::ivec2 viewport, float
     ground.halfExtent = static_cast<float>(std::max(g.ground.size[0], g.ground.size[1]) * 0.5);
     renderer_.drawGround(ground);
 
+    for (std::size_t p = 0; p < g.paths.size(); ++p)
+        renderer_.drawChunk(pathId(p), glm::mat4(1.0f), renderMaterial(g.paths[p].material));
     const auto& sculptures = session.sculptures();
     for (std::size_t s = 0; s < sculptures.size(); ++s) {
         const SculptureState& st = sculptures[s];

@@ -1,7 +1,7 @@
 // Draws a running garden (GardenSession) with the Renderer: the upload
 // stage (new chunk meshes to GPU buffers) and the render stage (ground,
-// sculptures, the morph triangle on the ground, the detail sphere, markers
-// for missing sculptures). Shared by the desktop window and `replay
+// paths, sculptures, the morph triangle on the ground, the detail sphere,
+// markers for missing sculptures). Shared by the desktop window and `replay
 // --offscreen`, so screenshots show what the window shows.
 #pragma once
 
@@ -30,6 +30,8 @@ public:
     static ChunkId chunkId(std::size_t sculpture, std::size_t chunk) {
         return (static_cast<ChunkId>(sculpture) << 32) | static_cast<ChunkId>(chunk);
     }
+    // Paths are drawn as meshes too, under ids no sculpture reaches.
+    static ChunkId pathId(std::size_t path) { return (ChunkId{0xFFFFFFFFu} << 32) | static_cast<ChunkId>(path); }
 
 private:
     Renderer& renderer_;
