@@ -28,7 +28,7 @@ namespace {
 // reads and clears them.
 struct Events {
     float wheel = 0.0f;
-    bool f12 = false, space = false, orbit = false, undo = false, redo = false, escape = false;
+    bool f12 = false, space = false, orbit = false, undo = false, redo = false, escape = false, detail = false;
 };
 
 Events* eventsOf(GLFWwindow* w) { return static_cast<Events*>(glfwGetWindowUserPointer(w)); }
@@ -42,6 +42,7 @@ void onKey(GLFWwindow* w, int key, int, int action, int mods) {
     if (key == GLFW_KEY_F12) e.f12 = true;
     if (key == GLFW_KEY_SPACE) e.space = true;
     if (key == GLFW_KEY_O) e.orbit = true;
+    if (key == GLFW_KEY_G) e.detail = true;
     if (key == GLFW_KEY_ESCAPE) e.escape = true;
     if (ctrl && key == GLFW_KEY_Z) e.undo = true;
     if (ctrl && key == GLFW_KEY_Y) e.redo = true;
@@ -64,8 +65,21 @@ void gardenPanel(GardenSession& session, glm::vec2& selector) {
     ImGui::Text("%s at (%.1f, %.1f, %.1f)", mode[static_cast<int>(session.navigator().mode())],
                 static_cast<double>(session.navigator().eye().x), static_cast<double>(session.navigator().eye().y),
                 static_cast<double>(session.navigator().eye().z));
-    for (const SculptureState& s : session.sculptures())
-        if (s.missing()) ImGui::TextColored(ImVec4(1, 0.35f, 0.3f, 1), "missing: %s: %s", s.name.c_str(), s.error.c_str());
+    // Select a sculpture to orbit it (O).
+    if (ImGui::BeginListBox("##sculptures", ImVec2(300, 6 * ImGui::GetTextLineHeightWithSpacing()))) {
+        for (std::size_t i = 0; i < session.sculptures().size(); ++i) {
+            const SculptureState& s = session.sculptures()[i];
+            if (s.missing()) {
+                ImGui::TextColored(ImVec4(1, 0.35f, 0.3f, 1), "%s (missing)", s.name.c_str());
+                if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", s.error.c_str());
+                continue;
+            }
+            if (ImGui::Selectable(s.name.c_str(), session.selected() == static_cast<int>(i)))
+                session.select(session.selected() == static_cast<int>(i) ? -1 : static_cast<int>(i));
+        }
+        ImGui::EndListBox();
+    }
+    ImGui::TextDisabled("O orbits the selection, G puts the detail sphere where the mouse points");
     if (session.hasMorph()) {
         const MorphSpec& m = *session.garden().morph;
         const char* labels[3] = {m.sources[0].c_str(), m.sources[1].c_str(), m.sources[2].c_str()};
@@ -160,6 +174,16 @@ int runDesktopGarden(const DesktopOptions& options) {
             const Hands hands = mapDesktop(in, session.view(), projection, DesktopMapping{}, speed);
             speed = hands.speedScale;
             if (events.escape) window.setShouldClose(true);
+            if (keys && events.detail) {
+                // Where the mouse ray meets the ground, a metre up; again: removed.
+                const glm::vec3 o = hands.tool.aim.position, d = hands.tool.aim.forward();
+                if (session.detail()) session.setDetail(std::nullopt);
+                else if (d.y < -1e-3f) {
+                    const float t = (static_cast<float>(session.garden().ground.height) - o.y) / d.y;
+                    const glm::vec3 p = o + t * d + glm::vec3(0.0f, 1.0f, 0.0f);
+                    session.setDetail(poly::Sphere{{p.x, p.y, p.z}, 1.0});
+                }
+            }
             const bool shoot = events.f12;
             events = Events{};
 

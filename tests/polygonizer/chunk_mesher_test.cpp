@@ -19,22 +19,13 @@
 #include "polygonizer/export_mesher.h"
 #include "polygonizer/lod_selection.h"
 #include "polygonizer/mesh_validation.h"
+#include "sample_program.h"
 #include "voxel/sampler.h"
 
 namespace hg::poly {
 namespace {
 
-voxel::Volume sample(const std::string& source, int res, std::vector<double> a = {}) {
-    frep::ParseResult r = frep::parseProgram(source, "test.hf");
-    EXPECT_TRUE(r.ok());
-    auto program = std::make_shared<const frep::Program>(std::move(*r.program));
-    frep::Model model(program, program->defaultBody(), std::move(a));
-    voxel::VolumeRequest req;
-    req.resolution = res;
-    voxel::VoxelizeResult v = voxel::voxelize(model, req);
-    EXPECT_TRUE(v.volume) << v.error;
-    return std::move(*v.volume);
-}
+using test::sampleProgram;
 
 // Thin features (the ring's tube is a few coarse cells wide) so that coarse
 // and fine samples disagree often along seams.
@@ -128,7 +119,7 @@ void balance(const ChunkLayout& layout, std::vector<int>& levels) {
 }
 
 TEST(ChunkMesher, AtLevelZeroTheUnionIsTheExportMesh) {
-    voxel::Volume v = sample(kRings, 96);
+    voxel::Volume v = sampleProgram(kRings, 96);
     LodPyramid pyramid(v, 3);
     ChunkLayout layout(v.frame, 16);
     MeshReport chunks = validateMesh(weldByPosition(unionOf(pyramid, layout, std::vector<int>(layout.count(), 0))));
@@ -140,7 +131,7 @@ TEST(ChunkMesher, AtLevelZeroTheUnionIsTheExportMesh) {
 }
 
 TEST(ChunkMesher, UniformLevelsAreClosedAndCoarserLevelsHaveFewerTriangles) {
-    voxel::Volume v = sample(kRings, 128);
+    voxel::Volume v = sampleProgram(kRings, 128);
     LodPyramid pyramid(v, 4);
     ChunkLayout layout(v.frame, 32);
     std::size_t previous = 0;
@@ -156,7 +147,7 @@ TEST(ChunkMesher, UniformLevelsAreClosedAndCoarserLevelsHaveFewerTriangles) {
 }
 
 TEST(ChunkMesher, CheckerboardWithALevelSeamOnEveryChunkFaceIsClosed) {
-    voxel::Volume v = sample(kRings, 128);
+    voxel::Volume v = sampleProgram(kRings, 128);
     LodPyramid pyramid(v, 4);
     for (int size : {16, 32}) {
         ChunkLayout layout(v.frame, size);
@@ -173,7 +164,7 @@ TEST(ChunkMesher, CheckerboardWithALevelSeamOnEveryChunkFaceIsClosed) {
 }
 
 TEST(ChunkMesher, RandomBalancedConfigurationsAreClosed) {
-    voxel::Volume v = sample(kRings, 96);
+    voxel::Volume v = sampleProgram(kRings, 96);
     LodPyramid pyramid(v, 4);
     std::mt19937 rng(11);
     for (int size : {16, 32}) {
@@ -204,7 +195,7 @@ TEST(ChunkMesher, RandomBalancedConfigurationsAreClosed) {
 }
 
 TEST(ChunkMesher, LevelsSelectedFromCamerasAreClosed) {
-    voxel::Volume v = sample(kRings, 128);
+    voxel::Volume v = sampleProgram(kRings, 128);
     LodPyramid pyramid(v, 4);
     ChunkLayout layout(v.frame, 16);
     for (double distance : {0.05, 0.4, 1.5}) {
@@ -226,7 +217,7 @@ TEST(ChunkMesher, OurSculpturesAreClosedAtMixedLevels) {
         ASSERT_TRUE(in) << name;
         std::stringstream text;
         text << in.rdbuf();
-        voxel::Volume v = sample(text.str(), 96);
+        voxel::Volume v = sampleProgram(text.str(), 96);
         LodPyramid pyramid(v, 3);
         ChunkLayout layout(v.frame, 16);
         std::vector<int> levels(layout.count());
@@ -241,7 +232,7 @@ TEST(ChunkMesher, OurSculpturesAreClosedAtMixedLevels) {
 }
 
 TEST(ChunkMesher, RejectsLevelsThatCannotBeStitched) {
-    voxel::Volume v = sample(kRings, 64);
+    voxel::Volume v = sampleProgram(kRings, 64);
     ChunkLayout layout(v.frame, 16);
     std::vector<int> levels(layout.count(), 0);
     levels[0] = 2;

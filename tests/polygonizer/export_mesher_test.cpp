@@ -11,6 +11,7 @@
 #include "polygonizer/cell_table.h"
 #include "polygonizer/export_mesher.h"
 #include "polygonizer/mesh_validation.h"
+#include "sample_program.h"
 #include "voxel/sampler.h"
 
 namespace hg::poly {
@@ -18,17 +19,7 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-voxel::Volume sample(const std::string& source, int res, std::vector<double> a = {}) {
-    frep::ParseResult r = frep::parseProgram(source, "test.hf");
-    EXPECT_TRUE(r.ok());
-    auto program = std::make_shared<const frep::Program>(std::move(*r.program));
-    frep::Model model(program, program->defaultBody(), std::move(a));
-    voxel::VolumeRequest req;
-    req.resolution = res;
-    voxel::VoxelizeResult v = voxel::voxelize(model, req);
-    EXPECT_TRUE(v.volume) << v.error;
-    return std::move(*v.volume);
-}
+using test::sampleProgram;
 
 TEST(CellTable, EveryCaseUsesExactlyItsCrossingEdges) {
     const auto& table = cellTable();
@@ -64,11 +55,11 @@ void expectWatertight(const Mesh& mesh, double expectedVolume, double tolerance)
 }
 
 TEST(ExportMesher, SphereBoxAndTorusAreWatertightWithinOnePercentOfTheirVolume) {
-    Mesh sphere = meshVolume(sample("q(x[3], a[1]) { q = 0.64 - (x[1]^2 + x[2]^2 + x[3]^2); }", 128));
+    Mesh sphere = meshVolume(sampleProgram("q(x[3], a[1]) { q = 0.64 - (x[1]^2 + x[2]^2 + x[3]^2); }", 128));
     expectWatertight(sphere, 4.0 / 3.0 * kPi * 0.512, 0.01);
-    Mesh box = meshVolume(sample("q(x[3], a[1]) { array c[3]; c = [-0.5, -0.3, -0.2]; q = hfBlock(x, c, 1.0, 0.6, 0.4); }", 128));
+    Mesh box = meshVolume(sampleProgram("q(x[3], a[1]) { array c[3]; c = [-0.5, -0.3, -0.2]; q = hfBlock(x, c, 1.0, 0.6, 0.4); }", 128));
     expectWatertight(box, 1.0 * 0.6 * 0.4, 0.01);
-    Mesh torus = meshVolume(sample("q(x[3], a[1]) { array c[3]; c = [0, 0, 0]; q = hfTorusY(x, c, 0.6, 0.2); }", 128));
+    Mesh torus = meshVolume(sampleProgram("q(x[3], a[1]) { array c[3]; c = [0, 0, 0]; q = hfTorusY(x, c, 0.6, 0.2); }", 128));
     expectWatertight(torus, 2 * kPi * kPi * 0.6 * 0.04, 0.01);
     MeshReport t = validateMesh(torus);
     // Euler characteristic V - E + F = 0 for a torus, 2 for a sphere.
