@@ -36,17 +36,29 @@ void RemeshQueue::setLevels(const std::vector<int>& levels) {
 }
 
 void RemeshQueue::markChanged(const voxel::IndexBox& box) {
+    // A chunk reads its level's samples from its low corner to one past its
+    // high corner, and one more on each side for gradients: at most one
+    // cell of the coarsest level beyond its voxels. Only the chunks whose
+    // reach can meet the box are looked at (a morph step reports thousands
+    // of small boxes).
     const int size = layout_.chunkSize();
-    for (std::size_t i = 0; i < slots_.size(); ++i) {
-        // A chunk reads its level's samples from its low corner to one past
-        // its high corner, and one more on each side for gradients.
-        const voxel::IndexBox v = layout_.voxels(i);
-        const int cell = 1 << std::max(slots_[i].target.level, slots_[i].shownLod.level);
-        bool touches = true;
-        for (int a = 0; a < 3 && touches; ++a)
-            touches = box.hi[a] >= v.lo[a] - cell && box.lo[a] <= v.lo[a] + size + cell;
-        if (touches) markDirty(i);
-    }
+    const int reach = 1 << pyramid_.levels();  // more than any level's cell
+    auto floorDiv = [](int v, int d) { return v >= 0 ? v / d : -((-v + d - 1) / d); };
+    const ChunkKey lo{floorDiv(box.lo[0] - reach, size), floorDiv(box.lo[1] - reach, size), floorDiv(box.lo[2] - reach, size)};
+    const ChunkKey hi{floorDiv(box.hi[0] + reach, size), floorDiv(box.hi[1] + reach, size), floorDiv(box.hi[2] + reach, size)};
+    for (int z = lo.z; z <= hi.z; ++z)
+        for (int y = lo.y; y <= hi.y; ++y)
+            for (int x = lo.x; x <= hi.x; ++x) {
+                const ChunkKey k{x, y, z};
+                if (!layout_.contains(k)) continue;
+                const std::size_t i = layout_.index(k);
+                const voxel::IndexBox v = layout_.voxels(i);
+                const int cell = 1 << std::max(slots_[i].target.level, slots_[i].shownLod.level);
+                bool touches = true;
+                for (int a = 0; a < 3 && touches; ++a)
+                    touches = box.hi[a] >= v.lo[a] - cell && box.lo[a] <= v.lo[a] + size + cell;
+                if (touches) markDirty(i);
+            }
 }
 
 void RemeshQueue::setPriority(std::size_t chunk, int priority) { slots_[chunk].priority = priority; }
