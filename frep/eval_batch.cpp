@@ -136,10 +136,10 @@ void BatchEvaluator<T>::chunk(const T* x, const T* y, const T* z, T* out, size_t
             case Op::Truthy: unary(o, a, n, [](T p) { return std::fabs(p) >= hf::kEps<T> ? T(1) : T(0); }); break;
             case Op::Not: unary(o, a, n, [](T p) { return std::fabs(p) >= hf::kEps<T> ? T(0) : T(1); }); break;
             case Op::And:
-                binary(o, a, b, n, [](T p, T q) { return (std::fabs(p) >= hf::kEps<T>) & (std::fabs(q) >= hf::kEps<T>) ? T(1) : T(0); });
+                binary(o, a, b, n, [](T p, T q) { return ((std::fabs(p) >= hf::kEps<T>) & (std::fabs(q) >= hf::kEps<T>)) ? T(1) : T(0); });
                 break;
             case Op::Or:
-                binary(o, a, b, n, [](T p, T q) { return (std::fabs(p) >= hf::kEps<T>) | (std::fabs(q) >= hf::kEps<T>) ? T(1) : T(0); });
+                binary(o, a, b, n, [](T p, T q) { return ((std::fabs(p) >= hf::kEps<T>) | (std::fabs(q) >= hf::kEps<T>)) ? T(1) : T(0); });
                 break;
             case Op::Min: binary(o, a, b, n, [](T p, T q) { return p < q ? p : q; }); break;
             case Op::Max: binary(o, a, b, n, [](T p, T q) { return p > q ? p : q; }); break;

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Runs the parser fuzzer for a bounded time (seconds, default 60), seeded
-# with the bundled and shared HyperFun files. Needs `cmake --preset fuzz`.
+# Runs the fuzzers for a bounded time (seconds, default 60, for the HyperFun
+# parser; half as long for the garden files and replay scripts), seeded with
+# the bundled and shared files. Needs `cmake --preset fuzz`.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${1:-60}"
@@ -11,3 +12,9 @@ for dir in content/hyperfun ../shared/hyperfun/conformance ../shared/hyperfun/co
 done
 ./build/fuzz/tests/fuzz/hg_parser_fuzz -max_total_time="$seconds" -max_len=4096 -timeout=10 \
   -rss_limit_mb=2048 "$corpus"
+
+json="build/fuzz/corpus-json"
+mkdir -p "$json"
+cp -f content/gardens/*.json content/replays/*.json "$json"/
+./build/fuzz/tests/fuzz/hg_garden_files_fuzz -max_total_time="$(( (seconds + 1) / 2 ))" -max_len=8192 -timeout=10 \
+  -rss_limit_mb=2048 "$json"

@@ -121,6 +121,15 @@ json parseStrictJson(const std::string& text) {
         if (offset > 0 && text[offset - 1] == '\n') column = 1;
         throw JsonError("line " + std::to_string(line) + ", column " + std::to_string(column),
                         "invalid JSON: " + syntaxReason(e.what()));
+    } catch (const json::out_of_range&) {
+        // A number past double's range (1e999): the value being read when
+        // the parser gave up. Found by the fuzzer.
+        std::string path = "$";
+        if (!stack.empty()) {
+            const Frame& top = stack.back();
+            path = top.array ? indexPath(top.path, top.next) : childPath(top.path, top.key);
+        }
+        throw JsonError(path, "a number too large for a double");
     }
 }
 

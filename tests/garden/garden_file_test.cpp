@@ -229,6 +229,13 @@ TEST_F(GardenFile, DuplicateKeysAndSyntaxErrorsAreRefused) {
         EXPECT_EQ(e.path(), "line 4, column 10") << e.what();
         EXPECT_NE(e.reason().find("invalid JSON"), std::string::npos) << e.what();
     }
+    try {  // found by the fuzzer: nlohmann-json throws out_of_range for these
+        parseGarden("{\"version\": 1, \"ground\": {\"size\": [1, 8e999]}}", "g.json", dir.string());
+        ADD_FAILURE() << "accepted a number past double's range";
+    } catch (const JsonError& e) {
+        EXPECT_EQ(e.path(), "$.ground.size[1]") << e.what();
+        EXPECT_EQ(e.reason(), "a number too large for a double");
+    }
     GardenLoad none = loadGarden((dir / "nope.json").string());
     EXPECT_FALSE(none.ok());
     EXPECT_NE(none.error.find("cannot open the garden file"), std::string::npos) << none.error;
