@@ -262,7 +262,7 @@ struct Summary {
     double meanTotal = 0.0, p95Total = 0.0, maxTotal = 0.0;
     double at90HzSeconds = 0.0;  // every frame rounded up to whole display periods
     double samplesPerFrame = 0.0, chunksPerFrame = 0.0, pendingMean = 0.0;
-    std::size_t chunksMeshed = 0, overBudget = 0;
+    std::size_t chunksMeshed = 0, chunksShown = 0, overBudget = 0;
     double meanShown = 0.0, meanDrawn = 0.0;
     std::size_t maxShown = 0, maxDrawn = 0;
 };
@@ -284,6 +284,7 @@ Summary summarize(const Run& run, double budgetMs) {
         s.at90HzSeconds += std::max(1.0, std::ceil(f.totalMs / budgetMs - 1e-9)) * budgetMs * 1e-3;
         s.samplesPerFrame += static_cast<double>(f.morphSamples);
         s.chunksMeshed += f.chunksMeshed;
+        s.chunksShown += f.chunksShown;
         s.pendingMean += static_cast<double>(f.remeshPending);
         s.overBudget += f.totalMs > budgetMs ? 1 : 0;
         s.meanDrawn += static_cast<double>(f.trianglesDrawn);
@@ -335,6 +336,10 @@ std::string seedColumn(std::uint64_t samples) {
 // --- 1. the morph ------------------------------------------------------------
 
 void morphTable(const Options& o, nlohmann::json& json) {
+    bool anyRow = false;
+    for (int res : o.resolutions)
+        for (std::uint64_t n : o.samples) anyRow = anyRow || o.bench.matches("morph/" + std::to_string(res) + "/" + std::to_string(n));
+    if (!anyRow) return;
     const bool gl = o.offscreen;
     std::printf("Morph: the default garden (every sculpture and the result at RES^3), viewer 6.5 m in front of the\n"
                 "result; selector from the centroid to halfway to the dryad; remesh: %s. Mean CPU ms per frame.\n\n",
@@ -343,6 +348,7 @@ void morphTable(const Options& o, nlohmann::json& json) {
                 "frames over 11.1 ms | chunks meshed | shown, back to back (s) | shown at 90 Hz (s) | seed 004: fps (morph %%) |\n",
                 gl ? " upload | render |" : "");
     std::printf("|---:|---:|---:|---:|---:|---:|---:|%s---:|---:|---:|---:|---:|---:|---:|---:|---|\n", gl ? "---:|---:|" : "");
+    std::vector<std::string> notes;
     for (int res : o.resolutions) {
         bool any = false;
         for (std::uint64_t n : o.samples) any = any || o.bench.matches("morph/" + std::to_string(res) + "/" + std::to_string(n));
@@ -354,6 +360,14 @@ void morphTable(const Options& o, nlohmann::json& json) {
             continue;
         }
         std::fprintf(stderr, "morph %d: %d sculptures sampled in %.1f s\n", res, scene->sculptures, scene->buildSeconds);
+        std::size_t resultChunks = 0;
+        std::uint64_t resultVoxels = 0;
+        for (const SculptureState& st : scene->session->sculptures())
+            if (st.morphResult) {
+                resultChunks = st.layout->count();
+                resultVoxels = st.volume->frame.indexBox.volume();
+            }
+        std::uint64_t reblendSamples = 0;
         // Where the viewer stands: on the path, 6.5 m in front of the result, looking at its middle.
         ReplayScript place = baseScript(o);
         place.steps.resize(1);
@@ -399,6 +413,7 @@ void morphTable(const Options& o, nlohmann::json& json) {
             }
             const Summary& s = bestSummary;
             const bool done = best.error.empty();
+            reblendSamples = best.frames.front().morphSamples + best.frames.front().morphPending;
             const double fps = 1000.0 / s.meanTotal;
             const double morphPct = 100.0 * stage(s.meanStage, Stage::Morph) / s.meanTotal;
             char glCols[64] = "";
@@ -418,19 +433,30 @@ void morphTable(const Options& o, nlohmann::json& json) {
                                      {"mean_total_ms", s.meanTotal}, {"p95_total_ms", s.p95Total},
                                      {"max_total_ms", s.maxTotal}, {"fps", fps}, {"morph_percent", morphPct},
                                      {"frames_over_budget", s.overBudget}, {"chunks_meshed", s.chunksMeshed},
+                                     {"chunks_shown", s.chunksShown},
                                      {"mean_samples_per_frame", s.samplesPerFrame},
                                      {"shown_back_to_back_s", best.wallSeconds}, {"shown_at_90hz_s", s.at90HzSeconds},
                                      {"shown_at_90hz_s_all_runs", all},
                                      {"last_frame_uploads_pending", best.frames.back().uploadsPending},
                                      {"offscreen", gl}});
         }
+        char b[200];
+        std::snprintf(b, sizeof b, "%d^3: %d sculptures; the result: %llu voxels in %zu chunks of 32^3, %llu samples per re-blend",
+                      res, scene->sculptures, static_cast<unsigned long long>(resultVoxels), resultChunks,
+                      static_cast<unsigned long long>(reblendSamples));
+        notes.push_back(b);
     }
+    std::printf("\n");
+    for (const std::string& n : notes) std::printf("%s\n", n.c_str());
     std::printf("\n");
 }
 
 // --- 2. navigation -------------------------------------------------------------
 
 void navigationTable(const Options& o, nlohmann::json& json) {
+    bool anyRow = false;
+    for (const char* n : {"nav/keys/lod", "nav/keys/nolod", "nav/all/lod", "nav/all/nolod"}) anyRow = anyRow || o.bench.matches(n);
+    if (!anyRow) return;
     ReplayScript walk;
     const std::string path = std::string(HG_SOURCE_DIR) + "/content/replays/garden_walk.json";
     try {
@@ -459,9 +485,9 @@ void navigationTable(const Options& o, nlohmann::json& json) {
                 o.walkSpeed, walkScript.totalFrames(),
                 o.remeshChunks ? (std::to_string(o.remeshChunks) + " chunks per frame").c_str() : "the scheduler's time");
     std::printf("| scene | sculptures | LOD | input | lod | morph | remesh |%s total | total p95 | frames over 11.1 ms | "
-                "chunks meshed/frame | chunks waiting (mean) | triangles shown (mean) | triangles shown (max) |%s\n",
+                "chunks meshed/frame | new meshes shown | chunks waiting (mean) | triangles shown (mean) | triangles shown (max) |%s\n",
                 gl ? " upload | render |" : "", gl ? " triangles drawn (mean) |" : "");
-    std::printf("|---|---:|---|---:|---:|---:|---:|%s---:|---:|---:|---:|---:|---:|---:|%s\n", gl ? "---:|---:|" : "",
+    std::printf("|---|---:|---|---:|---:|---:|---:|%s---:|---:|---:|---:|---:|---:|---:|---:|%s\n", gl ? "---:|---:|" : "",
                 gl ? "---:|" : "");
     std::vector<std::string> ratios;
     for (const bool keysOnly : {true, false}) {
@@ -511,11 +537,11 @@ void navigationTable(const Options& o, nlohmann::json& json) {
                 glCols = " " + cell(Stage::Upload) + " | " + cell(Stage::Render) + " |";
                 drawn = " " + std::to_string(static_cast<long long>(std::llround(s.meanDrawn))) + " |";
             }
-            std::printf("| %s | %d | %s | %s | %s | %s | %s |%s %.2f (%.1f) | %.2f | %zu of %zu | %.1f | %.1f | %.0f | %zu |%s\n",
+            std::printf("| %s | %d | %s | %s | %s | %s | %s |%s %.2f (%.1f) | %.2f | %zu of %zu | %.1f | %zu | %.1f | %.0f | %zu |%s\n",
                         keysOnly ? "three keys + morph result" : "default garden", sculptures, lod ? "on" : "off",
                         cell(Stage::Input).c_str(), cell(Stage::Lod).c_str(), cell(Stage::Morph).c_str(),
                         cell(Stage::Remesh).c_str(), glCols.c_str(), s.meanTotal, s.maxTotal, s.p95Total,
-                        s.overBudget, best.frames.size(), s.chunksPerFrame, s.pendingMean, s.meanShown, s.maxShown,
+                        s.overBudget, best.frames.size(), s.chunksPerFrame, s.chunksShown, s.pendingMean, s.meanShown, s.maxShown,
                         drawn.c_str());
             std::fflush(stdout);
             (lod ? shownOn : shownOff) = s.meanShown;
@@ -527,6 +553,7 @@ void navigationTable(const Options& o, nlohmann::json& json) {
                                           {"p95_total_ms", s.p95Total}, {"max_total_ms", s.maxTotal},
                                           {"mean_total_ms_all_runs", allMeans}, {"frames_over_budget", s.overBudget},
                                           {"chunks_meshed_per_frame", s.chunksPerFrame},
+                                          {"chunks_shown", s.chunksShown},
                                           {"chunks_waiting_mean", s.pendingMean},
                                           {"triangles_shown_mean", s.meanShown}, {"triangles_shown_max", s.maxShown},
                                           {"triangles_drawn_mean", s.meanDrawn}, {"triangles_drawn_max", s.maxDrawn},
