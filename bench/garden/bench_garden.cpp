@@ -1,0 +1,599 @@
+// The running garden, replay-driven (issue 5; DESIGN §9): GardenSession
+// frames played by runReplay, headless (input, level selection, morph,
+// remesh) or with --offscreen (the upload and render stages too, through
+// OffscreenGarden: a hidden GL 3.3 window; needs xvfb-run -a here).
+//
+//  1. Morph (seed 004's Table 1): the default garden with every sculpture
+//     and the morph at 128^3 and 256^3, the viewer on the path 6.5 m in
+//     front of the morph result. From a settled garden with the selector at
+//     the triangle's centroid, the selector moves halfway to the dryad; the
+//     frames then blend N samples each (N from 1,600 to 1,000,000) and
+//     remesh with the scheduler's time (or --remesh-chunks) until the morph
+//     and every remesh queue have drained. Per row: frames, mean CPU ms per
+//     stage, the frame rate, and the time from the selection until the
+//     result is shown whole: back to back (frames as fast as they run) and
+//     at 90 Hz (each frame rounded up to whole 11.1 ms display periods).
+//  2. Navigation: content/replays/garden_walk.json (the approach path, then
+//     one lap of the circuit facing the centre) at 256^3, LOD on and off,
+//     for the three key sculptures and the morph result (four sculptures)
+//     and for the whole default garden (ten); the garden is settled first,
+//     then the walk is timed. Mean, 95th percentile and max CPU ms per frame
+//     per stage, chunks remeshed, triangles shown (and drawn, offscreen).
+//
+// Prints Markdown tables; --json FILE writes the rows too.
+//
+//   ./build/release/bench/bench_garden [--json FILE] [--filter NAME] [--repeat N]
+//       [--offscreen] [--viewport WxH] [--max-frames N] [--remesh-chunks N]
+//       [--walk-speed S] [--samples N,N,...] [--resolutions R,R]
+//
+// Row names for --filter: morph/128/1600 ... morph/256/1000000,
+// nav/keys/lod, nav/keys/nolod, nav/all/lod, nav/all/nolod.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <limits>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "../bench_common.h"
+
+#include "garden/app/garden_session.h"
+#include "garden/replay/replay_runner.h"
+#include "garden/replay/replay_script.h"
+#include "garden/scene/json_reader.h"
+
+#ifdef HG_BENCH_OFFSCREEN
+#include "garden/desktop/offscreen_garden.h"
+#endif
+
+namespace {
+
+using namespace hg;
+using namespace hg::garden;
+using Clock = std::chrono::steady_clock;
+
+constexpr std::uint64_t kUnlimited = std::uint64_t{1} << 40;
+
+struct Options {
+    bench::BenchArgs bench;
+    bool offscreen = false;
+    int width = 1280, height = 720;
+    int maxFrames = 30000;
+    std::size_t remeshChunks = 0;  // 0: the scheduler's time
+    double walkSpeed = 1.0;
+    std::vector<std::uint64_t> samples{1600, 6400, 25600, 64000, 250000, 1000000};
+    std::vector<int> resolutions{128, 256};
+};
+
+template <class T>
+std::vector<T> parseList(const std::string& text) {
+    std::vector<T> out;
+    std::stringstream in(text);
+    std::string item;
+    while (std::getline(in, item, ','))
+        if (!item.empty()) out.push_back(static_cast<T>(std::strtoull(item.c_str(), nullptr, 10)));
+    return out;
+}
+
+// Our flags first; what is left goes to parseBenchArgs.
+bool parseOptions(int argc, char** argv, Options& o) {
+    std::vector<char*> rest{argv[0]};
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        const bool hasValue = i + 1 < argc;
+        if (a == "--offscreen") o.offscreen = true;
+        else if (a == "--viewport" && hasValue) {
+            if (std::sscanf(argv[++i], "%dx%d", &o.width, &o.height) != 2 || o.width <= 0 || o.height <= 0) {
+                std::fprintf(stderr, "--viewport: expected WxH\n");
+                return false;
+            }
+        } else if (a == "--max-frames" && hasValue) o.maxFrames = std::max(1, std::atoi(argv[++i]));
+        else if (a == "--remesh-chunks" && hasValue) o.remeshChunks = std::strtoull(argv[++i], nullptr, 10);
+        else if (a == "--walk-speed" && hasValue) o.walkSpeed = std::clamp(std::atof(argv[++i]), 0.1, 20.0);
+        else if (a == "--samples" && hasValue) o.samples = parseList<std::uint64_t>(argv[++i]);
+        else if (a == "--resolutions" && hasValue) o.resolutions = parseList<int>(argv[++i]);
+        else rest.push_back(argv[i]);
+    }
+    if (!bench::parseBenchArgs(static_cast<int>(rest.size()), rest.data(), o.bench)) {
+        std::fprintf(stderr,
+                     "       [--offscreen] [--viewport WxH] [--max-frames N] [--remesh-chunks N] [--walk-speed S]\n"
+                     "       [--samples N,N,...] [--resolutions R,R]\n");
+        return false;
+    }
+    return true;
+}
+
+// Between remesh() and endFrame(): counts the triangles on show (its own
+// time is taken off the frame's total afterwards), then uploads and draws
+// when there is a GL renderer behind it.
+class Recorder : public FrameRenderer {
+public:
+    explicit Recorder(FrameRenderer* inner) : inner_(inner) {}
+    void render(GardenSession& session) override {
+        session.scheduler().endStage();
+        const auto t0 = Clock::now();
+        shown.push_back(session.trianglesShown());
+        countMs.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
+        if (inner_) inner_->render(session);
+    }
+    std::string screenshot(const std::string& path) override {
+        return inner_ ? inner_->screenshot(path) : "no renderer";
+    }
+    void clear() {
+        shown.clear();
+        countMs.clear();
+    }
+    std::vector<std::size_t> shown;
+    std::vector<double> countMs;
+
+private:
+    FrameRenderer* inner_;
+};
+
+// A session of the default garden with its renderer (offscreen, when asked).
+struct Scene {
+    std::unique_ptr<GardenSession> session;
+#ifdef HG_BENCH_OFFSCREEN
+    std::unique_ptr<OffscreenGarden> offscreen;
+#endif
+    std::unique_ptr<Recorder> recorder;
+    double buildSeconds = 0.0;
+    int sculptures = 0;
+};
+
+std::string defaultGarden() { return std::string(HG_SOURCE_DIR) + "/content/gardens/default.json"; }
+
+// keysOnly: the three key sculptures (the morph's sources) and the result.
+std::unique_ptr<Scene> makeScene(const Options& o, int resolution, bool lod, bool keysOnly, std::string& error) {
+    GardenLoad load = loadGarden(defaultGarden());
+    if (!load.ok() || !load.morphError.empty()) {
+        error = "default garden: " + load.error + load.morphError;
+        return nullptr;
+    }
+    if (keysOnly) {  // the sources are sculptures 0-2 (the morph refers to them by index)
+        for (std::size_t i = 0; i < 3; ++i)
+            if (load.garden->morph->sourceIndex[i] != i) {
+                error = "the default garden's morph sources are not its first three sculptures";
+                return nullptr;
+            }
+        load.garden->sculptures.resize(3);
+        load.sculptures.resize(3);
+    }
+    SessionSettings settings;
+    settings.lod = lod;
+    settings.sculptureResolution = resolution;
+    settings.morphResolution = resolution;
+    settings.viewportHeight = o.height;
+    auto scene = std::make_unique<Scene>();
+    const auto t0 = Clock::now();
+    scene->session = std::make_unique<GardenSession>(std::move(load), settings);
+    scene->buildSeconds = std::chrono::duration<double>(Clock::now() - t0).count();
+    for (const SculptureState& s : scene->session->sculptures()) {
+        if (s.missing()) {
+            error = "sculpture '" + s.name + "' is missing: " + s.error;
+            return nullptr;
+        }
+        ++scene->sculptures;
+    }
+    FrameRenderer* inner = nullptr;
+#ifdef HG_BENCH_OFFSCREEN
+    if (o.offscreen) {
+        scene->offscreen = OffscreenGarden::create(o.width, o.height, error);
+        if (!scene->offscreen) return nullptr;
+        inner = scene->offscreen.get();
+    }
+#endif
+    scene->recorder = std::make_unique<Recorder>(inner);
+    return scene;
+}
+
+ReplayCommand poseCommand(double x, double y, double z, double yawDeg, double pitchDeg) {
+    ReplayCommand c;
+    c.kind = ReplayCommand::Kind::Pose;
+    c.vec = {x, y, z};
+    c.pair = {yawDeg, pitchDeg};
+    return c;
+}
+
+ReplayCommand morphCommand(double x, double z) {
+    ReplayCommand c;
+    c.kind = ReplayCommand::Kind::Morph;
+    c.pair = {x, z};
+    return c;
+}
+
+ReplayScript baseScript(const Options& o) {
+    ReplayScript s;
+    s.file = "bench_garden";
+    s.garden = defaultGarden();
+    s.timestep = 1.0 / 90.0;
+    s.budgetMs = 11.1;
+    s.viewport = {o.width, o.height};
+    return s;
+}
+
+// Plays `script` with unlimited work per frame until it ends (settling).
+std::string settle(Scene& scene, const ReplayScript& script) {
+    SessionSettings& st = scene.session->settings();
+    const std::uint64_t samples = st.morphSamplesPerFrame;
+    const std::size_t chunks = st.remeshChunksPerFrame;
+    st.morphSamplesPerFrame = kUnlimited;
+    st.remeshChunksPerFrame = std::numeric_limits<std::size_t>::max() / 2;
+    ReplayResult r = runReplay(script, *scene.session, scene.recorder.get(), ReplayOptions{});
+    st.morphSamplesPerFrame = samples;
+    st.remeshChunksPerFrame = chunks;
+    scene.recorder->clear();
+    return r.error;
+}
+
+// What a timed run measured, per frame with the recorder's time taken off.
+struct Run {
+    std::string error;
+    std::vector<FrameStats> frames;
+    std::vector<std::size_t> shown;
+    double wallSeconds = 0.0;
+};
+
+Run timedRun(Scene& scene, const ReplayScript& script) {
+    Run run;
+    scene.recorder->clear();
+    const auto t0 = Clock::now();
+    ReplayResult r = runReplay(script, *scene.session, scene.recorder.get(), ReplayOptions{});
+    run.wallSeconds = std::chrono::duration<double>(Clock::now() - t0).count();
+    run.error = r.error;
+    run.frames = std::move(r.stats);
+    run.shown = scene.recorder->shown;
+    for (std::size_t i = 0; i < run.frames.size() && i < scene.recorder->countMs.size(); ++i) {
+        run.frames[i].totalMs -= scene.recorder->countMs[i];
+        run.wallSeconds -= scene.recorder->countMs[i] * 1e-3;
+    }
+    return run;
+}
+
+struct Summary {
+    std::array<double, kStageCount> meanStage{}, maxStage{};
+    double meanTotal = 0.0, p95Total = 0.0, maxTotal = 0.0;
+    double at90HzSeconds = 0.0;  // every frame rounded up to whole display periods
+    double samplesPerFrame = 0.0, chunksPerFrame = 0.0, pendingMean = 0.0;
+    std::size_t chunksMeshed = 0, chunksShown = 0, overBudget = 0;
+    double meanShown = 0.0, meanDrawn = 0.0;
+    std::size_t maxShown = 0, maxDrawn = 0;
+};
+
+Summary summarize(const Run& run, double budgetMs) {
+    Summary s;
+    const std::size_t n = run.frames.size();
+    if (n == 0) return s;
+    std::vector<double> totals;
+    for (std::size_t i = 0; i < n; ++i) {
+        const FrameStats& f = run.frames[i];
+        for (std::size_t k = 0; k < kStageCount; ++k) {
+            s.meanStage[k] += f.stageMs[k];
+            s.maxStage[k] = std::max(s.maxStage[k], f.stageMs[k]);
+        }
+        totals.push_back(f.totalMs);
+        s.meanTotal += f.totalMs;
+        s.maxTotal = std::max(s.maxTotal, f.totalMs);
+        s.at90HzSeconds += std::max(1.0, std::ceil(f.totalMs / budgetMs - 1e-9)) * budgetMs * 1e-3;
+        s.samplesPerFrame += static_cast<double>(f.morphSamples);
+        s.chunksMeshed += f.chunksMeshed;
+        s.chunksShown += f.chunksShown;
+        s.pendingMean += static_cast<double>(f.remeshPending);
+        s.overBudget += f.totalMs > budgetMs ? 1 : 0;
+        s.meanDrawn += static_cast<double>(f.trianglesDrawn);
+        s.maxDrawn = std::max(s.maxDrawn, f.trianglesDrawn);
+        if (i < run.shown.size()) {
+            s.meanShown += static_cast<double>(run.shown[i]);
+            s.maxShown = std::max(s.maxShown, run.shown[i]);
+        }
+    }
+    const double dn = static_cast<double>(n);
+    for (auto& v : s.meanStage) v /= dn;
+    s.meanTotal /= dn;
+    s.samplesPerFrame /= dn;
+    s.chunksPerFrame = static_cast<double>(s.chunksMeshed) / dn;
+    s.pendingMean /= dn;
+    s.meanShown /= dn;
+    s.meanDrawn /= dn;
+    std::sort(totals.begin(), totals.end());
+    s.p95Total = totals[std::min(n - 1, static_cast<std::size_t>(std::ceil(0.95 * dn)) - 1)];
+    return s;
+}
+
+double stage(const std::array<double, kStageCount>& a, Stage s) { return a[static_cast<std::size_t>(s)]; }
+
+nlohmann::json stagesJson(const std::array<double, kStageCount>& a) {
+    nlohmann::json j = nlohmann::json::object();
+    for (int k = 0; k < kStageCount; ++k) j[stageName(static_cast<Stage>(k))] = a[static_cast<std::size_t>(k)];
+    return j;
+}
+
+// Seed 004, Table 1: frame rate and the metamorphosis' share of the frame.
+struct SeedRow {
+    std::uint64_t samples;
+    double fps, morphPercent;
+};
+constexpr SeedRow kSeed004[] = {{64000, 1.37, 92.9}, {32000, 2.56, 86.5}, {16000, 4.56, 75.3}, {8000, 7.41, 61.5},
+                                {6400, 8.45, 55.8},  {3200, 11.65, 39.6}, {1600, 14.04, 26.7}};
+
+std::string seedColumn(std::uint64_t samples) {
+    for (const SeedRow& r : kSeed004)
+        if (r.samples == samples) {
+            char b[64];
+            std::snprintf(b, sizeof b, "%.2f fps (%.0f%%)", r.fps, r.morphPercent);
+            return b;
+        }
+    return "-";
+}
+
+// --- 1. the morph ------------------------------------------------------------
+
+void morphTable(const Options& o, nlohmann::json& json) {
+    bool anyRow = false;
+    for (int res : o.resolutions)
+        for (std::uint64_t n : o.samples) anyRow = anyRow || o.bench.matches("morph/" + std::to_string(res) + "/" + std::to_string(n));
+    if (!anyRow) return;
+    const bool gl = o.offscreen;
+    std::printf("Morph: the default garden (every sculpture and the result at RES^3), viewer 6.5 m in front of the\n"
+                "result; selector from the centroid to halfway to the dryad; remesh: %s. Mean CPU ms per frame.\n\n",
+                o.remeshChunks ? (std::to_string(o.remeshChunks) + " chunks per frame").c_str() : "the scheduler's time");
+    std::printf("| res | samples/frame | frames | input | lod | morph | remesh |%s total | max | fps | morph %% | "
+                "frames over 11.1 ms | chunks meshed | shown, back to back (s) | shown at 90 Hz (s) | seed 004: fps (morph %%) |\n",
+                gl ? " upload | render |" : "");
+    std::printf("|---:|---:|---:|---:|---:|---:|---:|%s---:|---:|---:|---:|---:|---:|---:|---:|---|\n", gl ? "---:|---:|" : "");
+    std::vector<std::string> notes;
+    for (int res : o.resolutions) {
+        bool any = false;
+        for (std::uint64_t n : o.samples) any = any || o.bench.matches("morph/" + std::to_string(res) + "/" + std::to_string(n));
+        if (!any) continue;
+        std::string error;
+        std::unique_ptr<Scene> scene = makeScene(o, res, true, false, error);
+        if (!scene) {
+            std::fprintf(stderr, "morph %d: %s\n", res, error.c_str());
+            continue;
+        }
+        std::fprintf(stderr, "morph %d: %d sculptures sampled in %.1f s\n", res, scene->sculptures, scene->buildSeconds);
+        std::size_t resultChunks = 0;
+        std::uint64_t resultVoxels = 0;
+        for (const SculptureState& st : scene->session->sculptures())
+            if (st.morphResult) {
+                resultChunks = st.layout->count();
+                resultVoxels = st.volume->frame.indexBox.volume();
+            }
+        std::uint64_t reblendSamples = 0;
+        // Where the viewer stands: on the path, 6.5 m in front of the result, looking at its middle.
+        ReplayScript place = baseScript(o);
+        place.steps.resize(1);
+        place.steps[0].commands = {poseCommand(0.0, 1.7, 6.5, 0.0, -6.0)};
+        for (std::uint64_t n : o.samples) {
+            const std::string name = "morph/" + std::to_string(res) + "/" + std::to_string(n);
+            if (!o.bench.matches(name)) continue;
+            scene->session->settings().morphSamplesPerFrame = n;
+            scene->session->settings().remeshChunksPerFrame = o.remeshChunks;
+            // From the settled blend at the centroid to a point halfway to
+            // the dryad; best of --repeat by the time on screen at 90 Hz.
+            ReplayScript from = baseScript(o), to = baseScript(o);
+            from.steps.resize(2);
+            from.steps[0].commands = place.steps[0].commands;
+            from.steps[0].commands.push_back(morphCommand(0.0, 0.0));
+            from.steps[1].untilIdle = true;
+            from.steps[1].frames = 100000;
+            to.steps.resize(2);
+            to.steps[0].commands = {morphCommand(0.0, -2.0)};
+            to.steps[1].untilIdle = true;
+            to.steps[1].frames = std::max(1, o.maxFrames - 1);
+            Run best;
+            Summary bestSummary;
+            std::vector<double> all;
+            for (int r = 0; r < o.bench.repeat; ++r) {
+                error = settle(*scene, from);
+                if (!error.empty()) break;
+                Run run = timedRun(*scene, to);
+                if (!run.error.empty() && run.frames.empty()) {
+                    error = run.error;
+                    break;
+                }
+                Summary s = summarize(run, to.budgetMs);
+                all.push_back(s.at90HzSeconds);
+                if (best.frames.empty() || s.at90HzSeconds < bestSummary.at90HzSeconds) {
+                    best = std::move(run);
+                    bestSummary = s;
+                }
+            }
+            if (best.frames.empty()) {
+                std::fprintf(stderr, "%s: %s\n", name.c_str(), error.c_str());
+                continue;
+            }
+            const Summary& s = bestSummary;
+            const bool done = best.error.empty();
+            reblendSamples = best.frames.front().morphSamples + best.frames.front().morphPending;
+            const double fps = 1000.0 / s.meanTotal;
+            const double morphPct = 100.0 * stage(s.meanStage, Stage::Morph) / s.meanTotal;
+            char glCols[64] = "";
+            if (gl)
+                std::snprintf(glCols, sizeof glCols, " %.2f | %.2f |", stage(s.meanStage, Stage::Upload),
+                              stage(s.meanStage, Stage::Render));
+            std::printf("| %d | %llu | %zu%s | %.2f | %.2f | %.2f | %.2f |%s %.2f | %.1f | %.1f | %.0f%% | %zu | %zu | %.2f | %.2f | %s |\n",
+                        res, static_cast<unsigned long long>(n), best.frames.size(), done ? "" : " (cap)",
+                        stage(s.meanStage, Stage::Input), stage(s.meanStage, Stage::Lod), stage(s.meanStage, Stage::Morph),
+                        stage(s.meanStage, Stage::Remesh), glCols, s.meanTotal, s.maxTotal, fps, morphPct, s.overBudget,
+                        s.chunksMeshed, best.wallSeconds, s.at90HzSeconds, seedColumn(n).c_str());
+            std::fflush(stdout);
+            json["morph"].push_back({{"name", name}, {"resolution", res}, {"samples_per_frame", n},
+                                     {"sculptures", scene->sculptures}, {"frames", best.frames.size()},
+                                     {"drained", done}, {"error", best.error},
+                                     {"mean_stage_ms", stagesJson(s.meanStage)}, {"max_stage_ms", stagesJson(s.maxStage)},
+                                     {"mean_total_ms", s.meanTotal}, {"p95_total_ms", s.p95Total},
+                                     {"max_total_ms", s.maxTotal}, {"fps", fps}, {"morph_percent", morphPct},
+                                     {"frames_over_budget", s.overBudget}, {"chunks_meshed", s.chunksMeshed},
+                                     {"chunks_shown", s.chunksShown},
+                                     {"mean_samples_per_frame", s.samplesPerFrame},
+                                     {"shown_back_to_back_s", best.wallSeconds}, {"shown_at_90hz_s", s.at90HzSeconds},
+                                     {"shown_at_90hz_s_all_runs", all},
+                                     {"last_frame_uploads_pending", best.frames.back().uploadsPending},
+                                     {"offscreen", gl}});
+        }
+        char b[200];
+        std::snprintf(b, sizeof b, "%d^3: %d sculptures; the result: %llu voxels in %zu chunks of 32^3, %llu samples per re-blend",
+                      res, scene->sculptures, static_cast<unsigned long long>(resultVoxels), resultChunks,
+                      static_cast<unsigned long long>(reblendSamples));
+        notes.push_back(b);
+    }
+    std::printf("\n");
+    for (const std::string& n : notes) std::printf("%s\n", n.c_str());
+    std::printf("\n");
+}
+
+// --- 2. navigation -------------------------------------------------------------
+
+void navigationTable(const Options& o, nlohmann::json& json) {
+    bool anyRow = false;
+    for (const char* n : {"nav/keys/lod", "nav/keys/nolod", "nav/all/lod", "nav/all/nolod"}) anyRow = anyRow || o.bench.matches(n);
+    if (!anyRow) return;
+    ReplayScript walk;
+    const std::string path = std::string(HG_SOURCE_DIR) + "/content/replays/garden_walk.json";
+    try {
+        walk = loadReplayScript(path);
+    } catch (const JsonError& e) {
+        std::fprintf(stderr, "%s: %s\n", path.c_str(), e.what());
+        return;
+    }
+    // Settling: every step up to the last until_idle one; then the walk, at
+    // --walk-speed times the stroll (the same path in fewer frames).
+    std::size_t split = 0;
+    for (std::size_t i = 0; i < walk.steps.size(); ++i)
+        if (walk.steps[i].untilIdle) split = i + 1;
+    ReplayScript settleScript = walk, walkScript = walk;
+    settleScript.steps.resize(split);
+    walkScript.steps.erase(walkScript.steps.begin(), walkScript.steps.begin() + static_cast<std::ptrdiff_t>(split));
+    for (ReplayStep& st : walkScript.steps) {
+        st.frames = std::max(1, static_cast<int>(std::lround(st.frames / o.walkSpeed)));
+        st.hands.speedScale *= static_cast<float>(o.walkSpeed);
+        st.hands.look *= static_cast<float>(o.walkSpeed);
+    }
+    walkScript.viewport = {o.width, o.height};
+    const bool gl = o.offscreen;
+    std::printf("Navigation: content/replays/garden_walk.json (approach, one lap of the circuit facing the centre), "
+                "walk speed x%.2f, %d frames, 256^3, remesh: %s. CPU ms per frame: mean (max).\n\n",
+                o.walkSpeed, walkScript.totalFrames(),
+                o.remeshChunks ? (std::to_string(o.remeshChunks) + " chunks per frame").c_str() : "the scheduler's time");
+    std::printf("| scene | sculptures | LOD | input | lod | morph | remesh |%s total | total p95 | frames over 11.1 ms | "
+                "chunks meshed/frame | new meshes shown | chunks waiting (mean) | triangles shown (mean) | triangles shown (max) |%s\n",
+                gl ? " upload | render |" : "", gl ? " triangles drawn (mean) |" : "");
+    std::printf("|---|---:|---|---:|---:|---:|---:|%s---:|---:|---:|---:|---:|---:|---:|---:|%s\n", gl ? "---:|---:|" : "",
+                gl ? "---:|" : "");
+    std::vector<std::string> ratios;
+    for (const bool keysOnly : {true, false}) {
+        double shownOn = 0.0, shownOff = 0.0, drawnOn = 0.0, drawnOff = 0.0;
+        const std::string sceneName = keysOnly ? "keys" : "all";
+        for (const bool lod : {true, false}) {
+            const std::string name = "nav/" + sceneName + "/" + (lod ? "lod" : "nolod");
+            if (!o.bench.matches(name)) continue;
+            Run best;
+            Summary bestSummary;
+            int sculptures = 0;
+            std::vector<double> allMeans;
+            std::string error;
+            for (int r = 0; r < o.bench.repeat; ++r) {
+                // A fresh session each time: the walk starts from the same settled state.
+                std::unique_ptr<Scene> scene = makeScene(o, 256, lod, keysOnly, error);
+                if (!scene) break;
+                sculptures = scene->sculptures;
+                scene->session->settings().morphSamplesPerFrame = 0;
+                scene->session->settings().remeshChunksPerFrame = o.remeshChunks;
+                error = settle(*scene, settleScript);
+                if (!error.empty()) break;
+                Run run = timedRun(*scene, walkScript);
+                if (!run.error.empty()) {
+                    error = run.error;
+                    break;
+                }
+                Summary s = summarize(run, walkScript.budgetMs);
+                allMeans.push_back(s.meanTotal);
+                if (best.frames.empty() || s.meanTotal < bestSummary.meanTotal) {
+                    best = std::move(run);
+                    bestSummary = s;
+                }
+            }
+            if (best.frames.empty()) {
+                std::fprintf(stderr, "%s: %s\n", name.c_str(), error.c_str());
+                continue;
+            }
+            const Summary& s = bestSummary;
+            auto cell = [&](Stage st) {
+                char b[48];
+                std::snprintf(b, sizeof b, "%.2f (%.1f)", stage(s.meanStage, st), stage(s.maxStage, st));
+                return std::string(b);
+            };
+            std::string glCols, drawn;
+            if (gl) {
+                glCols = " " + cell(Stage::Upload) + " | " + cell(Stage::Render) + " |";
+                drawn = " " + std::to_string(static_cast<long long>(std::llround(s.meanDrawn))) + " |";
+            }
+            std::printf("| %s | %d | %s | %s | %s | %s | %s |%s %.2f (%.1f) | %.2f | %zu of %zu | %.1f | %zu | %.1f | %.0f | %zu |%s\n",
+                        keysOnly ? "three keys + morph result" : "default garden", sculptures, lod ? "on" : "off",
+                        cell(Stage::Input).c_str(), cell(Stage::Lod).c_str(), cell(Stage::Morph).c_str(),
+                        cell(Stage::Remesh).c_str(), glCols.c_str(), s.meanTotal, s.maxTotal, s.p95Total,
+                        s.overBudget, best.frames.size(), s.chunksPerFrame, s.chunksShown, s.pendingMean, s.meanShown, s.maxShown,
+                        drawn.c_str());
+            std::fflush(stdout);
+            (lod ? shownOn : shownOff) = s.meanShown;
+            (lod ? drawnOn : drawnOff) = s.meanDrawn;
+            json["navigation"].push_back({{"name", name}, {"sculptures", sculptures}, {"resolution", 256},
+                                          {"lod", lod}, {"frames", best.frames.size()}, {"walk_speed", o.walkSpeed},
+                                          {"mean_stage_ms", stagesJson(s.meanStage)},
+                                          {"max_stage_ms", stagesJson(s.maxStage)}, {"mean_total_ms", s.meanTotal},
+                                          {"p95_total_ms", s.p95Total}, {"max_total_ms", s.maxTotal},
+                                          {"mean_total_ms_all_runs", allMeans}, {"frames_over_budget", s.overBudget},
+                                          {"chunks_meshed_per_frame", s.chunksPerFrame},
+                                          {"chunks_shown", s.chunksShown},
+                                          {"chunks_waiting_mean", s.pendingMean},
+                                          {"triangles_shown_mean", s.meanShown}, {"triangles_shown_max", s.maxShown},
+                                          {"triangles_drawn_mean", s.meanDrawn}, {"triangles_drawn_max", s.maxDrawn},
+                                          {"offscreen", gl}});
+        }
+        if (shownOn > 0.0 && shownOff > 0.0) {
+            char b[160];
+            std::snprintf(b, sizeof b, "%s: triangles shown LOD off / on %.2fx", sceneName.c_str(), shownOff / shownOn);
+            std::string line = b;
+            if (drawnOn > 0.0) {
+                std::snprintf(b, sizeof b, ", triangles drawn LOD off / on %.2fx", drawnOff / drawnOn);
+                line += b;
+            }
+            ratios.push_back(line);
+            json["navigation_ratio"].push_back({{"scene", sceneName}, {"triangles_shown_off_over_on", shownOff / shownOn},
+                                                {"triangles_drawn_off_over_on", drawnOn > 0.0 ? drawnOff / drawnOn : 0.0}});
+        }
+    }
+    std::printf("\n");
+    for (const std::string& line : ratios) std::printf("%s\n", line.c_str());
+    std::printf("\n");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    Options o;
+    if (!parseOptions(argc, argv, o)) return 2;
+#ifndef HG_BENCH_OFFSCREEN
+    if (o.offscreen) {
+        std::fprintf(stderr, "--offscreen: this build has no renderer (configure with HG_BUILD_APP=ON)\n");
+        return 2;
+    }
+#endif
+    nlohmann::json json = {{"morph", nlohmann::json::array()}, {"navigation", nlohmann::json::array()},
+                           {"navigation_ratio", nlohmann::json::array()}};
+    json["options"] = {{"offscreen", o.offscreen}, {"viewport", {o.width, o.height}}, {"max_frames", o.maxFrames},
+                       {"remesh_chunks", o.remeshChunks}, {"walk_speed", o.walkSpeed}, {"repeat", o.bench.repeat}};
+    morphTable(o, json);
+    navigationTable(o, json);
+    if (!o.bench.jsonPath.empty()) std::ofstream(o.bench.jsonPath) << json.dump(2) << "\n";
+    return 0;
+}
