@@ -27,7 +27,8 @@ struct FrameStats {
     std::size_t remeshPending = 0;              // dirty chunks left, all sculptures
     std::size_t uploadBytes = 0;
     std::size_t uploadsPending = 0;
-    std::size_t trianglesDrawn = 0;
+    std::size_t trianglesShown = 0;             // in the meshes on show (drawn or not)
+    std::size_t trianglesDrawn = 0;             // after view culling (0 headless)
     std::size_t drawCalls = 0;
 };
 

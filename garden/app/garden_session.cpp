@@ -195,6 +195,12 @@ void GardenSession::selectLevels() {
     for (SculptureState& s : sculptures_) {
         if (s.missing()) continue;
         const std::array<double, 3> eye = toModel(s, navigator_.eye());
+        s.queue->setViewer(eye);
+        // New levels go to a queue only once it has shown the last ones:
+        // while the viewer walks, levels change every frame, and a queue that
+        // took each change would keep growing its group of dirty chunks and
+        // never show it. The levels on screen lag by one remesh instead.
+        if (s.queue->pending() > 0) continue;
         std::vector<int> levels(s.layout->count(), 0);
         if (settings_.lod) {
             poly::Camera cam;
@@ -212,7 +218,6 @@ void GardenSession::selectLevels() {
             levels = poly::selectLevels(*s.layout, cam, lod);
         }
         s.queue->setLevels(levels);
-        s.queue->setViewer(eye);
     }
 }
 
@@ -266,6 +271,7 @@ void GardenSession::remesh() {
 const FrameStats& GardenSession::endFrame() {
     FrameStats& st = stats();
     st.remeshPending = remeshPending();
+    st.trianglesShown = trianglesShown();
     st.morphPending = morphRemaining();
     return scheduler_.endFrame();
 }

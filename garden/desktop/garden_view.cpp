@@ -85,6 +85,26 @@ poly::Mesh pathMesh(const PathSpec& path, double groundHeight) {
     return m;
 }
 
+// Whether a chunk's box (model units) may show: false when all eight of its
+// corners lie beyond one plane of the view frustum.
+bool mayShow(const glm::mat4& modelViewProjection, const double lo[3], const double hi[3]) {
+    int outside[6] = {0, 0, 0, 0, 0, 0};
+    for (int c = 0; c < 8; ++c) {
+        const glm::vec4 p = modelViewProjection * glm::vec4(static_cast<float>(c & 1 ? hi[0] : lo[0]),
+                                                           static_cast<float>(c & 2 ? hi[1] : lo[1]),
+                                                           static_cast<float>(c & 4 ? hi[2] : lo[2]), 1.0f);
+        outside[0] += p.x < -p.w;
+        outside[1] += p.x > p.w;
+        outside[2] += p.y < -p.w;
+        outside[3] += p.y > p.w;
+        outside[4] += p.z < -p.w;
+        outside[5] += p.z > p.w;
+    }
+    for (int n : outside)
+        if (n == 8) return false;
+    return true;
+}
+
 }  // namespace
 
 std::size_t GardenView::upload(GardenSession& session, double allowanceMs, std::size_t& pendingSculptures) {
@@ -142,7 +162,14 @@ void GardenView::render(const GardenSession& session, glm::ivec2 viewport, float
             continue;
         }
         const RenderMaterial m = renderMaterial(st.material);
-        for (std::size_t c = 0; c < st.queue->count(); ++c) renderer_.drawChunk(chunkId(s, c), st.modelToWorld, m);
+        const glm::mat4 mvp = v.projection * v.view * st.modelToWorld;
+        for (std::size_t c = 0; c < st.queue->count(); ++c) {
+            const auto mesh = st.queue->mesh(c);
+            if (!mesh || mesh->empty()) continue;
+            double lo[3], hi[3];
+            st.layout->modelBox(c, lo, hi);
+            if (mayShow(mvp, lo, hi)) renderer_.drawChunk(chunkId(s, c), st.modelToWorld, m);
+        }
     }
     if (const auto t = session.morphTriangle()) {
         std::vector<glm::vec3> loop;

@@ -24,7 +24,8 @@ public:
     // next frame. Returns the bytes uploaded; counts what waits.
     std::size_t upload(GardenSession& session, double allowanceMs, std::size_t& pendingSculptures);
 
-    // Draws into the bound framebuffer of `viewport` pixels.
+    // Draws into the bound framebuffer of `viewport` pixels; chunks outside
+    // the view frustum are not drawn.
     void render(const GardenSession& session, glm::ivec2 viewport, float fovY);
 
     static ChunkId chunkId(std::size_t sculpture, std::size_t chunk) {

@@ -342,6 +342,9 @@ void MorphBlender::restart(const MorphWeights& weights, const std::array<double,
 void MorphBlender::setViewer(const std::array<double, 3>& viewer) {
     Impl& m = *impl_;
     m.viewer = m.toIndex(viewer);
+    // Called every frame: a viewer that has not moved keeps the order (the
+    // re-sort was most of the morph stage at small budgets).
+    if (m.viewer == m.sortedFor) return;
     // The item in progress stays first; the rest of its pass and the whole
     // of a later pass are sorted again.
     m.sortFrom(m.next + (m.nextDone > 0 ? 1 : 0));

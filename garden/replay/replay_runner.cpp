@@ -143,7 +143,8 @@ std::string statsJson(const ReplayScript& script, const ReplayResult& result) {
                           {"morph_samples", f.morphSamples}, {"morph_pending", f.morphPending},
                           {"chunks_meshed", f.chunksMeshed}, {"chunks_shown", f.chunksShown},
                           {"remesh_pending", f.remeshPending}, {"upload_bytes", f.uploadBytes},
-                          {"uploads_pending", f.uploadsPending}, {"triangles_drawn", f.trianglesDrawn},
+                          {"uploads_pending", f.uploadsPending}, {"triangles_shown", f.trianglesShown},
+                          {"triangles_drawn", f.trianglesDrawn},
                           {"draw_calls", f.drawCalls}});
     }
     const double n = std::max<double>(1.0, static_cast<double>(result.stats.size()));

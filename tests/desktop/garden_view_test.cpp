@@ -80,6 +80,15 @@ TEST_F(GardenViewTest, TheSettledGardenShowsItsSculpturesAtTheirDepth) {
     EXPECT_GT(eyeDepth(depth(kWidth / 2, kHeight - 2)), 0.3);
     EXPECT_EQ(depth(kWidth / 2, 2), 1.0f) << "sky at the top";
     EXPECT_FALSE(test::reddish(pixel(kWidth / 2, kHeight - 2)));
+
+    // Facing away from every sculpture: no chunk passes the frustum test.
+    session.navigator().setPose({2.0f, 0.5f, 9.0f}, glm::pi<float>(), 0.0f);
+    target_->bind();
+    view.render(session, {kWidth, kHeight}, glm::radians(kFovY));
+    const RenderStats away = renderer_->endFrame();
+    EXPECT_LT(away.trianglesDrawn, 16u) << "the ground at most";
+    read();
+    EXPECT_EQ(count(test::reddish), 0);
 }
 
 }  // namespace
