@@ -96,10 +96,14 @@ RemeshReport RemeshQueue::process(const RemeshBudget& budget) {
     const std::vector<std::size_t> todo = order();
     const std::size_t batch = static_cast<std::size_t>(std::max(1, tbb::this_task_arena::max_concurrency()));
     std::size_t next = 0;
+    double lastBatchMs = 0.0;
     while (next < todo.size()) {
         // The first batch always runs, so every call makes progress; the
-        // caller decides whether there is time for a call at all.
-        if (report.meshed > 0 && budget.milliseconds > 0.0 && elapsedMs() >= budget.milliseconds) break;
+        // caller decides whether there is time for a call at all. A later
+        // batch starts only if one like the last still fits: stopping once
+        // the budget is spent would overshoot it by a batch.
+        const double before = elapsedMs();
+        if (report.meshed > 0 && budget.milliseconds > 0.0 && before + lastBatchMs > budget.milliseconds) break;
         std::size_t take = std::min(batch, todo.size() - next);
         if (budget.chunks > 0) take = std::min(take, budget.chunks - report.meshed);
         if (take == 0) break;
@@ -118,6 +122,7 @@ RemeshReport RemeshQueue::process(const RemeshBudget& budget) {
         }
         report.meshed += take;
         next += take;
+        lastBatchMs = elapsedMs() - before;
     }
     report.shown = showCompleteGroups();
     report.pending = pending();

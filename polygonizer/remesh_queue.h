@@ -7,8 +7,9 @@
 //                     transition faces change are dirty;
 //   process(budget)   meshes dirty chunks on TBB workers, explicit priority
 //                     first, then nearest to the viewer, then coarser,
-//                     until the budget (milliseconds or chunks) is spent;
-//                     one batch (a chunk per worker) always runs.
+//                     while the next batch is expected to fit the budget
+//                     (milliseconds or chunks); one batch (a chunk per
+//                     worker) always runs.
 //
 // A chunk keeps showing its old mesh until its new one is ready, and new
 // meshes are shown a group at a time: a group is a set of dirty chunks
