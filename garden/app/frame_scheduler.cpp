@@ -40,7 +40,7 @@ double FrameScheduler::reserveAfter(Stage s) const {
 }
 
 double FrameScheduler::allowanceMs(Stage s) const {
-    double left = settings_.budgetMs - elapsedMs() - reserveAfter(s);
+    double left = settings_.budgetMs - settings_.marginMs - elapsedMs() - reserveAfter(s);
     if (s == Stage::Morph) left *= settings_.morphShare;
     return std::max(left, settings_.minimumMs);
 }

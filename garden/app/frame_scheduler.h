@@ -16,6 +16,9 @@ namespace hg::garden {
 struct SchedulerSettings {
     double budgetMs = 11.1;
     double morphShare = 0.5;  // of the work time left when the morph stage starts
+    // Kept free at the end of every frame: the budgeted stages stop between
+    // batches, and a batch's length is a guess.
+    double marginMs = 0.5;
     // A budgeted stage always gets this much, even in a frame already over
     // budget (a slow GPU, a software renderer): updates still progress.
     double minimumMs = 1.0;

@@ -26,7 +26,7 @@ TEST(FrameScheduler, TimesStagesAndSharesTheBudget) {
     spin(2.0);
     f.beginStage(Stage::Morph);
     const double morph = f.allowanceMs(Stage::Morph), remesh = f.allowanceMs(Stage::Remesh);
-    EXPECT_LE(morph, 0.5 * (20.0 - 2.0) + 1e-9);
+    EXPECT_LE(morph, 0.5 * (20.0 - s.marginMs - 2.0) + 1e-9) << "the margin stays free";
     EXPECT_GT(remesh, morph);
     spin(3.0);
     EXPECT_LT(f.allowanceMs(Stage::Remesh), remesh - 2.5);
@@ -44,7 +44,7 @@ TEST(FrameScheduler, TimesStagesAndSharesTheBudget) {
 
     // Next frame: the render reserve comes off the remesh allowance.
     f.beginFrame();
-    EXPECT_LE(f.allowanceMs(Stage::Remesh), 20.0 - st.stageMs[static_cast<int>(Stage::Render)] + 1e-6);
+    EXPECT_LE(f.allowanceMs(Stage::Remesh), 20.0 - s.marginMs - st.stageMs[static_cast<int>(Stage::Render)] + 1e-6);
     spin(25.0);
     EXPECT_EQ(f.allowanceMs(Stage::Remesh), s.minimumMs) << "over budget: only the minimum";
     f.endFrame();
