@@ -81,5 +81,21 @@ TEST_F(ReplayCli, BadScriptsAndGardensAreRefusedWithTheirPath) {
     EXPECT_NE(r.output.find("cannot read the script file"), std::string::npos) << r.output;
 }
 
+TEST_F(ReplayCli, TheDesktopWindowOpensTheGardenAndDrawsItsOverlay) {
+    if (!displayAvailable()) GTEST_SKIP() << "no X display: run under xvfb-run -a";
+    garden();
+    auto r = ::hg::test::runHypergarden("--garden " + path("garden.json") + " --frames 20 --no-vsync --width 320 --height 240" +
+                                        " --exit-screenshot " + path("window.png"));
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("sculpture 'lost' is missing"), std::string::npos) << r.output;
+    ASSERT_TRUE(exists("window.png"));
+    EXPECT_GT(std::filesystem::file_size(dir / "window.png"), 2000u) << "a drawn frame, not a blank one";
+    // A garden file that is refused: exit 2 and the JSON path.
+    std::ofstream(dir / "bad.json") << R"({"version": 1, "sculptures": [{"name": "x"}]})";
+    r = ::hg::test::runHypergarden("--garden " + path("bad.json") + " --frames 1");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.output.find("$.sculptures[0]"), std::string::npos) << r.output;
+}
+
 }  // namespace
 }  // namespace hg::garden
