@@ -14,6 +14,8 @@ namespace hg::garden {
 
 namespace {
 
+constexpr int kLevelRefreshFrames = 45;
+
 glm::mat4 placementMatrix(const Placement& p) {
     glm::mat4 m = glm::translate(glm::mat4(1.0f), glm::vec3(static_cast<float>(p.position[0]),
                                                             static_cast<float>(p.position[1]),
@@ -196,11 +198,14 @@ void GardenSession::selectLevels() {
         if (s.missing()) continue;
         const std::array<double, 3> eye = toModel(s, navigator_.eye());
         s.queue->setViewer(eye);
-        // New levels go to a queue only once it has shown the last ones:
-        // while the viewer walks, levels change every frame, and a queue that
-        // took each change would keep growing its group of dirty chunks and
-        // never show it. The levels on screen lag by one remesh instead.
-        if (s.queue->pending() > 0) continue;
+        // New levels go to a queue once it has shown the last ones, or at
+        // most every half second of frames: while the viewer walks, levels
+        // change every frame, and a queue that took each change would keep
+        // growing its group of dirty chunks and never show it. Yet a long
+        // morph re-blend keeps the result's queue busy, and its levels must
+        // still follow the viewer.
+        if (s.queue->pending() > 0 && ++s.framesSinceLevels < kLevelRefreshFrames) continue;
+        s.framesSinceLevels = 0;
         std::vector<int> levels(s.layout->count(), 0);
         if (settings_.lod) {
             poly::Camera cam;

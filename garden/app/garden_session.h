@@ -63,6 +63,7 @@ struct SculptureState {
     std::unique_ptr<poly::ChunkLayout> layout;
     std::unique_ptr<poly::RemeshQueue> queue;
     double voxelizeSeconds = 0.0;
+    int framesSinceLevels = 0;         // frames since the queue last took new levels
 
     bool missing() const { return !error.empty(); }
     glm::vec3 worldCentre() const;

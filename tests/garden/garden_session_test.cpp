@@ -168,6 +168,36 @@ TEST_F(GardenSessionTest, TheToolRayOnTheGroundTrianglePicksTheBlend) {
     EXPECT_EQ(s.morphWeights()->point, before);
 }
 
+TEST_F(GardenSessionTest, LevelsFollowTheViewerDuringALongReBlend) {
+    GardenSession s(loadGarden(writeGarden()), smallSettings());
+    auto frame = [&s] {
+        s.beginFrame();
+        s.input(Hands{}, 1.0 / 90.0);
+        s.selectLevels();
+        s.morph();
+        s.remesh();
+        s.endFrame();
+    };
+    const SculptureState& result = s.sculptures()[static_cast<std::size_t>(s.findSculpture("metamorphosis"))];
+    auto finest = [&result] {
+        int level = 99;
+        for (std::size_t c = 0; c < result.queue->count(); ++c) level = std::min(level, result.queue->shownLod(c).level);
+        return level;
+    };
+    // Far away: every chunk of the result coarse.
+    s.navigator().setPose({0.0f, 1.7f, 40.0f}, 0.0f, 0.0f);
+    for (int f = 0; f < 400 && !s.idle(); ++f) frame();
+    ASSERT_TRUE(s.idle());
+    ASSERT_EQ(finest(), 1);
+    // A new blend that will take thousands of frames; walk up to the result.
+    s.settings().morphSamplesPerFrame = 20;
+    s.setMorphWeights({0.1, 0.1, 0.8});
+    s.navigator().setPose({0.0f, 1.7f, 1.0f}, 0.0f, 0.0f);
+    for (int f = 0; f < 150 && finest() > 0; ++f) frame();
+    EXPECT_GT(s.morphRemaining(), 0u) << "still blending";
+    EXPECT_EQ(finest(), 0) << "the result's levels followed the viewer";
+}
+
 TEST_F(GardenSessionTest, ReplayCommandsThatCannotRunStopWithTheirPath) {
     GardenSession s(loadGarden(writeGarden()), smallSettings());
     ReplayScript script = parseReplayScript(R"({"garden": "g.json", "steps": [
