@@ -66,6 +66,36 @@ struct SampleBlock {
     }
 };
 
+// The crossing vertex of each coarse edge, kept per thread and reused by
+// every chunk it meshes: a generation stamp says which entries belong to
+// the chunk at hand, so no chunk pays for clearing its 3 (n + 1)^3 slots
+// (that clearing was a tenth of a remesh).
+class EdgeVertexTable {
+public:
+    void begin(std::size_t size) {
+        if (entries_.size() < size) entries_.resize(size, 0);
+        if (++generation_ == 0) {  // wrapped: stale stamps could match again
+            std::fill(entries_.begin(), entries_.end(), 0);
+            generation_ = 1;
+        }
+    }
+    bool find(std::size_t slot, std::uint32_t& vertex) const {
+        const std::uint64_t e = entries_[slot];
+        if ((e >> 32) != generation_) return false;
+        vertex = static_cast<std::uint32_t>(e);
+        return true;
+    }
+    void set(std::size_t slot, std::uint32_t vertex) {
+        entries_[slot] = (static_cast<std::uint64_t>(generation_) << 32) | vertex;
+    }
+
+private:
+    std::vector<std::uint64_t> entries_;
+    std::uint32_t generation_ = 0;
+};
+
+thread_local EdgeVertexTable tEdgeVertices;
+
 class ChunkMesher {
 public:
     ChunkMesher(const LodPyramid& pyramid, const ChunkLayout& layout, std::size_t chunk, const ChunkLod& lod)
@@ -85,8 +115,8 @@ public:
             coarse.hi[a] = (origin_[a] >> lod.level) + n_ + 1;
         }
         coarse_.fill(pyramid, lod.level, coarse);
-        regularVertex_.assign(3 * static_cast<std::size_t>(n_ + 1) * static_cast<std::size_t>(n_ + 1) *
-                                  static_cast<std::size_t>(n_ + 1), -1);
+        tEdgeVertices.begin(3 * static_cast<std::size_t>(n_ + 1) * static_cast<std::size_t>(n_ + 1) *
+                            static_cast<std::size_t>(n_ + 1));
         pyramid_ = &pyramid;
     }
 
@@ -129,12 +159,13 @@ private:
         const std::size_t m = static_cast<std::size_t>(n_ + 1);
         const std::size_t slot = ((static_cast<std::size_t>(axis) * m + static_cast<std::size_t>(p[2])) * m +
                                   static_cast<std::size_t>(p[1])) * m + static_cast<std::size_t>(p[0]);
-        if (regularVertex_[slot] >= 0) return static_cast<std::uint32_t>(regularVertex_[slot]);
+        std::uint32_t found = 0;
+        if (tEdgeVertices.find(slot, found)) return found;
         int q[3] = {p[0], p[1], p[2]};
         ++q[axis];
         const std::uint32_t id = addVertex(coarsePosition(p), coarsePosition(q), coarseValue(p), coarseValue(q),
                                            coarseGradient(p), coarseGradient(q));
-        regularVertex_[slot] = static_cast<std::int32_t>(id);
+        tEdgeVertices.set(slot, id);
         return id;
     }
 
@@ -295,7 +326,6 @@ private:
     int cell_ = 1, n_ = 0;
     int origin_[3] = {0, 0, 0};  // level-0 index of the chunk's low corner
     SampleBlock coarse_;
-    std::vector<std::int32_t> regularVertex_;
     std::unordered_map<std::uint32_t, std::uint32_t> fineVertex_;
     Mesh mesh_;
 };

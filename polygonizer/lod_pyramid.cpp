@@ -115,16 +115,26 @@ void LodPyramid::gather(int level, const voxel::IndexBox& box, float* out) const
                 const Leaf* leaf = tree.probeConstLeaf(Coord(bx, by, bz));
                 const float tile = leaf ? 0.0f : tree.getValue(Coord(bx, by, bz));
                 const float* data = leaf ? leaf->buffer().data() : nullptr;
+                const int i0 = std::max(bx, box.lo[0]), i1 = std::min(bx + 7, box.hi[0]);
+                // The part of the row inside the index box; the rest is background.
+                const int in0 = std::max(i0, in[0][0]), in1 = std::min(i1, in[1][0]);
                 for (int k = std::max(bz, box.lo[2]); k <= std::min(bz + 7, box.hi[2]); ++k)
                     for (int j = std::max(by, box.lo[1]); j <= std::min(by + 7, box.hi[1]); ++j) {
+                        float* rowOut = out + slot(box.lo[0], j, k);
+                        auto at = [&](int i) { return rowOut + (i - box.lo[0]); };
                         const bool jkIn = k >= in[0][2] && k <= in[1][2] && j >= in[0][1] && j <= in[1][1];
-                        float* dst = out + slot(box.lo[0], j, k);
-                        for (int i = std::max(bx, box.lo[0]); i <= std::min(bx + 7, box.hi[0]); ++i) {
-                            float v = background;
-                            if (jkIn && i >= in[0][0] && i <= in[1][0])
-                                v = data ? data[((i & 7) << 6) | ((j & 7) << 3) | (k & 7)] : tile;
-                            dst[i - box.lo[0]] = v;
+                        if (!jkIn || in0 > in1) {
+                            std::fill(at(i0), at(i1 + 1), background);
+                            continue;
                         }
+                        std::fill(at(i0), at(in0), background);
+                        std::fill(at(in1 + 1), at(i1 + 1), background);
+                        if (!data) {
+                            std::fill(at(in0), at(in1 + 1), tile);
+                            continue;
+                        }
+                        const float* row = data + (((j & 7) << 3) | (k & 7));  // leaf offsets: x << 6 | y << 3 | z
+                        for (int i = in0; i <= in1; ++i) *at(i) = row[(i & 7) << 6];
                     }
             }
 }
