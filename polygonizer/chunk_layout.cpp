@@ -27,6 +27,10 @@ ChunkKey ChunkLayout::key(std::size_t index) const {
     return k;
 }
 
+ChunkKey ChunkLayout::keyOf(int i, int j, int k) const {
+    return {floorDiv(i, size_), floorDiv(j, size_), floorDiv(k, size_)};
+}
+
 bool ChunkLayout::contains(const ChunkKey& k) const {
     const int c[3] = {k.x, k.y, k.z};
     for (int a = 0; a < 3; ++a)

@@ -24,6 +24,8 @@ public:
     std::size_t count() const { return static_cast<std::size_t>(n_[0]) * static_cast<std::size_t>(n_[1]) * static_cast<std::size_t>(n_[2]); }
     const std::array<int, 3>& dims() const { return n_; }
     ChunkKey key(std::size_t index) const;
+    // The chunk holding level-0 voxel (i, j, k), in the layout or not.
+    ChunkKey keyOf(int i, int j, int k) const;
     std::size_t index(const ChunkKey& k) const;
     bool contains(const ChunkKey& k) const;
     // The six face neighbours that exist, as indices.

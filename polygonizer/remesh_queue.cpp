@@ -43,9 +43,8 @@ void RemeshQueue::markChanged(const voxel::IndexBox& box) {
     // of small boxes).
     const int size = layout_.chunkSize();
     const int reach = 1 << pyramid_.levels();  // more than any level's cell
-    auto floorDiv = [](int v, int d) { return v >= 0 ? v / d : -((-v + d - 1) / d); };
-    const ChunkKey lo{floorDiv(box.lo[0] - reach, size), floorDiv(box.lo[1] - reach, size), floorDiv(box.lo[2] - reach, size)};
-    const ChunkKey hi{floorDiv(box.hi[0] + reach, size), floorDiv(box.hi[1] + reach, size), floorDiv(box.hi[2] + reach, size)};
+    const ChunkKey lo = layout_.keyOf(box.lo[0] - reach, box.lo[1] - reach, box.lo[2] - reach);
+    const ChunkKey hi = layout_.keyOf(box.hi[0] + reach, box.hi[1] + reach, box.hi[2] + reach);
     for (int z = lo.z; z <= hi.z; ++z)
         for (int y = lo.y; y <= hi.y; ++y)
             for (int x = lo.x; x <= hi.x; ++x) {

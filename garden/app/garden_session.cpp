@@ -178,11 +178,8 @@ void GardenSession::input(const Hands& hands, double dt) {
     // The tool's ray on the morph triangle drawn on the ground picks the
     // blend (seed 004's selector), while the trigger is held.
     if (blender_ && hands.tool.tracked && hands.tool.trigger > 0.5f) {
-        const glm::dvec3 o(hands.tool.aim.position), d(hands.tool.aim.forward());
-        const double ground = load_.garden->ground.height;
-        if (d.y < -1e-4) {
-            const double t = (ground - o.y) / d.y;
-            const Point2 p{o.x + t * d.x, o.z + t * d.z};
+        if (const auto hit = hands.tool.aim.groundHit(load_.garden->ground.height)) {
+            const Point2 p{hit->x, hit->z};
             const MorphTriangle tri = *morphTriangle();
             const Point2 q = clampToTriangle(tri, p);
             const double dist = std::hypot(p[0] - q[0], p[1] - q[1]);

@@ -176,13 +176,9 @@ int runDesktopGarden(const DesktopOptions& options) {
             if (events.escape) window.setShouldClose(true);
             if (keys && events.detail) {
                 // Where the mouse ray meets the ground, a metre up; again: removed.
-                const glm::vec3 o = hands.tool.aim.position, d = hands.tool.aim.forward();
                 if (session.detail()) session.setDetail(std::nullopt);
-                else if (d.y < -1e-3f) {
-                    const float t = (static_cast<float>(session.garden().ground.height) - o.y) / d.y;
-                    const glm::vec3 p = o + t * d + glm::vec3(0.0f, 1.0f, 0.0f);
-                    session.setDetail(poly::Sphere{{p.x, p.y, p.z}, 1.0});
-                }
+                else if (const auto hit = hands.tool.aim.groundHit(session.garden().ground.height))
+                    session.setDetail(poly::Sphere{{hit->x, hit->y + 1.0, hit->z}, 1.0});
             }
             const bool shoot = events.f12;
             events = Events{};

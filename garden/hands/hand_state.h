@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 
 #include <glm/gtc/quaternion.hpp>
 #include <glm/vec2.hpp>
@@ -16,6 +17,13 @@ struct Pose {
     glm::quat orientation{1.0f, 0.0f, 0.0f, 0.0f};  // -z forward, +y up (OpenXR's convention)
 
     glm::vec3 forward() const { return orientation * glm::vec3(0.0f, 0.0f, -1.0f); }
+    // Where the pointing ray (from position along forward) meets the ground
+    // plane y = height; none when it points level or up.
+    std::optional<glm::dvec3> groundHit(double height) const {
+        const glm::dvec3 o(position), d(forward());
+        if (d.y > -1e-4) return std::nullopt;
+        return o + d * ((height - o.y) / d.y);
+    }
     glm::vec3 up() const { return orientation * glm::vec3(0.0f, 1.0f, 0.0f); }
     glm::vec3 right() const { return orientation * glm::vec3(1.0f, 0.0f, 0.0f); }
 };

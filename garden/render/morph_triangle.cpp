@@ -1,19 +1,8 @@
 #include "garden/render/morph_triangle.h"
 
-#include <glm/common.hpp>
-#include <glm/geometric.hpp>
+#include "garden/morph/morph_weights.h"
 
 namespace hg::garden {
-namespace {
-
-// Nearest point to p on the segment ab.
-glm::vec2 nearestOnSegment(const glm::vec2& p, const glm::vec2& a, const glm::vec2& b) {
-    const glm::vec2 ab = b - a;
-    const float t = glm::clamp(glm::dot(p - a, ab) / glm::dot(ab, ab), 0.0f, 1.0f);
-    return a + t * ab;
-}
-
-}  // namespace
 
 const std::array<glm::vec2, 3>& morphTriangleCorners() {
     static const std::array<glm::vec2, 3> corners{glm::vec2(0.0f, 0.0f), glm::vec2(1.0f, 0.0f),
@@ -36,16 +25,12 @@ glm::vec2 trianglePoint(const glm::vec3& w) {
 }
 
 glm::vec2 clampToTriangle(const glm::vec2& p) {
-    const glm::vec3 w = triangleWeights(p);
-    if (w.x >= 0.0f && w.y >= 0.0f && w.z >= 0.0f) return p;
-    // Outside: the nearest point lies on an edge (a corner is an edge's end).
+    // The selector's clamp (garden/morph) on the widget's own corners.
+    MorphTriangle t;
     const auto& c = morphTriangleCorners();
-    glm::vec2 best = nearestOnSegment(p, c[0], c[1]);
-    for (int e = 1; e < 3; ++e) {
-        const glm::vec2 q = nearestOnSegment(p, c[static_cast<std::size_t>(e)], c[static_cast<std::size_t>((e + 1) % 3)]);
-        if (glm::distance(p, q) < glm::distance(p, best)) best = q;
-    }
-    return best;
+    for (std::size_t i = 0; i < 3; ++i) t.corners[i] = {c[i].x, c[i].y};
+    const Point2 q = clampToTriangle(t, {p.x, p.y});
+    return {static_cast<float>(q[0]), static_cast<float>(q[1])};
 }
 
 MorphTriangleLayout morphTriangleLayout(const glm::vec2& cursor, float side, float lineHeight) {
