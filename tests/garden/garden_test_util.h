@@ -12,30 +12,18 @@
 
 #include "frep/model.h"
 #include "frep/parser.h"
+#include "tests/test_models.h"
 #include "garden/morph/morph_sources.h"
 
 namespace hg::garden::test {
 
-inline frep::Model modelFromSource(const std::string& source, std::vector<double> a = {}) {
-    frep::ParseResult r = frep::parseProgram(source, "test.hf");
-    EXPECT_TRUE(r.ok()) << (r.errors.empty() ? "" : frep::formatDiagnostic(r.errors[0]));
-    auto program = std::make_shared<const frep::Program>(std::move(*r.program));
-    return frep::Model(program, program->defaultBody(), std::move(a));
-}
+using ::hg::test::modelFromSource;
+
 
 // A sphere of radius sqrt(a[1]) at (a[2], a[3], a[4]); f is not a distance.
 constexpr const char* kSphere =
     "sphere(x[3], a[4]) { sphere = a[1] - ((x[1]-a[2])^2 + (x[2]-a[3])^2 + (x[3]-a[4])^2); }";
-// A torus about y with a blended box: curved and flat faces, a hole.
-constexpr const char* kTorusBlock =
-    "tb(x[3], a[1]) {\n"
-    "  array c[3], o[3];\n"
-    "  c = [-0.4, -0.9, -0.4];\n"
-    "  o = [0, 0, 0];\n"
-    "  t = hfTorusY(x, o, 0.6, 0.2);\n"
-    "  b = hfBlock(x, c, 0.8, 0.3, 0.8);\n"
-    "  tb = hfBlendUni(t, b, 0.05, 0.1, 0.1);\n"
-    "}\n";
+using ::hg::test::kTorusBlock;
 // A rounded bar along x (superellipsoid), f of a very different scale.
 constexpr const char* kBar =
     "bar(x[3], a[1]) { bar = 40 * (1 - (x[1]/1.0)^4 - (x[2]/0.3)^4 - (x[3]/0.35)^4); }";

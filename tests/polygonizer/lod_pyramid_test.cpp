@@ -6,7 +6,7 @@
 
 #include <random>
 
-#include "frep/parser.h"
+#include "sample_program.h"
 #include "polygonizer/lod_pyramid.h"
 #include "voxel/sampler.h"
 
@@ -14,21 +14,10 @@ namespace hg::poly {
 namespace {
 
 frep::Model sphere(double r2) {
-    frep::ParseResult p = frep::parseProgram("q(x[3], a[1]) { q = a[1] - (x[1]^2 + x[2]^2 + x[3]^2); }", "s.hf");
-    auto program = std::make_shared<const frep::Program>(std::move(*p.program));
-    return frep::Model(program, 0, {r2});
+    return ::hg::test::modelFromSource("q(x[3], a[1]) { q = a[1] - (x[1]^2 + x[2]^2 + x[3]^2); }", {r2});
 }
 
-voxel::Volume sample(const frep::Model& m) {
-    voxel::VolumeRequest req;
-    req.resolution = 96;
-    frep::Box3 b;
-    for (int a = 0; a < 3; ++a) { b.lo[a] = -1; b.hi[a] = 1; }
-    req.box = b;
-    voxel::VoxelizeResult r = voxel::voxelize(m, req);
-    EXPECT_TRUE(r.volume) << r.error;
-    return std::move(*r.volume);
-}
+voxel::Volume sample(const frep::Model& m) { return test::sampleInUnitCube(m, 96); }
 
 void expectSampled(const voxel::Volume& v, const LodPyramid& p, const voxel::IndexBox& box) {
     for (int l = 1; l < p.levels(); ++l)

@@ -7,7 +7,7 @@
 // faces changed.
 #include <gtest/gtest.h>
 
-#include "frep/parser.h"
+#include "sample_program.h"
 #include "polygonizer/lod_selection.h"
 #include "polygonizer/mesh_validation.h"
 #include "polygonizer/remesh_queue.h"
@@ -17,22 +17,10 @@ namespace hg::poly {
 namespace {
 
 frep::Model sphere(double r2, double cx) {
-    frep::ParseResult p = frep::parseProgram(
-        "q(x[3], a[2]) { q = a[1] - ((x[1] - a[2])^2 + x[2]^2 + x[3]^2); }", "s.hf");
-    auto program = std::make_shared<const frep::Program>(std::move(*p.program));
-    return frep::Model(program, 0, {r2, cx});
+    return ::hg::test::modelFromSource("q(x[3], a[2]) { q = a[1] - ((x[1] - a[2])^2 + x[2]^2 + x[3]^2); }", {r2, cx});
 }
 
-voxel::Volume sample(const frep::Model& m, int res) {
-    voxel::VolumeRequest req;
-    req.resolution = res;
-    frep::Box3 b;
-    for (int a = 0; a < 3; ++a) { b.lo[a] = -1; b.hi[a] = 1; }
-    req.box = b;
-    voxel::VoxelizeResult r = voxel::voxelize(m, req);
-    EXPECT_TRUE(r.volume) << r.error;
-    return std::move(*r.volume);
-}
+voxel::Volume sample(const frep::Model& m, int res) { return test::sampleInUnitCube(m, res); }
 
 // Levels 0 near -x, coarser towards +x, balanced.
 std::vector<int> rampLevels(const ChunkLayout& layout) {
