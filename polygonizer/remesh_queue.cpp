@@ -124,6 +124,7 @@ RemeshReport RemeshQueue::process(const RemeshBudget& budget) {
         lastBatchMs = elapsedMs() - before;
     }
     report.shown = showCompleteGroups();
+    if (report.shown > 0) ++shownGeneration_;
     report.pending = pending();
     report.seconds = elapsedMs() / 1000.0;
     return report;

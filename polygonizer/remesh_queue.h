@@ -64,6 +64,9 @@ public:
     std::shared_ptr<const Mesh> mesh(std::size_t chunk) const { return slots_[chunk].shown; }
     const ChunkLod& shownLod(std::size_t chunk) const { return slots_[chunk].shownLod; }
     std::uint64_t version(std::size_t chunk) const { return slots_[chunk].version; }
+    // Grows whenever any chunk's shown mesh changes: a renderer that saw
+    // this value has nothing new to upload.
+    std::uint64_t shownGeneration() const { return shownGeneration_; }
     std::size_t pending() const;
     std::size_t count() const { return slots_.size(); }
 
@@ -85,6 +88,7 @@ private:
     const ChunkLayout& layout_;
     std::vector<Slot> slots_;
     std::array<double, 3> viewer_{};
+    std::uint64_t shownGeneration_ = 0;
 };
 
 }  // namespace hg::poly

@@ -119,16 +119,15 @@ std::size_t GardenView::upload(GardenSession& session, double allowanceMs, std::
         const SculptureState& st = session.sculptures()[s];
         if (st.missing()) continue;
         const poly::RemeshQueue& q = *st.queue;
-        bool stale = false;
-        for (std::size_t c = 0; c < q.count() && !stale; ++c)
-            stale = q.mesh(c) && !renderer_.has(chunkId(s, c), q.version(c));
-        if (!stale) continue;
+        if (uploaded_.size() <= s) uploaded_.resize(s + 1, 0);
+        if (uploaded_[s] == q.shownGeneration() + 1) continue;  // nothing new on show
         if (spent) {
             ++pendingSculptures;
             continue;
         }
         for (std::size_t c = 0; c < q.count(); ++c)
             if (const auto m = q.mesh(c)) bytes += renderer_.upload(chunkId(s, c), q.version(c), *m);
+        uploaded_[s] = q.shownGeneration() + 1;
         spent = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count() >= allowanceMs;
     }
     return bytes;

@@ -6,6 +6,8 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
+#include <vector>
 
 #include <glm/vec2.hpp>
 
@@ -36,6 +38,9 @@ public:
 
 private:
     Renderer& renderer_;
+    // Per sculpture, the queue's shownGeneration() + 1 last uploaded (0:
+    // never): a sculpture whose queue showed nothing new is not looked at.
+    std::vector<std::uint64_t> uploaded_;
 };
 
 }  // namespace hg::garden

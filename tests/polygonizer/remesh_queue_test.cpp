@@ -97,7 +97,12 @@ TEST(RemeshQueue, BudgetsHoldAndHalfDoneUpdatesShowTheOldClosedSurface) {
     EXPECT_EQ(first.meshed, 3u);
     EXPECT_EQ(first.shown, 0u) << "one connected group: nothing shows until all of it is meshed";
     for (std::size_t i = 0; i < q.count(); ++i) EXPECT_FALSE(q.mesh(i));
+    EXPECT_EQ(q.shownGeneration(), 0u) << "nothing shown yet";
     drain(q);
+    const std::uint64_t generation = q.shownGeneration();
+    EXPECT_GT(generation, 0u);
+    q.process(RemeshBudget{0.0, 3});
+    EXPECT_EQ(q.shownGeneration(), generation) << "nothing new shown, same generation";
     const MeshReport coarse = validateMesh(weldByPosition(shownUnion(q)));
     ASSERT_EQ(coarse.boundaryEdges, 0u);
 
