@@ -43,10 +43,22 @@ struct SampleBlock {
     voxel::IndexBox box;
     std::vector<float> v;
 
-    void fill(const LodPyramid& pyramid, int level, const voxel::IndexBox& b) {
+    std::array<int, 3> local{};  // level index of chunk-local sample (0, 0, 0)
+
+    void fill(const LodPyramid& pyramid, int level, const voxel::IndexBox& b, const int chunkOrigin[3]) {
         box = b;
+        for (int a = 0; a < 3; ++a) local[static_cast<std::size_t>(a)] = chunkOrigin[a] >> level;
         v.resize(static_cast<std::size_t>(b.volume()));
         pyramid.gather(level, b, v.data());
+    }
+    // Chunk-local sample p (0 at the chunk's low corner).
+    float localAt(const int p[3]) const {
+        const int q[3] = {p[0] + local[0], p[1] + local[1], p[2] + local[2]};
+        return at(q);
+    }
+    Vec3 localGradient(const int p[3]) const {
+        const int q[3] = {p[0] + local[0], p[1] + local[1], p[2] + local[2]};
+        return gradient(q);
     }
     float at(const int p[3]) const {
         return v[static_cast<std::size_t>((p[2] - box.lo[2]) * box.extent(1) + (p[1] - box.lo[1])) *
@@ -114,7 +126,7 @@ public:
             coarse.lo[a] = (origin_[a] >> lod.level) - 1;
             coarse.hi[a] = (origin_[a] >> lod.level) + n_ + 1;
         }
-        coarse_.fill(pyramid, lod.level, coarse);
+        coarse_.fill(pyramid, lod.level, coarse, origin_);
         tEdgeVertices.begin(3 * static_cast<std::size_t>(n_ + 1) * static_cast<std::size_t>(n_ + 1) *
                             static_cast<std::size_t>(n_ + 1));
         pyramid_ = &pyramid;
@@ -129,10 +141,7 @@ public:
 
 private:
     // --- coarse (the chunk's level) samples, chunk-local indices 0..n -----
-    float coarseValue(const int p[3]) const {
-        const int q[3] = {p[0] + coarse_.box.lo[0] + 1, p[1] + coarse_.box.lo[1] + 1, p[2] + coarse_.box.lo[2] + 1};
-        return coarse_.at(q);
-    }
+    float coarseValue(const int p[3]) const { return coarse_.localAt(p); }
     // Level-0 index position, shrunk away from transition faces unless the
     // sample also lies on a face without transitions (pinned).
     Vec3 coarsePosition(const int p[3]) const {
@@ -149,10 +158,7 @@ private:
             if (on & (1 << f)) pos[static_cast<std::size_t>(f / 2)] += f % 2 ? -w : w;
         return pos;
     }
-    Vec3 coarseGradient(const int p[3]) const {
-        const int q[3] = {p[0] + coarse_.box.lo[0] + 1, p[1] + coarse_.box.lo[1] + 1, p[2] + coarse_.box.lo[2] + 1};
-        return coarse_.gradient(q);
-    }
+    Vec3 coarseGradient(const int p[3]) const { return coarse_.localGradient(p); }
 
     // The crossing on the coarse edge from sample p along `axis`.
     std::uint32_t coarseVertex(const int p[3], int axis) {
@@ -170,16 +176,6 @@ private:
     }
 
     // --- fine (level - 1) samples on transition faces, chunk-local 0..2n --
-    float fineValue(const SampleBlock& b, const int p[3]) const {
-        const int q[3] = {p[0] + (origin_[0] >> (lod_.level - 1)), p[1] + (origin_[1] >> (lod_.level - 1)),
-                          p[2] + (origin_[2] >> (lod_.level - 1))};
-        return b.at(q);
-    }
-    Vec3 fineGradient(const SampleBlock& b, const int p[3]) const {
-        const int q[3] = {p[0] + (origin_[0] >> (lod_.level - 1)), p[1] + (origin_[1] >> (lod_.level - 1)),
-                          p[2] + (origin_[2] >> (lod_.level - 1))};
-        return b.gradient(q);
-    }
     std::uint32_t fineVertex(const SampleBlock& b, const int p[3], int axis) {
         const std::uint32_t m = static_cast<std::uint32_t>(2 * n_ + 1);
         const std::uint32_t key = ((static_cast<std::uint32_t>(axis) * m + static_cast<std::uint32_t>(p[2])) * m +
@@ -195,7 +191,7 @@ private:
             pq[static_cast<std::size_t>(a)] = static_cast<double>(origin_[a] + q[a] * half);
         }
         const std::uint32_t id =
-            addVertex(pp, pq, fineValue(b, p), fineValue(b, q), fineGradient(b, p), fineGradient(b, q));
+            addVertex(pp, pq, b.localAt(p), b.localAt(q), b.localGradient(p), b.localGradient(q));
         fineVertex_.emplace(key, id);
         return id;
     }
@@ -274,7 +270,7 @@ private:
         }
         box.lo[a] = (origin_[a] >> fl) + finePlane - 1;
         box.hi[a] = (origin_[a] >> fl) + finePlane + 1;
-        fine.fill(*pyramid_, fl, box);
+        fine.fill(*pyramid_, fl, box, origin_);
 
         const TransitionGeometry& g = transitionGeometry();
         const auto& table = transitionTable();
@@ -288,7 +284,7 @@ private:
                     fineAt[t][a] = finePlane;
                     fineAt[t][u] = 2 * cu + t % 3;
                     fineAt[t][v] = 2 * cv + t / 3;
-                    if (fineValue(fine, fineAt[t]) > 0.0f) mask |= 1 << t;
+                    if (fine.localAt(fineAt[t]) > 0.0f) mask |= 1 << t;
                 }
                 if (mask == 0 || mask == 511) continue;
                 ++stats.surfaceCells;
