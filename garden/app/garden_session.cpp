@@ -99,7 +99,6 @@ void GardenSession::buildSculpture(std::size_t index) {
         s.error = r.error;
         return;
     }
-    s.voxelizeSeconds = r.stats.seconds;
     s.volume = std::make_unique<voxel::Volume>(std::move(*r.volume));
     attachMeshing(s, settings_);
 }
@@ -173,7 +172,6 @@ void GardenSession::beginFrame() {
 
 void GardenSession::input(const Hands& hands, double dt) {
     scheduler_.beginStage(Stage::Input);
-    hands_ = hands;
     navigator_.update(hands, dt);
     // The tool's ray on the morph triangle drawn on the ground picks the
     // blend (seed 004's selector), while the trigger is held.

@@ -62,7 +62,6 @@ struct SculptureState {
     std::unique_ptr<poly::LodPyramid> pyramid;
     std::unique_ptr<poly::ChunkLayout> layout;
     std::unique_ptr<poly::RemeshQueue> queue;
-    double voxelizeSeconds = 0.0;
     int framesSinceLevels = 0;         // frames since the queue last took new levels
 
     bool missing() const { return !error.empty(); }
@@ -145,7 +144,6 @@ private:
     std::optional<MorphWeights> weights_;
     std::array<double, 3> balance_{1.0, 1.0, 1.0};
     int morphIndex_ = -1;  // the result's index in sculptures_
-    Hands hands_;
 };
 
 }  // namespace hg::garden
