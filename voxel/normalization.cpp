@@ -1,7 +1,11 @@
 #include "voxel/normalization.h"
 
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <vector>
 
 #include "frep/eval_gradient.h"
@@ -41,21 +45,31 @@ Probe sampleLattice(const frep::Model& model, const VolumeFrame& frame) {
     p.failed.resize(p.f.size());
 
     // Float is plenty to find sign changes, and several times faster than
-    // the exact double path on convolution-heavy programs.
-    frep::PointSampler<float> sampler(model);
-    frep::ErrorReport errors;
-    std::vector<float> x(static_cast<std::size_t>(p.n[0])), y(x.size()), z(x.size()), f(x.size());
-    for (int k = 0; k < p.n[2]; ++k)
-        for (int j = 0; j < p.n[1]; ++j) {
+    // the exact double path on convolution-heavy programs. One batch per
+    // z slice, slices in parallel: every value depends only on its point.
+    struct Worker {
+        explicit Worker(const frep::Model& m) : sampler(m) {}
+        frep::PointSampler<float> sampler;
+        std::vector<float> x, y, z, f;
+        frep::ErrorReport errors;
+    };
+    tbb::enumerable_thread_specific<std::unique_ptr<Worker>> workers;
+    const std::size_t slice = static_cast<std::size_t>(p.n[0]) * static_cast<std::size_t>(p.n[1]);
+    tbb::parallel_for(0, p.n[2], [&](int k) {
+        auto& w = workers.local();
+        if (!w) w = std::make_unique<Worker>(model);
+        w->x.resize(slice); w->y.resize(slice); w->z.resize(slice); w->f.resize(slice);
+        for (int j = 0; j < p.n[1]; ++j)
             for (int i = 0; i < p.n[0]; ++i) {
-                x[static_cast<std::size_t>(i)] = static_cast<float>(p.lo[0] + i * p.step);
-                y[static_cast<std::size_t>(i)] = static_cast<float>(p.lo[1] + j * p.step);
-                z[static_cast<std::size_t>(i)] = static_cast<float>(p.lo[2] + k * p.step);
+                std::size_t o = p.at(i, j, 0);
+                w->x[o] = static_cast<float>(p.lo[0] + i * p.step);
+                w->y[o] = static_cast<float>(p.lo[1] + j * p.step);
+                w->z[o] = static_cast<float>(p.lo[2] + k * p.step);
             }
-            std::size_t o = p.at(0, j, k);
-            sampler.evaluate(x.data(), y.data(), z.data(), f.data(), x.size(), errors, p.failed.data() + o);
-            std::copy(f.begin(), f.end(), p.f.begin() + static_cast<std::ptrdiff_t>(o));
-        }
+        std::size_t o = p.at(0, 0, k);
+        w->sampler.evaluate(w->x.data(), w->y.data(), w->z.data(), w->f.data(), slice, w->errors, p.failed.data() + o);
+        std::copy(w->f.begin(), w->f.end(), p.f.begin() + static_cast<std::ptrdiff_t>(o));
+    });
     return p;
 }
 
@@ -97,13 +111,23 @@ std::vector<double> gradientMagnitudes(const frep::Model& model, const std::vect
     mags.reserve(n);
     frep::ErrorReport errors;
     if (const frep::Tape* tape = model.tape()) {
-        frep::GradientEvaluator grad(*tape);
-        for (std::size_t i = 0; i < n; ++i) {
-            std::uint64_t before = errors.count;
-            frep::Gradient g = grad.evaluate(pts[3 * i], pts[3 * i + 1], pts[3 * i + 2], errors);
-            double m = std::sqrt(g.dx * g.dx + g.dy * g.dy + g.dz * g.dz);
-            if (errors.count == before && std::isfinite(m) && m > 0.0) mags.push_back(m);
-        }
+        // In parallel, each magnitude written at its sample's index so the
+        // result does not depend on the number of threads.
+        std::vector<double> all(n, 0.0);
+        tbb::enumerable_thread_specific<std::unique_ptr<frep::GradientEvaluator>> evaluators;
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 64), [&](const tbb::blocked_range<std::size_t>& r) {
+            auto& grad = evaluators.local();
+            if (!grad) grad = std::make_unique<frep::GradientEvaluator>(*tape);
+            frep::ErrorReport pointErrors;
+            for (std::size_t i = r.begin(); i != r.end(); ++i) {
+                std::uint64_t before = pointErrors.count;
+                frep::Gradient g = grad->evaluate(pts[3 * i], pts[3 * i + 1], pts[3 * i + 2], pointErrors);
+                double m = std::sqrt(g.dx * g.dx + g.dy * g.dy + g.dz * g.dz);
+                if (pointErrors.count == before && std::isfinite(m) && m > 0.0) all[i] = m;
+            }
+        });
+        for (double m : all)
+            if (m > 0.0) mags.push_back(m);
         return mags;
     }
     // Interpreter path: central differences, six points per sample.
