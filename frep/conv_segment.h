@@ -17,8 +17,10 @@ void convSegmentBatch(const double* px, const double* py, const double* pz, doub
                       const double* params);
 // Bounds of the field over a box: the field is the integral of the kernel
 // K(r) = 1/(1 + s^2 r^2)^2 along the segment, so it lies between
-// l K(dmax) and l K(dmin), and within a Lipschitz band around the centre
-// value (|grad| <= 2.25 for any segment and width).
+// l K(dmax) and l K(dmin); and it falls with the distance from the
+// segment's line and away from the segment's middle, so it is bounded by
+// its values at the corners of the box's range of (axial position,
+// distance to the line). Sound for the float path too.
 Interval convSegmentBounds(const Interval& px, const Interval& py, const Interval& pz, const double* params);
 // Value (as convSegmentField) and its partial derivatives along px, py, pz.
 double convSegmentGradient(double px, double py, double pz, const double* params, double grad[3]);
