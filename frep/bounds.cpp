@@ -1,14 +1,74 @@
 #include "frep/bounds.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <vector>
 
+#include "frep/eval_batch.h"
 #include "frep/eval_interval.h"
 
 namespace hg::frep {
 
+namespace {
+
+void expand(Box3& hull, const Box3& b) {
+    for (int a = 0; a < 3; ++a) {
+        hull.lo[a] = std::min(hull.lo[a], b.lo[a]);
+        hull.hi[a] = std::max(hull.hi[a], b.hi[a]);
+    }
+}
+
+bool contains(const Box3& outer, const Box3& inner) {
+    for (int a = 0; a < 3; ++a)
+        if (inner.lo[a] < outer.lo[a] || inner.hi[a] > outer.hi[a]) return false;
+    return true;
+}
+
+// The hull of points known to be in the solid: box centres where the
+// program evaluates to f >= 0. A kept box inside this hull cannot widen the
+// estimate, so it is not split further: only boxes near the solid's
+// extremes are refined, instead of its whole surface.
+class Witnesses {
+public:
+    explicit Witnesses(const Tape& tape) : points_(tape) {}
+
+    void add(const std::vector<Box3>& boxes) {
+        const std::size_t n = boxes.size();
+        x_.resize(n); y_.resize(n); z_.resize(n); f_.resize(n); failed_.resize(n);
+        for (std::size_t i = 0; i < n; ++i) {
+            x_[i] = 0.5 * (boxes[i].lo[0] + boxes[i].hi[0]);
+            y_[i] = 0.5 * (boxes[i].lo[1] + boxes[i].hi[1]);
+            z_[i] = 0.5 * (boxes[i].lo[2] + boxes[i].hi[2]);
+        }
+        ErrorReport errors;
+        points_.evaluate(x_.data(), y_.data(), z_.data(), f_.data(), n, errors, failed_.data());
+        for (std::size_t i = 0; i < n; ++i) {
+            if (failed_[i] || !(f_[i] >= 0.0)) continue;
+            Box3 p;
+            p.lo[0] = p.hi[0] = x_[i]; p.lo[1] = p.hi[1] = y_[i]; p.lo[2] = p.hi[2] = z_[i];
+            if (any_) expand(hull_, p);
+            else hull_ = p;
+            any_ = true;
+        }
+    }
+
+    bool any() const { return any_; }
+    const Box3& hull() const { return hull_; }
+    bool covers(const Box3& b) const { return any_ && contains(hull_, b); }
+
+private:
+    BatchEvaluator<double> points_;
+    std::vector<double> x_, y_, z_, f_;
+    std::vector<std::uint8_t> failed_;
+    Box3 hull_;
+    bool any_ = false;
+};
+
+}  // namespace
+
 BoundsEstimate estimateBounds(const Tape& tape, double s, size_t maxBoxes) {
     IntervalEvaluator ev(tape);
+    Witnesses witnesses(tape);
     std::vector<Box3> boxes(1);
     for (int a = 0; a < 3; ++a) { boxes[0].lo[a] = -s; boxes[0].hi[a] = s; }
     BoundsEstimate est;
@@ -37,20 +97,26 @@ BoundsEstimate estimateBounds(const Tape& tape, double s, size_t maxBoxes) {
                 if (keep(c)) next.push_back(c);
             }
         }
-        if (next.empty()) {  // the interval bounds got tight enough to drop everything
+        if (next.empty() && !witnesses.any()) {  // the interval bounds got tight enough to drop everything
             est.empty = true;
             return est;
         }
+        // The hull of all kept boxes is the hull of the witnesses and of the
+        // boxes they do not cover: witnesses lie in kept boxes, and covered
+        // boxes lie inside the witnesses' hull.
+        witnesses.add(next);
+        next.erase(std::remove_if(next.begin(), next.end(), [&](const Box3& b) { return witnesses.covers(b); }),
+                   next.end());
         boxes.swap(next);
         cell *= 0.5;
         est.levels = level;
         est.cellSize = cell;
-        Box3 bb = boxes[0];
-        for (const Box3& b : boxes)
-            for (int a = 0; a < 3; ++a) { bb.lo[a] = std::min(bb.lo[a], b.lo[a]); bb.hi[a] = std::max(bb.hi[a], b.hi[a]); }
+        Box3 bb = witnesses.any() ? witnesses.hull() : boxes[0];
+        for (const Box3& b : boxes) expand(bb, b);
         est.box = bb;
+        if (boxes.empty()) break;  // every kept box lies inside the witnesses: the hull is final
         double extent = std::max({bb.hi[0] - bb.lo[0], bb.hi[1] - bb.lo[1], bb.hi[2] - bb.lo[2]});
-        if (cell <= extent / 128.0) break;
+        if (cell <= extent / kBoundsPrecision) break;
         if (boxes.size() > maxBoxes) {
             est.budgetSpent = true;
             break;

@@ -23,6 +23,10 @@ struct BoundsEstimate {
     double cellSize = 0.0;    // size of the last level's cells (precision)
 };
 
+// The estimate stops once its cells are at most this fraction of the box's
+// longest side (or when a level keeps more than maxBoxes boxes).
+constexpr double kBoundsPrecision = 64.0;
+
 // `searchHalfSize`: the cube [-s, s]^3 is searched. `maxBoxes`: cap on the
 // boxes kept per level (work budget).
 BoundsEstimate estimateBounds(const Tape& tape, double searchHalfSize = 1024.0, size_t maxBoxes = 4096);
