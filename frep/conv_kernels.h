@@ -1,7 +1,9 @@
-// The fused convolution kernels of the tape (Op::ConvSegment in
-// conv_segment.h, Op::ConvArc in conv_arc.h), dispatched by opcode so that
-// the builder and the evaluators treat every fused kernel alike. `params`
-// points at the instruction's block in Tape::params.
+// The fused kernels of the tape (Op::ConvSegment in conv_segment.h,
+// Op::ConvArc in conv_arc.h, Op::SoftStep in soft_step.h), dispatched by
+// opcode so that the builder and the evaluators treat every fused kernel
+// alike. `params` points at the instruction's block in Tape::params. The
+// inputs are named for the point kernels; SoftStep reads (sum, r2) from px
+// and py and gives no slope along pz.
 #pragma once
 
 #include <cstddef>

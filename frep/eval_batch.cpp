@@ -172,6 +172,7 @@ void BatchEvaluator<T>::chunk(const T* x, const T* y, const T* z, T* out, size_t
             }
             case Op::ConvSegment:
             case Op::ConvArc:
+            case Op::SoftStep:
                 fusedBatch(in.op, a, b, c, o, n, tape_.params.data() + in.param);
                 break;
             case Op::Check: {

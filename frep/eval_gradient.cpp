@@ -104,7 +104,7 @@ void GradientEvaluator::chunk(const double* x, const double* y, const double* z,
                     break;
                 }
                 case Op::Check: ka = 1; break;
-                case Op::ConvSegment: case Op::ConvArc: break;  // coefficients computed above
+                case Op::ConvSegment: case Op::ConvArc: case Op::SoftStep: break;  // coefficients computed above
                 default: break;  // floor, comparisons, logic, mod: piecewise constant
             }
             double gx, gy, gz;

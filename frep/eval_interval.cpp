@@ -345,7 +345,8 @@ Interval IntervalEvaluator::evaluate(const Interval& x, const Interval& y, const
                 r = a;
                 break;
             case Op::ConvSegment:
-            case Op::ConvArc: r = fusedBounds(in.op, a, b, c, tape_.params.data() + in.param); break;
+            case Op::ConvArc:
+            case Op::SoftStep: r = fusedBounds(in.op, a, b, c, tape_.params.data() + in.param); break;
         }
         if (fails || (opCanFail(in.op) && nan)) {
             const bool guardMayHold = in.guard == kNoReg || mayBeTrue(regs_[in.guard]);

@@ -5,7 +5,9 @@
 // tight interval bounds): a Cauchy line segment with constant end points and
 // width becomes one Op::ConvSegment instead of ~40 instructions, and a piece
 // of an hfConvArc arc with constant frame, radius, width and span one
-// Op::ConvArc instead of ~100.
+// Op::ConvArc instead of ~100; and a step of hfSoft's sum with a constant
+// radius one Op::SoftStep, whose bounds follow the kernel's fall with
+// distance instead of bounding each power of it apart.
 #include <cmath>
 
 #include "frep/library/library_impl.h"
@@ -66,6 +68,18 @@ Sym convArcPiece<Sym>(const Sym& x0, const Sym& x1, const Sym& x2, const Sym* fr
     SymExpanded f[kArcFrame];
     for (size_t i = 0; i < kArcFrame; ++i) f[i] = frame[i];
     return convArcPiece<SymExpanded>(x0, x1, x2, f, turn, r, s, th);
+}
+
+template <>
+Sym softStep<Sym>(const Sym& soft, const Sym& r2, const Sym& d) {
+    TapeBuilder* b = soft.builder() ? soft.builder() : r2.builder();
+    const bool fusable = d.isConstant() && std::isfinite(d.constant()) && d.constant() > 0.0;
+    if (fusable && b) {
+        const double q[kSoftStepParams] = {d.constant()};
+        const std::uint32_t r = r2.on(*b);
+        return Sym(b, b->fused(Op::SoftStep, soft.on(*b), r, r, q));
+    }
+    return softStep<SymExpanded>(soft, r2, d);
 }
 
 }  // namespace hg::frep::lib::detail

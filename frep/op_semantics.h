@@ -71,6 +71,7 @@ inline DomainError applyOp(Op op, DomainError checkError, T a, T b, T c, T& out)
             return a != T(0) ? DomainError::None : checkError;
         case Op::ConvSegment:  // fused kernels need their parameters: evaluated by the callers
         case Op::ConvArc:
+        case Op::SoftStep:
             out = T(0);
             break;
     }

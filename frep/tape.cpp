@@ -61,6 +61,7 @@ const char* opName(Op op) {
         case Op::Check: return "check";
         case Op::ConvSegment: return "conv_segment";
         case Op::ConvArc: return "conv_arc";
+        case Op::SoftStep: return "soft_step";
     }
     return "?";
 }
@@ -74,7 +75,7 @@ int opArity(Op op) {
         case Op::Truthy: case Op::HfSqrt: case Op::HfLog: case Op::HfLog10: case Op::HfAsin:
         case Op::HfAcos: case Op::HfTan: case Op::Check:
             return 1;
-        case Op::Select: case Op::ConvSegment: case Op::ConvArc: return 3;
+        case Op::Select: case Op::ConvSegment: case Op::ConvArc: case Op::SoftStep: return 3;
         default: return 2;
     }
 }
@@ -83,6 +84,7 @@ std::uint32_t fusedParamCount(Op op) {
     switch (op) {
         case Op::ConvSegment: return kConvSegmentParams;
         case Op::ConvArc: return kConvArcParams;
+        case Op::SoftStep: return kSoftStepParams;
         default: return 0;
     }
 }

@@ -31,6 +31,7 @@ enum class Op : std::uint8_t {
     // fused library kernels; parameters in Tape::params[param...]
     ConvSegment,  // Cauchy line-segment field at (a, b, c): b, e (3 each), s
     ConvArc,      // one hfConvArc piece at (a, b, c): frame, r, s, span, over
+    SoftStep,     // hfSoft's sum a plus the soft kernel at squared distance b (= c): d
 };
 
 // Parameters of a ConvSegment: begin (3), end (3), kernel width.
@@ -39,6 +40,8 @@ constexpr std::uint32_t kConvSegmentParams = 7;
 // row major), radius, kernel width, span in radians, 1 for the part beyond
 // 180 degrees (turned by -180 degrees) else 0.
 constexpr std::uint32_t kConvArcParams = 16;
+// Parameters of a SoftStep: the radius of influence.
+constexpr std::uint32_t kSoftStepParams = 1;
 
 // Number of parameters of a fused kernel; 0 for every other opcode.
 std::uint32_t fusedParamCount(Op op);

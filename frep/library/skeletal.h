@@ -65,6 +65,23 @@ V hfMetaball(const std::vector<V>& x, const std::vector<V>& x0, const std::vecto
     return mb - t;
 }
 
+namespace detail {
+
+// One step of hfSoft's sum: `soft` plus the kernel of a centre at squared
+// distance r2 with radius of influence d (nothing beyond d), in the
+// reference's order of operations. The tape fuses it (Op::SoftStep) when d
+// is constant: its interval bounds then follow the kernel's fall with r2.
+template <class V>
+V softStep(const V& soft, const V& r2, const V& d) {
+    V r4 = r2 * r2;
+    V d2 = d * d;
+    V d4 = d2 * d2;
+    V added = soft + 1.0 - 22.0 * r2 / (9.0 * d2) + 17.0 * r4 / (9.0 * d4) - 4.0 * r4 * r2 / (9.0 * d4 * d2);
+    return select(le(sqrt(r2), d), added, soft);
+}
+
+}  // namespace detail
+
 // hfSoft(x, x0, y0, z0, d, T): sum_i f_i - T with Wyvill's kernel
 // f = 1 - 22 r^2/(9 d^2) + 17 r^4/(9 d^4) - 4 r^6/(9 d^6) for r <= d, else 0.
 //   x0, y0, z0: centre coordinates; d: radii of influence; T: threshold.
@@ -81,12 +98,7 @@ V hfSoft(const std::vector<V>& x, const std::vector<V>& x0, const std::vector<V>
         V yt = x[1] - y0[i];
         V zt = x[2] - z0[i];
         V r2 = xt * xt + yt * yt + zt * zt;
-        V r4 = r2 * r2;
-        V d2 = d[i] * d[i];
-        V d4 = d2 * d2;
-        V added = soft + 1.0 - 22.0 * r2 / (9.0 * d2) + 17.0 * r4 / (9.0 * d4) -
-                  4.0 * r4 * r2 / (9.0 * d4 * d2);
-        soft = select(le(sqrt(r2), d[i]), added, soft);
+        soft = detail::softStep(soft, r2, d[i]);
     }
     return soft - t;
 }
