@@ -20,6 +20,7 @@
 #include "frep/interpreter.h"
 #include "frep/parser.h"
 #include "frep/simd.h"
+#include "kernel_checks.h"
 
 namespace hg::frep {
 namespace {
@@ -177,26 +178,9 @@ TEST(FusedArc, GradientMatchesDifferences) {
         CompileResult cr = compile(p, 0);
         ASSERT_TRUE(cr.tape);
         GradientEvaluator grad(*cr.tape);
-        BatchEvaluator<double> ev(*cr.tape);
         Interpreter interp(p, 0, {});
-        for (int n = 0; n < 50; ++n) {
-            std::vector<double> q = samplePoints(c, rng, 1);
-            ErrorReport errs;
-            Gradient g = grad.evaluate(q[0], q[1], q[2], errs);
-            double value = 0.0;
-            ev.evaluate(&q[0], &q[1], &q[2], &value, 1, errs);
-            if (errs.count) continue;
-            EXPECT_EQ(g.value, value) << c.name;
-            const double h = 1e-6, gk[3] = {g.dx, g.dy, g.dz};
-            for (int k = 0; k < 3; ++k) {
-                std::vector<double> a = q, b = q;
-                a[static_cast<size_t>(k)] += h;
-                b[static_cast<size_t>(k)] -= h;
-                const double d = (interp.evaluate(a[0], a[1], a[2]).value - interp.evaluate(b[0], b[1], b[2]).value) / (2 * h);
-                EXPECT_NEAR(gk[k], d, 1e-5 * std::max(1.0, std::fabs(d))) << c.name << " d/d" << "xyz"[k];
-                ++checked;
-            }
-        }
+        for (int n = 0; n < 50; ++n)
+            checked += test::expectGradientMatchesDifferences(grad, interp, samplePoints(c, rng, 1), c.name);
     }
     EXPECT_GT(checked, 600);
 }

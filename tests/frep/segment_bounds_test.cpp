@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "frep/conv_segment.h"
+#include "kernel_checks.h"
 
 namespace hg::frep {
 namespace {
@@ -31,6 +32,13 @@ Segment randomSegment(std::mt19937& rng) {
     const double s = std::pow(10.0, std::uniform_real_distribution<double>(0.0, 1.5)(rng));  // 1 .. 32
     g.q[6] = u(rng) < -0.8 ? -s : s;  // the width's sign does not matter
     return g;
+}
+
+// A point at t along the segment (0: its begin, 1: its end) moved off it by
+// a normal offset of deviation 1.5 / s on each axis, where the surface runs.
+void nearSegment(const Segment& g, double t, std::mt19937& rng, double p[3]) {
+    std::normal_distribution<double> off(0.0, 1.5 / std::fabs(g.q[6]));
+    for (int k = 0; k < 3; ++k) p[k] = g.q[k] + t * (g.q[k + 3] - g.q[k]) + off(rng);
 }
 
 // The distance from p to the segment's line.
@@ -52,25 +60,14 @@ struct Sampled {
 // 8^3 points of the box, corners and faces included, through the double
 // and the float paths; every value must lie in `bounds`.
 Sampled sampleBox(const Segment& g, const double lo[3], double size, const Interval& bounds) {
-    std::vector<double> x, y, z;
-    std::vector<float> xf, yf, zf;
-    for (int i = 0; i < 8; ++i)
-        for (int j = 0; j < 8; ++j)
-            for (int k = 0; k < 8; ++k) {
-                // Points the float path can represent, inside the box.
-                const float fx = static_cast<float>(std::min(lo[0] + size * i / 7.0, lo[0] + size));
-                const float fy = static_cast<float>(std::min(lo[1] + size * j / 7.0, lo[1] + size));
-                const float fz = static_cast<float>(std::min(lo[2] + size * k / 7.0, lo[2] + size));
-                if (fx < lo[0] || fx > lo[0] + size || fy < lo[1] || fy > lo[1] + size || fz < lo[2] ||
-                    fz > lo[2] + size)
-                    continue;
-                xf.push_back(fx); yf.push_back(fy); zf.push_back(fz);
-                x.push_back(fx); y.push_back(fy); z.push_back(fz);
-            }
+    const test::BoxSamples p = test::floatPointsInBox(lo, size);
+    const std::vector<double>& x = p.x;
+    const std::vector<double>& y = p.y;
+    const std::vector<double>& z = p.z;
     std::vector<double> out(x.size());
     std::vector<float> outf(x.size());
     convSegmentBatch(x.data(), y.data(), z.data(), out.data(), x.size(), g.q);
-    convSegmentBatch(xf.data(), yf.data(), zf.data(), outf.data(), x.size(), g.q);
+    convSegmentBatch(p.xf.data(), p.yf.data(), p.zf.data(), outf.data(), x.size(), g.q);
     Sampled s;
     for (std::size_t i = 0; i < out.size(); ++i) {
         EXPECT_TRUE(bounds.contains(out[i])) << "double path: F(" << x[i] << ", " << y[i] << ", " << z[i]
@@ -89,13 +86,12 @@ TEST(SegmentBounds, HoldEveryValueOnBoxesAroundTheSkeleton) {
         const Segment g = randomSegment(rng);
         const double s = std::fabs(g.q[6]);
         for (int b = 0; b < 40; ++b) {
-            // A point along the segment (or a little past its ends), moved
-            // off it by up to three kernel widths, where the surface runs.
+            // Along the segment or a little past its ends.
             const double t = std::uniform_real_distribution<double>(-0.3, 1.3)(rng);
-            double lo[3];
             const double size = std::pow(10.0, std::uniform_real_distribution<double>(-4.0, 0.0)(rng)) / s;
-            std::normal_distribution<double> off(0.0, 1.5 / s);
-            for (int k = 0; k < 3; ++k) lo[k] = g.q[k] + t * (g.q[k + 3] - g.q[k]) + off(rng) - 0.5 * size;
+            double lo[3];
+            nearSegment(g, t, rng, lo);
+            for (double& v : lo) v -= 0.5 * size;
             const Interval bounds = convSegmentBounds(Interval(lo[0], lo[0] + size), Interval(lo[1], lo[1] + size),
                                                       Interval(lo[2], lo[2] + size), g.q);
             ASSERT_LE(bounds.lo, bounds.hi);
@@ -118,12 +114,9 @@ TEST(SegmentBounds, StayCloseToTheSpreadAwayFromTheLine) {
         for (int b = 0; b < 40; ++b) {
             const double t = std::uniform_real_distribution<double>(0.0, 1.0)(rng);
             const double size = std::uniform_real_distribution<double>(0.02, 0.2)(rng) / s;
-            std::normal_distribution<double> off(0.0, 1.5 / s);
             double lo[3], centre[3];
-            for (int k = 0; k < 3; ++k) {
-                centre[k] = g.q[k] + t * (g.q[k + 3] - g.q[k]) + off(rng);
-                lo[k] = centre[k] - 0.5 * size;
-            }
+            nearSegment(g, t, rng, centre);
+            for (int k = 0; k < 3; ++k) lo[k] = centre[k] - 0.5 * size;
             if (lineDistance(g, centre) < 2.0 * std::sqrt(3.0) * size) continue;
             const Interval bounds = convSegmentBounds(Interval(lo[0], lo[0] + size), Interval(lo[1], lo[1] + size),
                                                       Interval(lo[2], lo[2] + size), g.q);

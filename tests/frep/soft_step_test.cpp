@@ -19,6 +19,7 @@
 #include "frep/eval_interval.h"
 #include "frep/interpreter.h"
 #include "frep/parser.h"
+#include "kernel_checks.h"
 
 namespace hg::frep {
 namespace {
@@ -104,25 +105,15 @@ TEST(SoftStep, BoundsAreSoundAcrossTheReachAndProveMostBoxes) {
         Interval bounds = iv.evaluate(Interval(lo[0], lo[0] + size), Interval(lo[1], lo[1] + size),
                                       Interval(lo[2], lo[2] + size));
         proven += bounds.lo > 0.0 || bounds.hi < 0.0;
-        std::vector<double> x, y, z;
-        std::vector<float> xf, yf, zf;
-        for (int i = 0; i < 8; ++i)
-            for (int j = 0; j < 8; ++j)
-                for (int k = 0; k < 8; ++k) {
-                    const float fx = static_cast<float>(lo[0] + size * i / 7.0);
-                    const float fy = static_cast<float>(lo[1] + size * j / 7.0);
-                    const float fz = static_cast<float>(lo[2] + size * k / 7.0);
-                    if (fx < lo[0] || fx > lo[0] + size || fy < lo[1] || fy > lo[1] + size || fz < lo[2] ||
-                        fz > lo[2] + size)
-                        continue;
-                    xf.push_back(fx); yf.push_back(fy); zf.push_back(fz);
-                    x.push_back(fx); y.push_back(fy); z.push_back(fz);
-                }
+        const test::BoxSamples p = test::floatPointsInBox(lo.data(), size);
+        const std::vector<double>& x = p.x;
+        const std::vector<double>& y = p.y;
+        const std::vector<double>& z = p.z;
         std::vector<double> out(x.size());
         std::vector<float> outf(x.size());
         ErrorReport errs;
         ev.evaluate(x.data(), y.data(), z.data(), out.data(), out.size(), errs);
-        evf.evaluate(xf.data(), yf.data(), zf.data(), outf.data(), outf.size(), errs);
+        evf.evaluate(p.xf.data(), p.yf.data(), p.zf.data(), outf.data(), outf.size(), errs);
         for (size_t i = 0; i < out.size(); ++i) {
             ASSERT_TRUE(bounds.contains(out[i]))
                 << "f(" << x[i] << ", " << y[i] << ", " << z[i] << ") = " << out[i] << " outside [" << bounds.lo
@@ -182,22 +173,8 @@ TEST(SoftStep, GradientMatchesDifferences) {
     Interpreter interp(p, 0, {});
     std::mt19937 rng(9);
     int checked = 0;
-    for (int n = 0; n < 300; ++n) {
-        std::vector<double> q = samplePoints(rng, 1);
-        ErrorReport errs;
-        Gradient g = grad.evaluate(q[0], q[1], q[2], errs);
-        ASSERT_EQ(errs.count, 0u);
-        EXPECT_EQ(g.value, interp.evaluate(q[0], q[1], q[2]).value);
-        const double h = 1e-6, gk[3] = {g.dx, g.dy, g.dz};
-        for (int k = 0; k < 3; ++k) {
-            std::vector<double> a = q, b = q;
-            a[static_cast<size_t>(k)] += h;
-            b[static_cast<size_t>(k)] -= h;
-            const double d = (interp.evaluate(a[0], a[1], a[2]).value - interp.evaluate(b[0], b[1], b[2]).value) / (2 * h);
-            EXPECT_NEAR(gk[k], d, 1e-5 * std::max(1.0, std::fabs(d))) << "d/d" << "xyz"[k];
-            ++checked;
-        }
-    }
+    for (int n = 0; n < 300; ++n)
+        checked += test::expectGradientMatchesDifferences(grad, interp, samplePoints(rng, 1), "soft");
     EXPECT_EQ(checked, 900);
 }
 
