@@ -209,7 +209,45 @@ Interval boolI(bool surelyT, bool surelyF) {
 
 }  // namespace
 
-IntervalEvaluator::IntervalEvaluator(const Tape& tape) : tape_(tape), regs_(tape.registers) {}
+IntervalEvaluator::IntervalEvaluator(const Tape& tape)
+    : tape_(tape), regs_(tape.registers), affine_(tape.code.size()) {
+    // Which registers hold affine functions of the point, in tape order
+    // (registers are reused, so this follows the code).
+    std::vector<Affine> reg(tape.registers);
+    auto constant = [](const Affine& f) { return f.valid && f.c[1] == 0.0 && f.c[2] == 0.0 && f.c[3] == 0.0; };
+    for (size_t k = 0; k < tape.code.size(); ++k) {
+        const Instr& in = tape.code[k];
+        const Affine none;
+        const Affine& a = in.a != kNoReg ? reg[in.a] : none;
+        const Affine& b = in.b != kNoReg ? reg[in.b] : none;
+        Affine f;
+        auto combine = [&](double ka, const Affine& p, double kb, const Affine& q) {
+            f.valid = true;
+            for (int i = 0; i < 4; ++i) f.c[i] = ka * p.c[i] + kb * q.c[i];
+        };
+        switch (in.op) {
+            case Op::X: f.valid = true; f.c[1] = 1.0; break;
+            case Op::Y: f.valid = true; f.c[2] = 1.0; break;
+            case Op::Z: f.valid = true; f.c[3] = 1.0; break;
+            case Op::Const: f.valid = std::isfinite(in.imm); f.c[0] = in.imm; break;
+            case Op::Add: if (a.valid && b.valid) combine(1.0, a, 1.0, b); break;
+            case Op::Sub: if (a.valid && b.valid) combine(1.0, a, -1.0, b); break;
+            case Op::Neg: if (a.valid) combine(-1.0, a, 0.0, a); break;
+            case Op::Mul:
+                if (constant(a) && b.valid) combine(a.c[0], b, 0.0, b);
+                else if (constant(b) && a.valid) combine(b.c[0], a, 0.0, a);
+                break;
+            case Op::Div:
+            case Op::HfDiv:  // by a constant at least eps away from 0: never fails
+                if (a.valid && constant(b) && std::fabs(b.c[0]) >= kEps) combine(1.0 / b.c[0], a, 0.0, a);
+                break;
+            default: break;
+        }
+        for (double c : f.c) f.valid = f.valid && std::isfinite(c);
+        affine_[k] = f;
+        reg[tape.out[k]] = f;
+    }
+}
 
 Interval IntervalEvaluator::evaluate(const Interval& x, const Interval& y, const Interval& z) {
     bool mayFail = false;
@@ -351,6 +389,24 @@ Interval IntervalEvaluator::evaluate(const Interval& x, const Interval& y, const
         if (fails || (opCanFail(in.op) && nan)) {
             const bool guardMayHold = in.guard == kNoReg || mayBeTrue(regs_[in.guard]);
             if (guardMayHold) mayFail = true;
+        }
+        const Affine& f = affine_[k];
+        if (f.valid && in.op != Op::X && in.op != Op::Y && in.op != Op::Z && in.op != Op::Const) {
+            // The exact range, less rounding: the program computes the same
+            // function through several roundings, the form through others.
+            const Interval* axis[3] = {&x, &y, &z};
+            double mid = f.c[0], reach = 0.0, magnitude = std::fabs(f.c[0]);
+            for (int i = 0; i < 3; ++i) {
+                const double m = 0.5 * (axis[i]->lo + axis[i]->hi), h = 0.5 * (axis[i]->hi - axis[i]->lo);
+                mid += f.c[i + 1] * m;
+                reach += std::fabs(f.c[i + 1]) * h;
+                magnitude += std::fabs(f.c[i + 1]) * std::max(std::fabs(axis[i]->lo), std::fabs(axis[i]->hi));
+            }
+            const double pad = 1e-12 * magnitude;
+            if (std::isfinite(mid) && std::isfinite(reach) && std::isfinite(pad)) {
+                r.lo = std::max(r.lo, mid - reach - pad);
+                r.hi = std::min(r.hi, mid + reach + pad);
+            }
         }
         regs_[tape_.out[k]] = r;
     }
