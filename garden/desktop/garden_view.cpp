@@ -1,9 +1,12 @@
 #include "garden/desktop/garden_view.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
 #include <glm/gtc/matrix_transform.hpp>
+
+#include "garden/desktop/view_lights.h"
 
 namespace hg::garden {
 
@@ -20,26 +23,6 @@ RenderMaterial renderMaterial(const Material& m) {
 
 glm::vec3 vec3(const std::array<double, 3>& v) {
     return {static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2])};
-}
-
-void addLights(const Garden& g, View& v) {
-    glm::vec3 ambient(0.0f);
-    bool anyAmbient = false;
-    for (const Light& l : g.lights) {
-        const glm::vec3 c = glm::vec3(l.color[0], l.color[1], l.color[2]) * static_cast<float>(l.intensity);
-        if (l.kind == Light::Kind::Ambient) {
-            ambient += c;
-            anyAmbient = true;
-        } else if (l.kind == Light::Kind::Directional && v.lights.size() < static_cast<std::size_t>(kMaxLights)) {
-            v.lights.push_back(DirectionalLight{-vec3(l.direction), c});
-        }
-        // Point lights are not drawn by the 3.3 renderer yet; they are kept in the file.
-    }
-    if (v.lights.empty()) {  // a garden without lights still shows its sculptures
-        v.lights.push_back(DirectionalLight{glm::vec3(0.4f, 0.8f, 0.45f), glm::vec3(0.9f)});
-        v.lights.push_back(DirectionalLight{glm::vec3(-0.5f, 0.3f, -0.6f), glm::vec3(0.25f)});
-    }
-    v.ambient = anyAmbient ? ambient : glm::vec3(0.18f);
 }
 
 // A marker for a missing sculpture: a red wire cube of 1 m at its place.
@@ -141,7 +124,7 @@ void GardenView::render(const GardenSession& session, glm::ivec2 viewport, float
                                     0.05f, 500.0f);
     v.eye = session.navigator().eye();
     v.viewport = viewport;
-    addLights(g, v);
+    addGardenLights(g, v);
     renderer_.beginFrame(v);
 
     GroundStyle ground;

@@ -7,6 +7,7 @@
 #include <glm/mat3x3.hpp>
 #include <glm/matrix.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -15,6 +16,11 @@
 #include "garden/render/shapes.h"
 
 namespace hg::garden {
+
+// shaders.cpp declares the light arrays with these sizes.
+static_assert(kMaxLights == 3, "uLightDir[3] in shaders.cpp");
+static_assert(kMaxPointLights == 8, "uPointPosition[8] in shaders.cpp");
+
 namespace {
 
 // Fraction of the eye distance by which lines and the sphere are pulled
@@ -57,8 +63,9 @@ Renderer::Renderer()
       groundProgram_("ground", shaders::kGroundVertex, shaders::kGroundFragment),
       flatProgram_("flat", shaders::kFlatVertex, shaders::kFlatFragment) {
     auto lit = [](const ShaderProgram& p) {
-        return LitUniforms{p.uniform("uEye"), p.uniform("uAmbient"), p.uniform("uLightCount"), p.uniform("uLightDir"),
-                           p.uniform("uLightColor")};
+        return LitUniforms{p.uniform("uEye"),         p.uniform("uAmbient"),       p.uniform("uLightCount"),
+                           p.uniform("uLightDir"),    p.uniform("uLightColor"),    p.uniform("uPointCount"),
+                           p.uniform("uPointPosition"), p.uniform("uPointColor"), p.uniform("uPointRange")};
     };
     meshLit_ = lit(meshProgram_);
     groundLit_ = lit(groundProgram_);
@@ -186,6 +193,9 @@ void Renderer::beginFrame(const View& view) {
     if (view.lights.size() > static_cast<std::size_t>(kMaxLights))
         throw std::invalid_argument("at most " + std::to_string(kMaxLights) + " directional lights, got " +
                                     std::to_string(view.lights.size()));
+    if (view.pointLights.size() > static_cast<std::size_t>(kMaxPointLights))
+        throw std::invalid_argument("at most " + std::to_string(kMaxPointLights) + " point lights, got " +
+                                    std::to_string(view.pointLights.size()));
     view_ = view;
 
     glViewport(0, 0, view.viewport.x, view.viewport.y);
@@ -230,6 +240,21 @@ void Renderer::setLighting(const LitUniforms& u) const {
     glUniform1i(u.lightCount, count);
     glUniform3fv(u.lightDir, kMaxLights, glm::value_ptr(directions[0]));
     glUniform3fv(u.lightColor, kMaxLights, glm::value_ptr(colors[0]));
+
+    glm::vec3 positions[kMaxPointLights]{};
+    glm::vec3 pointColors[kMaxPointLights]{};
+    float ranges[kMaxPointLights]{};
+    const int points = static_cast<int>(view_.pointLights.size());
+    for (int i = 0; i < points; ++i) {
+        const PointLight& light = view_.pointLights[static_cast<std::size_t>(i)];
+        positions[i] = light.position;
+        pointColors[i] = light.color;
+        ranges[i] = std::max(light.range, 1e-3f);
+    }
+    glUniform1i(u.pointCount, points);
+    glUniform3fv(u.pointPosition, kMaxPointLights, glm::value_ptr(positions[0]));
+    glUniform3fv(u.pointColor, kMaxPointLights, glm::value_ptr(pointColors[0]));
+    glUniform1fv(u.pointRange, kMaxPointLights, ranges);
 }
 
 bool Renderer::drawChunk(ChunkId id, const glm::mat4& model, const RenderMaterial& material) {

@@ -47,6 +47,17 @@ struct DirectionalLight {
 
 constexpr int kMaxLights = 3;
 
+// A light at a point: it falls with the square of the distance (intensity
+// is its brightness 1 m away, as bright as a directional light of that
+// colour) and smoothly to nothing at `range`.
+struct PointLight {
+    glm::vec3 position{0.0f, 3.0f, 0.0f};
+    glm::vec3 color{1.0f, 1.0f, 1.0f};  // linear intensity at 1 m
+    float range = 10.0f;                // metres
+};
+
+constexpr int kMaxPointLights = 8;
+
 struct View {
     glm::mat4 view{1.0f};
     glm::mat4 projection{1.0f};
@@ -54,6 +65,7 @@ struct View {
     glm::ivec2 viewport{1, 1};                         // pixels of the bound framebuffer
     glm::vec4 clearColor{0.62f, 0.74f, 0.86f, 1.0f};  // sRGB sky
     std::vector<DirectionalLight> lights;              // at most kMaxLights
+    std::vector<PointLight> pointLights;               // at most kMaxPointLights
     glm::vec3 ambient{0.2f, 0.2f, 0.2f};               // linear
 };
 
@@ -98,7 +110,7 @@ public:
     // --- a frame -------------------------------------------------------------
     // Sets the viewport and GL state (depth test, back-face culling, no
     // blending), clears colour and depth. Throws std::invalid_argument for
-    // more than kMaxLights lights.
+    // more than kMaxLights directional or kMaxPointLights point lights.
     void beginFrame(const View& view);
     // Draws an uploaded chunk with `model` (rotation, translation, uniform or
     // not scale: normals use the inverse transpose). False when `id` has no
@@ -129,7 +141,7 @@ private:
         std::size_t bytes = 0;
     };
     struct LitUniforms {
-        GLint eye, ambient, lightCount, lightDir, lightColor;
+        GLint eye, ambient, lightCount, lightDir, lightColor, pointCount, pointPosition, pointColor, pointRange;
     };
 
     // Frame lighting for the bound program whose locations are `u`.

@@ -9,6 +9,10 @@ namespace hg::garden::shaders {
     "uniform int uLightCount;\n"                                                      \
     "uniform vec3 uLightDir[3];\n"                                                    \
     "uniform vec3 uLightColor[3];\n"                                                  \
+    "uniform int uPointCount;\n"                                                      \
+    "uniform vec3 uPointPosition[8];\n"                                               \
+    "uniform vec3 uPointColor[8];\n"                                                  \
+    "uniform float uPointRange[8];\n"                                                 \
     "vec3 toLinear(vec3 c) {\n"                                                       \
     "    return mix(c / 12.92, pow((c + 0.055) / 1.055, vec3(2.4)), step(0.04045, c));\n" \
     "}\n"                                                                             \
@@ -25,6 +29,19 @@ namespace hg::garden::shaders {
     "        if (ndl <= 0.0) continue;\n"                                             \
     "        float ndh = max(dot(n, normalize(l + v)), 0.0);\n"                       \
     "        c += uLightColor[i] * (base * ndl + specular * pow(ndh, shininess));\n"  \
+    "    }\n"                                                                         \
+    "    for (int i = 0; i < uPointCount; ++i) {\n"                                   \
+    "        vec3 d = uPointPosition[i] - p;\n"                                       \
+    "        float r = length(d);\n"                                                  \
+    "        if (r >= uPointRange[i]) continue;\n"                                    \
+    "        vec3 l = d / max(r, 1e-4);\n"                                            \
+    "        float ndl = dot(n, l);\n"                                                \
+    "        if (ndl <= 0.0) continue;\n"                                             \
+    "        float x = r / uPointRange[i];\n"                                         \
+    "        float window = clamp(1.0 - x * x * x * x, 0.0, 1.0);\n"                  \
+    "        float falloff = window * window / max(r * r, 0.01);\n"                   \
+    "        float ndh = max(dot(n, normalize(l + v)), 0.0);\n"                       \
+    "        c += falloff * uPointColor[i] * (base * ndl + specular * pow(ndh, shininess));\n" \
     "    }\n"                                                                         \
     "    return c;\n"                                                                 \
     "}\n"

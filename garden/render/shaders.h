@@ -6,7 +6,8 @@
 
 namespace hg::garden::shaders {
 
-// Lit sculpture chunks: Blinn-Phong, up to kMaxLights directional lights.
+// Lit sculpture chunks: Blinn-Phong, up to kMaxLights directional and
+// kMaxPointLights point lights (inverse square, windowed to their range).
 extern const char* const kMeshVertex;
 extern const char* const kMeshFragment;
 

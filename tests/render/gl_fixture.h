@@ -126,6 +126,12 @@ protected:
         return glm::normalize(far - v.eye);
     }
 
+    // The pixel (x, y, rows top-down) where world point p lands.
+    glm::ivec2 worldToPixel(const View& v, const glm::vec3& p) const {
+        const glm::vec3 win = glm::project(p, v.view, v.projection, glm::vec4(0, 0, kWidth, kHeight));
+        return {static_cast<int>(win.x), kHeight - 1 - static_cast<int>(win.y)};
+    }
+
     // Projected radius in pixels of a sphere of radius r at distance d on
     // the view axis: its outline is the circle where the cone from the eye
     // touches it, of half-angle asin(r / d).

@@ -407,6 +407,60 @@ TEST_F(GlTest, LitSideIsBrighterThanTheOther) {
     EXPECT_THROW(renderer_->beginFrame(tooMany), std::invalid_argument);
 }
 
+TEST_F(GlTest, PointLightsFallWithDistanceAndStopAtTheirRange) {
+    // A unit sphere at the origin seen from +z, lit only by a point light
+    // on its right (+x) and a little ambient light.
+    renderer_->upload(1, 1, uvSphereMesh(1.0f, 48, 24));
+    const int r = static_cast<int>(discRadiusPixels(1.0, 5.0));
+    auto render = [&](std::vector<PointLight> points) {
+        View view = makeView({0, 0, 5}, {0, 0, 0});
+        view.lights.clear();
+        view.ambient = glm::vec3(0.05f);
+        view.pointLights = std::move(points);
+        target_->bind();
+        renderer_->beginFrame(view);
+        renderer_->drawChunk(1, glm::mat4(1.0f), RenderMaterial{{0.8f, 0.8f, 0.8f}, 0.0f, 16.0f});
+        renderer_->endFrame();
+        read();
+        return std::pair<int, int>{pixel(kWidth / 2 + r * 6 / 10, kHeight / 2).sum(),
+                                   pixel(kWidth / 2 - r * 6 / 10, kHeight / 2).sum()};
+    };
+    const auto [darkRight, darkLeft] = render({});
+    const auto [nearRight, nearLeft] = render({PointLight{{2.0f, 0.0f, 1.0f}, glm::vec3(4.0f), 10.0f}});
+    const auto [farRight, farLeft] = render({PointLight{{4.0f, 0.0f, 2.0f}, glm::vec3(4.0f), 10.0f}});
+    EXPECT_NEAR(darkRight, darkLeft, 3) << "ambient alone lights both sides alike";
+    EXPECT_GT(nearRight, nearLeft + 150) << "the side facing the light is lit";
+    EXPECT_NEAR(nearLeft, darkLeft, 3) << "the far side gets nothing";
+    EXPECT_GT(nearRight, farRight + 60) << "the same light twice as far is dimmer";
+    EXPECT_GT(farRight, darkRight + 30) << "but still lights";
+    // The sphere's nearest point is 1.24 m from the light: a range of 1 m
+    // reaches nothing, 1.5 m some of it.
+    const auto [shortRight, shortLeft] = render({PointLight{{2.0f, 0.0f, 1.0f}, glm::vec3(4.0f), 1.0f}});
+    EXPECT_NEAR(shortRight, darkRight, 3) << "beyond its range a light adds nothing";
+    (void)shortLeft;
+
+    // The ground under a lamp is brighter than the ground away from it.
+    View lamp = makeView({0.0f, 2.0f, 6.0f}, {0.0f, 0.0f, 0.0f});
+    lamp.lights.clear();
+    lamp.ambient = glm::vec3(0.05f);
+    lamp.pointLights = {PointLight{{-2.0f, 0.5f, 0.0f}, glm::vec3(2.0f), 3.0f}};
+    GroundStyle ground;
+    ground.color = {0.7f, 0.7f, 0.7f};
+    ground.lineColor = ground.color;
+    target_->bind();
+    renderer_->beginFrame(lamp);
+    renderer_->drawGround(ground);
+    renderer_->endFrame();
+    read();
+    const glm::ivec2 under = worldToPixel(lamp, {-2.0f, 0.0f, 0.0f});
+    const glm::ivec2 away = worldToPixel(lamp, {2.0f, 0.0f, 0.0f});
+    EXPECT_GT(pixel(under.x, under.y).sum(), pixel(away.x, away.y).sum() + 100);
+
+    View tooMany = lamp;
+    tooMany.pointLights.resize(kMaxPointLights + 1);
+    EXPECT_THROW(renderer_->beginFrame(tooMany), std::invalid_argument);
+}
+
 TEST_F(GlTest, NonUniformScaleKeepsNormalsPerpendicular) {
     // Squashed to half height, the sphere's top is flatter: lit from above
     // it stays bright across more of its width than the round one.
