@@ -73,11 +73,15 @@ Sym convArcPiece<Sym>(const Sym& x0, const Sym& x1, const Sym& x2, const Sym* fr
 template <>
 Sym softStep<Sym>(const Sym& soft, const Sym& r2, const Sym& d) {
     TapeBuilder* b = soft.builder() ? soft.builder() : r2.builder();
-    const bool fusable = d.isConstant() && std::isfinite(d.constant()) && d.constant() > 0.0;
+    // A radius whose sixth power is a normal double: every constant the
+    // kernel divides by is finite and non-zero (others keep the generic form).
+    const double r = d.isConstant() ? d.constant() : 0.0;
+    const double r6 = r * r * r * r * r * r;
+    const bool fusable = d.isConstant() && r > 0.0 && std::isnormal(r6);
     if (fusable && b) {
         const double q[kSoftStepParams] = {d.constant()};
-        const std::uint32_t r = r2.on(*b);
-        return Sym(b, b->fused(Op::SoftStep, soft.on(*b), r, r, q));
+        const std::uint32_t reg = r2.on(*b);
+        return Sym(b, b->fused(Op::SoftStep, soft.on(*b), reg, reg, q));
     }
     return softStep<SymExpanded>(soft, r2, d);
 }
