@@ -1,5 +1,7 @@
 #include "garden/app/garden_session.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -48,7 +50,9 @@ GardenSession::GardenSession(GardenLoad load, SessionSettings settings)
     dir = glm::normalize(dir);
     navigator_.setPose(eye, std::atan2(dir.x, -dir.z), std::asin(std::clamp(dir.y, -1.0f, 1.0f)));
     sculptures_.resize(g.sculptures.size());
-    for (std::size_t i = 0; i < g.sculptures.size(); ++i) buildSculpture(i);
+    // Sculptures are independent: built side by side (each one's box
+    // estimate runs on one thread), each into its own slot.
+    tbb::parallel_for(std::size_t{0}, g.sculptures.size(), [this](std::size_t i) { buildSculpture(i); });
     buildMorph();
 }
 
@@ -112,7 +116,11 @@ void GardenSession::buildMorph() {
     result.material = g.morph->material;
     result.modelToWorld = placementMatrix(g.morph->resultPlacement);
     result.scale = g.morph->resultPlacement.scale;
-    MorphSourcesResult built = buildGardenMorphSources(load_);
+    // The sources were sampled as sculptures: their boxes are known.
+    ResolvedBoxes resolved(sculptures_.size());
+    for (std::size_t i = 0; i < sculptures_.size(); ++i)
+        if (sculptures_[i].volume) resolved[i] = sculptures_[i].volume->frame.modelBox;
+    MorphSourcesResult built = buildGardenMorphSources(load_, 0, resolved);
     if (!built.sources) {
         result.error = built.error;
         sculptures_.push_back(std::move(result));

@@ -13,7 +13,7 @@ MorphTriangle morphTriangle(const Garden& garden) {
     return t;
 }
 
-std::string morphModelBox(const GardenLoad& load, frep::Box3& box) {
+std::string morphModelBox(const GardenLoad& load, frep::Box3& box, const ResolvedBoxes& resolved) {
     if (!load.garden || !load.garden->morph) return "the garden has no morph";
     const MorphSpec& m = *load.garden->morph;
     if (m.box) {
@@ -24,6 +24,10 @@ std::string morphModelBox(const GardenLoad& load, frep::Box3& box) {
     std::array<frep::Box3, 3> boxes;
     for (std::size_t i = 0; i < 3; ++i) {
         const SculptureSpec& spec = load.garden->sculptures[m.sourceIndex[i]];
+        if (m.sourceIndex[i] < resolved.size() && resolved[m.sourceIndex[i]]) {
+            boxes[i] = *resolved[m.sourceIndex[i]];
+            continue;
+        }
         voxel::VolumeRequest request;
         request.box = spec.box;
         bool estimated = false;
@@ -34,10 +38,11 @@ std::string morphModelBox(const GardenLoad& load, frep::Box3& box) {
     return "";
 }
 
-MorphSourcesResult buildGardenMorphSources(const GardenLoad& load, std::uint64_t memoryLimit) {
+MorphSourcesResult buildGardenMorphSources(const GardenLoad& load, std::uint64_t memoryLimit,
+                                           const ResolvedBoxes& resolved) {
     MorphSourcesResult r;
     frep::Box3 box;
-    r.error = morphModelBox(load, box);
+    r.error = morphModelBox(load, box, resolved);
     if (!r.error.empty()) return r;
     if (!load.morphError.empty()) {
         r.error = load.morphError;

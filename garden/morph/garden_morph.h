@@ -6,7 +6,9 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "garden/morph/morph_sources.h"
 #include "garden/morph/morph_weights.h"
@@ -17,13 +19,20 @@ namespace hg::garden {
 // Corner i is source i's position (x, z). The garden must have a morph.
 MorphTriangle morphTriangle(const Garden& garden);
 
+// Model boxes already resolved for the garden's sculptures, by sculpture
+// index (none: not resolved): a session that sampled the sources passes
+// theirs, so they are not estimated a second time.
+using ResolvedBoxes = std::vector<std::optional<frep::Box3>>;
+
 // The shared model box: $.morph.result.box, else the union of the sources'
-// boxes (given, or estimated by interval subdivision). "" on success, else
-// why not (a source is missing, or its box cannot be estimated).
-std::string morphModelBox(const GardenLoad& load, frep::Box3& box);
+// boxes (given, resolved, or estimated by interval subdivision). "" on
+// success, else why not (a source is missing, or its box cannot be
+// estimated).
+std::string morphModelBox(const GardenLoad& load, frep::Box3& box, const ResolvedBoxes& resolved = {});
 
 // The three caches at $.morph.result.resolution and band.
-MorphSourcesResult buildGardenMorphSources(const GardenLoad& load, std::uint64_t memoryLimit = 0);
+MorphSourcesResult buildGardenMorphSources(const GardenLoad& load, std::uint64_t memoryLimit = 0,
+                                           const ResolvedBoxes& resolved = {});
 
 // $.morph.balance when given, else balancingFactors(sources.surfaceGradient).
 std::array<double, 3> morphBalance(const MorphSpec& spec, const MorphSources& sources);

@@ -121,6 +121,16 @@ TEST_F(GardenMorph, SetsUpFromAGardenFile) {
     ASSERT_EQ(morphModelBox(load, box), "");
     EXPECT_EQ(box.lo[1], -0.1);
     EXPECT_EQ(box.hi[0], 0.6);
+    // Boxes a session already resolved are used as they are (here one wider
+    // than the file's, to see it taken).
+    ResolvedBoxes resolved(3);
+    frep::Box3 wide;
+    for (int a = 0; a < 3; ++a) { wide.lo[a] = -2.0; wide.hi[a] = 2.0; }
+    resolved[1] = wide;
+    frep::Box3 withResolved;
+    ASSERT_EQ(morphModelBox(load, withResolved, resolved), "");
+    EXPECT_EQ(withResolved.lo[0], -2.0);
+    EXPECT_EQ(withResolved.hi[1], 2.0);
     MorphSourcesResult r = buildGardenMorphSources(load);
     ASSERT_TRUE(r.sources) << r.error;
     EXPECT_EQ(r.sources->frame.resolution, 32);
