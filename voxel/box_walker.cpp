@@ -7,32 +7,12 @@ namespace hg::voxel {
 
 namespace {
 
-int floorToMultiple(int v, int size) {
-    int q = v / size;
-    if (v % size != 0 && v < 0) --q;
-    return q * size;
-}
-
 IndexBox boxAt(const int origin[3], int size) {
     return IndexBox::fromCorners(origin[0], origin[1], origin[2], origin[0] + size - 1, origin[1] + size - 1,
                                  origin[2] + size - 1);
 }
 
 }  // namespace
-
-std::vector<std::array<int, 3>> alignedBoxes(const IndexBox& box, int size) {
-    std::vector<std::array<int, 3>> out;
-    if (box.empty()) return out;
-    int lo[3], hi[3];
-    for (int a = 0; a < 3; ++a) {
-        lo[a] = floorToMultiple(box.lo[a], size);
-        hi[a] = floorToMultiple(box.hi[a], size);
-    }
-    for (int z = lo[2]; z <= hi[2]; z += size)
-        for (int y = lo[1]; y <= hi[1]; y += size)
-            for (int x = lo[0]; x <= hi[0]; x += size) out.push_back({x, y, z});
-    return out;
-}
 
 BoxWalker::BoxWalker(const frep::Model& model, const VolumeFrame& frame, double scale)
     : frame_(frame), scale_(scale), scalef_(static_cast<float>(scale)), sampler_(model),

@@ -82,7 +82,4 @@ private:
     std::vector<float> x_, y_, z_, f_;
 };
 
-// Aligned boxes of edge `size` that cover `box`, in z, y, x order.
-std::vector<std::array<int, 3>> alignedBoxes(const IndexBox& box, int size);
-
 }  // namespace hg::voxel

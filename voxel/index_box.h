@@ -4,7 +4,9 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
+#include <vector>
 
 namespace hg::voxel {
 
@@ -44,6 +46,26 @@ inline IndexBox intersect(const IndexBox& a, const IndexBox& b) {
 
 inline bool operator==(const IndexBox& a, const IndexBox& b) {
     return std::equal(a.lo, a.lo + 3, b.lo) && std::equal(a.hi, a.hi + 3, b.hi);
+}
+
+// The multiple of m (> 0) at or below v, and at or above it (negative v too).
+inline int floorMultiple(int v, int m) { return v >= 0 ? v / m * m : -((-v + m - 1) / m) * m; }
+inline int ceilMultiple(int v, int m) { return -floorMultiple(-v, m); }
+
+// Origins of the boxes of edge `size`, aligned to multiples of it, that
+// cover `box`, in z, y, x order (x fastest).
+inline std::vector<std::array<int, 3>> alignedBoxes(const IndexBox& box, int size) {
+    std::vector<std::array<int, 3>> out;
+    if (box.empty()) return out;
+    int lo[3], hi[3];
+    for (int a = 0; a < 3; ++a) {
+        lo[a] = floorMultiple(box.lo[a], size);
+        hi[a] = floorMultiple(box.hi[a], size);
+    }
+    for (int z = lo[2]; z <= hi[2]; z += size)
+        for (int y = lo[1]; y <= hi[1]; y += size)
+            for (int x = lo[0]; x <= hi[0]; x += size) out.push_back({x, y, z});
+    return out;
 }
 
 }  // namespace hg::voxel

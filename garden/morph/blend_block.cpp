@@ -36,20 +36,6 @@ Lattice itemLattice(const std::array<int, 3>& origin, BlendPass pass, const voxe
     return l;
 }
 
-std::vector<std::array<int, 3>> blockOrigins(const voxel::IndexBox& box) {
-    std::vector<std::array<int, 3>> out;
-    if (box.empty()) return out;
-    int lo[3], hi[3];
-    for (int a = 0; a < 3; ++a) {
-        lo[a] = floorMultiple(box.lo[a], kBlendBlock);
-        hi[a] = floorMultiple(box.hi[a], kBlendBlock);
-    }
-    for (int z = lo[2]; z <= hi[2]; z += kBlendBlock)
-        for (int y = lo[1]; y <= hi[1]; y += kBlendBlock)
-            for (int x = lo[0]; x <= hi[0]; x += kBlendBlock) out.push_back({x, y, z});
-    return out;
-}
-
 BlendInputs inputs(const MorphSources& s, const MorphWeights& weights) {
     BlendInputs in{};
     for (std::size_t i = 0; i < 3; ++i) {

@@ -63,9 +63,6 @@ struct Lattice {
 // The voxels of the block at `origin` that `pass` blends, clipped to the box.
 Lattice itemLattice(const std::array<int, 3>& origin, BlendPass pass, const voxel::IndexBox& indexBox);
 
-// Every block origin that covers the index box, z outermost.
-std::vector<std::array<int, 3>> blockOrigins(const voxel::IndexBox& box);
-
 struct BlendInputs {
     const BlockedField* f[3];
     float w[3];

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "voxel/dense_field.h"
+#include "voxel/index_box.h"
 
 namespace hg::garden {
 
@@ -61,8 +62,7 @@ private:
     std::vector<float> coarse_;
 };
 
-// The multiple of m at or below v (negative v too).
-inline int floorMultiple(int v, int m) { return v >= 0 ? v / m * m : -((-v + m - 1) / m) * m; }
-inline int ceilMultiple(int v, int m) { return -floorMultiple(-v, m); }
+using voxel::ceilMultiple;
+using voxel::floorMultiple;
 
 }  // namespace hg::garden

@@ -29,7 +29,7 @@ voxel::Volume blendMorph(const MorphSources& sources, const MorphWeights& weight
     if (!why.empty()) throw std::invalid_argument(why);
     voxel::Volume result = makeMorphVolume(sources);
     const BlendInputs in = inputs(sources, weights);
-    const std::vector<std::array<int, 3>> origins = blockOrigins(in.box);
+    const std::vector<std::array<int, 3>> origins = voxel::alignedBoxes(in.box, kBlendBlock);
     std::vector<std::unique_ptr<FloatLeaf>> leaves(origins.size());
     std::vector<char> insideTile(origins.size(), 0);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, origins.size()), [&](const tbb::blocked_range<std::size_t>& r) {

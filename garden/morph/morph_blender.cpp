@@ -98,7 +98,7 @@ struct MorphBlender::Impl {
     // The items depend on the frame only; their order on the viewer.
     void build() {
         const voxel::IndexBox& box = sources.frame.indexBox;
-        std::vector<std::array<int, 3>> origins = blockOrigins(box);
+        std::vector<std::array<int, 3>> origins = voxel::alignedBoxes(box, kBlendBlock);
         for (const auto& o : origins) {
             std::uint32_t n = itemLattice(o, BlendPass::Coarse, box).size();
             if (n > 0) items.push_back({o, BlendPass::Coarse, n});
