@@ -20,28 +20,26 @@ namespace hg::garden::shaders {
     "    c = clamp(c, 0.0, 1.0);\n"                                                   \
     "    return mix(c * 12.92, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(0.0031308, c));\n" \
     "}\n"                                                                             \
+    "vec3 blinnPhong(vec3 base, vec3 n, vec3 l, vec3 v, float specular, float shininess) {\n" \
+    "    float ndl = dot(n, l);\n"                                                    \
+    "    if (ndl <= 0.0) return vec3(0.0);\n"                                         \
+    "    float ndh = max(dot(n, normalize(l + v)), 0.0);\n"                           \
+    "    return base * ndl + vec3(specular * pow(ndh, shininess));\n"                 \
+    "}\n"                                                                             \
     "vec3 shade(vec3 base, vec3 n, vec3 p, float specular, float shininess) {\n"      \
     "    vec3 v = normalize(uEye - p);\n"                                             \
     "    vec3 c = uAmbient * base;\n"                                                 \
-    "    for (int i = 0; i < uLightCount; ++i) {\n"                                   \
-    "        vec3 l = uLightDir[i];\n"                                                \
-    "        float ndl = dot(n, l);\n"                                                \
-    "        if (ndl <= 0.0) continue;\n"                                             \
-    "        float ndh = max(dot(n, normalize(l + v)), 0.0);\n"                       \
-    "        c += uLightColor[i] * (base * ndl + specular * pow(ndh, shininess));\n"  \
-    "    }\n"                                                                         \
+    "    for (int i = 0; i < uLightCount; ++i)\n"                                     \
+    "        c += uLightColor[i] * blinnPhong(base, n, uLightDir[i], v, specular, shininess);\n" \
     "    for (int i = 0; i < uPointCount; ++i) {\n"                                   \
     "        vec3 d = uPointPosition[i] - p;\n"                                       \
     "        float r = length(d);\n"                                                  \
     "        if (r >= uPointRange[i]) continue;\n"                                    \
-    "        vec3 l = d / max(r, 1e-4);\n"                                            \
-    "        float ndl = dot(n, l);\n"                                                \
-    "        if (ndl <= 0.0) continue;\n"                                             \
     "        float x = r / uPointRange[i];\n"                                         \
     "        float window = clamp(1.0 - x * x * x * x, 0.0, 1.0);\n"                  \
     "        float falloff = window * window / max(r * r, 0.01);\n"                   \
-    "        float ndh = max(dot(n, normalize(l + v)), 0.0);\n"                       \
-    "        c += falloff * uPointColor[i] * (base * ndl + specular * pow(ndh, shininess));\n" \
+    "        vec3 l = d / max(r, 1e-4);\n"                                            \
+    "        c += falloff * uPointColor[i] * blinnPhong(base, n, l, v, specular, shininess);\n" \
     "    }\n"                                                                         \
     "    return c;\n"                                                                 \
     "}\n"
