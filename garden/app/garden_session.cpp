@@ -10,6 +10,7 @@
 #include "garden/morph/garden_morph.h"
 #include "garden/morph/morph_blend.h"
 #include "garden/morph/morph_sources.h"
+#include "garden/scene/to_glm.h"
 #include "voxel/sampler.h"
 
 namespace hg::garden {
@@ -19,9 +20,7 @@ namespace {
 constexpr int kLevelRefreshFrames = 45;
 
 glm::mat4 placementMatrix(const Placement& p) {
-    glm::mat4 m = glm::translate(glm::mat4(1.0f), glm::vec3(static_cast<float>(p.position[0]),
-                                                            static_cast<float>(p.position[1]),
-                                                            static_cast<float>(p.position[2])));
+    glm::mat4 m = glm::translate(glm::mat4(1.0f), toGlm(p.position));
     m = glm::rotate(m, glm::radians(static_cast<float>(p.yawDegrees)), glm::vec3(0.0f, 1.0f, 0.0f));
     return glm::scale(m, glm::vec3(static_cast<float>(p.scale)));
 }
@@ -41,10 +40,8 @@ GardenSession::GardenSession(GardenLoad load, SessionSettings settings)
         for (SculptureSpec& spec : load_.garden->sculptures) spec.resolution = settings_.sculptureResolution;
     if (settings_.morphResolution > 0 && load_.garden->morph) load_.garden->morph->resolution = settings_.morphResolution;
     const Garden& g = *load_.garden;
-    const glm::vec3 eye(static_cast<float>(g.start.position[0]), static_cast<float>(g.start.position[1]),
-                        static_cast<float>(g.start.position[2]));
-    const glm::vec3 at(static_cast<float>(g.start.lookAt[0]), static_cast<float>(g.start.lookAt[1]),
-                       static_cast<float>(g.start.lookAt[2]));
+    const glm::vec3 eye = toGlm(g.start.position);
+    const glm::vec3 at = toGlm(g.start.lookAt);
     glm::vec3 dir = at - eye;
     if (glm::length(dir) < 1e-6f) dir = glm::vec3(0.0f, 0.0f, -1.0f);
     dir = glm::normalize(dir);

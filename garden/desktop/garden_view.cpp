@@ -7,6 +7,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "garden/desktop/view_lights.h"
+#include "garden/scene/to_glm.h"
 
 namespace hg::garden {
 
@@ -19,10 +20,6 @@ RenderMaterial renderMaterial(const Material& m) {
     r.specular = 0.05f + 0.6f * (1.0f - m.roughness) + 0.3f * m.metallic;
     r.shininess = 4.0f + 200.0f * (1.0f - m.roughness) * (1.0f - m.roughness);
     return r;
-}
-
-glm::vec3 vec3(const std::array<double, 3>& v) {
-    return {static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2])};
 }
 
 // A marker for a missing sculpture: a red wire cube of 1 m at its place.
@@ -165,7 +162,7 @@ void GardenView::render(const GardenSession& session, glm::ivec2 viewport, float
         }
     }
     if (const auto& d = session.detail())
-        renderer_.drawSphere(vec3(d->center), static_cast<float>(d->radius), glm::vec4(0.2f, 0.85f, 0.3f, 1.0f), true);
+        renderer_.drawSphere(toGlm(d->center), static_cast<float>(d->radius), glm::vec4(0.2f, 0.85f, 0.3f, 1.0f), true);
 }
 
 }  // namespace hg::garden

@@ -7,15 +7,9 @@
 
 #include <glm/geometric.hpp>
 
+#include "garden/scene/to_glm.h"
+
 namespace hg::garden {
-
-namespace {
-
-glm::vec3 vec3(const std::array<double, 3>& v) {
-    return {static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2])};
-}
-
-}  // namespace
 
 void addGardenLights(const Garden& g, View& v) {
     glm::vec3 ambient(0.0f);
@@ -27,9 +21,9 @@ void addGardenLights(const Garden& g, View& v) {
             ambient += c;
             anyAmbient = true;
         } else if (l.kind == Light::Kind::Directional && v.lights.size() < static_cast<std::size_t>(kMaxLights)) {
-            v.lights.push_back(DirectionalLight{-vec3(l.direction), c});
+            v.lights.push_back(DirectionalLight{-toGlm(l.direction), c});
         } else if (l.kind == Light::Kind::Point) {
-            const PointLight p{vec3(l.position), c, static_cast<float>(l.range)};
+            const PointLight p{toGlm(l.position), c, static_cast<float>(l.range)};
             points.emplace_back(std::max(0.0f, glm::distance(v.eye, p.position) - p.range), p);
         }
     }

@@ -6,6 +6,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "garden/scene/to_glm.h"
+
 namespace hg::garden {
 
 namespace {
@@ -42,9 +44,8 @@ std::string apply(const ReplayCommand& c, GardenSession& s, FrameRenderer* rende
             else s.setDetail(poly::Sphere{c.vec, c.number});
             return "";
         case ReplayCommand::Kind::Pose:
-            s.navigator().setPose(glm::vec3(static_cast<float>(c.vec[0]), static_cast<float>(c.vec[1]),
-                                            static_cast<float>(c.vec[2])),
-                                  static_cast<float>(c.pair[0] * kDegrees), static_cast<float>(c.pair[1] * kDegrees));
+            s.navigator().setPose(toGlm(c.vec), static_cast<float>(c.pair[0] * kDegrees),
+                                  static_cast<float>(c.pair[1] * kDegrees));
             return "";
         case ReplayCommand::Kind::Select: {
             if (c.text.empty()) {

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "garden/scene/json_reader.h"
+#include "garden/scene/to_glm.h"
 
 namespace hg::garden {
 
@@ -15,17 +16,13 @@ namespace {
 
 constexpr double kDegrees = 3.14159265358979323846 / 180.0;
 
-glm::vec3 toVec3(const std::array<double, 3>& v) {
-    return {static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2])};
-}
-
 // A pose: position, and either a direction to point along or yaw/pitch.
 Pose readPose(const nlohmann::json& v, const std::string& path) {
     ObjectReader r(v, path, {"position", "direction"});
     Pose p;
-    p.position = toVec3(readVec3(r.required("position"), r.pathOf("position")));
+    p.position = toGlm(readVec3(r.required("position"), r.pathOf("position")));
     if (const auto* d = r.optional("direction")) {
-        glm::vec3 dir = toVec3(readVec3(*d, r.pathOf("direction")));
+        glm::vec3 dir = toGlm(readVec3(*d, r.pathOf("direction")));
         if (glm::length(dir) == 0.0f) throw JsonError(r.pathOf("direction"), "a direction must not be zero");
         dir = glm::normalize(dir);
         const glm::vec3 up = std::fabs(dir.y) > 0.999f ? glm::vec3(0, 0, -1) : glm::vec3(0, 1, 0);
