@@ -4,11 +4,13 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <memory>
 #include <vector>
 
 #include "frep/eval_gradient.h"
+#include "voxel/lattice_evaluation.h"
 
 namespace hg::voxel {
 
@@ -45,31 +47,14 @@ Probe sampleLattice(const frep::Model& model, const VolumeFrame& frame) {
     p.failed.resize(p.f.size());
 
     // Float is plenty to find sign changes, and several times faster than
-    // the exact double path on convolution-heavy programs. One batch per
-    // z slice, slices in parallel: every value depends only on its point.
-    struct Worker {
-        explicit Worker(const frep::Model& m) : sampler(m) {}
-        frep::PointSampler<float> sampler;
-        std::vector<float> x, y, z, f;
-        frep::ErrorReport errors;
-    };
-    tbb::enumerable_thread_specific<std::unique_ptr<Worker>> workers;
-    const std::size_t slice = static_cast<std::size_t>(p.n[0]) * static_cast<std::size_t>(p.n[1]);
-    tbb::parallel_for(0, p.n[2], [&](int k) {
-        auto& w = workers.local();
-        if (!w) w = std::make_unique<Worker>(model);
-        w->x.resize(slice); w->y.resize(slice); w->z.resize(slice); w->f.resize(slice);
-        for (int j = 0; j < p.n[1]; ++j)
-            for (int i = 0; i < p.n[0]; ++i) {
-                std::size_t o = p.at(i, j, 0);
-                w->x[o] = static_cast<float>(p.lo[0] + i * p.step);
-                w->y[o] = static_cast<float>(p.lo[1] + j * p.step);
-                w->z[o] = static_cast<float>(p.lo[2] + k * p.step);
-            }
-        std::size_t o = p.at(0, 0, k);
-        w->sampler.evaluate(w->x.data(), w->y.data(), w->z.data(), w->f.data(), slice, w->errors, p.failed.data() + o);
-        std::copy(w->f.begin(), w->f.end(), p.f.begin() + static_cast<std::ptrdiff_t>(o));
-    });
+    // the exact double path on convolution-heavy programs.
+    std::array<std::vector<float>, 3> axes;
+    for (int a = 0; a < 3; ++a)
+        for (int i = 0; i < p.n[a]; ++i)
+            axes[static_cast<std::size_t>(a)].push_back(static_cast<float>(p.lo[a] + i * p.step));
+    std::vector<float> values(p.f.size());
+    evaluateLattice(model, axes, values.data(), p.failed.data());
+    std::copy(values.begin(), values.end(), p.f.begin());
     return p;
 }
 

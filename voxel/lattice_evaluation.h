@@ -1,0 +1,23 @@
+// A model evaluated in float at every point of a rectilinear lattice, one z
+// slice per TBB task: the dense source cache and the normalization probe
+// both sample this way. Every value depends only on its point, so the
+// result is the same whatever the number of threads.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "frep/domain_error.h"
+#include "frep/model.h"
+
+namespace hg::voxel {
+
+// axes[a]: the lattice's coordinates along axis a. `out` (and `failed`, if
+// given: 1 where the program failed) receive one value per point, x fastest,
+// then y, then z: f * scale. Domain errors are counted slice by slice, in
+// order.
+frep::ErrorReport evaluateLattice(const frep::Model& model, const std::array<std::vector<float>, 3>& axes, float* out,
+                                  std::uint8_t* failed = nullptr, float scale = 1.0f);
+
+}  // namespace hg::voxel
