@@ -157,7 +157,7 @@ int main(int argc, char** argv) {
     }
 
     std::vector<std::unique_ptr<Subject>> subjects;
-    fs::path shared = fs::path(HG_SHARED_DIR) / "hyperfun" / "conformance";
+    fs::path shared = fs::path(HG_TEST_DATA_DIR) / "hyperfun" / "conformance";
     if (fs::is_directory(shared)) {
         std::vector<fs::path> files;
         for (const auto& e : fs::directory_iterator(shared))

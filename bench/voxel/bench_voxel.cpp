@@ -138,7 +138,7 @@ int main(int argc, char** argv) {
     const std::string& filter = args.filter;
     const int repeat = args.repeat;
     std::vector<Subject> subjects;
-    fs::path corpus = fs::path(HG_SHARED_DIR) / "hyperfun" / "corpus";
+    fs::path corpus = fs::path(HG_TEST_DATA_DIR) / "hyperfun" / "corpus";
     if (fs::exists(corpus)) {
         std::vector<fs::path> files;
         for (const auto& e : fs::directory_iterator(corpus))

@@ -1,4 +1,4 @@
-// Reads the shared HyperFun conformance tables (conformance/README.md).
+// Reads the HyperFun conformance tables (tests/data/hyperfun/conformance/README.md).
 #pragma once
 
 #include <cstdlib>
@@ -17,9 +17,8 @@ struct ConformanceRow {
     int line = 0;
 };
 
-inline std::filesystem::path sharedDir() { return std::filesystem::path(HG_SHARED_DIR); }
-inline std::filesystem::path hyperfunDir() { return sharedDir() / "hyperfun"; }
-inline bool haveShared() { return std::filesystem::is_directory(hyperfunDir() / "conformance"); }
+// The suite the repository carries (tests/data/hyperfun).
+inline std::filesystem::path hyperfunDir() { return std::filesystem::path(HG_TEST_DATA_DIR) / "hyperfun"; }
 
 inline std::vector<ConformanceRow> readTable(const std::filesystem::path& tsv) {
     std::vector<ConformanceRow> rows;

@@ -1,4 +1,4 @@
-// Every row of every shared conformance table, through the scalar
+// Every row of every conformance table, through the scalar
 // interpreter, the double batch evaluator (reference tolerance 1e-9) and the
 // float batch evaluator (1e-4). Rows marked `error` must fail.
 #include <gtest/gtest.h>
@@ -29,7 +29,7 @@ std::string describeRow(const ConformanceRow& r) {
 }
 
 TEST_P(Conformance, MatchesReference) {
-    if (!test::haveShared()) GTEST_SKIP() << "shared conformance suite not found at " << test::hyperfunDir();
+    ASSERT_TRUE(std::filesystem::is_directory(test::hyperfunDir() / "conformance")) << test::hyperfunDir();
     std::filesystem::path tsv = GetParam();
     std::filesystem::path hf = tsv;
     hf.replace_extension(".hf");
@@ -95,11 +95,11 @@ TEST_P(Conformance, MatchesReference) {
 std::vector<std::string> tableNames() {
     std::vector<std::string> names;
     for (const auto& p : test::tables()) names.push_back(p.string());
-    if (names.empty()) names.push_back("(shared suite missing)");
+    if (names.empty()) names.push_back("(conformance suite missing from tests/data)");
     return names;
 }
 
-INSTANTIATE_TEST_SUITE_P(Shared, Conformance, ::testing::ValuesIn(tableNames()),
+INSTANTIATE_TEST_SUITE_P(Suite, Conformance, ::testing::ValuesIn(tableNames()),
                          [](const ::testing::TestParamInfo<std::string>& info) {
                              std::filesystem::path p(info.param);
                              std::string dir = p.parent_path().filename().string();

@@ -1,4 +1,4 @@
-// Properties of the tape evaluators on every shared conformance program and
+// Properties of the tape evaluators on every conformance program and
 // our own content: interval bounds are sound (dense sampling of random
 // boxes), gradients agree with central differences, the compiler reports
 // which path a program takes, and no NaN or infinity leaves an evaluator.

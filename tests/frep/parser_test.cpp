@@ -19,8 +19,8 @@ using namespace hg::frep;
 
 namespace {
 
-const fs::path kConformance = fs::path(HG_SHARED_DIR) / "hyperfun" / "conformance";
-const fs::path kCorpus = fs::path(HG_SHARED_DIR) / "hyperfun" / "corpus";
+const fs::path kConformance = fs::path(HG_TEST_DATA_DIR) / "hyperfun" / "conformance";
+const fs::path kCorpus = fs::path(HG_TEST_DATA_DIR) / "hyperfun" / "corpus";
 
 std::string firstError(const ParseResult& r) {
     return r.errors.empty() ? std::string("(no error)") : formatDiagnostic(r.errors.front());
@@ -115,9 +115,7 @@ ParseResult parse(const std::string& src) { return parseProgram(src, "t.hf"); }
 // Shared conformance data
 
 TEST(ParserConformance, GoodFilesParse) {
-    if (!fs::is_directory(kConformance))
-        GTEST_SKIP() << "conformance data not found at " << kConformance
-                     << " (set HG_SHARED_DIR)";
+    ASSERT_TRUE(fs::is_directory(kConformance)) << kConformance;
     auto files = filesIn(kConformance, ".hf", false);
     auto corpus = filesIn(kCorpus, ".hf", false);
     files.insert(files.end(), corpus.begin(), corpus.end());
@@ -133,9 +131,7 @@ TEST(ParserConformance, GoodFilesParse) {
 }
 
 TEST(ParserConformance, BadFilesGiveTheReferenceFirstError) {
-    if (!fs::is_directory(kConformance))
-        GTEST_SKIP() << "conformance data not found at " << kConformance
-                     << " (set HG_SHARED_DIR)";
+    ASSERT_TRUE(fs::is_directory(kConformance)) << kConformance;
     auto files = filesIn(kConformance, ".bad.hf", true);
     EXPECT_EQ(files.size(), 10u);
     for (const auto& f : files) {
@@ -162,8 +158,7 @@ TEST(ParserConformance, BadFilesGiveTheReferenceFirstError) {
 }
 
 TEST(ParserConformance, LexicalFileValues) {
-    if (!fs::is_directory(kConformance))
-        GTEST_SKIP() << "conformance data not found at " << kConformance;
+    ASSERT_TRUE(fs::is_directory(kConformance)) << kConformance;
     ParseResult r = parseFile((kConformance / "lexical.hf").string());
     ASSERT_TRUE(r.ok()) << firstError(r);
     const Program& p = *r.program;

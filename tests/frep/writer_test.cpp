@@ -1,4 +1,4 @@
-// Tests of the HyperFun writer (frep/writer.h): every shared conformance and
+// Tests of the HyperFun writer (frep/writer.h): every conformance and
 // corpus program and the content/hyperfun models written, parsed back and
 // evaluated bit for bit against the original (errors included), idempotence
 // of the output, the tree the parse gives back, operator levels, conditions,
@@ -180,12 +180,10 @@ Program roundTrip(const Program& p, const std::string& what, std::string* textOu
     return back;
 }
 
-// --- the shared conformance and corpus tables ------------------------------
+// --- the conformance and corpus tables (tests/data/hyperfun) ------------------------------
 
 TEST(WriterConformance, EveryTableRowIdenticalAfterRoundTrip) {
-    if (!test::haveShared())
-        GTEST_SKIP() << "shared HyperFun suite not found at " << (test::hyperfunDir() / "conformance")
-                     << " (set HG_SHARED_DIR)";
+    ASSERT_TRUE(fs::is_directory(test::hyperfunDir() / "conformance")) << test::hyperfunDir();
     auto tables = test::tables();
     ASSERT_FALSE(tables.empty());
     int programs = 0;
@@ -223,7 +221,7 @@ TEST(WriterConformance, EveryTableRowIdenticalAfterRoundTrip) {
 
 TEST(WriterContent, ModelsIdenticalAtRandomPoints) {
     const fs::path dir = fs::path(HG_SOURCE_DIR) / "content" / "hyperfun";
-    if (!fs::is_directory(dir)) GTEST_SKIP() << dir << " not found";
+    ASSERT_TRUE(fs::is_directory(dir)) << dir;
     std::mt19937_64 rng(20240611);
     int models = 0;
     for (const auto& entry : fs::directory_iterator(dir)) {

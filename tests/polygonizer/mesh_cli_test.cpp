@@ -47,7 +47,7 @@ TEST_F(MeshCli, WritesAWatertightStlInMillimetres) {
     EXPECT_TRUE(stl.ascii);
     EXPECT_TRUE(validateMesh(weldByPosition(stl.mesh)).ok());
 
-    if (std::system("command -v admesh > /dev/null 2>&1") != 0) GTEST_SKIP() << "admesh is not installed";
+    ASSERT_EQ(std::system("command -v admesh > /dev/null 2>&1"), 0) << "admesh is not installed (scripts/install-deps.sh)";
     FILE* pipe = ::popen(("admesh " + path("ring.stl") + " 2>&1").c_str(), "r");
     ASSERT_NE(pipe, nullptr);
     std::string out;
