@@ -26,9 +26,15 @@ BatchEvaluator<T>::BatchEvaluator(const Tape& tape)
 template <class T>
 void BatchEvaluator<T>::evaluate(const T* x, const T* y, const T* z, T* out, size_t n, ErrorReport& errors,
                                  std::uint8_t* failed) {
+    evaluate(x, y, z, nullptr, out, n, errors, failed);
+}
+
+template <class T>
+void BatchEvaluator<T>::evaluate(const T* x, const T* y, const T* z, const T* w, T* out, size_t n,
+                                 ErrorReport& errors, std::uint8_t* failed) {
     for (size_t i = 0; i < n; i += kBatch) {
         size_t m = std::min(kBatch, n - i);
-        chunk(x + i, y + i, z + i, out + i, m, errors, failed ? failed + i : nullptr);
+        chunk(x + i, y + i, z + i, w ? w + i : nullptr, out + i, m, errors, failed ? failed + i : nullptr);
     }
 }
 
@@ -92,8 +98,8 @@ void transcendental(T* __restrict o, const T* __restrict a, size_t n, Op op) {
 }  // namespace
 
 template <class T>
-void BatchEvaluator<T>::chunk(const T* x, const T* y, const T* z, T* out, size_t n, ErrorReport& errors,
-                              std::uint8_t* failed) {
+void BatchEvaluator<T>::chunk(const T* x, const T* y, const T* z, const T* w, T* out, size_t n,
+                              ErrorReport& errors, std::uint8_t* failed) {
     // Registers 0..2 are x, y, z (TapeBuilder::finish).
     for (size_t i = 0; i < tape_.code.size() && i < 3; ++i) {
         const Op op = tape_.code[i].op;
@@ -113,6 +119,10 @@ void BatchEvaluator<T>::chunk(const T* x, const T* y, const T* z, T* out, size_t
         const T* b = in.b != kNoReg ? reg(in.b) : nullptr;
         const T* c = in.c != kNoReg ? reg(in.c) : nullptr;
         switch (in.op) {
+            case Op::W:
+                if (w) std::copy_n(w, n, o);
+                else std::fill_n(o, n, T(0));  // a tape with a base input evaluated without one
+                break;
             case Op::Add: binary(o, a, b, n, [](T p, T q) { return p + q; }); break;
             case Op::Sub: binary(o, a, b, n, [](T p, T q) { return p - q; }); break;
             case Op::Mul: binary(o, a, b, n, [](T p, T q) { return p * q; }); break;

@@ -26,11 +26,16 @@ public:
     // each point where the program failed (or produced NaN), else 0.
     void evaluate(const T* x, const T* y, const T* z, T* out, size_t n, ErrorReport& errors,
                   std::uint8_t* failed = nullptr);
+    // The same for a tape that reads the base value input (Op::W): w[i] is
+    // point i's base value.
+    void evaluate(const T* x, const T* y, const T* z, const T* w, T* out, size_t n, ErrorReport& errors,
+                  std::uint8_t* failed = nullptr);
 
     const Tape& tape() const { return tape_; }
 
 private:
-    void chunk(const T* x, const T* y, const T* z, T* out, size_t n, ErrorReport& errors, std::uint8_t* failed);
+    void chunk(const T* x, const T* y, const T* z, const T* w, T* out, size_t n, ErrorReport& errors,
+               std::uint8_t* failed);
     T* reg(std::uint32_t r) { return regs_.data() + static_cast<size_t>(r) * kBatch; }
 
     const Tape& tape_;

@@ -264,6 +264,8 @@ Interval IntervalEvaluator::evaluate(const Interval& x, const Interval& y, const
             case Op::Y: r = y; break;
             case Op::Z: r = z; break;
             case Op::Const: r = Interval(in.imm); break;
+            // The base value input (edit tapes) is not bounded here: any value.
+            case Op::W: r = Interval(-kValueLimit, kValueLimit); break;
             case Op::Add: r = add(a, b); break;
             case Op::Sub: r = sub(a, b); break;
             case Op::Mul: r = mul(a, b, in.a == in.b); break;

@@ -72,6 +72,7 @@ inline DomainError applyOp(Op op, DomainError checkError, T a, T b, T c, T& out)
         case Op::ConvSegment:  // fused kernels need their parameters: evaluated by the callers
         case Op::ConvArc:
         case Op::SoftStep:
+        case Op::W:  // the base value input: read by the batch evaluator itself
             out = T(0);
             break;
     }

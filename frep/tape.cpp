@@ -62,13 +62,14 @@ const char* opName(Op op) {
         case Op::ConvSegment: return "conv_segment";
         case Op::ConvArc: return "conv_arc";
         case Op::SoftStep: return "soft_step";
+        case Op::W: return "w";
     }
     return "?";
 }
 
 int opArity(Op op) {
     switch (op) {
-        case Op::X: case Op::Y: case Op::Z: case Op::Const: return 0;
+        case Op::X: case Op::Y: case Op::Z: case Op::Const: case Op::W: return 0;
         case Op::Neg: case Op::Abs: case Op::Sqrt: case Op::Exp: case Op::Log: case Op::Sin:
         case Op::Cos: case Op::Tan: case Op::Atan: case Op::Asin: case Op::Acos: case Op::Floor:
         case Op::Ceil: case Op::Trunc: case Op::Sinh: case Op::Cosh: case Op::Tanh: case Op::Not:

@@ -32,6 +32,11 @@ enum class Op : std::uint8_t {
     ConvSegment,  // Cauchy line-segment field at (a, b, c): b, e (3 each), s
     ConvArc,      // one hfConvArc piece at (a, b, c): frame, r, s, span, over
     SoftStep,     // hfSoft's sum a plus the soft kernel at squared distance b (= c): d
+    // An input given beside the point: the base value an edit expression
+    // works on (garden/sculpt: a sculpture's unedited field). Only the batch
+    // evaluator reads it (BatchEvaluator::evaluate with w); language
+    // programs never contain it.
+    W,
 };
 
 // Parameters of a ConvSegment: begin (3), end (3), kernel width.

@@ -45,6 +45,12 @@ std::uint32_t TapeBuilder::push(const Instr& in) {
     return id;
 }
 
+std::uint32_t TapeBuilder::w() {
+    Instr in;
+    in.op = Op::W;
+    return push(in);
+}
+
 std::uint32_t TapeBuilder::constant(double v) {
     Instr in;
     in.op = Op::Const;

@@ -23,6 +23,8 @@ public:
     std::uint32_t y() const { return y_; }
     std::uint32_t z() const { return z_; }
     std::uint32_t constant(double v);
+    // The base value input (Op::W), for edit expressions.
+    std::uint32_t w();
 
     // A pure operation: folded when its inputs are constant, shared when the
     // same operation was built before.

@@ -1,0 +1,85 @@
+// What a user did to a sculpture, as data (DESIGN §4): the ordered edit list
+// is the sculpture's source of truth next to its HyperFun source, and the
+// grid is a cache rebuilt from both. Each edit is one FRep operation on the
+// field before it, built by the one expression template in edit_field.h
+// (tape for the grid, double for checks, HyperFun text for export).
+//
+// Units: positions and lengths in the sculpture's model frame; field values
+// in voxels of its grid (the stored field: about one unit per voxel at the
+// surface, clamped to +-band). Every edit keeps the field in [-band, band],
+// so it stays bounded at any number of edits, and leaves it exactly
+// unchanged outside its reach box, so a box update needs only the edits
+// that reach the box (edit_index.h).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "frep/bounds.h"
+
+namespace hg::garden {
+
+using ModelPoint = std::array<double, 3>;
+
+enum class StrokeTool { Carve, Add, Melt };
+const char* strokeToolName(StrokeTool t);
+
+// One Cauchy line segment of a stroke with the constants that give its
+// surface the tool's radius (stroke_segments.h computes them):
+//   G = clamp(scale * (conv(p; begin, end, s) - t), floor, band)
+// where conv is hfConvLine's field of the segment. G is about the distance
+// to the segment's surface in voxels, positive inside the tool, and exactly
+// `floor` beyond `reach`.
+struct StrokeSegment {
+    ModelPoint begin{}, end{};
+    double s = 1.0;      // kernel width (hfConvLine's S)
+    double t = 0.0;      // threshold (hfConvLine's T)
+    double scale = 1.0;  // voxels per unit of field at the surface
+    frep::Box3 reach;    // outside it G == floor exactly
+};
+
+// Carve (f \ tool), add (f | tool) or melt (a rounded subtraction) along a
+// path: the union of its segments' convolution surfaces.
+struct Stroke {
+    StrokeTool tool = StrokeTool::Carve;
+    double radius = 0.1;     // model units
+    double softness = 2.0;   // melt: width of the rounded edge, voxels
+    std::vector<ModelPoint> path;        // as the hand drew it (model frame)
+    std::vector<StrokeSegment> segments;  // the path resampled for the radius
+};
+
+enum class QuadricShape { Ellipsoid, Torus };
+
+// f + k * max(Q, 0)^3 (seed 000's perturbation, seed 001's field tools),
+// Q >= 0 inside the quadric: for an ellipsoid 1 - sum (u_i / r_i)^2, for a
+// torus 1 - ((sqrt(u^2 + v^2) - R)^2 + w^2) / r^2, with (u, v, w) the point
+// in the tool's frame. k > 0 pulls material out, k < 0 pushes it in.
+struct Perturbation {
+    QuadricShape shape = QuadricShape::Ellipsoid;
+    ModelPoint center{};
+    std::array<ModelPoint, 3> axes{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};  // orthonormal: u, v, w
+    ModelPoint radii{0.1, 0.1, 0.1};  // ellipsoid: r_u, r_v, r_w; torus: R, r, (unused)
+    double strength = 2.0;            // k, voxels
+};
+
+using EditOp = std::variant<Stroke, Perturbation>;
+
+struct Edit {
+    std::uint64_t id = 0;  // unique in the sculpture, in creation order
+    EditOp op;
+    frep::Box3 reach;      // the field changes only inside this box
+};
+
+// The constants every edit expression of one sculpture shares: they come
+// from its grid (edits are made in voxel units).
+struct FieldUnits {
+    double voxelSize = 0.01;  // model units
+    double band = 3.0;        // the stored field's clamp, voxels
+};
+
+std::string describe(const Edit& e);
+
+}  // namespace hg::garden

@@ -1,0 +1,108 @@
+// The one expression builder of the edit list (DESIGN §4): each edit as an
+// FRep operation on the field before it, written once as a template over
+// the value type. On frep::Sym it records the grid update's tape (the base
+// field is the tape's W input); on double it is the reference the tests
+// compare against (the same operations the HyperFun interpreter runs for
+// the exported text: min and max are HyperFun's built-ins, hfConvLine's
+// segment field the library's own template).
+//
+// Why each edit leaves the field exactly unchanged outside its reach: the
+// field is kept in [-band, band]; a tool's field G is clamped to a floor
+// that it reaches beyond the reach box, where the operation returns its
+// input: min(f, -floor) = f for carve, max(f, floor) = f for add, the
+// rounded minimum's blend term is exactly zero for melt (its floor is
+// band + softness below), and max(Q, 0) = 0 for a perturbation.
+#pragma once
+
+#include <cmath>
+#include <vector>
+
+#include "frep/hf_math.h"
+#include "frep/library/convolution.h"
+#include "frep/sym.h"
+#include "garden/sculpt/edit.h"
+
+namespace hg::garden {
+
+namespace editops {
+
+inline double vmin(double a, double b) { return frep::hf::minimum(a, b); }
+inline double vmax(double a, double b) { return frep::hf::maximum(a, b); }
+inline frep::Sym vmin(const frep::Sym& a, const frep::Sym& b) { return frep::symOp(frep::Op::Min, a, b); }
+inline frep::Sym vmax(const frep::Sym& a, const frep::Sym& b) { return frep::symOp(frep::Op::Max, a, b); }
+inline double vabs(double a) { return std::fabs(a); }
+inline frep::Sym vabs(const frep::Sym& a) { return frep::fabs(a); }
+inline double vsqrt(double a) { return std::sqrt(a); }
+inline frep::Sym vsqrt(const frep::Sym& a) { return frep::sqrt(a); }
+
+template <class V>
+V clamp(const V& v, double lo, double hi) { return vmax(vmin(v, V(hi)), V(lo)); }
+
+}  // namespace editops
+
+// The floor a stroke's tool field is clamped to, voxels.
+inline double strokeFloor(const Stroke& s, const FieldUnits& u) {
+    return s.tool == StrokeTool::Melt ? -(u.band + s.softness) : -u.band;
+}
+
+// One segment's tool field G at (x, y, z), voxels.
+template <class V>
+V segmentField(const V& x, const V& y, const V& z, const StrokeSegment& g, double floor, double band) {
+    using frep::lib::detail::convSegment;
+    const V conv = convSegment<V>(x, y, z, V(g.begin[0]), V(g.begin[1]), V(g.begin[2]), V(g.end[0]),
+                                  V(g.end[1]), V(g.end[2]), V(g.s));
+    return editops::clamp<V>(V(g.scale) * (conv - V(g.t)), floor, band);
+}
+
+// The field after a stroke, given the field f before it; only the segments
+// whose indices are listed take part (the others leave f unchanged where
+// the caller evaluates: outside their reach).
+template <class V>
+V applyStroke(const V& f, const V& x, const V& y, const V& z, const Stroke& s, const std::vector<std::uint32_t>& segments,
+              const FieldUnits& u) {
+    using namespace editops;
+    const double floor = strokeFloor(s, u);
+    V out = f;
+    switch (s.tool) {
+        case StrokeTool::Carve:
+            for (std::uint32_t i : segments) out = vmin(out, -segmentField(x, y, z, s.segments[i], floor, u.band));
+            return out;
+        case StrokeTool::Add:
+            for (std::uint32_t i : segments) out = vmax(out, segmentField(x, y, z, s.segments[i], floor, u.band));
+            return out;
+        case StrokeTool::Melt: {
+            // min(f, -G) - k/6 h^3, h = max(k - |f + G|, 0) / k: the polynomial
+            // smooth minimum, exactly min(f, -G) where |f + G| >= k.
+            V g = V(floor);
+            for (std::uint32_t i : segments) g = vmax(g, segmentField(x, y, z, s.segments[i], floor, u.band));
+            const double k = s.softness;
+            const V h = vmax(V(k) - vabs(f + g), V(0.0)) / V(k);
+            return vmax(vmin(f, -g) - V(k / 6.0) * (h * h * h), V(-u.band));
+        }
+    }
+    return out;
+}
+
+// Q of a perturbation's quadric at (x, y, z): >= 0 inside.
+template <class V>
+V quadric(const V& x, const V& y, const V& z, const Perturbation& p) {
+    const V dx = x - V(p.center[0]), dy = y - V(p.center[1]), dz = z - V(p.center[2]);
+    const auto& a = p.axes;
+    const V u = dx * V(a[0][0]) + dy * V(a[0][1]) + dz * V(a[0][2]);
+    const V v = dx * V(a[1][0]) + dy * V(a[1][1]) + dz * V(a[1][2]);
+    const V w = dx * V(a[2][0]) + dy * V(a[2][1]) + dz * V(a[2][2]);
+    if (p.shape == QuadricShape::Ellipsoid) {
+        const V su = u / V(p.radii[0]), sv = v / V(p.radii[1]), sw = w / V(p.radii[2]);
+        return V(1.0) - su * su - sv * sv - sw * sw;
+    }
+    const V ring = editops::vsqrt(u * u + v * v) - V(p.radii[0]);
+    return V(1.0) - (ring * ring + w * w) / V(p.radii[1] * p.radii[1]);
+}
+
+template <class V>
+V applyPerturbation(const V& f, const V& x, const V& y, const V& z, const Perturbation& p, const FieldUnits& u) {
+    const V q = editops::vmax(quadric(x, y, z, p), V(0.0));
+    return editops::clamp<V>(f + V(p.strength) * (q * q * q), -u.band, u.band);
+}
+
+}  // namespace hg::garden

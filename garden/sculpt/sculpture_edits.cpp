@@ -1,0 +1,99 @@
+#include "garden/sculpt/sculpture_edits.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "garden/sculpt/stroke_segments.h"
+
+namespace hg::garden {
+
+namespace {
+
+FieldUnits unitsOf(const voxel::Volume& v) { return {v.frame.voxelSize, static_cast<double>(v.frame.band)}; }
+
+}  // namespace
+
+SculptureEdits::SculptureEdits(voxel::Volume& shown)
+    : shown_(shown),
+      base_(std::make_unique<voxel::Volume>(shown.clone())),
+      list_(unitsOf(shown), kEditIndexCellVoxels * shown.frame.voxelSize) {}
+
+SculptureEdits::~SculptureEdits() = default;
+
+voxel::IndexBox SculptureEdits::voxelsOf(const frep::Box3& box) const {
+    const voxel::VolumeFrame& f = shown_.frame;
+    voxel::IndexBox r;
+    for (int a = 0; a < 3; ++a) {
+        const double lo = std::floor((box.lo[a] - f.modelBox.lo[a]) / f.voxelSize) - 1.0;
+        const double hi = std::ceil((box.hi[a] - f.modelBox.lo[a]) / f.voxelSize) + 1.0;
+        r.lo[a] = static_cast<int>(std::clamp(lo, -1e9, 1e9));
+        r.hi[a] = static_cast<int>(std::clamp(hi, -1e9, 1e9));
+    }
+    return voxel::intersect(r, f.indexBox);
+}
+
+voxel::EditRegionStats SculptureEdits::update(const voxel::IndexBox& box) {
+    const voxel::IndexBox clip = voxel::intersect(box, shown_.frame.indexBox);
+    if (clip.empty()) return {};
+    // The model box of the voxels, one voxel wider than their positions:
+    // picking a piece too many changes no value, one too few would.
+    const voxel::VolumeFrame& f = shown_.frame;
+    frep::Box3 model;
+    for (int a = 0; a < 3; ++a) {
+        model.lo[a] = f.coordinate(a, clip.lo[a] - 1);
+        model.hi[a] = f.coordinate(a, clip.hi[a] + 1);
+    }
+    const frep::Tape tape = editTape(list_, list_.reaching(model));
+    lastStats_ = voxel::applyEditTape(*base_, shown_, clip, tape);
+    return lastStats_;
+}
+
+voxel::IndexBox SculptureEdits::append(Edit edit) {
+    edit.id = nextId_++;
+    redo_.clear();
+    list_.append(std::move(edit));
+    const voxel::IndexBox box = voxelsOf(list_.edits().back().reach);
+    update(box);
+    return box;
+}
+
+voxel::IndexBox SculptureEdits::extendLastStroke(const std::vector<ModelPoint>& points) {
+    Stroke& stroke = list_.lastStroke();
+    const std::size_t firstPoint = stroke.path.size();
+    stroke.path.insert(stroke.path.end(), points.begin(), points.end());
+    const std::size_t firstPiece = extendStrokeSegments(stroke, firstPoint, list_.units());
+    if (firstPiece == stroke.segments.size()) return {};
+    const voxel::IndexBox box = voxelsOf(list_.extendLast(firstPiece));
+    update(box);
+    return box;
+}
+
+std::optional<voxel::IndexBox> SculptureEdits::undo() {
+    if (list_.empty()) return std::nullopt;
+    Edit removed = list_.removeLast();
+    const voxel::IndexBox box = voxelsOf(removed.reach);
+    redo_.push_back(std::move(removed));
+    update(box);
+    return box;
+}
+
+std::optional<voxel::IndexBox> SculptureEdits::redo() {
+    if (redo_.empty()) return std::nullopt;
+    Edit again = std::move(redo_.back());
+    redo_.pop_back();
+    list_.append(std::move(again));
+    const voxel::IndexBox box = voxelsOf(list_.edits().back().reach);
+    update(box);
+    return box;
+}
+
+std::unique_ptr<voxel::Volume> SculptureEdits::rebuild() const {
+    auto out = std::make_unique<voxel::Volume>(base_->clone());
+    if (list_.empty()) return out;
+    // Outside every reach the edits change nothing: the base stands there.
+    const frep::Tape tape = editTape(list_, list_.all());
+    for (const Edit& e : list_.edits()) voxel::applyEditTape(*base_, *out, voxelsOf(e.reach), tape);
+    return out;
+}
+
+}  // namespace hg::garden

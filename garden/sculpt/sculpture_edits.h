@@ -1,0 +1,74 @@
+// The edits of one sculpture and the grid they make (DESIGN §4): the
+// unedited grid (its source sampled, or the morph's blend) kept as the
+// base, the edit list, the redo stack, and the shown grid updated box by
+// box: a new edit, a live stroke's new segments, an undo or a redo each
+// recompute only the box their pieces reach, from the base and the edits
+// that reach that box, so the shown grid always equals the base with every
+// edit applied (rebuild()), bit for bit.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "garden/sculpt/edit_list.h"
+#include "voxel/edit_region.h"
+#include "voxel/index_box.h"
+#include "voxel/volume.h"
+
+namespace hg::garden {
+
+// Index cells of the edit list, in voxels: about a chunk.
+constexpr int kEditIndexCellVoxels = 32;
+
+class SculptureEdits {
+public:
+    // `shown` is the sculpture's grid, unedited so far; it must outlive this.
+    explicit SculptureEdits(voxel::Volume& shown);
+    ~SculptureEdits();
+
+    const EditList& list() const { return list_; }
+    const FieldUnits& units() const { return list_.units(); }
+    const voxel::Volume& base() const { return *base_; }
+    // The base is written by someone else (the morph's blend): call after a
+    // box of it changed, to bring the shown grid up to date there.
+    voxel::Volume& mutableBase() { return *base_; }
+    std::size_t redoCount() const { return redo_.size(); }
+
+    // Appends an edit whose pieces are computed (stroke segments) and
+    // updates the grid; returns the box of voxels recomputed.
+    voxel::IndexBox append(Edit edit);
+    // Adds points to the path of the last edit, a stroke (a live stroke
+    // following the hand): segments them and updates the grid where the new
+    // segments reach.
+    voxel::IndexBox extendLastStroke(const std::vector<ModelPoint>& points);
+    // Undo and redo of the last edit; none when there is nothing to undo
+    // or redo. A new edit clears the redo stack.
+    std::optional<voxel::IndexBox> undo();
+    std::optional<voxel::IndexBox> redo();
+
+    // The shown grid's `box` recomputed from the base and the edits that
+    // reach it.
+    voxel::EditRegionStats update(const voxel::IndexBox& box);
+    // The base with every edit applied, from scratch (what the shown grid
+    // must equal).
+    std::unique_ptr<voxel::Volume> rebuild() const;
+
+    // Voxels of the frame that a model box covers (grown by one voxel).
+    voxel::IndexBox voxelsOf(const frep::Box3& box) const;
+    std::uint64_t nextId() const { return nextId_; }
+
+    // Statistics of the last update.
+    const voxel::EditRegionStats& lastStats() const { return lastStats_; }
+
+private:
+    voxel::Volume& shown_;
+    std::unique_ptr<voxel::Volume> base_;
+    EditList list_;
+    std::vector<Edit> redo_;
+    std::uint64_t nextId_ = 1;
+    voxel::EditRegionStats lastStats_;
+};
+
+}  // namespace hg::garden

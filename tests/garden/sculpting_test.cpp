@@ -1,0 +1,276 @@
+// Sculpting (garden/sculpt, voxel/edit_region): the edit expression on the
+// tape equals its double reference; each tool changes the field inside its
+// reach and nowhere else; the field stays bounded at any edit count; box
+// updates equal a from-scratch rebuild bit for bit, through undo and redo.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "frep/eval_batch.h"
+#include "garden/sculpt/edit_field.h"
+#include "garden/sculpt/edit_list.h"
+#include "garden/sculpt/sculpture_edits.h"
+#include "garden/sculpt/stroke_segments.h"
+#include "tests/test_models.h"
+#include "voxel/sampler.h"
+
+namespace hg::garden {
+namespace {
+
+constexpr double kVoxel = 1.0 / 64.0;
+const FieldUnits kUnits{kVoxel, 3.0};
+
+Edit strokeEdit(StrokeTool tool, double radius, std::vector<ModelPoint> path, double softness = 2.0) {
+    Stroke s;
+    s.tool = tool;
+    s.radius = radius;
+    s.softness = softness;
+    s.path = std::move(path);
+    extendStrokeSegments(s, 0, kUnits);
+    Edit e;
+    e.op = std::move(s);
+    return e;
+}
+
+Edit perturbEdit(QuadricShape shape, ModelPoint c, ModelPoint radii, double k) {
+    Perturbation p;
+    p.shape = shape;
+    p.center = c;
+    p.radii = radii;
+    p.strength = k;
+    const double a = 0.6, ca = std::cos(a), sa = std::sin(a);  // a turned frame
+    p.axes = {{{ca, sa, 0.0}, {-sa, ca, 0.0}, {0.0, 0.0, 1.0}}};
+    Edit e;
+    e.op = p;
+    return e;
+}
+
+bool inside(const frep::Box3& b, double x, double y, double z) {
+    return x >= b.lo[0] && x <= b.hi[0] && y >= b.lo[1] && y <= b.hi[1] && z >= b.lo[2] && z <= b.hi[2];
+}
+
+// A base field in [-band, band]: a sphere of radius 0.5 in voxels.
+double sphereBase(double x, double y, double z) {
+    const double f = (0.5 - std::sqrt(x * x + y * y + z * z)) / kVoxel;
+    return std::clamp(f, -3.0, 3.0);
+}
+
+std::vector<Edit> everyTool() {
+    return {strokeEdit(StrokeTool::Carve, 0.1, {{0.4, 0.0, 0.0}, {0.45, 0.2, 0.1}, {0.3, 0.4, 0.2}}),
+            strokeEdit(StrokeTool::Add, 0.05, {{-0.5, 0.0, 0.0}, {-0.5, -0.3, 0.0}}),
+            strokeEdit(StrokeTool::Melt, 0.08, {{0.0, 0.5, 0.0}, {0.2, 0.45, 0.0}}, 3.0),
+            perturbEdit(QuadricShape::Ellipsoid, {0.0, 0.0, 0.5}, {0.15, 0.08, 0.1}, 4.0),
+            perturbEdit(QuadricShape::Torus, {0.0, -0.5, 0.0}, {0.1, 0.04, 0.0}, -3.0)};
+}
+
+TEST(EditField, TapeEqualsTheDoubleExpression) {
+    EditList list(kUnits, 32 * kVoxel);
+    for (Edit& e : everyTool()) list.append(std::move(e));
+    const frep::Tape tape = editTape(list, list.all());
+    frep::BatchEvaluator<double> eval(tape);
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> u(-0.8, 0.8);
+    std::vector<double> x(4000), y(4000), z(4000), w(4000), out(4000);
+    for (std::size_t i = 0; i < x.size(); ++i) {
+        x[i] = u(rng); y[i] = u(rng); z[i] = u(rng);
+        w[i] = sphereBase(x[i], y[i], z[i]);
+    }
+    frep::ErrorReport errors;
+    eval.evaluate(x.data(), y.data(), z.data(), w.data(), out.data(), x.size(), errors);
+    EXPECT_EQ(errors.count, 0u);
+    int changed = 0;
+    for (std::size_t i = 0; i < x.size(); ++i) {
+        const double ref = editedValue(list, w[i], x[i], y[i], z[i]);
+        ASSERT_EQ(out[i], ref) << i;
+        changed += ref != w[i];
+    }
+    EXPECT_GT(changed, 50);  // the edits did something
+}
+
+TEST(EditField, EachToolChangesTheFieldInsideItsReachOnly) {
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    for (Edit& e : everyTool()) {
+        EditList list(kUnits, 32 * kVoxel);
+        list.append(std::move(e));
+        const Edit& edit = list.edits()[0];
+        SCOPED_TRACE(describe(edit));
+        int in = 0, changedInside = 0;
+        for (int i = 0; i < 200000; ++i) {
+            const double x = u(rng), y = u(rng), z = u(rng);
+            const double f = sphereBase(x, y, z);
+            const double g = editedValue(list, f, x, y, z);
+            EXPECT_LE(std::fabs(g), 3.0);
+            if (inside(edit.reach, x, y, z)) {
+                ++in;
+                changedInside += g != f;
+            } else if (g != f) {
+                ADD_FAILURE() << "changed outside its reach at (" << x << ", " << y << ", " << z << "): " << f
+                              << " -> " << g;
+                return;
+            }
+        }
+        EXPECT_GT(in, 0);
+        EXPECT_GT(changedInside, 0);
+    }
+}
+
+TEST(EditField, StrokeSurfaceHasTheToolRadius) {
+    for (double radiusVoxels : {2.0, 8.0, 16.0, 32.0}) {
+        const double r = radiusVoxels * kVoxel;
+        Stroke s;
+        s.radius = r;
+        s.path = {{-1.0, 0.0, 0.0}, {1.0, 0.0, 0.0}};
+        extendStrokeSegments(s, 0, kUnits);
+        ASSERT_GT(s.segments.size(), 8u);
+        // The union of segment fields across the stroke's middle.
+        const auto field = [&](double x, double d) {
+            double g = strokeFloor(s, kUnits);
+            for (const StrokeSegment& seg : s.segments) g = std::max(g, segmentField(x, d, 0.0, seg, strokeFloor(s, kUnits), 3.0));
+            return g;
+        };
+        for (double x : {0.0, 0.013, 0.5 * kSegmentLengthPerRadius * r}) {
+            const double onSurface = field(x, r);
+            EXPECT_NEAR(onSurface, 0.0, 0.05 * radiusVoxels + 0.05) << radiusVoxels << " voxels at x " << x;
+            EXPECT_GT(field(x, r - kVoxel), onSurface);
+            EXPECT_LT(field(x, r + kVoxel), onSurface);
+        }
+        // About one unit per voxel at the surface.
+        const double slope = field(0.0, r - 0.5 * kVoxel) - field(0.0, r + 0.5 * kVoxel);
+        EXPECT_NEAR(slope, 1.0, 0.1) << radiusVoxels;
+    }
+}
+
+TEST(EditField, FieldStaysBoundedAtAThousandEdits) {
+    EditList list(kUnits, 32 * kVoxel);
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<double> u(-0.6, 0.6);
+    for (int i = 0; i < 1000; ++i) {
+        const StrokeTool tool = i % 3 == 0 ? StrokeTool::Carve : i % 3 == 1 ? StrokeTool::Add : StrokeTool::Melt;
+        const ModelPoint a{u(rng), u(rng), u(rng)};
+        list.append(strokeEdit(tool, 0.03, {a, {a[0] + 0.02, a[1], a[2]}}));
+    }
+    double worst = 0.0;
+    for (int i = 0; i < 200; ++i) {
+        const double x = u(rng), y = u(rng), z = u(rng);
+        const double v = editedValue(list, sphereBase(x, y, z), x, y, z);
+        ASSERT_TRUE(std::isfinite(v));
+        worst = std::max(worst, std::fabs(v));
+    }
+    EXPECT_LE(worst, 3.0);
+    // The spatial index hands a small box a few pieces of the thousand.
+    frep::Box3 small;
+    for (int a = 0; a < 3; ++a) { small.lo[a] = 0.0; small.hi[a] = 0.05; }
+    std::size_t pieces = 0;
+    for (const EditPick& p : list.reaching(small)) pieces += p.pieces.size();
+    EXPECT_LT(pieces, list.indexedPieces() / 20);
+}
+
+// --- the grid ------------------------------------------------------------
+
+voxel::Volume sphereVolume() {
+    frep::Model m = test::modelFromSource("ball(x[3], a[1]) { ball = 0.25 - x[1]^2 - x[2]^2 - x[3]^2; }");
+    voxel::VolumeRequest req;
+    frep::Box3 box;
+    for (int a = 0; a < 3; ++a) { box.lo[a] = -0.7; box.hi[a] = 0.7; }
+    req.box = box;
+    req.resolution = 64;
+    voxel::VoxelizeResult r = voxel::voxelize(m, req);
+    EXPECT_TRUE(r.volume) << r.error;
+    return std::move(*r.volume);
+}
+
+// Every voxel of the frame, compared.
+int differences(const voxel::Volume& a, const voxel::Volume& b) {
+    int n = 0;
+    const voxel::IndexBox& box = a.frame.indexBox;
+    for (int i = box.lo[0]; i <= box.hi[0]; ++i)
+        for (int j = box.lo[1]; j <= box.hi[1]; ++j)
+            for (int k = box.lo[2]; k <= box.hi[2]; ++k) n += a.value(i, j, k) != b.value(i, j, k);
+    return n;
+}
+
+TEST(SculptureEdits, BoxUpdatesEqualARebuildThroughUndoAndRedo) {
+    voxel::Volume shown = sphereVolume();
+    const voxel::Volume untouched = shown.clone();
+    SculptureEdits edits(shown);
+    const double v = shown.frame.voxelSize;
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> u(-0.5, 0.5);
+    for (int i = 0; i < 40; ++i) {
+        const ModelPoint a{u(rng), u(rng), u(rng)};
+        if (i % 5 == 4) {
+            Perturbation p;
+            p.center = a;
+            p.radii = {6 * v, 4 * v, 5 * v};
+            p.strength = (i % 2 ? 1.0 : -1.0) * 2.5;
+            Edit e;
+            e.op = p;
+            edits.append(std::move(e));
+        } else {
+            const StrokeTool tool = i % 3 == 0 ? StrokeTool::Carve : i % 3 == 1 ? StrokeTool::Add : StrokeTool::Melt;
+            Stroke s;
+            s.tool = tool;
+            s.radius = (2.0 + i % 4 * 3.0) * v;
+            s.path = {a, {a[0] + 0.1, a[1] + 0.05, a[2]}};
+            Edit e;
+            e.op = s;
+            // Live: the first point, then the rest of the path a frame later.
+            auto& st = std::get<Stroke>(e.op);
+            const ModelPoint last = st.path[1];
+            st.path.pop_back();
+            extendStrokeSegments(st, 0, edits.units());
+            edits.append(std::move(e));
+            // (the stroke grows as the hand moves)
+            edits.extendLastStroke({last});
+        }
+        if (i % 7 == 6) {
+            ASSERT_TRUE(edits.undo());
+            if (i % 2) {
+                ASSERT_TRUE(edits.redo());
+            }
+        }
+    }
+    EXPECT_EQ(differences(shown, *edits.rebuild()), 0);
+    EXPECT_GT(differences(shown, untouched), 1000);
+    // Undo everything: the grid of a session that never edited.
+    while (edits.undo()) {}
+    EXPECT_EQ(differences(shown, untouched), 0);
+    // Redo everything: back to the edited grid.
+    while (edits.redo()) {}
+    EXPECT_EQ(differences(shown, *edits.rebuild()), 0);
+}
+
+TEST(SculptureEdits, AStrokeChangesTheGridInsideItsBoxOnly) {
+    voxel::Volume shown = sphereVolume();
+    const voxel::Volume before = shown.clone();
+    SculptureEdits edits(shown);
+    Stroke s;
+    s.tool = StrokeTool::Carve;
+    s.radius = 6 * shown.frame.voxelSize;
+    s.path = {{0.5, 0.0, 0.0}, {0.45, 0.15, 0.0}};
+    extendStrokeSegments(s, 0, edits.units());
+    Edit e;
+    e.op = s;
+    const voxel::IndexBox box = edits.append(std::move(e));
+    int changedInside = 0;
+    const voxel::IndexBox& all = shown.frame.indexBox;
+    for (int i = all.lo[0]; i <= all.hi[0]; ++i)
+        for (int j = all.lo[1]; j <= all.hi[1]; ++j)
+            for (int k = all.lo[2]; k <= all.hi[2]; ++k) {
+                const bool changed = shown.value(i, j, k) != before.value(i, j, k);
+                if (box.contains(i, j, k)) changedInside += changed;
+                else ASSERT_FALSE(changed) << i << " " << j << " " << k;
+            }
+    EXPECT_GT(changedInside, 100);
+    // The box is about the stroke: its radius plus a few voxels around the path.
+    EXPECT_LT(box.extent(0), 40);
+    // The carve cut into the sphere: a voxel on the path inside the sphere is now outside.
+    const int ci = shown.frame.indexOf(0, 0.47), cj = shown.frame.indexOf(1, 0.0), ck = shown.frame.indexOf(2, 0.0);
+    EXPECT_GT(before.value(ci, cj, ck), 0.0f);
+    EXPECT_LT(shown.value(ci, cj, ck), 0.0f);
+}
+
+}  // namespace
+}  // namespace hg::garden

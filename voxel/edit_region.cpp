@@ -1,0 +1,79 @@
+#include "voxel/edit_region.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <memory>
+
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
+#include "frep/eval_batch.h"
+#include "voxel/volume_vdb.h"
+
+namespace hg::voxel {
+
+namespace {
+
+struct Worker {
+    explicit Worker(const frep::Tape& tape, const openvdb::FloatTree& base) : eval(tape), acc(base) {}
+    frep::BatchEvaluator<float> eval;
+    openvdb::tree::ValueAccessor<const openvdb::FloatTree> acc;
+    std::vector<float> x, y, z, w, out;
+    std::vector<openvdb::Index> offsets;
+    frep::ErrorReport errors;
+};
+
+}  // namespace
+
+EditRegionStats applyEditTape(const Volume& base, Volume& target, const IndexBox& region, const frep::Tape& tape) {
+    const auto start = std::chrono::steady_clock::now();
+    EditRegionStats stats;
+    const VolumeFrame& frame = target.frame;
+    const IndexBox clip = intersect(region, frame.indexBox);
+    if (clip.empty()) return stats;
+    const float band = frame.band;
+
+    // Leaves first, serially (touching the tree is not thread-safe), then
+    // each leaf filled on its own.
+    openvdb::FloatTree& tree = vdb(target).tree();
+    const auto origins = alignedBoxes(clip, static_cast<int>(FloatLeaf::DIM));
+    std::vector<FloatLeaf*> leaves(origins.size());
+    for (std::size_t i = 0; i < origins.size(); ++i)
+        leaves[i] = tree.touchLeaf(openvdb::Coord(origins[i][0], origins[i][1], origins[i][2]));
+
+    const openvdb::FloatTree& baseTree = vdb(base).tree();
+    tbb::enumerable_thread_specific<std::unique_ptr<Worker>> workers(
+        [&] { return std::make_unique<Worker>(tape, baseTree); });
+    tbb::parallel_for(std::size_t{0}, origins.size(), [&](std::size_t b) {
+        Worker& wk = *workers.local();
+        wk.x.clear(); wk.y.clear(); wk.z.clear(); wk.w.clear(); wk.offsets.clear();
+        const auto& o = origins[b];
+        const int dim = static_cast<int>(FloatLeaf::DIM);
+        for (int i = std::max(o[0], clip.lo[0]); i <= std::min(o[0] + dim - 1, clip.hi[0]); ++i)
+            for (int j = std::max(o[1], clip.lo[1]); j <= std::min(o[1] + dim - 1, clip.hi[1]); ++j)
+                for (int k = std::max(o[2], clip.lo[2]); k <= std::min(o[2] + dim - 1, clip.hi[2]); ++k) {
+                    const openvdb::Coord c(i, j, k);
+                    // Rounded like the sampler's points (box_walker.cpp).
+                    wk.x.push_back(static_cast<float>(frame.coordinate(0, i)));
+                    wk.y.push_back(static_cast<float>(frame.coordinate(1, j)));
+                    wk.z.push_back(static_cast<float>(frame.coordinate(2, k)));
+                    wk.w.push_back(wk.acc.getValue(c));
+                    wk.offsets.push_back(FloatLeaf::coordToOffset(c));
+                }
+        wk.out.resize(wk.x.size());
+        wk.eval.evaluate(wk.x.data(), wk.y.data(), wk.z.data(), wk.w.data(), wk.out.data(), wk.x.size(), wk.errors);
+        FloatLeaf& leaf = *leaves[b];
+        for (std::size_t n = 0; n < wk.out.size(); ++n) {
+            const float v = std::clamp(wk.out[n], -band, band);
+            if (std::fabs(v) < band) leaf.setValueOn(wk.offsets[n], v);
+            else leaf.setValueOff(wk.offsets[n], v);
+        }
+    });
+    for (const auto& wk : workers) stats.errors.merge(wk->errors);
+    stats.voxels = clip.volume();
+    stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return stats;
+}
+
+}  // namespace hg::voxel
