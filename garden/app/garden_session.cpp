@@ -10,6 +10,7 @@
 #include "garden/morph/garden_morph.h"
 #include "garden/morph/morph_blend.h"
 #include "garden/morph/morph_sources.h"
+#include "garden/sculpt/sculpture_edits.h"
 #include "garden/scene/to_glm.h"
 #include "voxel/sampler.h"
 
@@ -178,6 +179,8 @@ void GardenSession::beginFrame() {
 void GardenSession::input(const Hands& hands, double dt) {
     scheduler_.beginStage(Stage::Input);
     navigator_.update(hands, dt);
+    sculptWithHands(hands);
+    if (tool_.kind != ToolSettings::Kind::None) return;  // the trigger sculpts
     // The tool's ray on the morph triangle drawn on the ground picks the
     // blend (seed 004's selector), while the trigger is held.
     if (blender_ && hands.tool.tracked && hands.tool.trigger > 0.5f) {

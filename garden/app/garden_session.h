@@ -22,6 +22,7 @@
 #include "garden/app/navigator.h"
 #include "garden/morph/morph_weights.h"
 #include "garden/scene/garden_file.h"
+#include "garden/sculpt/edit.h"
 #include "polygonizer/lod_selection.h"
 #include "polygonizer/remesh_queue.h"
 
@@ -29,6 +30,19 @@ namespace hg::garden {
 
 class MorphBlender;
 struct MorphSources;
+class SculptureEdits;
+
+// The tool the tool hand works (DESIGN §6); sizes in metres of the world.
+struct ToolSettings {
+    enum class Kind { None, Carve, Add, Melt, Perturb };
+    Kind kind = Kind::None;      // None: the trigger picks the morph on the ground
+    double radius = 0.05;        // carve, add, melt: the tool radius
+    double softness = 2.0;       // melt: voxels
+    QuadricShape shape = QuadricShape::Ellipsoid;
+    std::array<double, 3> radii{0.08, 0.08, 0.08};  // perturb: ellipsoid radii, or torus R, r
+    double strength = 2.0;       // perturb: voxels, > 0 pulls, < 0 pushes
+    bool reverse = false;        // the action reversed: carve <-> add, pull <-> push
+};
 
 struct SessionSettings {
     SchedulerSettings scheduler;
@@ -62,6 +76,7 @@ struct SculptureState {
     std::unique_ptr<poly::LodPyramid> pyramid;
     std::unique_ptr<poly::ChunkLayout> layout;
     std::unique_ptr<poly::RemeshQueue> queue;
+    std::unique_ptr<SculptureEdits> edits;  // made at the first edit
     int framesSinceLevels = 0;         // frames since the queue last took new levels
 
     bool missing() const { return !error.empty(); }
@@ -103,6 +118,34 @@ public:
     int selected() const { return selected_; }
     int findSculpture(const std::string& name) const;
 
+    // --- sculpting (garden/app/session_sculpting.cpp) ------------------
+    // Every action changes the grid in its box within the call; the
+    // chunks it touched are remeshed first. "" on success, else why the
+    // action was refused (nothing changed then).
+    // An edit in world coordinates (metres): a stroke's path and radius, a
+    // perturbation's centre and radii, are taken into the sculpture's model
+    // frame here.
+    std::string applyStroke(int sculpture, StrokeTool tool, const std::vector<std::array<double, 3>>& worldPath,
+                            double radius, double softness = 2.0);
+    std::string applyPerturbation(int sculpture, QuadricShape shape, const std::array<double, 3>& worldCenter,
+                                  const std::array<double, 3>& radii, double strength);
+    // A live stroke: begun at a point, extended as the hand moves, ended on
+    // release (the stroke is in the edit list from its first point).
+    std::string beginStroke(int sculpture, StrokeTool tool, const std::array<double, 3>& worldPoint, double radius,
+                            double softness = 2.0);
+    std::string extendStroke(const std::array<double, 3>& worldPoint);
+    void endStroke();
+    bool stroking() const { return strokeSculpture_ >= 0; }
+    // Undo and redo over every sculpture, in the order actions were made;
+    // false when there is nothing to undo or redo.
+    bool undo();
+    bool redo();
+    std::size_t editCount(int sculpture) const;
+    ToolSettings& tool() { return tool_; }
+    // Where the tool hand's ray first meets a sculpture's surface (world):
+    // the sculpture's index and the point, or none.
+    std::optional<std::pair<int, glm::vec3>> toolHit(const Pose& aim) const;
+
     // --- one frame -----------------------------------------------------
     void beginFrame();
     void input(const Hands& hands, double dt);
@@ -130,6 +173,10 @@ private:
     void buildMorph();
     void restartMorph();
     std::array<double, 3> toModel(const SculptureState& s, const glm::vec3& world) const;
+    std::string checkEditable(int sculpture) const;
+    SculptureEdits& editsOf(int sculpture);
+    void showChanged(int sculpture, const voxel::IndexBox& box);
+    void sculptWithHands(const Hands& hands);
 
     GardenLoad load_;
     SessionSettings settings_;
@@ -144,6 +191,14 @@ private:
     std::optional<MorphWeights> weights_;
     std::array<double, 3> balance_{1.0, 1.0, 1.0};
     int morphIndex_ = -1;  // the result's index in sculptures_
+    // Sculpting.
+    ToolSettings tool_;
+    int strokeSculpture_ = -1;         // the live stroke's sculpture, or -1
+    std::vector<int> undoOrder_;       // sculptures of the actions to undo, oldest first
+    std::vector<int> redoOrder_;
+    std::uint32_t lastButtons_ = 0;    // the tool hand's buttons last frame (undo, redo edges)
+    bool toolArmed_ = true;            // the trigger was released since the last action
+    float strokeDepth_ = 0.0f;         // metres along the ray where the live stroke began
 };
 
 }  // namespace hg::garden

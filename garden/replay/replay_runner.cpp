@@ -64,6 +64,8 @@ std::string apply(const ReplayCommand& c, GardenSession& s, FrameRenderer* rende
         case ReplayCommand::Kind::Budget:
             s.scheduler().setBudgetMs(c.number);
             return "";
+        case ReplayCommand::Kind::Sculpt:
+            return runSculptCommand(c.sculpt, s);
     }
     return "";
 }

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "garden/hands/hand_state.h"
+#include "garden/replay/sculpt_commands.h"
 
 namespace hg::garden {
 
@@ -23,6 +24,7 @@ struct ReplayCommand {
         Select,        // select the sculpture named `text` ("" selects none)
         Orbit,         // orbit the selection (`flag`), or stop
         Budget,        // the frame budget, milliseconds (`number`)
+        Sculpt,        // a sculpting command (`sculpt`)
     };
     Kind kind = Kind::Morph;
     std::array<double, 3> vec{};
@@ -30,6 +32,7 @@ struct ReplayCommand {
     double number = 0.0;
     std::string text;
     bool flag = false;
+    SculptCommand sculpt;
 };
 
 struct ReplayStep {

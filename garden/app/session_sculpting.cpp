@@ -1,0 +1,251 @@
+// GardenSession's sculpting: edits applied to a sculpture's grid within the
+// call, undo and redo across sculptures, and the tool hand driving strokes
+// and perturbations (DESIGN §6: tools read hands, never devices).
+#include <algorithm>
+#include <cmath>
+
+#include <glm/gtc/matrix_inverse.hpp>
+
+#include "garden/app/garden_session.h"
+#include "garden/scene/to_glm.h"
+#include "garden/sculpt/sculpture_edits.h"
+#include "garden/sculpt/stroke_segments.h"
+#include "voxel/volume.h"
+
+namespace hg::garden {
+
+namespace {
+
+bool finite3(const std::array<double, 3>& p) {
+    return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
+}
+
+}  // namespace
+
+std::string GardenSession::checkEditable(int sculpture) const {
+    if (sculpture < 0 || sculpture >= static_cast<int>(sculptures_.size())) return "no such sculpture";
+    const SculptureState& s = sculptures_[static_cast<std::size_t>(sculpture)];
+    if (s.missing()) return "the sculpture '" + s.name + "' is missing: " + s.error;
+    if (s.morphResult) return "the metamorphosis result cannot be edited yet (its re-blend does not keep edits)";
+    return "";
+}
+
+SculptureEdits& GardenSession::editsOf(int sculpture) {
+    SculptureState& s = sculptures_[static_cast<std::size_t>(sculpture)];
+    if (!s.edits) s.edits = std::make_unique<SculptureEdits>(*s.volume);
+    return *s.edits;
+}
+
+void GardenSession::showChanged(int sculpture, const voxel::IndexBox& box) {
+    if (box.empty()) return;
+    SculptureState& s = sculptures_[static_cast<std::size_t>(sculpture)];
+    s.pyramid->update(box);
+    s.queue->markChanged(box);
+}
+
+std::string GardenSession::applyStroke(int sculpture, StrokeTool tool, const std::vector<std::array<double, 3>>& worldPath,
+                                       double radius, double softness) {
+    if (worldPath.empty()) return "the stroke has no path";
+    std::string why = beginStroke(sculpture, tool, worldPath[0], radius, softness);
+    if (!why.empty()) return why;
+    for (std::size_t i = 1; i < worldPath.size(); ++i) {
+        why = extendStroke(worldPath[i]);
+        if (!why.empty()) {
+            endStroke();
+            return why;
+        }
+    }
+    endStroke();
+    return "";
+}
+
+std::string GardenSession::beginStroke(int sculpture, StrokeTool tool, const std::array<double, 3>& worldPoint,
+                                       double radius, double softness) {
+    if (stroking()) endStroke();
+    if (std::string why = checkEditable(sculpture); !why.empty()) return why;
+    if (!finite3(worldPoint)) return "the stroke's point is not a finite position";
+    const SculptureState& s = sculptures_[static_cast<std::size_t>(sculpture)];
+    Stroke stroke;
+    stroke.tool = tool;
+    stroke.radius = radius / s.scale;
+    stroke.softness = softness;
+    stroke.path.push_back(toModel(s, toGlm(worldPoint)));
+    SculptureEdits& edits = editsOf(sculpture);
+    if (std::string why = checkStroke(stroke, edits.units()); !why.empty()) return why;
+    extendStrokeSegments(stroke, 0, edits.units());
+    Edit e;
+    e.op = std::move(stroke);
+    showChanged(sculpture, edits.append(std::move(e)));
+    strokeSculpture_ = sculpture;
+    undoOrder_.push_back(sculpture);
+    redoOrder_.clear();
+    return "";
+}
+
+std::string GardenSession::extendStroke(const std::array<double, 3>& worldPoint) {
+    if (!stroking()) return "no stroke is under way";
+    if (!finite3(worldPoint)) return "the stroke's point is not a finite position";
+    const SculptureState& s = sculptures_[static_cast<std::size_t>(strokeSculpture_)];
+    showChanged(strokeSculpture_, editsOf(strokeSculpture_).extendLastStroke(std::vector<ModelPoint>{toModel(s, toGlm(worldPoint))}));
+    return "";
+}
+
+void GardenSession::endStroke() { strokeSculpture_ = -1; }
+
+std::string GardenSession::applyPerturbation(int sculpture, QuadricShape shape, const std::array<double, 3>& worldCenter,
+                                             const std::array<double, 3>& radii, double strength) {
+    if (stroking()) endStroke();
+    if (std::string why = checkEditable(sculpture); !why.empty()) return why;
+    if (!finite3(worldCenter)) return "the perturbation's centre is not a finite position";
+    const int used = shape == QuadricShape::Ellipsoid ? 3 : 2;
+    for (int i = 0; i < used; ++i)
+        if (!(std::isfinite(radii[static_cast<std::size_t>(i)]) && radii[static_cast<std::size_t>(i)] > 0.0))
+            return "the perturbation's radii must be positive numbers";
+    if (shape == QuadricShape::Torus && radii[1] >= radii[0]) return "a torus's tube radius must be under its ring radius";
+    if (!(std::isfinite(strength) && std::fabs(strength) <= 1000.0)) return "the strength must be a number in [-1000, 1000] voxels";
+    const SculptureState& s = sculptures_[static_cast<std::size_t>(sculpture)];
+    SculptureEdits& edits = editsOf(sculpture);
+    Perturbation p;
+    p.shape = shape;
+    p.center = toModel(s, toGlm(worldCenter));
+    p.radii = {radii[0] / s.scale, radii[1] / s.scale, radii[2] / s.scale};
+    p.strength = strength;
+    // The quadric's axes are the world's, turned into the model frame.
+    const glm::mat3 toModelAxes = glm::mat3(glm::inverse(s.modelToWorld));
+    for (int i = 0; i < 3; ++i) {
+        glm::vec3 axis(0.0f);
+        axis[i] = 1.0f;
+        const glm::vec3 m = glm::normalize(toModelAxes * axis);
+        p.axes[static_cast<std::size_t>(i)] = {m.x, m.y, m.z};
+    }
+    if (p.radii[0] < 0.5 * edits.units().voxelSize) return "the perturbation is smaller than half a voxel";
+    Edit e;
+    e.op = p;
+    showChanged(sculpture, edits.append(std::move(e)));
+    undoOrder_.push_back(sculpture);
+    redoOrder_.clear();
+    return "";
+}
+
+bool GardenSession::undo() {
+    if (stroking()) endStroke();
+    while (!undoOrder_.empty()) {
+        const int sculpture = undoOrder_.back();
+        undoOrder_.pop_back();
+        SculptureState& s = sculptures_[static_cast<std::size_t>(sculpture)];
+        if (!s.edits) continue;
+        if (const auto box = s.edits->undo()) {
+            showChanged(sculpture, *box);
+            redoOrder_.push_back(sculpture);
+            return true;
+        }
+    }
+    return false;
+}
+
+bool GardenSession::redo() {
+    if (stroking()) endStroke();
+    while (!redoOrder_.empty()) {
+        const int sculpture = redoOrder_.back();
+        redoOrder_.pop_back();
+        SculptureState& s = sculptures_[static_cast<std::size_t>(sculpture)];
+        if (!s.edits) continue;
+        if (const auto box = s.edits->redo()) {
+            showChanged(sculpture, *box);
+            undoOrder_.push_back(sculpture);
+            return true;
+        }
+    }
+    return false;
+}
+
+std::size_t GardenSession::editCount(int sculpture) const {
+    if (sculpture < 0 || sculpture >= static_cast<int>(sculptures_.size())) return 0;
+    const SculptureState& s = sculptures_[static_cast<std::size_t>(sculpture)];
+    return s.edits ? s.edits->list().size() : 0;
+}
+
+std::optional<std::pair<int, glm::vec3>> GardenSession::toolHit(const Pose& aim) const {
+    std::optional<std::pair<int, glm::vec3>> best;
+    double bestT = 1e300;
+    for (std::size_t i = 0; i < sculptures_.size(); ++i) {
+        const SculptureState& s = sculptures_[i];
+        if (s.missing()) continue;
+        const glm::dmat4 toModelM = glm::inverse(glm::dmat4(s.modelToWorld));
+        const glm::dvec3 o = glm::dvec3(toModelM * glm::dvec4(glm::dvec3(aim.position), 1.0));
+        const glm::dvec3 d = glm::dvec3(toModelM * glm::dvec4(glm::dvec3(aim.forward()), 0.0));
+        const voxel::VolumeFrame& f = s.volume->frame;
+        // The ray's span inside the model box.
+        double t0 = 0.0, t1 = 1e300;
+        for (int a = 0; a < 3; ++a) {
+            const double lo = f.modelBox.lo[a], hi = f.modelBox.hi[a];
+            if (std::fabs(d[a]) < 1e-300) {
+                if (o[a] < lo || o[a] > hi) t1 = -1.0;
+                continue;
+            }
+            double ta = (lo - o[a]) / d[a], tb = (hi - o[a]) / d[a];
+            if (ta > tb) std::swap(ta, tb);
+            t0 = std::max(t0, ta);
+            t1 = std::min(t1, tb);
+        }
+        if (t1 < t0) continue;
+        const double step = 0.5 * f.voxelSize / glm::length(d);
+        for (double t = t0; t <= t1; t += step) {
+            const glm::dvec3 p = o + d * t;
+            if (s.volume->value(f.indexOf(0, p.x), f.indexOf(1, p.y), f.indexOf(2, p.z)) < 0.0f) continue;
+            // t is model-frame ray length per world-ray length: comparable
+            // across sculptures (d is the world direction taken into the model).
+            if (t < bestT) {
+                bestT = t;
+                best = std::make_pair(static_cast<int>(i), glm::vec3(s.modelToWorld * glm::vec4(glm::vec3(p), 1.0f)));
+            }
+            break;
+        }
+    }
+    return best;
+}
+
+void GardenSession::sculptWithHands(const Hands& hands) {
+    const HandState& h = hands.tool;
+    const std::uint32_t pressedNow = h.buttons & ~lastButtons_;
+    lastButtons_ = h.buttons;
+    if (pressedNow & kButtonUndo) undo();
+    if (pressedNow & kButtonRedo) redo();
+    if (tool_.kind == ToolSettings::Kind::None || !h.tracked) {
+        if (stroking()) endStroke();
+        return;
+    }
+    const bool held = h.trigger > 0.5f;
+    if (!held) {
+        if (stroking()) endStroke();
+        toolArmed_ = true;
+        return;
+    }
+    const auto toArray = [](const glm::vec3& v) { return std::array<double, 3>{v.x, v.y, v.z}; };
+    if (stroking()) {
+        // Follow the hand: where the ray meets the sculpture, else as deep
+        // along the ray as the stroke began.
+        const auto hit = toolHit(h.aim);
+        const glm::vec3 p = hit && hit->first == strokeSculpture_ ? hit->second
+                                                                  : h.aim.position + h.aim.forward() * strokeDepth_;
+        extendStroke(toArray(p));
+        return;
+    }
+    if (!toolArmed_) return;  // one action per trigger pull
+    const auto hit = toolHit(h.aim);
+    if (!hit) return;
+    toolArmed_ = false;
+    const auto [sculpture, point] = *hit;
+    if (tool_.kind == ToolSettings::Kind::Perturb) {
+        const double k = tool_.reverse ? -tool_.strength : tool_.strength;
+        applyPerturbation(sculpture, tool_.shape, toArray(point), tool_.radii, k);
+        return;
+    }
+    StrokeTool t = tool_.kind == ToolSettings::Kind::Add ? StrokeTool::Add
+                   : tool_.kind == ToolSettings::Kind::Melt ? StrokeTool::Melt : StrokeTool::Carve;
+    if (tool_.reverse && t != StrokeTool::Melt) t = t == StrokeTool::Carve ? StrokeTool::Add : StrokeTool::Carve;
+    strokeDepth_ = glm::length(point - h.aim.position);
+    beginStroke(sculpture, t, toArray(point), tool_.radius, tool_.softness);
+}
+
+}  // namespace hg::garden

@@ -1,0 +1,110 @@
+#include "garden/replay/sculpt_commands.h"
+
+#include <nlohmann/json.hpp>
+
+#include "garden/scene/json_reader.h"
+
+namespace hg::garden {
+
+namespace {
+
+StrokeTool readStrokeTool(const nlohmann::json& v, const std::string& path) {
+    const std::string t = readString(v, path);
+    if (t == "carve") return StrokeTool::Carve;
+    if (t == "add") return StrokeTool::Add;
+    if (t == "melt") return StrokeTool::Melt;
+    throw JsonError(path, "expected carve, add or melt");
+}
+
+QuadricShape readShape(const nlohmann::json& v, const std::string& path) {
+    const std::string t = readString(v, path);
+    if (t == "ellipsoid") return QuadricShape::Ellipsoid;
+    if (t == "torus") return QuadricShape::Torus;
+    throw JsonError(path, "expected ellipsoid or torus");
+}
+
+}  // namespace
+
+SculptCommand readSculptCommand(const std::string& key, const nlohmann::json& v, const std::string& path) {
+    if (key == "stroke") {
+        ObjectReader r(v, path, {"sculpture", "tool", "radius", "softness", "path"});
+        StrokeCommand c;
+        c.sculpture = readString(r.required("sculpture"), r.pathOf("sculpture"));
+        c.tool = readStrokeTool(r.required("tool"), r.pathOf("tool"));
+        c.radius = readNumber(r.required("radius"), r.pathOf("radius"), 1e-6, 100.0);
+        if (r.has("softness")) c.softness = readNumber(r.required("softness"), r.pathOf("softness"), 0.01, 64.0);
+        const nlohmann::json& p = r.required("path");
+        if (!p.is_array() || p.empty()) throw JsonError(r.pathOf("path"), "expected a non-empty array of [x, y, z] points");
+        for (std::size_t i = 0; i < p.size(); ++i) c.path.push_back(readVec3(p[i], indexPath(r.pathOf("path"), i)));
+        r.finish();
+        return c;
+    }
+    if (key == "perturb") {
+        ObjectReader r(v, path, {"sculpture", "shape", "center", "radii", "strength"});
+        PerturbCommand c;
+        c.sculpture = readString(r.required("sculpture"), r.pathOf("sculpture"));
+        if (r.has("shape")) c.shape = readShape(r.required("shape"), r.pathOf("shape"));
+        c.center = readVec3(r.required("center"), r.pathOf("center"));
+        c.radii = readVec3(r.required("radii"), r.pathOf("radii"));
+        for (std::size_t i = 0; i < (c.shape == QuadricShape::Ellipsoid ? 3u : 2u); ++i)
+            if (!(c.radii[i] > 0.0 && c.radii[i] <= 100.0))
+                throw JsonError(indexPath(r.pathOf("radii"), i), "expected a radius in (0, 100] metres");
+        c.strength = readNumber(r.required("strength"), r.pathOf("strength"), -1000.0, 1000.0);
+        r.finish();
+        return c;
+    }
+    if (key == "undo" || key == "redo") {
+        const int times = readInt(v, path, 1, 1000000);
+        if (key == "undo") return UndoCommand{times};
+        return RedoCommand{times};
+    }
+    // sculpt_tool
+    ObjectReader r(v, path, {"kind", "radius", "softness", "shape", "radii", "strength", "reverse"});
+    ToolCommand c;
+    const std::string kind = readString(r.required("kind"), r.pathOf("kind"));
+    using K = ToolSettings::Kind;
+    if (kind == "none") c.settings.kind = K::None;
+    else if (kind == "carve") c.settings.kind = K::Carve;
+    else if (kind == "add") c.settings.kind = K::Add;
+    else if (kind == "melt") c.settings.kind = K::Melt;
+    else if (kind == "perturb") c.settings.kind = K::Perturb;
+    else throw JsonError(r.pathOf("kind"), "expected none, carve, add, melt or perturb");
+    if (r.has("radius")) c.settings.radius = readNumber(r.required("radius"), r.pathOf("radius"), 1e-6, 100.0);
+    if (r.has("softness")) c.settings.softness = readNumber(r.required("softness"), r.pathOf("softness"), 0.01, 64.0);
+    if (r.has("shape")) c.settings.shape = readShape(r.required("shape"), r.pathOf("shape"));
+    if (r.has("radii")) c.settings.radii = readVec3(r.required("radii"), r.pathOf("radii"));
+    if (r.has("strength")) c.settings.strength = readNumber(r.required("strength"), r.pathOf("strength"), -1000.0, 1000.0);
+    if (r.has("reverse")) c.settings.reverse = readBool(r.required("reverse"), r.pathOf("reverse"));
+    r.finish();
+    return c;
+}
+
+std::string runSculptCommand(const SculptCommand& command, GardenSession& session) {
+    const auto find = [&](const std::string& name, int& index) -> std::string {
+        index = session.findSculpture(name);
+        return index < 0 ? "no sculpture named '" + name + "'" : "";
+    };
+    int i = -1;
+    if (const auto* c = std::get_if<StrokeCommand>(&command)) {
+        if (std::string why = find(c->sculpture, i); !why.empty()) return why;
+        return session.applyStroke(i, c->tool, c->path, c->radius, c->softness);
+    }
+    if (const auto* c = std::get_if<PerturbCommand>(&command)) {
+        if (std::string why = find(c->sculpture, i); !why.empty()) return why;
+        return session.applyPerturbation(i, c->shape, c->center, c->radii, c->strength);
+    }
+    if (const auto* c = std::get_if<UndoCommand>(&command)) {
+        for (int n = 0; n < c->times; ++n)
+            if (!session.undo()) return "nothing to undo";
+        return "";
+    }
+    if (const auto* c = std::get_if<RedoCommand>(&command)) {
+        for (int n = 0; n < c->times; ++n)
+            if (!session.redo()) return "nothing to redo";
+        return "";
+    }
+    session.tool() = std::get<ToolCommand>(command).settings;
+    return "";
+}
+
+}  // namespace hg::garden

@@ -1,0 +1,46 @@
+// Replay commands that sculpt (docs/replay-format.md): one small struct per
+// command, each field named for what it is. Positions in world metres.
+#pragma once
+
+#include <array>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "garden/app/garden_session.h"
+#include "nlohmann/json_fwd.hpp"
+
+namespace hg::garden {
+
+// A whole stroke along a path, as if drawn in one frame.
+struct StrokeCommand {
+    std::string sculpture;
+    StrokeTool tool = StrokeTool::Carve;
+    double radius = 0.05;
+    double softness = 2.0;
+    std::vector<std::array<double, 3>> path;
+};
+
+struct PerturbCommand {
+    std::string sculpture;
+    QuadricShape shape = QuadricShape::Ellipsoid;
+    std::array<double, 3> center{};
+    std::array<double, 3> radii{0.05, 0.05, 0.05};
+    double strength = 2.0;
+};
+
+struct UndoCommand { int times = 1; };
+struct RedoCommand { int times = 1; };
+
+// The tool the tool hand works from now on (hand-driven sculpting).
+struct ToolCommand { ToolSettings settings; };
+
+using SculptCommand = std::variant<StrokeCommand, PerturbCommand, UndoCommand, RedoCommand, ToolCommand>;
+
+// Reads the command under `key` (stroke, perturb, undo, redo, sculpt_tool);
+// throws JsonError with the JSON path of a bad value.
+SculptCommand readSculptCommand(const std::string& key, const nlohmann::json& v, const std::string& path);
+// "" or why the session refused it.
+std::string runSculptCommand(const SculptCommand& c, GardenSession& session);
+
+}  // namespace hg::garden

@@ -1,0 +1,162 @@
+// Sculpting in the running garden (garden/app/session_sculpting.cpp and the
+// replay's sculpting commands): the tool hand carves where its ray meets a
+// sculpture, each edit changes the grid within the frame, undo and redo on
+// the hand's buttons restore it exactly, and bad input changes nothing.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include <glm/gtc/quaternion.hpp>
+
+#include "garden/app/garden_session.h"
+#include "garden/replay/replay_runner.h"
+#include "garden/replay/replay_script.h"
+#include "garden/scene/json_reader.h"
+#include "garden/sculpt/sculpture_edits.h"
+#include "session_garden.h"
+
+namespace hg::garden {
+namespace {
+
+class SessionSculptingTest : public test::SmallGarden {};
+
+SessionSettings smallSettings() {
+    SessionSettings s;
+    s.morphSamplesPerFrame = 2000;
+    s.remeshChunksPerFrame = 3;
+    s.chunkSize = 16;
+    s.maxLevel = 1;
+    s.viewportHeight = 200;
+    return s;
+}
+
+int differences(const voxel::Volume& a, const voxel::Volume& b) {
+    int n = 0;
+    const voxel::IndexBox& box = a.frame.indexBox;
+    for (int k = box.lo[2]; k <= box.hi[2]; ++k)
+        for (int j = box.lo[1]; j <= box.hi[1]; ++j)
+            for (int i = box.lo[0]; i <= box.hi[0]; ++i) n += a.value(i, j, k) != b.value(i, j, k);
+    return n;
+}
+
+void frame(GardenSession& s, const Hands& h) {
+    s.beginFrame();
+    s.input(h, 1.0 / 90.0);
+    s.selectLevels();
+    s.morph();
+    s.remesh();
+    s.endFrame();
+}
+
+TEST_F(SessionSculptingTest, TheToolHandCarvesAndItsButtonsUndoAndRedoExactly) {
+    GardenSession s(loadGarden(writeGarden()), smallSettings());
+    const int c = s.findSculpture("c");  // a ball of radius 0.6 about (2, 0.5, 1.1547)
+    const voxel::Volume original = s.sculptures()[static_cast<std::size_t>(c)].volume->clone();
+    s.tool().kind = ToolSettings::Kind::Carve;
+    s.tool().radius = 0.1;
+    Hands h;
+    h.tool.tracked = true;
+    h.tool.aim.orientation = glm::quatLookAt(glm::vec3(0, 0, -1), glm::vec3(0, 1, 0));
+    const auto hit = s.toolHit(Pose{glm::vec3(2.0f, 0.5f, 4.0f), h.tool.aim.orientation});
+    ASSERT_TRUE(hit);
+    EXPECT_EQ(hit->first, c);
+    EXPECT_NEAR(hit->second.z, 1.1547f + 0.6f, 0.05f);
+    h.tool.trigger = 1.0f;
+    for (int f = 0; f < 6; ++f) {
+        h.tool.aim.position = glm::vec3(1.85f + 0.05f * static_cast<float>(f), 0.5f, 4.0f);
+        frame(s, h);
+    }
+    h.tool.trigger = 0.0f;
+    frame(s, h);
+    ASSERT_EQ(s.editCount(c), 1u);
+    SculptureState& st = s.sculptures()[static_cast<std::size_t>(c)];
+    EXPECT_GT(differences(*st.volume, original), 100);
+    EXPECT_EQ(differences(*st.volume, *st.edits->rebuild()), 0);
+    // Where the ray met the surface is now outside, and the morph did not move.
+    const voxel::VolumeFrame& fr = st.volume->frame;
+    const int i = fr.indexOf(0, 0.0), j = fr.indexOf(1, 0.5), k = fr.indexOf(2, 0.55);
+    EXPECT_GT(original.value(i, j, k), 0.0f);
+    EXPECT_LT(st.volume->value(i, j, k), 0.0f);
+    const voxel::Volume carved = st.volume->clone();
+    // Undo on the tool hand's button: the grid of a session that never carved.
+    h.tool.buttons = kButtonUndo;
+    frame(s, h);
+    h.tool.buttons = 0;
+    frame(s, h);
+    EXPECT_EQ(s.editCount(c), 0u);
+    EXPECT_EQ(differences(*st.volume, original), 0);
+    h.tool.buttons = kButtonRedo;
+    frame(s, h);
+    EXPECT_EQ(differences(*st.volume, carved), 0);
+    // The carved chunks were remeshed.
+    for (int f = 0; f < 200 && !s.idle(); ++f) frame(s, Hands{});
+    EXPECT_TRUE(s.idle());
+}
+
+TEST_F(SessionSculptingTest, ReplayCommandsSculptUndoAndRedo) {
+    const std::string garden = writeGarden();
+    const ReplayScript script = parseReplayScript(R"({
+      "garden": ")" + garden + R"(",
+      "steps": [
+        {"commands": [{"stroke": {"sculpture": "a", "tool": "carve", "radius": 0.08,
+                                  "path": [[-0.3, 0.6, -1.8], [0.3, 0.6, -1.8]]}}]},
+        {"commands": [{"stroke": {"sculpture": "a", "tool": "melt", "radius": 0.1, "softness": 2,
+                                  "path": [[0, 0.9, -2.3], [0, 0.95, -2.0]]}}]},
+        {"commands": [{"perturb": {"sculpture": "b", "shape": "torus", "center": [-2, 0.9, 1.15],
+                                   "radii": [0.15, 0.05, 0], "strength": 2}}]},
+        {"commands": [{"stroke": {"sculpture": "c", "tool": "add", "radius": 0.1,
+                                  "path": [[2.6, 0.5, 1.15], [2.8, 0.6, 1.15]]}}]},
+        {"commands": [{"undo": 2}]},
+        {"commands": [{"redo": 1}]},
+        {"until_idle": true, "frames": 2000}
+      ]})", "sculpt.json", "");
+    GardenSession s(loadGarden(garden), smallSettings());
+    const ReplayResult r = runReplay(script, s, nullptr, {});
+    ASSERT_EQ(r.error, "");
+    EXPECT_EQ(s.editCount(s.findSculpture("a")), 2u);
+    EXPECT_EQ(s.editCount(s.findSculpture("b")), 1u);
+    EXPECT_EQ(s.editCount(s.findSculpture("c")), 0u);  // undone, not redone
+    for (const char* name : {"a", "b"}) {
+        const SculptureState& st = s.sculptures()[static_cast<std::size_t>(s.findSculpture(name))];
+        EXPECT_EQ(differences(*st.volume, *st.edits->rebuild()), 0) << name;
+    }
+}
+
+TEST_F(SessionSculptingTest, BadInputIsRefusedAndChangesNothing) {
+    GardenSession s(loadGarden(writeGarden()), smallSettings());
+    const int a = s.findSculpture("a");
+    const voxel::Volume original = s.sculptures()[static_cast<std::size_t>(a)].volume->clone();
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_NE(s.applyStroke(a, StrokeTool::Carve, {{0, 0.5, -2.3}}, -0.1), "");
+    EXPECT_NE(s.applyStroke(a, StrokeTool::Carve, {{0, 0.5, -2.3}}, 1e-6), "");  // under half a voxel
+    EXPECT_NE(s.applyStroke(a, StrokeTool::Carve, {{nan, 0.5, -2.3}}, 0.1), "");
+    EXPECT_NE(s.applyPerturbation(a, QuadricShape::Torus, {0, 0.5, -2.3}, {0.05, 0.1, 0.0}, 2.0), "");
+    EXPECT_NE(s.applyPerturbation(a, QuadricShape::Ellipsoid, {0, 0.5, -2.3}, {0.05, 0.1, 0.1}, nan), "");
+    EXPECT_NE(s.applyStroke(s.findSculpture("lost"), StrokeTool::Carve, {{6, 0.5, 6}}, 0.1).find("missing"),
+              std::string::npos);
+    EXPECT_NE(s.applyStroke(s.findSculpture("metamorphosis"), StrokeTool::Carve, {{0, 0.5, 0}}, 0.1), "");
+    EXPECT_FALSE(s.undo());
+    EXPECT_EQ(s.editCount(a), 0u);
+    EXPECT_EQ(differences(*s.sculptures()[static_cast<std::size_t>(a)].volume, original), 0);
+
+    // A replay stops at a bad command with its JSON path.
+    try {
+        parseReplayScript(R"({"garden": "g.json", "steps": [{"commands": [
+            {"stroke": {"sculpture": "a", "tool": "chisel", "radius": 0.1, "path": [[0, 0, 0]]}}]}]})",
+                          "bad.json", "");
+        ADD_FAILURE() << "an unknown tool was read";
+    } catch (const JsonError& e) {
+        EXPECT_EQ(e.path(), "$.steps[0].commands[0].stroke.tool");
+    }
+    const std::string garden = writeGarden();
+    const ReplayScript script = parseReplayScript(R"({"garden": ")" + garden + R"(", "steps": [{"commands": [
+        {"stroke": {"sculpture": "nobody", "tool": "carve", "radius": 0.1, "path": [[0, 0, 0]]}}]}]})",
+                                                  "bad.json", "");
+    GardenSession s2(loadGarden(garden), smallSettings());
+    const ReplayResult r = runReplay(script, s2, nullptr, {});
+    EXPECT_NE(r.error.find("$.steps[0].commands[0]: no sculpture named 'nobody'"), std::string::npos) << r.error;
+}
+
+}  // namespace
+}  // namespace hg::garden
