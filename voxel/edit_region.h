@@ -21,7 +21,8 @@ struct EditRegionStats {
     frep::ErrorReport errors;
 };
 
-// `target` and `base` share a frame; `region` is clipped to it. Values are
+// `target` and `base` share a frame (they may be the same grid: each voxel
+// is read before it is written); `region` is clipped to it. Values are
 // clamped to the band and stored active inside it, like the sampler's.
 EditRegionStats applyEditTape(const Volume& base, Volume& target, const IndexBox& region, const frep::Tape& tape);
 

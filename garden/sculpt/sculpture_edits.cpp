@@ -48,12 +48,22 @@ voxel::EditRegionStats SculptureEdits::update(const voxel::IndexBox& box) {
     return lastStats_;
 }
 
+voxel::EditRegionStats SculptureEdits::applyOnTop(const voxel::IndexBox& box, std::size_t firstPiece) {
+    const voxel::IndexBox clip = voxel::intersect(box, shown_.frame.indexBox);
+    if (clip.empty()) return {};
+    EditPick pick{static_cast<std::uint32_t>(list_.size() - 1), {}};
+    for (std::size_t p = firstPiece; p < pieceCount(list_.edits().back()); ++p)
+        pick.pieces.push_back(static_cast<std::uint32_t>(p));
+    lastStats_ = voxel::applyEditTape(shown_, shown_, clip, editTape(list_, {pick}));
+    return lastStats_;
+}
+
 voxel::IndexBox SculptureEdits::append(Edit edit) {
     edit.id = nextId_++;
     redo_.clear();
     list_.append(std::move(edit));
     const voxel::IndexBox box = voxelsOf(list_.edits().back().reach);
-    update(box);
+    applyOnTop(box, 0);
     return box;
 }
 
@@ -64,7 +74,11 @@ voxel::IndexBox SculptureEdits::extendLastStroke(const std::vector<ModelPoint>& 
     const std::size_t firstPiece = extendStrokeSegments(stroke, firstPoint, list_.units());
     if (firstPiece == stroke.segments.size()) return {};
     const voxel::IndexBox box = voxelsOf(list_.extendLast(firstPiece));
-    update(box);
+    // Carving and adding fold their segments with min and max, which
+    // associate: the new segments go on top of the grid. Melt blends the
+    // field before the stroke with all its segments at once: recomputed.
+    if (stroke.tool == StrokeTool::Melt) update(box);
+    else applyOnTop(box, firstPiece);
     return box;
 }
 
@@ -83,7 +97,7 @@ std::optional<voxel::IndexBox> SculptureEdits::redo() {
     redo_.pop_back();
     list_.append(std::move(again));
     const voxel::IndexBox box = voxelsOf(list_.edits().back().reach);
-    update(box);
+    applyOnTop(box, 0);
     return box;
 }
 

@@ -51,6 +51,12 @@ public:
     // The shown grid's `box` recomputed from the base and the edits that
     // reach it.
     voxel::EditRegionStats update(const voxel::IndexBox& box);
+    // The last edit's pieces from `firstPiece` on applied to the shown grid
+    // as it stands: the field is bounded, so what the grid stores is the
+    // field before them exactly, and the float operations are those a
+    // whole rebuild runs, in the same order. An edit made on top of a
+    // thousand others costs what it would on a fresh sculpture.
+    voxel::EditRegionStats applyOnTop(const voxel::IndexBox& box, std::size_t firstPiece);
     // The base with every edit applied, from scratch (what the shown grid
     // must equal).
     std::unique_ptr<voxel::Volume> rebuild() const;

@@ -1,0 +1,163 @@
+// Sculpting benchmark (seed 004's carving table form): a key sculpture at
+// 256^3, a live stroke extended one step at a time, for tool radii of 8, 16
+// and 32 voxels: the box each step recomputes, the time to apply it and to
+// remesh the chunks it touched (level 0, 32^3 chunks), with no earlier edits
+// and with 1,000 earlier strokes spread over the sculpture; undo of one
+// stroke with 1,000 edits. The peer, measured in the same run: the same box
+// resampled from the sculpture's HyperFun source alone (voxel::resampleRegion,
+// interval-culled), what a box update costs without the unedited grid.
+// Prints a Markdown table; --json FILE writes the rows too.
+//
+//   ./build/release/bench/bench_tools [--json out.json] [--filter NAME] [--repeat N]
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "../bench_common.h"
+
+#include "garden/sculpt/sculpture_edits.h"
+#include "garden/sculpt/stroke_segments.h"
+#include "garden/scene/garden_file.h"
+#include "polygonizer/chunk_layout.h"
+#include "polygonizer/lod_pyramid.h"
+#include "polygonizer/remesh_queue.h"
+#include "voxel/sampler.h"
+
+namespace {
+
+using namespace hg;
+using Clock = std::chrono::steady_clock;
+
+double msSince(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
+
+struct Meshing {
+    explicit Meshing(const voxel::Volume& v)
+        : pyramid(v, 1), layout(v.frame, 32), queue(pyramid, layout, std::vector<int>(layout.count(), 0)) {
+        queue.process(poly::RemeshBudget{});
+    }
+    // Remeshes what `box` touched; returns the chunks meshed.
+    std::size_t remesh(const voxel::IndexBox& box) {
+        pyramid.update(box);
+        queue.markChanged(box);
+        return queue.process(poly::RemeshBudget{}).meshed;
+    }
+    poly::LodPyramid pyramid;
+    poly::ChunkLayout layout;
+    poly::RemeshQueue queue;
+};
+
+// A carving stroke across the front of the sculpture, step by step.
+struct StepResult {
+    double applyMs = 0, remeshMs = 0, peerMs = 0;
+    std::size_t chunks = 0, pieces = 0;
+    std::uint64_t voxels = 0;
+};
+
+StepResult strokeSteps(garden::SculptureEdits& edits, Meshing& meshing, const frep::Model& model, voxel::Volume& shown,
+                       double radiusVoxels, int steps) {
+    const voxel::VolumeFrame& f = shown.frame;
+    const double v = f.voxelSize;
+    const double cx = 0.5 * (f.modelBox.lo[0] + f.modelBox.hi[0]), cy = 0.5 * (f.modelBox.lo[1] + f.modelBox.hi[1]);
+    const double z = 0.5 * (f.modelBox.lo[2] + f.modelBox.hi[2]);
+    garden::Stroke s;
+    s.tool = garden::StrokeTool::Carve;
+    s.radius = radiusVoxels * v;
+    s.path = {{cx, cy, z}};
+    garden::extendStrokeSegments(s, 0, edits.units());
+    garden::Edit e;
+    e.op = s;
+    meshing.remesh(edits.append(std::move(e)));
+    StepResult r;
+    voxel::Volume peer = shown.clone();
+    for (int i = 1; i <= steps; ++i) {
+        // One step of half the radius: what a hand moves in a frame.
+        const garden::ModelPoint p{cx + 0.5 * radiusVoxels * v * i, cy, z};
+        auto t0 = Clock::now();
+        const voxel::IndexBox box = edits.extendLastStroke({p});
+        r.applyMs += msSince(t0);
+        r.voxels += box.volume();
+        t0 = Clock::now();
+        r.chunks += meshing.remesh(box);
+        r.remeshMs += msSince(t0);
+        t0 = Clock::now();
+        voxel::resampleRegion(peer, model, box);
+        r.peerMs += msSince(t0);
+    }
+    r.applyMs /= steps; r.remeshMs /= steps; r.peerMs /= steps;
+    r.voxels /= static_cast<std::uint64_t>(steps);
+    r.chunks /= static_cast<std::size_t>(steps);
+    return r;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    bench::BenchArgs args;
+    if (!bench::parseBenchArgs(argc, argv, args)) return 2;
+    const std::string file = std::string(HG_SOURCE_DIR) + "/content/hyperfun/key_dryad.hf";
+    garden::SculptureLoad load = garden::loadSculpture([&] {
+        garden::SculptureSpec spec;
+        spec.file = file;
+        return spec;
+    }());
+    if (!load.ok()) {
+        std::fprintf(stderr, "%s", load.error.c_str());
+        return 1;
+    }
+    voxel::VolumeRequest req;
+    req.resolution = 256;
+    voxel::VoxelizeResult vr = voxel::voxelize(*load.model, req);
+    if (!vr.volume) {
+        std::fprintf(stderr, "%s\n", vr.error.c_str());
+        return 1;
+    }
+    const int steps = 8 * args.repeat;
+    nlohmann::json rows = nlohmann::json::array();
+    std::printf("| sculpture | earlier edits | radius (voxels) | box voxels | pieces indexed | apply (ms) | remesh (ms) | "
+                "chunks | apply + remesh (ms) | peer: source resample (ms) | peer / apply | undo (ms) |\n");
+    std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+    for (int earlier : {0, 1000}) {
+        for (double radius : {8.0, 16.0, 32.0}) {
+            const std::string name = "dryad@256/" + std::to_string(earlier) + "/r" + std::to_string(static_cast<int>(radius));
+            if (!args.matches(name)) continue;
+            voxel::Volume shown = vr.volume->clone();
+            garden::SculptureEdits edits(shown);
+            // Earlier strokes: short carves and adds spread over the model box.
+            std::mt19937 rng(42);
+            const voxel::VolumeFrame& f = shown.frame;
+            std::uniform_real_distribution<double> ux(f.modelBox.lo[0], f.modelBox.hi[0]), uy(f.modelBox.lo[1], f.modelBox.hi[1]),
+                uz(f.modelBox.lo[2], f.modelBox.hi[2]);
+            for (int i = 0; i < earlier; ++i) {
+                garden::Stroke s;
+                s.tool = i % 2 ? garden::StrokeTool::Carve : garden::StrokeTool::Add;
+                s.radius = 4.0 * f.voxelSize;
+                const garden::ModelPoint a{ux(rng), uy(rng), uz(rng)};
+                s.path = {a, {a[0] + 8 * f.voxelSize, a[1], a[2]}};
+                garden::extendStrokeSegments(s, 0, edits.units());
+                garden::Edit e;
+                e.op = s;
+                edits.append(std::move(e));
+            }
+            Meshing meshing(shown);
+            const StepResult r = strokeSteps(edits, meshing, *load.model, shown, radius, steps);
+            const auto t0 = Clock::now();
+            const auto undone = edits.undo();
+            const double undoMs = msSince(t0);
+            if (!undone) return 1;
+            const std::size_t pieces = edits.list().indexedPieces();
+            std::printf("| key_dryad 256^3 | %d | %.0f | %llu | %zu | %.2f | %.2f | %zu | %.2f | %.2f | %.1fx | %.2f |\n", earlier,
+                        radius, static_cast<unsigned long long>(r.voxels), pieces, r.applyMs, r.remeshMs, r.chunks,
+                        r.applyMs + r.remeshMs, r.peerMs, r.peerMs / r.applyMs, undoMs);
+            rows.push_back({{"name", name}, {"earlier_edits", earlier}, {"radius_voxels", radius},
+                            {"box_voxels", r.voxels}, {"apply_ms", r.applyMs}, {"remesh_ms", r.remeshMs},
+                            {"chunks", r.chunks}, {"peer_resample_ms", r.peerMs}, {"undo_ms", undoMs}});
+        }
+    }
+    if (!args.jsonPath.empty()) std::ofstream(args.jsonPath) << rows.dump(2) << "\n";
+    return 0;
+}
