@@ -5,14 +5,10 @@
 // lies inside the search cube.
 #pragma once
 
+#include "frep/box.h"
 #include "frep/tape.h"
 
 namespace hg::frep {
-
-struct Box3 {
-    double lo[3] = {0, 0, 0};
-    double hi[3] = {0, 0, 0};
-};
 
 struct BoundsEstimate {
     Box3 box;

@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <string>
 
-#include "frep/bounds.h"
+#include "frep/box.h"
 #include "voxel/index_box.h"
 
 namespace hg::voxel {

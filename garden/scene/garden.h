@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "frep/bounds.h"
+#include "frep/box.h"
 
 namespace hg::garden {
 

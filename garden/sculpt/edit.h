@@ -18,7 +18,7 @@
 #include <variant>
 #include <vector>
 
-#include "frep/bounds.h"
+#include "frep/box.h"
 
 namespace hg::garden {
 
