@@ -175,7 +175,7 @@ std::unique_ptr<Scene> makeScene(const Options& o, int resolution, bool lod, boo
     const auto t0 = Clock::now();
     scene->session = std::make_unique<GardenSession>(std::move(load), settings);
     scene->buildSeconds = std::chrono::duration<double>(Clock::now() - t0).count();
-    for (const SculptureState& s : scene->session->sculptures()) {
+    for (const Sculpture& s : scene->session->sculptures()) {
         if (s.missing()) {
             error = "sculpture '" + s.name + "' is missing: " + s.error;
             return nullptr;
@@ -362,8 +362,8 @@ void morphTable(const Options& o, nlohmann::json& json) {
         std::fprintf(stderr, "morph %d: %d sculptures sampled in %.1f s\n", res, scene->sculptures, scene->buildSeconds);
         std::size_t resultChunks = 0;
         std::uint64_t resultVoxels = 0;
-        for (const SculptureState& st : scene->session->sculptures())
-            if (st.morphResult) {
+        for (const Sculpture& st : scene->session->sculptures())
+            if (st.morphResult()) {
                 resultChunks = st.layout->count();
                 resultVoxels = st.volume->frame.indexBox.volume();
             }

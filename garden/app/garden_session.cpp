@@ -28,7 +28,12 @@ glm::mat4 placementMatrix(const Placement& p) {
 
 }  // namespace
 
-glm::vec3 SculptureState::worldCentre() const {
+Sculpture::Sculpture() = default;
+Sculpture::~Sculpture() = default;
+Sculpture::Sculpture(Sculpture&&) noexcept = default;
+Sculpture& Sculpture::operator=(Sculpture&&) noexcept = default;
+
+glm::vec3 Sculpture::worldCentre() const {
     if (!volume) return glm::vec3(modelToWorld[3]);
     const frep::Box3& b = volume->frame.modelBox;
     const glm::vec4 c(0.5 * (b.lo[0] + b.hi[0]), 0.5 * (b.lo[1] + b.hi[1]), 0.5 * (b.lo[2] + b.hi[2]), 1.0);
@@ -62,14 +67,14 @@ int GardenSession::findSculpture(const std::string& name) const {
     return -1;
 }
 
-std::array<double, 3> GardenSession::toModel(const SculptureState& s, const glm::vec3& world) const {
+std::array<double, 3> GardenSession::toModel(const Sculpture& s, const glm::vec3& world) const {
     const glm::vec4 m = glm::inverse(s.modelToWorld) * glm::vec4(world, 1.0f);
     return {m.x, m.y, m.z};
 }
 
 // Builds the pyramid, layout and queue of a sampled sculpture, at the levels
 // the start pose selects.
-static void attachMeshing(SculptureState& s, const SessionSettings& settings) {
+static void attachMeshing(Sculpture& s, const SessionSettings& settings) {
     s.pyramid = std::make_unique<poly::LodPyramid>(*s.volume, settings.maxLevel + 1);
     s.layout = std::make_unique<poly::ChunkLayout>(s.volume->frame, settings.chunkSize);
     s.queue = std::make_unique<poly::RemeshQueue>(*s.pyramid, *s.layout,
@@ -82,12 +87,16 @@ static void attachMeshing(SculptureState& s, const SessionSettings& settings) {
 
 void GardenSession::buildSculpture(std::size_t index) {
     const SculptureSpec& spec = load_.garden->sculptures[index];
-    SculptureState& s = sculptures_[index];
+    Sculpture& s = sculptures_[index];
     s.name = spec.name;
+    s.source.kind = SculptureSource::Kind::HyperFun;
+    s.source.spec = &spec;
+    s.placement = spec.placement;
     s.material = spec.material;
     s.modelToWorld = placementMatrix(spec.placement);
     s.scale = spec.placement.scale;
     const SculptureLoad& l = load_.sculptures[index];
+    s.source.program = l.program;
     if (!l.ok()) {
         s.error = l.error.empty() ? "the sculpture could not be loaded" : l.error;
         return;
@@ -108,9 +117,11 @@ void GardenSession::buildSculpture(std::size_t index) {
 void GardenSession::buildMorph() {
     const Garden& g = *load_.garden;
     if (!g.morph) return;
-    SculptureState result;
+    Sculpture result;
     result.name = g.morph->resultName;
-    result.morphResult = true;
+    result.source.kind = SculptureSource::Kind::Morph;
+    result.source.morph = &*g.morph;
+    result.placement = g.morph->resultPlacement;
     result.material = g.morph->material;
     result.modelToWorld = placementMatrix(g.morph->resultPlacement);
     result.scale = g.morph->resultPlacement.scale;
@@ -160,7 +171,7 @@ void GardenSession::setMorphBarycentric(const std::array<double, 3>& b) {
 }
 
 void GardenSession::restartMorph() {
-    const SculptureState& r = sculptures_[static_cast<std::size_t>(morphIndex_)];
+    const Sculpture& r = sculptures_[static_cast<std::size_t>(morphIndex_)];
     blender_->restart(*weights_, toModel(r, navigator_.eye()));
 }
 
@@ -174,6 +185,13 @@ void GardenSession::select(int sculpture) {
 void GardenSession::beginFrame() {
     scheduler_.beginFrame();
     scheduler_.beginStage(Stage::Input);
+}
+
+void GardenSession::update(const Hands& hands, double dt) {
+    input(hands, dt);
+    selectLevels();
+    morph();
+    remesh();
 }
 
 void GardenSession::input(const Hands& hands, double dt) {
@@ -197,7 +215,7 @@ void GardenSession::input(const Hands& hands, double dt) {
 
 void GardenSession::selectLevels() {
     scheduler_.beginStage(Stage::Lod);
-    for (SculptureState& s : sculptures_) {
+    for (Sculpture& s : sculptures_) {
         if (s.missing()) continue;
         const std::array<double, 3> eye = toModel(s, navigator_.eye());
         s.queue->setViewer(eye);
@@ -232,7 +250,7 @@ void GardenSession::selectLevels() {
 void GardenSession::morph() {
     scheduler_.beginStage(Stage::Morph);
     if (!blender_ || blender_->done()) return;
-    SculptureState& r = sculptures_[static_cast<std::size_t>(morphIndex_)];
+    Sculpture& r = sculptures_[static_cast<std::size_t>(morphIndex_)];
     BlendBudget budget;
     if (settings_.morphSamplesPerFrame > 0) {
         budget.maxSamples = settings_.morphSamplesPerFrame;
@@ -286,7 +304,7 @@ const FrameStats& GardenSession::endFrame() {
 
 std::size_t GardenSession::remeshPending() const {
     std::size_t n = 0;
-    for (const SculptureState& s : sculptures_)
+    for (const Sculpture& s : sculptures_)
         if (!s.missing()) n += s.queue->pending();
     return n;
 }
@@ -295,7 +313,7 @@ std::uint64_t GardenSession::morphRemaining() const { return blender_ ? blender_
 
 std::size_t GardenSession::trianglesShown() const {
     std::size_t n = 0;
-    for (const SculptureState& s : sculptures_) {
+    for (const Sculpture& s : sculptures_) {
         if (s.missing()) continue;
         for (std::size_t c = 0; c < s.queue->count(); ++c)
             if (const auto m = s.queue->mesh(c)) n += m->triangleCount();

@@ -3,8 +3,12 @@
 // source caches, its result and the budgeted blend), the navigator and the
 // frame scheduler. One frame is:
 //
-//   beginFrame, input(hands, dt), selectLevels(...), morph(), remesh(),
+//   beginFrame(), [commands], update(hands, dt),
 //   [the app uploads and renders here], endFrame()
+//
+// where update() runs the stages in their one order: input (navigation and
+// the tools: a stroke's box is applied here, first), level selection, the
+// morph's budgeted blend, remeshing.
 //
 // The desktop window, `replay` (headless or offscreen) and the tests all
 // drive this same object, so what a script does is what a user sees.
@@ -20,6 +24,7 @@
 
 #include "garden/app/frame_scheduler.h"
 #include "garden/app/navigator.h"
+#include "garden/app/sculpture.h"
 #include "garden/morph/morph_weights.h"
 #include "garden/scene/garden_file.h"
 #include "garden/sculpt/edit.h"
@@ -30,7 +35,6 @@ namespace hg::garden {
 
 class MorphBlender;
 struct MorphSources;
-class SculptureEdits;
 
 // The tool the tool hand works (DESIGN §6); sizes in metres of the world.
 struct ToolSettings {
@@ -65,24 +69,6 @@ struct SessionSettings {
     int morphResolution = 0;
 };
 
-struct SculptureState {
-    std::string name;
-    std::string error;                 // non-empty: missing (shown as such), nothing else set
-    bool morphResult = false;
-    Material material;
-    glm::mat4 modelToWorld{1.0f};
-    double scale = 1.0;                // metres per model unit
-    std::unique_ptr<voxel::Volume> volume;
-    std::unique_ptr<poly::LodPyramid> pyramid;
-    std::unique_ptr<poly::ChunkLayout> layout;
-    std::unique_ptr<poly::RemeshQueue> queue;
-    std::unique_ptr<SculptureEdits> edits;  // made at the first edit
-    int framesSinceLevels = 0;         // frames since the queue last took new levels
-
-    bool missing() const { return !error.empty(); }
-    glm::vec3 worldCentre() const;
-};
-
 class GardenSession {
 public:
     // Samples every sculpture (those that fail become missing) and the
@@ -94,8 +80,8 @@ public:
 
     const Garden& garden() const { return *load_.garden; }
     const GardenLoad& load() const { return load_; }
-    std::vector<SculptureState>& sculptures() { return sculptures_; }
-    const std::vector<SculptureState>& sculptures() const { return sculptures_; }
+    std::vector<Sculpture>& sculptures() { return sculptures_; }
+    const std::vector<Sculpture>& sculptures() const { return sculptures_; }
     Navigator& navigator() { return navigator_; }
     const Navigator& navigator() const { return navigator_; }
     FrameScheduler& scheduler() { return scheduler_; }
@@ -148,6 +134,8 @@ public:
 
     // --- one frame -----------------------------------------------------
     void beginFrame();
+    // The frame's stages, in order: input, selectLevels, morph, remesh.
+    void update(const Hands& hands, double dt);
     void input(const Hands& hands, double dt);
     void selectLevels();
     void morph();
@@ -172,7 +160,7 @@ private:
     void buildSculpture(std::size_t index);
     void buildMorph();
     void restartMorph();
-    std::array<double, 3> toModel(const SculptureState& s, const glm::vec3& world) const;
+    std::array<double, 3> toModel(const Sculpture& s, const glm::vec3& world) const;
     std::string checkEditable(int sculpture) const;
     SculptureEdits& editsOf(int sculpture);
     void showChanged(int sculpture, const voxel::IndexBox& box);
@@ -180,7 +168,7 @@ private:
 
     GardenLoad load_;
     SessionSettings settings_;
-    std::vector<SculptureState> sculptures_;
+    std::vector<Sculpture> sculptures_;
     Navigator navigator_;
     FrameScheduler scheduler_;
     std::optional<poly::Sphere> detail_;

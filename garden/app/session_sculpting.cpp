@@ -24,21 +24,21 @@ bool finite3(const std::array<double, 3>& p) {
 
 std::string GardenSession::checkEditable(int sculpture) const {
     if (sculpture < 0 || sculpture >= static_cast<int>(sculptures_.size())) return "no such sculpture";
-    const SculptureState& s = sculptures_[static_cast<std::size_t>(sculpture)];
+    const Sculpture& s = sculptures_[static_cast<std::size_t>(sculpture)];
     if (s.missing()) return "the sculpture '" + s.name + "' is missing: " + s.error;
-    if (s.morphResult) return "the metamorphosis result cannot be edited yet (its re-blend does not keep edits)";
+    if (s.morphResult()) return "the metamorphosis result cannot be edited yet (its re-blend does not keep edits)";
     return "";
 }
 
 SculptureEdits& GardenSession::editsOf(int sculpture) {
-    SculptureState& s = sculptures_[static_cast<std::size_t>(sculpture)];
+    Sculpture& s = sculptures_[static_cast<std::size_t>(sculpture)];
     if (!s.edits) s.edits = std::make_unique<SculptureEdits>(*s.volume);
     return *s.edits;
 }
 
 void GardenSession::showChanged(int sculpture, const voxel::IndexBox& box) {
     if (box.empty()) return;
-    SculptureState& s = sculptures_[static_cast<std::size_t>(sculpture)];
+    Sculpture& s = sculptures_[static_cast<std::size_t>(sculpture)];
     s.pyramid->update(box);
     s.queue->markChanged(box);
 }
@@ -64,7 +64,7 @@ std::string GardenSession::beginStroke(int sculpture, StrokeTool tool, const std
     if (stroking()) endStroke();
     if (std::string why = checkEditable(sculpture); !why.empty()) return why;
     if (!finite3(worldPoint)) return "the stroke's point is not a finite position";
-    const SculptureState& s = sculptures_[static_cast<std::size_t>(sculpture)];
+    const Sculpture& s = sculptures_[static_cast<std::size_t>(sculpture)];
     Stroke stroke;
     stroke.tool = tool;
     stroke.radius = radius / s.scale;
@@ -85,7 +85,7 @@ std::string GardenSession::beginStroke(int sculpture, StrokeTool tool, const std
 std::string GardenSession::extendStroke(const std::array<double, 3>& worldPoint) {
     if (!stroking()) return "no stroke is under way";
     if (!finite3(worldPoint)) return "the stroke's point is not a finite position";
-    const SculptureState& s = sculptures_[static_cast<std::size_t>(strokeSculpture_)];
+    const Sculpture& s = sculptures_[static_cast<std::size_t>(strokeSculpture_)];
     showChanged(strokeSculpture_, editsOf(strokeSculpture_).extendLastStroke(std::vector<ModelPoint>{toModel(s, toGlm(worldPoint))}));
     return "";
 }
@@ -103,7 +103,7 @@ std::string GardenSession::applyPerturbation(int sculpture, QuadricShape shape, 
             return "the perturbation's radii must be positive numbers";
     if (shape == QuadricShape::Torus && radii[1] >= radii[0]) return "a torus's tube radius must be under its ring radius";
     if (!(std::isfinite(strength) && std::fabs(strength) <= 1000.0)) return "the strength must be a number in [-1000, 1000] voxels";
-    const SculptureState& s = sculptures_[static_cast<std::size_t>(sculpture)];
+    const Sculpture& s = sculptures_[static_cast<std::size_t>(sculpture)];
     SculptureEdits& edits = editsOf(sculpture);
     Perturbation p;
     p.shape = shape;
@@ -132,7 +132,7 @@ bool GardenSession::undo() {
     while (!undoOrder_.empty()) {
         const int sculpture = undoOrder_.back();
         undoOrder_.pop_back();
-        SculptureState& s = sculptures_[static_cast<std::size_t>(sculpture)];
+        Sculpture& s = sculptures_[static_cast<std::size_t>(sculpture)];
         if (!s.edits) continue;
         if (const auto box = s.edits->undo()) {
             showChanged(sculpture, *box);
@@ -148,7 +148,7 @@ bool GardenSession::redo() {
     while (!redoOrder_.empty()) {
         const int sculpture = redoOrder_.back();
         redoOrder_.pop_back();
-        SculptureState& s = sculptures_[static_cast<std::size_t>(sculpture)];
+        Sculpture& s = sculptures_[static_cast<std::size_t>(sculpture)];
         if (!s.edits) continue;
         if (const auto box = s.edits->redo()) {
             showChanged(sculpture, *box);
@@ -161,7 +161,7 @@ bool GardenSession::redo() {
 
 std::size_t GardenSession::editCount(int sculpture) const {
     if (sculpture < 0 || sculpture >= static_cast<int>(sculptures_.size())) return 0;
-    const SculptureState& s = sculptures_[static_cast<std::size_t>(sculpture)];
+    const Sculpture& s = sculptures_[static_cast<std::size_t>(sculpture)];
     return s.edits ? s.edits->list().size() : 0;
 }
 
@@ -169,7 +169,7 @@ std::optional<std::pair<int, glm::vec3>> GardenSession::toolHit(const Pose& aim)
     std::optional<std::pair<int, glm::vec3>> best;
     double bestT = 1e300;
     for (std::size_t i = 0; i < sculptures_.size(); ++i) {
-        const SculptureState& s = sculptures_[i];
+        const Sculpture& s = sculptures_[i];
         if (s.missing()) continue;
         const glm::dmat4 toModelM = glm::inverse(glm::dmat4(s.modelToWorld));
         const glm::dvec3 o = glm::dvec3(toModelM * glm::dvec4(glm::dvec3(aim.position), 1.0));

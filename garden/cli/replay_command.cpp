@@ -17,7 +17,7 @@ namespace {
 
 // Prints what is missing from a garden that opened anyway.
 void reportMissing(const GardenSession& session) {
-    for (const SculptureState& s : session.sculptures())
+    for (const Sculpture& s : session.sculptures())
         if (s.missing()) std::cerr << "warning: sculpture '" << s.name << "' is missing: " << s.error << (s.error.empty() || s.error.back() != '\n' ? "\n" : "");
 }
 

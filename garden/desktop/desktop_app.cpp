@@ -68,7 +68,7 @@ void gardenPanel(GardenSession& session, glm::vec2& selector) {
     // Select a sculpture to orbit it (O).
     if (ImGui::BeginListBox("##sculptures", ImVec2(300, 6 * ImGui::GetTextLineHeightWithSpacing()))) {
         for (std::size_t i = 0; i < session.sculptures().size(); ++i) {
-            const SculptureState& s = session.sculptures()[i];
+            const Sculpture& s = session.sculptures()[i];
             if (s.missing()) {
                 ImGui::TextColored(ImVec4(1, 0.35f, 0.3f, 1), "%s (missing)", s.name.c_str());
                 if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", s.error.c_str());
@@ -122,7 +122,7 @@ int runDesktopGarden(const DesktopOptions& options) {
         settings.scheduler.budgetMs = options.budgetMs;
         settings.viewportHeight = window.framebufferSize().y;
         GardenSession session(std::move(load), settings);
-        for (const SculptureState& s : session.sculptures())
+        for (const Sculpture& s : session.sculptures())
             if (s.missing()) std::cerr << "warning: sculpture '" << s.name << "' is missing: " << s.error << "\n";
 
         glm::vec2 selector = trianglePoint(glm::vec3(1.0f / 3.0f));
@@ -183,10 +183,7 @@ int runDesktopGarden(const DesktopOptions& options) {
             const bool shoot = events.f12;
             events = Events{};
 
-            session.input(hands, dt);
-            session.selectLevels();
-            session.morph();
-            session.remesh();
+            session.update(hands, dt);
             FrameScheduler& f = session.scheduler();
             f.beginStage(Stage::Upload);
             std::size_t pending = 0;

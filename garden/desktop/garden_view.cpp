@@ -96,7 +96,7 @@ std::size_t GardenView::upload(GardenSession& session, double allowanceMs, std::
     for (std::size_t p = 0; p < g.paths.size(); ++p)
         if (!renderer_.has(pathId(p))) bytes += renderer_.upload(pathId(p), 1, pathMesh(g.paths[p], g.ground.height));
     for (std::size_t s = 0; s < session.sculptures().size(); ++s) {
-        const SculptureState& st = session.sculptures()[s];
+        const Sculpture& st = session.sculptures()[s];
         if (st.missing()) continue;
         const poly::RemeshQueue& q = *st.queue;
         if (uploaded_.size() <= s) uploaded_.resize(s + 1, 0);
@@ -134,7 +134,7 @@ void GardenView::render(const GardenSession& session, glm::ivec2 viewport, float
         renderer_.drawChunk(pathId(p), glm::mat4(1.0f), renderMaterial(g.paths[p].material));
     const auto& sculptures = session.sculptures();
     for (std::size_t s = 0; s < sculptures.size(); ++s) {
-        const SculptureState& st = sculptures[s];
+        const Sculpture& st = sculptures[s];
         if (st.missing()) {
             renderer_.drawLines(cubeEdges(st.modelToWorld, static_cast<float>(st.scale)), glm::vec4(0.9f, 0.1f, 0.1f, 1.0f),
                                 LineMode::Segments);

@@ -92,10 +92,7 @@ ReplayResult runReplay(const ReplayScript& script, GardenSession& session, Frame
                         return result;
                     }
                 }
-            session.input(step.hands, script.timestep);
-            session.selectLevels();
-            session.morph();
-            session.remesh();
+            session.update(step.hands, script.timestep);
             if (renderer) renderer->render(session);
             result.stats.push_back(session.endFrame());
             ++result.frames;

@@ -40,10 +40,7 @@ TEST_F(GardenViewTest, TheSettledGardenShowsItsSculpturesAtTheirDepth) {
     session.navigator().setPose({2.0f, 0.5f, 4.1547f}, 0.0f, 0.0f);
     for (int f = 0; f < 500 && !session.idle(); ++f) {
         session.beginFrame();
-        session.input(Hands{}, 1.0 / 90.0);
-        session.selectLevels();
-        session.morph();
-        session.remesh();
+        session.update(Hands{}, 1.0 / 90.0);
         session.endFrame();
     }
     ASSERT_TRUE(session.idle());

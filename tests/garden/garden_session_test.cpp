@@ -57,11 +57,11 @@ TEST_F(GardenSessionTest, ABrokenSculptureShowsAsMissingAndTheRestOpens) {
     ASSERT_TRUE(load.ok()) << load.error;
     GardenSession s(std::move(load), smallSettings());
     ASSERT_EQ(s.sculptures().size(), 5u) << "four sculptures and the morph result";
-    const SculptureState& lost = s.sculptures()[static_cast<std::size_t>(s.findSculpture("lost"))];
+    const Sculpture& lost = s.sculptures()[static_cast<std::size_t>(s.findSculpture("lost"))];
     EXPECT_TRUE(lost.missing());
     EXPECT_NE(lost.error.find("nowhere.hf"), std::string::npos) << lost.error;
     for (const char* name : {"a", "b", "c", "metamorphosis"}) {
-        const SculptureState& st = s.sculptures()[static_cast<std::size_t>(s.findSculpture(name))];
+        const Sculpture& st = s.sculptures()[static_cast<std::size_t>(s.findSculpture(name))];
         EXPECT_FALSE(st.missing()) << name << ": " << st.error;
         EXPECT_TRUE(st.volume && st.queue) << name;
     }
@@ -87,7 +87,7 @@ TEST_F(GardenSessionTest, WalkAndMorphReplayDrainsToTheFromScratchBlendAndItsMes
     ASSERT_TRUE(scratch && s.morphResult());
     expectSameGrid(*s.morphResult(), *scratch);
     // Every chunk of the result shows the mesh of that grid at its level.
-    const SculptureState& result = s.sculptures()[static_cast<std::size_t>(s.findSculpture("metamorphosis"))];
+    const Sculpture& result = s.sculptures()[static_cast<std::size_t>(s.findSculpture("metamorphosis"))];
     poly::LodPyramid pyramid(*scratch, s.settings().maxLevel + 1);
     std::size_t triangles = 0;
     for (std::size_t c = 0; c < result.queue->count(); ++c) {
@@ -123,7 +123,7 @@ TEST_F(GardenSessionTest, ReplaysAreDeterministicAndStatsHaveEveryStage) {
         }
         runs.push_back(trace);
         std::vector<float> all;
-        for (const SculptureState& st : s.sculptures())
+        for (const Sculpture& st : s.sculptures())
             if (!st.missing())
                 for (std::size_t c = 0; c < st.queue->count(); ++c)
                     if (auto m = st.queue->mesh(c)) all.insert(all.end(), m->positions.begin(), m->positions.end());
@@ -172,13 +172,10 @@ TEST_F(GardenSessionTest, LevelsFollowTheViewerDuringALongReBlend) {
     GardenSession s(loadGarden(writeGarden()), smallSettings());
     auto frame = [&s] {
         s.beginFrame();
-        s.input(Hands{}, 1.0 / 90.0);
-        s.selectLevels();
-        s.morph();
-        s.remesh();
+        s.update(Hands{}, 1.0 / 90.0);
         s.endFrame();
     };
-    const SculptureState& result = s.sculptures()[static_cast<std::size_t>(s.findSculpture("metamorphosis"))];
+    const Sculpture& result = s.sculptures()[static_cast<std::size_t>(s.findSculpture("metamorphosis"))];
     auto finest = [&result] {
         int level = 99;
         for (std::size_t c = 0; c < result.queue->count(); ++c) level = std::min(level, result.queue->shownLod(c).level);

@@ -42,10 +42,7 @@ int differences(const voxel::Volume& a, const voxel::Volume& b) {
 
 void frame(GardenSession& s, const Hands& h) {
     s.beginFrame();
-    s.input(h, 1.0 / 90.0);
-    s.selectLevels();
-    s.morph();
-    s.remesh();
+    s.update(h, 1.0 / 90.0);
     s.endFrame();
 }
 
@@ -70,7 +67,7 @@ TEST_F(SessionSculptingTest, TheToolHandCarvesAndItsButtonsUndoAndRedoExactly) {
     h.tool.trigger = 0.0f;
     frame(s, h);
     ASSERT_EQ(s.editCount(c), 1u);
-    SculptureState& st = s.sculptures()[static_cast<std::size_t>(c)];
+    Sculpture& st = s.sculptures()[static_cast<std::size_t>(c)];
     EXPECT_GT(differences(*st.volume, original), 100);
     EXPECT_EQ(differences(*st.volume, *st.edits->rebuild()), 0);
     // Where the ray met the surface is now outside, and the morph did not move.
@@ -118,7 +115,7 @@ TEST_F(SessionSculptingTest, ReplayCommandsSculptUndoAndRedo) {
     EXPECT_EQ(s.editCount(s.findSculpture("b")), 1u);
     EXPECT_EQ(s.editCount(s.findSculpture("c")), 0u);  // undone, not redone
     for (const char* name : {"a", "b"}) {
-        const SculptureState& st = s.sculptures()[static_cast<std::size_t>(s.findSculpture(name))];
+        const Sculpture& st = s.sculptures()[static_cast<std::size_t>(s.findSculpture(name))];
         EXPECT_EQ(differences(*st.volume, *st.edits->rebuild()), 0) << name;
     }
 }

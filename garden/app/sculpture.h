@@ -1,0 +1,65 @@
+// One sculpture of the running garden (DESIGN §4): what the user made (its
+// source, its edit list, its placement) and the caches rebuilt from them
+// (the grid, its LOD pyramid, chunk layout and remesh queue). The morph
+// result is a sculpture like the others: its source is the blend of three
+// sculptures instead of a HyperFun body.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <glm/mat4x4.hpp>
+
+#include "garden/scene/garden.h"
+#include "polygonizer/chunk_layout.h"
+#include "polygonizer/lod_pyramid.h"
+#include "polygonizer/remesh_queue.h"
+#include "voxel/volume.h"
+
+namespace hg::frep { struct Program; class Model; }
+
+namespace hg::garden {
+
+class SculptureEdits;
+
+// What a sculpture's field is made from.
+struct SculptureSource {
+    enum class Kind { HyperFun, Morph };
+    Kind kind = Kind::HyperFun;
+    // HyperFun: the garden file's entry (file, body, a[], box, resolution)
+    // and the program read from it (null when the file is missing or broken).
+    const SculptureSpec* spec = nullptr;
+    std::shared_ptr<const frep::Program> program;
+    // Morph: the garden's triangle of sources; the weights live in the session.
+    const MorphSpec* morph = nullptr;
+};
+
+struct Sculpture {
+    std::string name;
+    SculptureSource source;
+    std::string error;                 // non-empty: missing (shown as such), no caches
+    Placement placement;               // where it stands in the garden
+    Material material;
+    glm::mat4 modelToWorld{1.0f};      // the placement as a matrix
+    double scale = 1.0;                // metres per model unit
+    // The edit list and the unedited grid (made at the first edit).
+    std::unique_ptr<SculptureEdits> edits;
+    // Caches, rebuilt from the above.
+    std::unique_ptr<voxel::Volume> volume;
+    std::unique_ptr<poly::LodPyramid> pyramid;
+    std::unique_ptr<poly::ChunkLayout> layout;
+    std::unique_ptr<poly::RemeshQueue> queue;
+    int framesSinceLevels = 0;         // frames since the queue last took new levels
+
+    Sculpture();
+    ~Sculpture();
+    Sculpture(Sculpture&&) noexcept;
+    Sculpture& operator=(Sculpture&&) noexcept;
+
+    bool missing() const { return !error.empty(); }
+    bool morphResult() const { return source.kind == SculptureSource::Kind::Morph; }
+    glm::vec3 worldCentre() const;
+};
+
+}  // namespace hg::garden
