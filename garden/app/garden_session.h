@@ -126,6 +126,9 @@ public:
     // false when there is nothing to undo or redo.
     bool undo();
     bool redo();
+    // Removes every edit of a sculpture (the morph result's strokes, say),
+    // for good: they cannot be redone.
+    void discardEdits(int sculpture);
     std::size_t editCount(int sculpture) const;
     ToolSettings& tool() { return tool_; }
     // Where the tool hand's ray first meets a sculpture's surface (world):

@@ -7,6 +7,7 @@
 #include <glm/gtc/matrix_inverse.hpp>
 
 #include "garden/app/garden_session.h"
+#include "garden/morph/morph_blend.h"
 #include "garden/scene/to_glm.h"
 #include "garden/sculpt/sculpture_edits.h"
 #include "garden/sculpt/stroke_segments.h"
@@ -26,14 +27,32 @@ std::string GardenSession::checkEditable(int sculpture) const {
     if (sculpture < 0 || sculpture >= static_cast<int>(sculptures_.size())) return "no such sculpture";
     const Sculpture& s = sculptures_[static_cast<std::size_t>(sculpture)];
     if (s.missing()) return "the sculpture '" + s.name + "' is missing: " + s.error;
-    if (s.morphResult()) return "the metamorphosis result cannot be edited yet (its re-blend does not keep edits)";
     return "";
 }
 
 SculptureEdits& GardenSession::editsOf(int sculpture) {
     Sculpture& s = sculptures_[static_cast<std::size_t>(sculpture)];
-    if (!s.edits) s.edits = std::make_unique<SculptureEdits>(*s.volume);
+    if (s.edits) return *s.edits;
+    s.edits = std::make_unique<SculptureEdits>(*s.volume);
+    if (s.morphResult() && blender_) {
+        // From now on the blend goes to the unedited grid and the edits are
+        // applied after it, box by box (morph()): they persist when the
+        // weights change.
+        blender_ = std::make_unique<MorphBlender>(*sources_, s.edits->mutableBase());
+        restartMorph();
+    }
     return *s.edits;
+}
+
+void GardenSession::discardEdits(int sculpture) {
+    if (stroking()) endStroke();
+    if (sculpture < 0 || sculpture >= static_cast<int>(sculptures_.size())) return;
+    Sculpture& s = sculptures_[static_cast<std::size_t>(sculpture)];
+    if (!s.edits) return;
+    while (const auto box = s.edits->undo()) showChanged(sculpture, *box);
+    s.edits->clearRedo();
+    undoOrder_.erase(std::remove(undoOrder_.begin(), undoOrder_.end(), sculpture), undoOrder_.end());
+    redoOrder_.erase(std::remove(redoOrder_.begin(), redoOrder_.end(), sculpture), redoOrder_.end());
 }
 
 void GardenSession::showChanged(int sculpture, const voxel::IndexBox& box) {

@@ -35,6 +35,7 @@ public:
     // box of it changed, to bring the shown grid up to date there.
     voxel::Volume& mutableBase() { return *base_; }
     std::size_t redoCount() const { return redo_.size(); }
+    void clearRedo() { redo_.clear(); }
 
     // Appends an edit whose pieces are computed (stroke segments) and
     // updates the grid; returns the box of voxels recomputed.
