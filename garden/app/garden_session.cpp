@@ -154,6 +154,7 @@ void GardenSession::setMorphPoint(double x, double z) {
     if (!blender_) return;
     weights_ = hg::garden::morphWeights(*morphTriangle(), {x, z}, balance_);
     restartMorph();
+    recordMorph();
 }
 
 void GardenSession::setMorphWeights(const std::array<double, 3>& w) {
@@ -161,6 +162,7 @@ void GardenSession::setMorphWeights(const std::array<double, 3>& w) {
     const double sum = w[0] + w[1] + w[2];
     weights_ = weightsFromBarycentric({w[0] / sum, w[1] / sum, w[2] / sum});
     restartMorph();
+    recordMorph();
 }
 
 void GardenSession::setMorphBarycentric(const std::array<double, 3>& b) {
@@ -168,6 +170,19 @@ void GardenSession::setMorphBarycentric(const std::array<double, 3>& b) {
     const double sum = b[0] + b[1] + b[2];
     weights_ = weightsFromBarycentric({b[0] / sum, b[1] / sum, b[2] / sum}, balance_);
     restartMorph();
+    recordMorph();
+}
+
+void GardenSession::recordMorph() {
+    if (morphDragging_) {
+        morphDragged_ = true;  // journalled when the hand lets go
+        return;
+    }
+    record(MorphWeightsRecord{weights_->barycentric, weights_->balance});
+}
+
+void GardenSession::record(const JournalRecord& r) {
+    if (journal_ && !restoring_) journal_(r);
 }
 
 void GardenSession::restartMorph() {
@@ -201,7 +216,12 @@ void GardenSession::input(const Hands& hands, double dt) {
     if (tool_.kind != ToolSettings::Kind::None) return;  // the trigger sculpts
     // The tool's ray on the morph triangle drawn on the ground picks the
     // blend (seed 004's selector), while the trigger is held.
-    if (blender_ && hands.tool.tracked && hands.tool.trigger > 0.5f) {
+    morphDragging_ = blender_ && hands.tool.tracked && hands.tool.trigger > 0.5f;
+    if (!morphDragging_ && morphDragged_) {
+        morphDragged_ = false;
+        recordMorph();
+    }
+    if (morphDragging_) {
         if (const auto hit = hands.tool.aim.groundHit(load_.garden->ground.height)) {
             const Point2 p{hit->x, hit->z};
             const MorphTriangle tri = *morphTriangle();

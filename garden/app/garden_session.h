@@ -15,6 +15,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -28,6 +29,7 @@
 #include "garden/morph/morph_weights.h"
 #include "garden/scene/garden_file.h"
 #include "garden/sculpt/edit.h"
+#include "garden/session/journal.h"
 #include "polygonizer/lod_selection.h"
 #include "polygonizer/remesh_queue.h"
 
@@ -130,6 +132,20 @@ public:
     // for good: they cannot be redone.
     void discardEdits(int sculpture);
     std::size_t editCount(int sculpture) const;
+    // The same actions in the sculpture's model frame (what the journal
+    // holds).
+    std::string applyStrokeModel(int sculpture, const Stroke& stroke);
+    std::string applyPerturbationModel(int sculpture, const Perturbation& p);
+
+    // --- the journal (garden/session) ------------------------------------
+    // Called with every finished action (a stroke at its end, a
+    // perturbation, undo, redo, discard, a morph weight change once the
+    // hand lets go); the session folder appends it to its journal.
+    void setJournal(std::function<void(const JournalRecord&)> journal) { journal_ = std::move(journal); }
+    // Plays journalled actions without journalling them again, the grids
+    // recomputed once at the end (each voxel once). "" or why a record
+    // cannot be played (its number, from 1, and the reason).
+    std::string restore(const std::vector<JournalRecord>& records);
     ToolSettings& tool() { return tool_; }
     // Where the tool hand's ray first meets a sculpture's surface (world):
     // the sculpture's index and the point, or none.
@@ -165,9 +181,12 @@ private:
     void restartMorph();
     std::array<double, 3> toModel(const Sculpture& s, const glm::vec3& world) const;
     std::string checkEditable(int sculpture) const;
+    std::string startStroke(int sculpture, Stroke stroke);
     SculptureEdits& editsOf(int sculpture);
     void showChanged(int sculpture, const voxel::IndexBox& box);
     void sculptWithHands(const Hands& hands);
+    void record(const JournalRecord& r);
+    void recordMorph();
 
     GardenLoad load_;
     SessionSettings settings_;
@@ -189,6 +208,10 @@ private:
     std::vector<int> redoOrder_;
     std::uint32_t lastButtons_ = 0;    // the tool hand's buttons last frame (undo, redo edges)
     bool toolArmed_ = true;            // the trigger was released since the last action
+    std::function<void(const JournalRecord&)> journal_;
+    bool restoring_ = false;           // playing a journal: nothing is journalled again
+    bool morphDragging_ = false;       // the tool hand holds the selector on the ground
+    bool morphDragged_ = false;        // ... and moved it: journalled on release
     float strokeDepth_ = 0.0f;         // metres along the ray where the live stroke began
 };
 

@@ -53,6 +53,58 @@ void GardenSession::discardEdits(int sculpture) {
     s.edits->clearRedo();
     undoOrder_.erase(std::remove(undoOrder_.begin(), undoOrder_.end(), sculpture), undoOrder_.end());
     redoOrder_.erase(std::remove(redoOrder_.begin(), redoOrder_.end(), sculpture), redoOrder_.end());
+    record(DiscardRecord{s.name});
+}
+
+std::string GardenSession::restore(const std::vector<JournalRecord>& records) {
+    restoring_ = true;
+    for (Sculpture& s : sculptures_)
+        if (s.edits) s.edits->setDeferred(true);
+    std::string error;
+    for (std::size_t n = 0; n < records.size() && error.empty(); ++n) {
+        const JournalRecord& r = records[n];
+        std::string why;
+        const auto sculptureOf = [&](const std::string& name) {
+            const int i = findSculpture(name);
+            if (i < 0) why = "no sculpture named '" + name + "'";
+            else if (sculptures_[static_cast<std::size_t>(i)].missing()) why = "the sculpture '" + name + "' is missing";
+            else if (!sculptures_[static_cast<std::size_t>(i)].edits) editsOf(i).setDeferred(true);
+            return i;
+        };
+        if (const auto* st = std::get_if<StrokeRecord>(&r)) {
+            const int i = sculptureOf(st->sculpture);
+            if (why.empty()) {
+                Stroke stroke;
+                stroke.tool = st->tool;
+                stroke.radius = st->radius;
+                stroke.softness = st->softness;
+                stroke.path = st->path;
+                why = applyStrokeModel(i, stroke);
+            }
+        } else if (const auto* p = std::get_if<PerturbRecord>(&r)) {
+            const int i = sculptureOf(p->sculpture);
+            if (why.empty()) why = applyPerturbationModel(i, p->perturbation);
+        } else if (std::holds_alternative<UndoRecord>(r)) {
+            if (!undo()) why = "nothing to undo";
+        } else if (std::holds_alternative<RedoRecord>(r)) {
+            if (!redo()) why = "nothing to redo";
+        } else if (const auto* d = std::get_if<DiscardRecord>(&r)) {
+            const int i = sculptureOf(d->sculpture);
+            if (why.empty()) discardEdits(i);
+        } else if (const auto* m = std::get_if<MorphWeightsRecord>(&r)) {
+            if (!blender_) why = "the garden has no metamorphosis";
+            else {
+                weights_ = weightsFromBarycentric(m->barycentric, m->balance);
+                restartMorph();
+            }
+        }
+        if (!why.empty()) error = "record " + std::to_string(n + 1) + " (" + journalRecordKind(r) + "): " + why;
+    }
+    for (std::size_t i = 0; i < sculptures_.size(); ++i)
+        if (sculptures_[i].edits)
+            for (const voxel::IndexBox& box : sculptures_[i].edits->flush()) showChanged(static_cast<int>(i), box);
+    restoring_ = false;
+    return error;
 }
 
 void GardenSession::showChanged(int sculpture, const voxel::IndexBox& box) {
@@ -89,6 +141,12 @@ std::string GardenSession::beginStroke(int sculpture, StrokeTool tool, const std
     stroke.radius = radius / s.scale;
     stroke.softness = softness;
     stroke.path.push_back(toModel(s, toGlm(worldPoint)));
+    if (std::string why = startStroke(sculpture, std::move(stroke)); !why.empty()) return why;
+    return "";
+}
+
+std::string GardenSession::startStroke(int sculpture, Stroke stroke) {
+    if (std::string why = checkEditable(sculpture); !why.empty()) return why;
     SculptureEdits& edits = editsOf(sculpture);
     if (std::string why = checkStroke(stroke, edits.units()); !why.empty()) return why;
     extendStrokeSegments(stroke, 0, edits.units());
@@ -101,6 +159,20 @@ std::string GardenSession::beginStroke(int sculpture, StrokeTool tool, const std
     return "";
 }
 
+std::string GardenSession::applyStrokeModel(int sculpture, const Stroke& stroke) {
+    if (stroking()) endStroke();
+    if (std::string why = checkEditable(sculpture); !why.empty()) return why;
+    if (std::string why = checkStroke(stroke, editsOf(sculpture).units()); !why.empty()) return why;
+    Stroke first = stroke;
+    first.path.resize(1);
+    first.segments.clear();
+    if (std::string why = startStroke(sculpture, std::move(first)); !why.empty()) return why;
+    const std::vector<ModelPoint> rest(stroke.path.begin() + 1, stroke.path.end());
+    if (!rest.empty()) showChanged(sculpture, editsOf(sculpture).extendLastStroke(rest));
+    endStroke();
+    return "";
+}
+
 std::string GardenSession::extendStroke(const std::array<double, 3>& worldPoint) {
     if (!stroking()) return "no stroke is under way";
     if (!finite3(worldPoint)) return "the stroke's point is not a finite position";
@@ -109,7 +181,13 @@ std::string GardenSession::extendStroke(const std::array<double, 3>& worldPoint)
     return "";
 }
 
-void GardenSession::endStroke() { strokeSculpture_ = -1; }
+void GardenSession::endStroke() {
+    if (!stroking()) return;
+    const Sculpture& s = sculptures_[static_cast<std::size_t>(strokeSculpture_)];
+    const Stroke& stroke = std::get<Stroke>(s.edits->list().edits().back().op);
+    record(StrokeRecord{s.name, stroke.tool, stroke.radius, stroke.softness, stroke.path});
+    strokeSculpture_ = -1;
+}
 
 std::string GardenSession::applyPerturbation(int sculpture, QuadricShape shape, const std::array<double, 3>& worldCenter,
                                              const std::array<double, 3>& radii, double strength) {
@@ -123,7 +201,6 @@ std::string GardenSession::applyPerturbation(int sculpture, QuadricShape shape, 
     if (shape == QuadricShape::Torus && radii[1] >= radii[0]) return "a torus's tube radius must be under its ring radius";
     if (!(std::isfinite(strength) && std::fabs(strength) <= 1000.0)) return "the strength must be a number in [-1000, 1000] voxels";
     const Sculpture& s = sculptures_[static_cast<std::size_t>(sculpture)];
-    SculptureEdits& edits = editsOf(sculpture);
     Perturbation p;
     p.shape = shape;
     p.center = toModel(s, toGlm(worldCenter));
@@ -137,12 +214,20 @@ std::string GardenSession::applyPerturbation(int sculpture, QuadricShape shape, 
         const glm::vec3 m = glm::normalize(toModelAxes * axis);
         p.axes[static_cast<std::size_t>(i)] = {m.x, m.y, m.z};
     }
+    return applyPerturbationModel(sculpture, p);
+}
+
+std::string GardenSession::applyPerturbationModel(int sculpture, const Perturbation& p) {
+    if (stroking()) endStroke();
+    if (std::string why = checkEditable(sculpture); !why.empty()) return why;
+    SculptureEdits& edits = editsOf(sculpture);
     if (p.radii[0] < 0.5 * edits.units().voxelSize) return "the perturbation is smaller than half a voxel";
     Edit e;
     e.op = p;
     showChanged(sculpture, edits.append(std::move(e)));
     undoOrder_.push_back(sculpture);
     redoOrder_.clear();
+    record(PerturbRecord{sculptures_[static_cast<std::size_t>(sculpture)].name, p});
     return "";
 }
 
@@ -156,6 +241,7 @@ bool GardenSession::undo() {
         if (const auto box = s.edits->undo()) {
             showChanged(sculpture, *box);
             redoOrder_.push_back(sculpture);
+            record(UndoRecord{});
             return true;
         }
     }
@@ -172,6 +258,7 @@ bool GardenSession::redo() {
         if (const auto box = s.edits->redo()) {
             showChanged(sculpture, *box);
             undoOrder_.push_back(sculpture);
+            record(RedoRecord{});
             return true;
         }
     }

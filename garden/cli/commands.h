@@ -54,6 +54,7 @@ struct ReplayCommandOptions {
     std::size_t remeshChunks = 16;         // per frame; 0: the scheduler's time budget
     int resolution = 0;               // every sculpture and the morph at this resolution (0: the garden's)
     bool noLod = false;               // every chunk at level 0
+    std::string session;              // play into this session folder ("" : none)
 };
 
 struct GardenOptions {
@@ -64,7 +65,15 @@ struct GardenOptions {
     int frames = 0;                   // stop after N frames (0: until the window closes)
     std::string exitScreenshot;       // with frames: a PNG of the last frame
     std::string screenshotDir = ".";
+    std::string session;              // open (or create) this session folder ("" : none)
 };
+
+struct SessionCommandOptions {
+    std::string dir;
+    bool verify = false;
+    bool json = false;
+};
+int runSessionCommand(const SessionCommandOptions& options);
 
 // "0.5,1,-2" -> {0.5, 1, -2}; false when an item is not a number.
 bool parseNumberList(const std::string& text, std::vector<double>& out);

@@ -14,6 +14,7 @@ int runGarden(const GardenOptions& options) {
     d.frames = options.frames;
     d.screenshotDir = options.screenshotDir;
     d.exitScreenshot = options.exitScreenshot;
+    d.session = options.session;
     return runDesktopGarden(d);
 }
 

@@ -22,6 +22,9 @@ int main(int argc, char** argv) {
     app.add_option("--frames", gardenOpts.frames, "Close after this many frames (default: when the window closes)");
     app.add_option("--screenshot-dir", gardenOpts.screenshotDir, "Where F12 screenshots go (default: .)");
     app.add_option("--exit-screenshot", gardenOpts.exitScreenshot, "With --frames: a PNG of the last frame, overlay included");
+    app.add_option("--session", gardenOpts.session,
+                   "Session folder: opened with every journalled action, or made from --garden when new; "
+                   "every finished action is saved as it ends");
 
     ModelOptions checkOpts;
     auto* check = app.add_subcommand("check", "Parse a HyperFun file, list its bodies, evaluation path and model box");
@@ -79,6 +82,14 @@ int main(int argc, char** argv) {
     replay->add_option("--remesh-chunks", replayOpts.remeshChunks, "Chunks remeshed per frame (default 16; 0: time budget)");
     replay->add_option("--res", replayOpts.resolution, "Every sculpture and the morph at this resolution");
     replay->add_flag("--no-lod", replayOpts.noLod, "Every chunk at full detail");
+    replay->add_option("--session", replayOpts.session,
+                       "Play into this session folder (made from the script's garden when new)");
+    SessionCommandOptions sessionOpts;
+    auto* sessionCmd = app.add_subcommand("session", "Say what a session folder holds; --verify rebuilds its grids");
+    sessionCmd->add_option("dir", sessionOpts.dir, "Session folder")->required();
+    sessionCmd->add_flag("--verify", sessionOpts.verify,
+                         "Rebuild every grid from the journal and compare it with the snapshots (exit 1 where they differ)");
+    sessionCmd->add_flag("--json", sessionOpts.json, "Print JSON instead of text");
 
     try {
         app.parse(argc, argv);
@@ -106,6 +117,7 @@ int main(int argc, char** argv) {
         return runReplay(replayOpts);
     }
     if (app.get_subcommands().empty()) return runGarden(gardenOpts);
+    if (*sessionCmd) return runSessionCommand(sessionOpts);
     if (*check) return runCheck(checkOpts);
     if (*eval) return runEval(evalOpts);
     if (*vox) {

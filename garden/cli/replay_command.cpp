@@ -9,6 +9,7 @@
 #include "garden/desktop/offscreen_garden.h"
 #include "garden/replay/replay_runner.h"
 #include "garden/scene/json_reader.h"
+#include "garden/session/open_session.h"
 #include "voxel/vdb_io.h"
 
 namespace hg::garden::cli {
@@ -38,11 +39,6 @@ int runReplay(const ReplayCommandOptions& options) {
             return 2;
         }
     }
-    GardenLoad load = loadGarden(script.garden);
-    if (!load.ok()) {
-        std::cerr << "error: " << load.error << "\n";
-        return 2;
-    }
     SessionSettings settings;
     settings.scheduler.budgetMs = script.budgetMs;
     settings.morphSamplesPerFrame = options.morphSamples;
@@ -56,7 +52,25 @@ int runReplay(const ReplayCommandOptions& options) {
         height = options.height;
     }
     settings.viewportHeight = height;
-    GardenSession session(std::move(load), settings);
+    // The garden, or a session folder made from it (its journal replayed,
+    // the script's actions journalled).
+    OpenedSession opened;
+    if (!options.session.empty()) {
+        opened = openSession(options.session, script.garden, settings);
+        if (!opened.error.empty()) {
+            std::cerr << "error: " << opened.error << "\n";
+            return opened.exitStatus;
+        }
+        for (const std::string& n : opened.notes) std::cerr << "note: " << n << "\n";
+    } else {
+        GardenLoad load = loadGarden(script.garden);
+        if (!load.ok()) {
+            std::cerr << "error: " << load.error << "\n";
+            return 2;
+        }
+        opened.session = std::make_unique<GardenSession>(std::move(load), settings);
+    }
+    GardenSession& session = *opened.session;
     reportMissing(session);
 
     std::unique_ptr<OffscreenGarden> offscreen;

@@ -10,6 +10,7 @@
 #include <ctime>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 
 #include "garden/app/garden_session.h"
 #include "garden/desktop/garden_view.h"
@@ -19,6 +20,7 @@
 #include "garden/render/overlay.h"
 #include "garden/render/panels.h"
 #include "garden/render/screenshot.h"
+#include "garden/session/open_session.h"
 
 namespace hg::garden {
 
@@ -98,10 +100,13 @@ void gardenPanel(GardenSession& session, glm::vec2& selector) {
 }  // namespace
 
 int runDesktopGarden(const DesktopOptions& options) {
-    GardenLoad load = loadGarden(options.garden);
-    if (!load.ok()) {
-        std::cerr << "error: " << load.error << "\n";
-        return 2;
+    std::optional<GardenLoad> load;
+    if (options.session.empty()) {
+        load = loadGarden(options.garden);
+        if (!load->ok()) {
+            std::cerr << "error: " << load->error << "\n";
+            return 2;
+        }
     }
     try {
         WindowOptions wo;
@@ -121,7 +126,18 @@ int runDesktopGarden(const DesktopOptions& options) {
         SessionSettings settings;
         settings.scheduler.budgetMs = options.budgetMs;
         settings.viewportHeight = window.framebufferSize().y;
-        GardenSession session(std::move(load), settings);
+        OpenedSession opened;
+        if (load) {
+            opened.session = std::make_unique<GardenSession>(std::move(*load), settings);
+        } else {
+            opened = openSession(options.session, options.garden, settings);
+            if (!opened.error.empty()) {
+                std::cerr << "error: " << opened.error << "\n";
+                return opened.exitStatus;
+            }
+            for (const std::string& n : opened.notes) std::cerr << "note: " << n << "\n";
+        }
+        GardenSession& session = *opened.session;
         for (const Sculpture& s : session.sculptures())
             if (s.missing()) std::cerr << "warning: sculpture '" << s.name << "' is missing: " << s.error << "\n";
 

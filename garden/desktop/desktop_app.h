@@ -15,6 +15,7 @@ struct DesktopOptions {
     std::string screenshotDir = ".";
     int frames = 0;             // stop after this many frames (0: until closed); smoke tests
     std::string exitScreenshot; // a PNG of the last frame, overlay included ("" : none)
+    std::string session;        // a session folder (made from `garden` when new); "" : none
 };
 
 // Runs until the window closes. 0 on a normal close, 1 when the window or

@@ -35,6 +35,10 @@ voxel::IndexBox SculptureEdits::voxelsOf(const frep::Box3& box) const {
 voxel::EditRegionStats SculptureEdits::update(const voxel::IndexBox& box) {
     const voxel::IndexBox clip = voxel::intersect(box, shown_.frame.indexBox);
     if (clip.empty()) return {};
+    if (deferred_) {
+        pending_.push_back(clip);
+        return {};
+    }
     // The model box of the voxels, one voxel wider than their positions:
     // picking a piece too many changes no value, one too few would.
     const voxel::VolumeFrame& f = shown_.frame;
@@ -49,6 +53,7 @@ voxel::EditRegionStats SculptureEdits::update(const voxel::IndexBox& box) {
 }
 
 voxel::EditRegionStats SculptureEdits::applyOnTop(const voxel::IndexBox& box, std::size_t firstPiece) {
+    if (deferred_) return update(box);
     const voxel::IndexBox clip = voxel::intersect(box, shown_.frame.indexBox);
     if (clip.empty()) return {};
     EditPick pick{static_cast<std::uint32_t>(list_.size() - 1), {}};
@@ -99,6 +104,25 @@ std::optional<voxel::IndexBox> SculptureEdits::redo() {
     const voxel::IndexBox box = voxelsOf(list_.edits().back().reach);
     applyOnTop(box, 0);
     return box;
+}
+
+std::vector<voxel::IndexBox> SculptureEdits::flush() {
+    deferred_ = false;
+    // The cells the pending boxes touch, each recomputed once.
+    std::vector<std::array<int, 3>> cells;
+    for (const voxel::IndexBox& b : pending_)
+        for (const auto& o : voxel::alignedBoxes(b, kEditIndexCellVoxels)) cells.push_back(o);
+    std::sort(cells.begin(), cells.end());
+    cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
+    std::vector<voxel::IndexBox> done;
+    for (const auto& o : cells) {
+        const int n = kEditIndexCellVoxels - 1;
+        const voxel::IndexBox cell = voxel::IndexBox::fromCorners(o[0], o[1], o[2], o[0] + n, o[1] + n, o[2] + n);
+        update(cell);
+        done.push_back(voxel::intersect(cell, shown_.frame.indexBox));
+    }
+    pending_.clear();
+    return done;
 }
 
 std::unique_ptr<voxel::Volume> SculptureEdits::rebuild() const {

@@ -66,6 +66,13 @@ public:
     voxel::IndexBox voxelsOf(const frep::Box3& box) const;
     std::uint64_t nextId() const { return nextId_; }
 
+    // Deferred: edits, undo and redo change the list only and remember the
+    // boxes they reach; flush() then recomputes those boxes once, cell by
+    // cell (reopening a session: thousands of actions, each voxel computed
+    // once, equal to having applied them one by one).
+    void setDeferred(bool deferred) { deferred_ = deferred; }
+    std::vector<voxel::IndexBox> flush();
+
     // Statistics of the last update.
     const voxel::EditRegionStats& lastStats() const { return lastStats_; }
 
@@ -76,6 +83,8 @@ private:
     std::vector<Edit> redo_;
     std::uint64_t nextId_ = 1;
     voxel::EditRegionStats lastStats_;
+    bool deferred_ = false;
+    std::vector<voxel::IndexBox> pending_;
 };
 
 }  // namespace hg::garden

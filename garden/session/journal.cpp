@@ -1,0 +1,255 @@
+#include "garden/session/journal.h"
+
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <nlohmann/json.hpp>
+
+#include "garden/scene/json_reader.h"
+
+namespace hg::garden {
+
+namespace {
+
+const char* const kHeader = "hypergarden-journal";
+
+nlohmann::json point(const ModelPoint& p) { return nlohmann::json::array({p[0], p[1], p[2]}); }
+
+const char* toolKey(StrokeTool t) { return strokeToolName(t); }
+
+StrokeTool readTool(const nlohmann::json& v, const std::string& path) {
+    const std::string t = readString(v, path);
+    if (t == "carve") return StrokeTool::Carve;
+    if (t == "add") return StrokeTool::Add;
+    if (t == "melt") return StrokeTool::Melt;
+    throw JsonError(path, "expected carve, add or melt");
+}
+
+// A finite number: journals hold only what the session accepted.
+double finite(const nlohmann::json& v, const std::string& path) {
+    const double d = readNumber(v, path);
+    if (!std::isfinite(d)) throw JsonError(path, "expected a finite number");
+    return d;
+}
+
+ModelPoint readPoint(const nlohmann::json& v, const std::string& path) {
+    const auto p = readVec3(v, path);
+    for (std::size_t i = 0; i < 3; ++i)
+        if (!std::isfinite(p[i])) throw JsonError(indexPath(path, i), "expected a finite number");
+    return p;
+}
+
+}  // namespace
+
+std::uint32_t crc32(const std::string& text) {
+    static const auto table = [] {
+        std::array<std::uint32_t, 256> t{};
+        for (std::uint32_t i = 0; i < 256; ++i) {
+            std::uint32_t c = i;
+            for (int k = 0; k < 8; ++k) c = (c & 1u) ? 0xEDB88320u ^ (c >> 1) : c >> 1;
+            t[i] = c;
+        }
+        return t;
+    }();
+    std::uint32_t c = 0xFFFFFFFFu;
+    for (unsigned char ch : text) c = table[(c ^ ch) & 0xFFu] ^ (c >> 8);
+    return c ^ 0xFFFFFFFFu;
+}
+
+std::string journalRecordKind(const JournalRecord& r) {
+    static const char* const names[] = {"stroke", "perturb", "undo", "redo", "discard", "morph"};
+    return names[r.index()];
+}
+
+std::string journalRecordJson(const JournalRecord& record) {
+    nlohmann::json j;
+    j["action"] = journalRecordKind(record);
+    if (const auto* s = std::get_if<StrokeRecord>(&record)) {
+        j["sculpture"] = s->sculpture;
+        j["tool"] = toolKey(s->tool);
+        j["radius"] = s->radius;
+        if (s->tool == StrokeTool::Melt) j["softness"] = s->softness;
+        nlohmann::json path = nlohmann::json::array();
+        for (const ModelPoint& p : s->path) path.push_back(point(p));
+        j["path"] = std::move(path);
+    } else if (const auto* p = std::get_if<PerturbRecord>(&record)) {
+        const Perturbation& q = p->perturbation;
+        j["sculpture"] = p->sculpture;
+        j["shape"] = q.shape == QuadricShape::Ellipsoid ? "ellipsoid" : "torus";
+        j["center"] = point(q.center);
+        j["axes"] = nlohmann::json::array({point(q.axes[0]), point(q.axes[1]), point(q.axes[2])});
+        j["radii"] = point(q.radii);
+        j["strength"] = q.strength;
+    } else if (const auto* d = std::get_if<DiscardRecord>(&record)) {
+        j["sculpture"] = d->sculpture;
+    } else if (const auto* m = std::get_if<MorphWeightsRecord>(&record)) {
+        j["barycentric"] = point(m->barycentric);
+        j["balance"] = point(m->balance);
+    }
+    return j.dump();
+}
+
+JournalRecord parseJournalRecord(const std::string& text, const std::string& path) {
+    const nlohmann::json v = parseStrictJson(text);
+    if (!v.is_object() || !v.contains("action")) throw JsonError(path, "expected an object with an \"action\"");
+    const std::string action = readString(v.at("action"), childPath(path, "action"));
+    if (action == "stroke") {
+        ObjectReader r(v, path, {"action", "sculpture", "tool", "radius", "softness", "path"});
+        StrokeRecord s;
+        s.sculpture = readString(r.required("sculpture"), r.pathOf("sculpture"));
+        s.tool = readTool(r.required("tool"), r.pathOf("tool"));
+        s.radius = readPositive(r.required("radius"), r.pathOf("radius"));
+        if (r.has("softness")) s.softness = readPositive(r.required("softness"), r.pathOf("softness"));
+        const nlohmann::json& p = r.required("path");
+        if (!p.is_array() || p.empty()) throw JsonError(r.pathOf("path"), "expected a non-empty array of points");
+        for (std::size_t i = 0; i < p.size(); ++i) s.path.push_back(readPoint(p[i], indexPath(r.pathOf("path"), i)));
+        r.finish();
+        return s;
+    }
+    if (action == "perturb") {
+        ObjectReader r(v, path, {"action", "sculpture", "shape", "center", "axes", "radii", "strength"});
+        PerturbRecord p;
+        p.sculpture = readString(r.required("sculpture"), r.pathOf("sculpture"));
+        const std::string shape = readString(r.required("shape"), r.pathOf("shape"));
+        if (shape != "ellipsoid" && shape != "torus") throw JsonError(r.pathOf("shape"), "expected ellipsoid or torus");
+        p.perturbation.shape = shape == "ellipsoid" ? QuadricShape::Ellipsoid : QuadricShape::Torus;
+        p.perturbation.center = readPoint(r.required("center"), r.pathOf("center"));
+        const nlohmann::json& axes = r.required("axes");
+        if (!axes.is_array() || axes.size() != 3) throw JsonError(r.pathOf("axes"), "expected three axes");
+        for (std::size_t i = 0; i < 3; ++i) p.perturbation.axes[i] = readPoint(axes[i], indexPath(r.pathOf("axes"), i));
+        p.perturbation.radii = readPoint(r.required("radii"), r.pathOf("radii"));
+        for (std::size_t i = 0; i < (shape == "ellipsoid" ? 3u : 2u); ++i)
+            if (!(p.perturbation.radii[i] > 0.0)) throw JsonError(indexPath(r.pathOf("radii"), i), "expected a positive radius");
+        p.perturbation.strength = finite(r.required("strength"), r.pathOf("strength"));
+        r.finish();
+        return p;
+    }
+    if (action == "undo" || action == "redo") {
+        ObjectReader r(v, path, {"action"});
+        r.finish();
+        if (action == "undo") return UndoRecord{};
+        return RedoRecord{};
+    }
+    if (action == "discard") {
+        ObjectReader r(v, path, {"action", "sculpture"});
+        DiscardRecord d{readString(r.required("sculpture"), r.pathOf("sculpture"))};
+        r.finish();
+        return d;
+    }
+    if (action == "morph") {
+        ObjectReader r(v, path, {"action", "barycentric", "balance"});
+        MorphWeightsRecord m{readPoint(r.required("barycentric"), r.pathOf("barycentric")),
+                             readPoint(r.required("balance"), r.pathOf("balance"))};
+        r.finish();
+        return m;
+    }
+    throw JsonError(childPath(path, "action"), "unknown action '" + action + "' (expected stroke, perturb, undo, redo, discard or morph)");
+}
+
+JournalRead parseJournal(const std::string& text, const std::string& name) {
+    JournalRead out;
+    const std::size_t headerEnd = text.find('\n');
+    const std::string header = text.substr(0, headerEnd);
+    if (header.rfind(kHeader, 0) != 0) {
+        out.error = name + ": not a Hypergarden journal (it does not start with '" + kHeader + "')";
+        return out;
+    }
+    const std::string version = header.size() > std::strlen(kHeader) ? header.substr(std::strlen(kHeader) + 1) : "";
+    if (version != std::to_string(kJournalVersion)) {
+        out.error = name + ": journal format version '" + version + "' is not one this program reads (it reads " +
+                    std::to_string(kJournalVersion) + ")";
+        return out;
+    }
+    if (headerEnd == std::string::npos) {
+        out.goodBytes = text.size();
+        return out;
+    }
+    std::size_t pos = headerEnd + 1;
+    out.goodBytes = pos;
+    std::size_t number = 0;
+    while (pos < text.size()) {
+        ++number;
+        const std::size_t end = text.find('\n', pos);
+        const auto fail = [&](const std::string& why) {
+            out.damage = why;
+            out.damagedRecord = number;
+            out.damagedOffset = pos;
+        };
+        if (end == std::string::npos) {
+            fail("the record is cut short (no end of line): a write was interrupted");
+            return out;
+        }
+        const std::string line = text.substr(pos, end - pos);
+        if (line.size() < 10 || line[8] != ' ') {
+            fail("the record has no checksum");
+            return out;
+        }
+        const std::string json = line.substr(9);
+        char* stop = nullptr;
+        const unsigned long crc = std::strtoul(line.substr(0, 8).c_str(), &stop, 16);
+        if (*stop != '\0' || crc != crc32(json)) {
+            fail("the record's checksum does not match its text");
+            return out;
+        }
+        try {
+            out.records.push_back(parseJournalRecord(json, "record " + std::to_string(number)));
+        } catch (const JsonError& e) {
+            fail(std::string("the record cannot be read: ") + e.what());
+            return out;
+        }
+        pos = end + 1;
+        out.goodBytes = pos;
+    }
+    return out;
+}
+
+JournalRead readJournal(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+        JournalRead out;
+        out.error = path + ": cannot read the journal: " + std::strerror(errno);
+        return out;
+    }
+    std::ostringstream s;
+    s << in.rdbuf();
+    return parseJournal(s.str(), path);
+}
+
+JournalWriter::~JournalWriter() {
+    if (file_) std::fclose(file_);
+}
+
+std::string JournalWriter::open(const std::string& path, std::uint64_t truncateTo) {
+    path_ = path;
+    const bool fresh = ::access(path.c_str(), F_OK) != 0;
+    if (!fresh && truncateTo != ~std::uint64_t{0} && ::truncate(path.c_str(), static_cast<off_t>(truncateTo)) != 0)
+        return "cannot cut the damaged tail of " + path + ": " + std::strerror(errno);
+    file_ = std::fopen(path.c_str(), "ab");
+    if (!file_) return "cannot open the journal " + path + " for writing: " + std::strerror(errno);
+    if (fresh) {
+        std::fprintf(file_, "%s %d\n", kHeader, kJournalVersion);
+        if (std::fflush(file_) != 0 || ::fsync(::fileno(file_)) != 0)
+            return "cannot write the journal " + path + ": " + std::strerror(errno);
+    }
+    return "";
+}
+
+std::string JournalWriter::append(const JournalRecord& r) {
+    if (!file_) return "the journal is not open";
+    const std::string json = journalRecordJson(r);
+    char crc[16];
+    std::snprintf(crc, sizeof crc, "%08x ", crc32(json));
+    const std::string line = crc + json + "\n";
+    if (std::fwrite(line.data(), 1, line.size(), file_) != line.size() || std::fflush(file_) != 0 ||
+        ::fsync(::fileno(file_)) != 0)
+        return "cannot append to the journal " + path_ + ": " + std::strerror(errno);
+    ++written_;
+    return "";
+}
+
+}  // namespace hg::garden

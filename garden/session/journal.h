@@ -1,0 +1,103 @@
+// The session's journal (DESIGN §4, docs/session-format.md): one record per
+// finished action, appended and synced to disk when the action ends, so a
+// process killed at any moment loses no finished action. Records are in the
+// sculpture's model frame, so replaying them rebuilds the same edits (and
+// the same grids) bit for bit.
+//
+// The file is text: a header line "hypergarden-journal 1", then one line per
+// record, "CRC32 JSON", where CRC32 (8 hex digits) covers the JSON text. A
+// torn or damaged line ends what can be trusted: the reader keeps every
+// record before it and reports where the damage starts.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <cstdio>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "garden/sculpt/edit.h"
+
+namespace hg::garden {
+
+constexpr int kJournalVersion = 1;
+
+// A finished stroke: its tool, radius (model units), softness and path
+// (model frame); the segments follow from them.
+struct StrokeRecord {
+    std::string sculpture;
+    StrokeTool tool = StrokeTool::Carve;
+    double radius = 0.0;
+    double softness = 2.0;
+    std::vector<ModelPoint> path;
+};
+
+struct PerturbRecord {
+    std::string sculpture;
+    Perturbation perturbation;  // model frame
+};
+
+struct UndoRecord {};
+struct RedoRecord {};
+struct DiscardRecord { std::string sculpture; };
+// The selector as barycentric coordinates and the balancing factors it was
+// weighed with (the blend's weights follow from both).
+struct MorphWeightsRecord {
+    std::array<double, 3> barycentric{};
+    std::array<double, 3> balance{1.0, 1.0, 1.0};
+};
+
+using JournalRecord = std::variant<StrokeRecord, PerturbRecord, UndoRecord, RedoRecord, DiscardRecord, MorphWeightsRecord>;
+
+std::string journalRecordKind(const JournalRecord& r);
+
+struct JournalRead {
+    std::vector<JournalRecord> records;
+    // Refused outright (unreadable, not a journal, unknown version): nothing
+    // is in `records`.
+    std::string error;
+    // A damaged tail: what is wrong, the 1-based number of the first bad
+    // record and its byte offset; every record before it is in `records`.
+    std::string damage;
+    std::size_t damagedRecord = 0;
+    std::uint64_t damagedOffset = 0;
+    std::uint64_t goodBytes = 0;  // where the trusted part ends
+
+    bool ok() const { return error.empty(); }
+    bool damaged() const { return !damage.empty(); }
+};
+
+JournalRead readJournal(const std::string& path);
+JournalRead parseJournal(const std::string& text, const std::string& name);
+
+// Appends records, each synced to disk before append() returns.
+class JournalWriter {
+public:
+    JournalWriter() = default;
+    ~JournalWriter();
+    JournalWriter(const JournalWriter&) = delete;
+    JournalWriter& operator=(const JournalWriter&) = delete;
+
+    // Opens `path` for appending (writing the header into a new file).
+    // `truncateTo`: cut a damaged tail first (the reader's goodBytes).
+    // "" on success, else why not.
+    std::string open(const std::string& path, std::uint64_t truncateTo = ~std::uint64_t{0});
+    std::string append(const JournalRecord& r);
+    bool isOpen() const { return file_ != nullptr; }
+    std::size_t written() const { return written_; }
+
+private:
+    std::FILE* file_ = nullptr;
+    std::string path_;
+    std::size_t written_ = 0;
+};
+
+// One record as its line's JSON (no CRC, no newline), and back; throws
+// JsonError (garden/scene/json_reader.h) on a bad record.
+std::string journalRecordJson(const JournalRecord& r);
+JournalRecord parseJournalRecord(const std::string& json, const std::string& path);
+
+std::uint32_t crc32(const std::string& text);
+
+}  // namespace hg::garden

@@ -1,0 +1,27 @@
+// Opening a garden inside a session folder, the same way for the desktop
+// window and `replay --session`: the folder made from the garden file when
+// new, the garden loaded from the folder's copy, the journal read and
+// replayed, and every later action journalled.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "garden/app/garden_session.h"
+#include "garden/session/session_folder.h"
+
+namespace hg::garden {
+
+struct OpenedSession {
+    std::unique_ptr<GardenSession> session;
+    std::unique_ptr<SessionRecorder> recorder;
+    std::string error;               // the session cannot be opened (nothing else set)
+    int exitStatus = 0;              // for `error`: 2 for bad input, 1 otherwise
+    std::vector<std::string> notes;  // created, recovered from a damaged tail, a record not played
+};
+
+// `gardenFile` is used only when `dir` holds no session yet.
+OpenedSession openSession(const std::string& dir, const std::string& gardenFile, const SessionSettings& settings);
+
+}  // namespace hg::garden
