@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Runs the fuzzers for a bounded time (seconds, default 60, for the HyperFun
-# parser; half as long for the garden files and replay scripts), seeded with
+# parser; half as long for the garden files and replay scripts, and for the
+# session journal), seeded with
 # the bundled and shared files. Needs `cmake --preset fuzz`.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -18,3 +19,10 @@ mkdir -p "$json"
 cp -f content/gardens/*.json content/replays/*.json "$json"/
 ./build/fuzz/tests/fuzz/hg_garden_files_fuzz -max_total_time="$(( (seconds + 1) / 2 ))" -max_len=8192 -timeout=10 \
   -rss_limit_mb=2048 "$json"
+
+journal="build/fuzz/corpus-journal"
+mkdir -p "$journal"
+printf 'hypergarden-journal 1\n%s\n' \
+  '1b1e7ea1 {"action":"undo"}' > "$journal/seed.hgj"
+./build/fuzz/tests/fuzz/hg_journal_fuzz -max_total_time="$(( (seconds + 1) / 2 ))" -max_len=8192 -timeout=10 \
+  -rss_limit_mb=2048 "$journal"

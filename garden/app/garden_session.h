@@ -29,6 +29,7 @@
 #include "garden/morph/morph_weights.h"
 #include "garden/scene/garden_file.h"
 #include "garden/sculpt/edit.h"
+#include "garden/sculpt/tool_settings.h"
 #include "garden/session/journal.h"
 #include "polygonizer/lod_selection.h"
 #include "polygonizer/remesh_queue.h"
@@ -37,18 +38,6 @@ namespace hg::garden {
 
 class MorphBlender;
 struct MorphSources;
-
-// The tool the tool hand works (DESIGN §6); sizes in metres of the world.
-struct ToolSettings {
-    enum class Kind { None, Carve, Add, Melt, Perturb };
-    Kind kind = Kind::None;      // None: the trigger picks the morph on the ground
-    double radius = 0.05;        // carve, add, melt: the tool radius
-    double softness = 2.0;       // melt: voxels
-    QuadricShape shape = QuadricShape::Ellipsoid;
-    std::array<double, 3> radii{0.08, 0.08, 0.08};  // perturb: ellipsoid radii, or torus R, r
-    double strength = 2.0;       // perturb: voxels, > 0 pulls, < 0 pushes
-    bool reverse = false;        // the action reversed: carve <-> add, pull <-> push
-};
 
 struct SessionSettings {
     SchedulerSettings scheduler;

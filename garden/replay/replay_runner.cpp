@@ -72,6 +72,34 @@ std::string apply(const ReplayCommand& c, GardenSession& s, FrameRenderer* rende
 
 }  // namespace
 
+std::string runSculptCommand(const SculptCommand& command, GardenSession& session) {
+    const auto find = [&](const std::string& name, int& index) -> std::string {
+        index = session.findSculpture(name);
+        return index < 0 ? "no sculpture named '" + name + "'" : "";
+    };
+    int i = -1;
+    if (const auto* c = std::get_if<StrokeCommand>(&command)) {
+        if (std::string why = find(c->sculpture, i); !why.empty()) return why;
+        return session.applyStroke(i, c->tool, c->path, c->radius, c->softness);
+    }
+    if (const auto* c = std::get_if<PerturbCommand>(&command)) {
+        if (std::string why = find(c->sculpture, i); !why.empty()) return why;
+        return session.applyPerturbation(i, c->shape, c->center, c->radii, c->strength);
+    }
+    if (const auto* c = std::get_if<UndoCommand>(&command)) {
+        for (int n = 0; n < c->times; ++n)
+            if (!session.undo()) return "nothing to undo";
+        return "";
+    }
+    if (const auto* c = std::get_if<RedoCommand>(&command)) {
+        for (int n = 0; n < c->times; ++n)
+            if (!session.redo()) return "nothing to redo";
+        return "";
+    }
+    session.tool() = std::get<ToolCommand>(command).settings;
+    return "";
+}
+
 ReplayResult runReplay(const ReplayScript& script, GardenSession& session, FrameRenderer* renderer,
                        const ReplayOptions& options) {
     ReplayResult result;

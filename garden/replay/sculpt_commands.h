@@ -7,8 +7,10 @@
 #include <variant>
 #include <vector>
 
-#include "garden/app/garden_session.h"
-#include "nlohmann/json_fwd.hpp"
+#include <nlohmann/json_fwd.hpp>
+
+#include "garden/sculpt/edit.h"
+#include "garden/sculpt/tool_settings.h"
 
 namespace hg::garden {
 
@@ -40,7 +42,8 @@ using SculptCommand = std::variant<StrokeCommand, PerturbCommand, UndoCommand, R
 // Reads the command under `key` (stroke, perturb, undo, redo, sculpt_tool);
 // throws JsonError with the JSON path of a bad value.
 SculptCommand readSculptCommand(const std::string& key, const nlohmann::json& v, const std::string& path);
-// "" or why the session refused it.
+class GardenSession;
+// "" or why the session refused it (replay_runner.cpp).
 std::string runSculptCommand(const SculptCommand& c, GardenSession& session);
 
 }  // namespace hg::garden

@@ -37,7 +37,7 @@ protected:
         std::filesystem::remove_all(dir);
         std::filesystem::create_directories(dir);
     }
-    void TearDown() override { std::filesystem::remove_all(dir); }
+    void TearDown() override { if (!std::getenv("HG_KEEP_SCRATCH")) std::filesystem::remove_all(dir); }
     std::string write(const std::string& name, const std::string& text) const {
         std::filesystem::path p = dir / name;
         std::filesystem::create_directories(p.parent_path());

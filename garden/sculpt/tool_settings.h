@@ -1,0 +1,22 @@
+// What the tool hand works with (DESIGN §6): the tool and its live sizes.
+#pragma once
+
+#include <array>
+
+#include "garden/sculpt/edit.h"
+
+namespace hg::garden {
+
+// The tool the tool hand works (DESIGN §6); sizes in metres of the world.
+struct ToolSettings {
+    enum class Kind { None, Carve, Add, Melt, Perturb };
+    Kind kind = Kind::None;      // None: the trigger picks the morph on the ground
+    double radius = 0.05;        // carve, add, melt: the tool radius
+    double softness = 2.0;       // melt: voxels
+    QuadricShape shape = QuadricShape::Ellipsoid;
+    std::array<double, 3> radii{0.08, 0.08, 0.08};  // perturb: ellipsoid radii, or torus R, r
+    double strength = 2.0;       // perturb: voxels, > 0 pulls, < 0 pushes
+    bool reverse = false;        // the action reversed: carve <-> add, pull <-> push
+};
+
+}  // namespace hg::garden
