@@ -20,13 +20,13 @@ namespace {
 
 constexpr int kLevelRefreshFrames = 45;
 
+}  // namespace
+
 glm::mat4 placementMatrix(const Placement& p) {
     glm::mat4 m = glm::translate(glm::mat4(1.0f), toGlm(p.position));
     m = glm::rotate(m, glm::radians(static_cast<float>(p.yawDegrees)), glm::vec3(0.0f, 1.0f, 0.0f));
     return glm::scale(m, glm::vec3(static_cast<float>(p.scale)));
 }
-
-}  // namespace
 
 Sculpture::Sculpture() = default;
 Sculpture::~Sculpture() = default;

@@ -39,6 +39,10 @@ namespace hg::garden {
 class MorphBlender;
 struct MorphSources;
 
+// The scales a sculpture may be given, metres per model unit.
+constexpr double kMinSculptureScale = 1e-3;
+constexpr double kMaxSculptureScale = 1e3;
+
 struct SessionSettings {
     SchedulerSettings scheduler;
     // The morph's per-frame budget in samples (0: its share of the frame's
@@ -117,6 +121,12 @@ public:
     // false when there is nothing to undo or redo.
     bool undo();
     bool redo();
+    // Moves, turns or scales a sculpture (undoable, journalled): its grid
+    // stays, in its model frame. "" or why not (a scale out of range, say).
+    std::string moveSculpture(int sculpture, const Placement& placement);
+    // The sculpture's mirror plane (model frame; none: off): strokes and
+    // perturbations made while it is set act on both sides of it.
+    void setMirror(int sculpture, std::optional<MirrorPlane> plane);
     // Removes every edit of a sculpture (the morph result's strokes, say),
     // for good: they cannot be redone.
     void discardEdits(int sculpture);
@@ -165,6 +175,12 @@ public:
     glm::mat4 view() const { return navigator_.view(); }
 
 private:
+    // The actions to undo, oldest first: an edit of a sculpture, or a move
+    // with the placements before and after it.
+    struct UndoEntry {
+        int sculpture = -1;
+        std::optional<std::pair<Placement, Placement>> move;
+    };
     void buildSculpture(std::size_t index);
     void buildMorph();
     void restartMorph();
@@ -175,6 +191,8 @@ private:
     void showChanged(int sculpture, const voxel::IndexBox& box);
     void sculptWithHands(const Hands& hands);
     void record(const JournalRecord& r);
+    bool stepHistory(std::vector<UndoEntry>& from, std::vector<UndoEntry>& to, bool undoing);
+    void placeSculpture(int sculpture, const Placement& placement);
     void recordMorph();
 
     GardenLoad load_;
@@ -193,8 +211,8 @@ private:
     // Sculpting.
     ToolSettings tool_;
     int strokeSculpture_ = -1;         // the live stroke's sculpture, or -1
-    std::vector<int> undoOrder_;       // sculptures of the actions to undo, oldest first
-    std::vector<int> redoOrder_;
+    std::vector<UndoEntry> undoOrder_;
+    std::vector<UndoEntry> redoOrder_;
     std::uint32_t lastButtons_ = 0;    // the tool hand's buttons last frame (undo, redo edges)
     bool toolArmed_ = true;            // the trigger was released since the last action
     std::function<void(const JournalRecord&)> journal_;

@@ -6,12 +6,14 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <glm/mat4x4.hpp>
 
 #include "garden/scene/garden.h"
+#include "garden/sculpt/edit.h"
 #include "polygonizer/chunk_layout.h"
 #include "polygonizer/lod_pyramid.h"
 #include "polygonizer/remesh_queue.h"
@@ -40,6 +42,7 @@ struct Sculpture {
     SculptureSource source;
     std::string error;                 // non-empty: missing (shown as such), no caches
     Placement placement;               // where it stands in the garden
+    std::optional<MirrorPlane> mirror; // strokes act on both sides of it (model frame)
     Material material;
     glm::mat4 modelToWorld{1.0f};      // the placement as a matrix
     double scale = 1.0;                // metres per model unit
@@ -61,5 +64,8 @@ struct Sculpture {
     bool morphResult() const { return source.kind == SculptureSource::Kind::Morph; }
     glm::vec3 worldCentre() const;
 };
+
+// Where a placement puts model points: translate, turn about +y, scale.
+glm::mat4 placementMatrix(const Placement& p);
 
 }  // namespace hg::garden

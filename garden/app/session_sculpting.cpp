@@ -51,8 +51,9 @@ void GardenSession::discardEdits(int sculpture) {
     if (!s.edits) return;
     while (const auto box = s.edits->undo()) showChanged(sculpture, *box);
     s.edits->clearRedo();
-    undoOrder_.erase(std::remove(undoOrder_.begin(), undoOrder_.end(), sculpture), undoOrder_.end());
-    redoOrder_.erase(std::remove(redoOrder_.begin(), redoOrder_.end(), sculpture), redoOrder_.end());
+    const auto isEdit = [sculpture](const UndoEntry& u) { return u.sculpture == sculpture && !u.move; };
+    undoOrder_.erase(std::remove_if(undoOrder_.begin(), undoOrder_.end(), isEdit), undoOrder_.end());
+    redoOrder_.erase(std::remove_if(redoOrder_.begin(), redoOrder_.end(), isEdit), redoOrder_.end());
     record(DiscardRecord{s.name});
 }
 
@@ -91,6 +92,10 @@ std::string GardenSession::restore(const std::vector<JournalRecord>& records) {
         } else if (const auto* d = std::get_if<DiscardRecord>(&r)) {
             const int i = sculptureOf(d->sculpture);
             if (why.empty()) discardEdits(i);
+        } else if (const auto* mv = std::get_if<MoveRecord>(&r)) {
+            const int i = findSculpture(mv->sculpture);
+            if (i < 0) why = "no sculpture named '" + mv->sculpture + "'";
+            else why = moveSculpture(i, mv->placement);
         } else if (const auto* m = std::get_if<MorphWeightsRecord>(&r)) {
             if (!blender_) why = "the garden has no metamorphosis";
             else {
@@ -141,6 +146,7 @@ std::string GardenSession::beginStroke(int sculpture, StrokeTool tool, const std
     stroke.radius = radius / s.scale;
     stroke.softness = softness;
     stroke.path.push_back(toModel(s, toGlm(worldPoint)));
+    stroke.mirror = s.mirror;
     if (std::string why = startStroke(sculpture, std::move(stroke)); !why.empty()) return why;
     return "";
 }
@@ -154,7 +160,7 @@ std::string GardenSession::startStroke(int sculpture, Stroke stroke) {
     e.op = std::move(stroke);
     showChanged(sculpture, edits.append(std::move(e)));
     strokeSculpture_ = sculpture;
-    undoOrder_.push_back(sculpture);
+    undoOrder_.push_back({sculpture, std::nullopt});
     redoOrder_.clear();
     return "";
 }
@@ -185,7 +191,7 @@ void GardenSession::endStroke() {
     if (!stroking()) return;
     const Sculpture& s = sculptures_[static_cast<std::size_t>(strokeSculpture_)];
     const Stroke& stroke = std::get<Stroke>(s.edits->list().edits().back().op);
-    record(StrokeRecord{s.name, stroke.tool, stroke.radius, stroke.softness, stroke.path});
+    record(StrokeRecord{s.name, stroke.tool, stroke.radius, stroke.softness, stroke.path, stroke.mirror});
     strokeSculpture_ = -1;
 }
 
@@ -206,6 +212,7 @@ std::string GardenSession::applyPerturbation(int sculpture, QuadricShape shape, 
     p.center = toModel(s, toGlm(worldCenter));
     p.radii = {radii[0] / s.scale, radii[1] / s.scale, radii[2] / s.scale};
     p.strength = strength;
+    p.mirror = s.mirror;
     // The quadric's axes are the world's, turned into the model frame.
     const glm::mat3 toModelAxes = glm::mat3(glm::inverse(s.modelToWorld));
     for (int i = 0; i < 3; ++i) {
@@ -225,44 +232,72 @@ std::string GardenSession::applyPerturbationModel(int sculpture, const Perturbat
     Edit e;
     e.op = p;
     showChanged(sculpture, edits.append(std::move(e)));
-    undoOrder_.push_back(sculpture);
+    undoOrder_.push_back({sculpture, std::nullopt});
     redoOrder_.clear();
     record(PerturbRecord{sculptures_[static_cast<std::size_t>(sculpture)].name, p});
     return "";
 }
 
-bool GardenSession::undo() {
+bool GardenSession::undo() { return stepHistory(undoOrder_, redoOrder_, true); }
+bool GardenSession::redo() { return stepHistory(redoOrder_, undoOrder_, false); }
+
+bool GardenSession::stepHistory(std::vector<UndoEntry>& from, std::vector<UndoEntry>& to, bool undoing) {
     if (stroking()) endStroke();
-    while (!undoOrder_.empty()) {
-        const int sculpture = undoOrder_.back();
-        undoOrder_.pop_back();
-        Sculpture& s = sculptures_[static_cast<std::size_t>(sculpture)];
-        if (!s.edits) continue;
-        if (const auto box = s.edits->undo()) {
-            showChanged(sculpture, *box);
-            redoOrder_.push_back(sculpture);
-            record(UndoRecord{});
-            return true;
+    while (!from.empty()) {
+        UndoEntry entry = from.back();
+        from.pop_back();
+        Sculpture& s = sculptures_[static_cast<std::size_t>(entry.sculpture)];
+        if (entry.move) {
+            // A move holds the placements before and after it.
+            placeSculpture(entry.sculpture, undoing ? entry.move->first : entry.move->second);
+        } else {
+            if (!s.edits) continue;
+            const auto box = undoing ? s.edits->undo() : s.edits->redo();
+            if (!box) continue;
+            showChanged(entry.sculpture, *box);
         }
+        to.push_back(entry);
+        if (undoing) record(UndoRecord{});
+        else record(RedoRecord{});
+        return true;
     }
     return false;
 }
 
-bool GardenSession::redo() {
+std::string GardenSession::moveSculpture(int sculpture, const Placement& placement) {
     if (stroking()) endStroke();
-    while (!redoOrder_.empty()) {
-        const int sculpture = redoOrder_.back();
-        redoOrder_.pop_back();
-        Sculpture& s = sculptures_[static_cast<std::size_t>(sculpture)];
-        if (!s.edits) continue;
-        if (const auto box = s.edits->redo()) {
-            showChanged(sculpture, *box);
-            undoOrder_.push_back(sculpture);
-            record(RedoRecord{});
-            return true;
-        }
+    if (sculpture < 0 || sculpture >= static_cast<int>(sculptures_.size())) return "no such sculpture";
+    for (double c : placement.position)
+        if (!std::isfinite(c)) return "the position is not a finite point";
+    if (!std::isfinite(placement.yawDegrees)) return "the yaw is not a finite angle";
+    if (!(std::isfinite(placement.scale) && placement.scale >= kMinSculptureScale && placement.scale <= kMaxSculptureScale))
+        return "the scale must be in [" + std::to_string(kMinSculptureScale) + ", " + std::to_string(kMaxSculptureScale) +
+               "] metres per model unit";
+    Sculpture& s = sculptures_[static_cast<std::size_t>(sculpture)];
+    undoOrder_.push_back({sculpture, std::make_pair(s.placement, placement)});
+    redoOrder_.clear();
+    placeSculpture(sculpture, placement);
+    record(MoveRecord{s.name, placement});
+    return "";
+}
+
+void GardenSession::placeSculpture(int sculpture, const Placement& placement) {
+    Sculpture& s = sculptures_[static_cast<std::size_t>(sculpture)];
+    s.placement = placement;
+    s.modelToWorld = placementMatrix(placement);
+    s.scale = placement.scale;
+    if (selected_ == sculpture) select(sculpture);  // the orbit follows
+}
+
+void GardenSession::setMirror(int sculpture, std::optional<MirrorPlane> plane) {
+    if (sculpture < 0 || sculpture >= static_cast<int>(sculptures_.size())) return;
+    if (plane) {
+        ModelPoint& n = plane->normal;
+        const double l = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+        if (!(l > 0.0) || !std::isfinite(l)) return;
+        n = {n[0] / l, n[1] / l, n[2] / l};
     }
-    return false;
+    sculptures_[static_cast<std::size_t>(sculpture)].mirror = plane;
 }
 
 std::size_t GardenSession::editCount(int sculpture) const {

@@ -14,6 +14,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
@@ -25,6 +26,15 @@ namespace hg::garden {
 using ModelPoint = std::array<double, 3>;
 
 enum class StrokeTool { Carve, Add, Melt };
+
+// A sculpture's mirror plane (model frame): a stroke or perturbation made
+// while it is set acts on both sides, as one edit.
+struct MirrorPlane {
+    ModelPoint point{};
+    ModelPoint normal{1.0, 0.0, 0.0};  // unit length
+};
+ModelPoint reflect(const MirrorPlane& m, const ModelPoint& p);
+ModelPoint reflectDirection(const MirrorPlane& m, const ModelPoint& d);
 const char* strokeToolName(StrokeTool t);
 
 // One Cauchy line segment of a stroke with the constants that give its
@@ -48,7 +58,10 @@ struct Stroke {
     double radius = 0.1;     // model units
     double softness = 2.0;   // melt: width of the rounded edge, voxels
     std::vector<ModelPoint> path;        // as the hand drew it (model frame)
-    std::vector<StrokeSegment> segments;  // the path resampled for the radius
+    std::optional<MirrorPlane> mirror;   // the path also drawn reflected
+    // The path resampled for the radius; with a mirror, each segment is
+    // followed by its reflection.
+    std::vector<StrokeSegment> segments;
 };
 
 enum class QuadricShape { Ellipsoid, Torus };
@@ -63,7 +76,10 @@ struct Perturbation {
     std::array<ModelPoint, 3> axes{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};  // orthonormal: u, v, w
     ModelPoint radii{0.1, 0.1, 0.1};  // ellipsoid: r_u, r_v, r_w; torus: R, r, (unused)
     double strength = 2.0;            // k, voxels
+    std::optional<MirrorPlane> mirror;  // a second quadric, reflected: piece 1
 };
+// The reflected quadric of a mirrored perturbation.
+Perturbation mirrored(const Perturbation& p);
 
 using EditOp = std::variant<Stroke, Perturbation>;
 

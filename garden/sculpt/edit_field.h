@@ -99,10 +99,17 @@ V quadric(const V& x, const V& y, const V& z, const Perturbation& p) {
     return V(1.0) - (ring * ring + w * w) / V(p.radii[1] * p.radii[1]);
 }
 
+// The listed pieces of a perturbation (0: its quadric, 1: the mirrored
+// one), their terms added in order, then the field clamped.
 template <class V>
-V applyPerturbation(const V& f, const V& x, const V& y, const V& z, const Perturbation& p, const FieldUnits& u) {
-    const V q = editops::vmax(quadric(x, y, z, p), V(0.0));
-    return editops::clamp<V>(f + V(p.strength) * (q * q * q), -u.band, u.band);
+V applyPerturbation(const V& f, const V& x, const V& y, const V& z, const Perturbation& p,
+                    const std::vector<std::uint32_t>& pieces, const FieldUnits& u) {
+    V out = f;
+    for (std::uint32_t piece : pieces) {
+        const V q = editops::vmax(quadric(x, y, z, piece == 0 ? p : mirrored(p)), V(0.0));
+        out = out + V(p.strength) * (q * q * q);
+    }
+    return editops::clamp<V>(out, -u.band, u.band);
 }
 
 }  // namespace hg::garden

@@ -31,14 +31,32 @@ template <class V>
 V applyPick(const V& f, const V& x, const V& y, const V& z, const Edit& e, const std::vector<std::uint32_t>& pieces,
             const FieldUnits& u) {
     if (const auto* s = std::get_if<Stroke>(&e.op)) return applyStroke(f, x, y, z, *s, pieces, u);
-    return applyPerturbation(f, x, y, z, std::get<Perturbation>(e.op), u);
+    return applyPerturbation(f, x, y, z, std::get<Perturbation>(e.op), pieces, u);
 }
 
 }  // namespace
 
 std::size_t pieceCount(const Edit& e) {
     if (const auto* s = std::get_if<Stroke>(&e.op)) return s->segments.size();
-    return 1;
+    return std::get<Perturbation>(e.op).mirror ? 2 : 1;
+}
+
+ModelPoint reflect(const MirrorPlane& m, const ModelPoint& p) {
+    const double d = (p[0] - m.point[0]) * m.normal[0] + (p[1] - m.point[1]) * m.normal[1] + (p[2] - m.point[2]) * m.normal[2];
+    return {p[0] - 2.0 * d * m.normal[0], p[1] - 2.0 * d * m.normal[1], p[2] - 2.0 * d * m.normal[2]};
+}
+
+ModelPoint reflectDirection(const MirrorPlane& m, const ModelPoint& v) {
+    const double d = v[0] * m.normal[0] + v[1] * m.normal[1] + v[2] * m.normal[2];
+    return {v[0] - 2.0 * d * m.normal[0], v[1] - 2.0 * d * m.normal[1], v[2] - 2.0 * d * m.normal[2]};
+}
+
+Perturbation mirrored(const Perturbation& p) {
+    Perturbation m = p;
+    m.mirror.reset();
+    m.center = reflect(*p.mirror, p.center);
+    for (auto& a : m.axes) a = reflectDirection(*p.mirror, a);
+    return m;
 }
 
 frep::Box3 perturbationReach(const Perturbation& p) {
@@ -60,7 +78,8 @@ frep::Box3 perturbationReach(const Perturbation& p) {
 
 frep::Box3 pieceReach(const Edit& e, std::size_t piece) {
     if (const auto* s = std::get_if<Stroke>(&e.op)) return s->segments[piece].reach;
-    return perturbationReach(std::get<Perturbation>(e.op));
+    const auto& p = std::get<Perturbation>(e.op);
+    return perturbationReach(piece == 0 ? p : mirrored(p));
 }
 
 EditList::EditList(FieldUnits units, double cellSize) : units_(units), cellSize_(cellSize) {

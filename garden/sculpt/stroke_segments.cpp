@@ -82,12 +82,20 @@ std::size_t extendStrokeSegments(Stroke& stroke, std::size_t firstPoint, const F
     // is half a step from the last one taken. The segments are a function
     // of the path alone, however it arrived: frame by frame while the hand
     // draws, or whole from a journal.
+    // A segment, then its reflection when the stroke is mirrored.
+    const std::size_t perSegment = stroke.mirror ? 2 : 1;
+    const auto add = [&](const ModelPoint& a, const ModelPoint& b) {
+        stroke.segments.push_back(makeStrokeSegment(a, b, stroke.radius, floor, units));
+        if (stroke.mirror)
+            stroke.segments.push_back(
+                makeStrokeSegment(reflect(*stroke.mirror, a), reflect(*stroke.mirror, b), stroke.radius, floor, units));
+    };
     if (stroke.segments.empty()) {
         const ModelPoint& p = stroke.path[0];
-        stroke.segments.push_back(makeStrokeSegment({p[0] - 0.5 * step, p[1], p[2]}, {p[0] + 0.5 * step, p[1], p[2]},
-                                                    stroke.radius, floor, units));
+        add({p[0] - 0.5 * step, p[1], p[2]}, {p[0] + 0.5 * step, p[1], p[2]});
     }
-    ModelPoint from = stroke.segments.size() == 1 ? stroke.path[0] : stroke.segments.back().end;
+    ModelPoint from = stroke.segments.size() == perSegment ? stroke.path[0]
+                                                           : stroke.segments[stroke.segments.size() - perSegment].end;
     for (std::size_t i = std::max<std::size_t>(firstPoint, 1); i < stroke.path.size(); ++i) {
         const ModelPoint& to = stroke.path[i];
         const double d = distance(from, to);
@@ -99,7 +107,7 @@ std::size_t extendStrokeSegments(Stroke& stroke, std::size_t firstPoint, const F
             const ModelPoint b = k == pieces ? to
                                              : ModelPoint{from[0] + f * (to[0] - from[0]), from[1] + f * (to[1] - from[1]),
                                                           from[2] + f * (to[2] - from[2])};
-            stroke.segments.push_back(makeStrokeSegment(a, b, stroke.radius, floor, units));
+            add(a, b);
             a = b;
         }
         from = to;

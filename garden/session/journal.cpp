@@ -1,6 +1,7 @@
 #include "garden/session/journal.h"
 
 #include <cerrno>
+#include <cmath>
 #include <cstring>
 #include <fstream>
 #include <sstream>
@@ -44,6 +45,19 @@ ModelPoint readPoint(const nlohmann::json& v, const std::string& path) {
     return p;
 }
 
+nlohmann::json mirrorJson(const MirrorPlane& m) { return {{"point", point(m.point)}, {"normal", point(m.normal)}}; }
+
+MirrorPlane readMirror(const nlohmann::json& v, const std::string& path) {
+    ObjectReader r(v, path, {"point", "normal"});
+    MirrorPlane m;
+    m.point = readPoint(r.required("point"), r.pathOf("point"));
+    m.normal = readPoint(r.required("normal"), r.pathOf("normal"));
+    const double n = std::sqrt(m.normal[0] * m.normal[0] + m.normal[1] * m.normal[1] + m.normal[2] * m.normal[2]);
+    if (std::fabs(n - 1.0) > 1e-6) throw JsonError(r.pathOf("normal"), "expected a unit vector");
+    r.finish();
+    return m;
+}
+
 }  // namespace
 
 std::uint32_t crc32(const std::string& text) {
@@ -62,7 +76,7 @@ std::uint32_t crc32(const std::string& text) {
 }
 
 std::string journalRecordKind(const JournalRecord& r) {
-    static const char* const names[] = {"stroke", "perturb", "undo", "redo", "discard", "morph"};
+    static const char* const names[] = {"stroke", "perturb", "undo", "redo", "discard", "morph", "move"};
     return names[r.index()];
 }
 
@@ -77,6 +91,7 @@ std::string journalRecordJson(const JournalRecord& record) {
         nlohmann::json path = nlohmann::json::array();
         for (const ModelPoint& p : s->path) path.push_back(point(p));
         j["path"] = std::move(path);
+        if (s->mirror) j["mirror"] = mirrorJson(*s->mirror);
     } else if (const auto* p = std::get_if<PerturbRecord>(&record)) {
         const Perturbation& q = p->perturbation;
         j["sculpture"] = p->sculpture;
@@ -85,11 +100,17 @@ std::string journalRecordJson(const JournalRecord& record) {
         j["axes"] = nlohmann::json::array({point(q.axes[0]), point(q.axes[1]), point(q.axes[2])});
         j["radii"] = point(q.radii);
         j["strength"] = q.strength;
+        if (q.mirror) j["mirror"] = mirrorJson(*q.mirror);
     } else if (const auto* d = std::get_if<DiscardRecord>(&record)) {
         j["sculpture"] = d->sculpture;
     } else if (const auto* m = std::get_if<MorphWeightsRecord>(&record)) {
         j["barycentric"] = point(m->barycentric);
         j["balance"] = point(m->balance);
+    } else if (const auto* mv = std::get_if<MoveRecord>(&record)) {
+        j["sculpture"] = mv->sculpture;
+        j["position"] = point(mv->placement.position);
+        j["yaw"] = mv->placement.yawDegrees;
+        j["scale"] = mv->placement.scale;
     }
     return j.dump();
 }
@@ -99,7 +120,7 @@ JournalRecord parseJournalRecord(const std::string& text, const std::string& pat
     if (!v.is_object() || !v.contains("action")) throw JsonError(path, "expected an object with an \"action\"");
     const std::string action = readString(v.at("action"), childPath(path, "action"));
     if (action == "stroke") {
-        ObjectReader r(v, path, {"action", "sculpture", "tool", "radius", "softness", "path"});
+        ObjectReader r(v, path, {"action", "sculpture", "tool", "radius", "softness", "path", "mirror"});
         StrokeRecord s;
         s.sculpture = readString(r.required("sculpture"), r.pathOf("sculpture"));
         s.tool = readTool(r.required("tool"), r.pathOf("tool"));
@@ -108,11 +129,12 @@ JournalRecord parseJournalRecord(const std::string& text, const std::string& pat
         const nlohmann::json& p = r.required("path");
         if (!p.is_array() || p.empty()) throw JsonError(r.pathOf("path"), "expected a non-empty array of points");
         for (std::size_t i = 0; i < p.size(); ++i) s.path.push_back(readPoint(p[i], indexPath(r.pathOf("path"), i)));
+        if (r.has("mirror")) s.mirror = readMirror(r.required("mirror"), r.pathOf("mirror"));
         r.finish();
         return s;
     }
     if (action == "perturb") {
-        ObjectReader r(v, path, {"action", "sculpture", "shape", "center", "axes", "radii", "strength"});
+        ObjectReader r(v, path, {"action", "sculpture", "shape", "center", "axes", "radii", "strength", "mirror"});
         PerturbRecord p;
         p.sculpture = readString(r.required("sculpture"), r.pathOf("sculpture"));
         const std::string shape = readString(r.required("shape"), r.pathOf("shape"));
@@ -126,6 +148,7 @@ JournalRecord parseJournalRecord(const std::string& text, const std::string& pat
         for (std::size_t i = 0; i < (shape == "ellipsoid" ? 3u : 2u); ++i)
             if (!(p.perturbation.radii[i] > 0.0)) throw JsonError(indexPath(r.pathOf("radii"), i), "expected a positive radius");
         p.perturbation.strength = finite(r.required("strength"), r.pathOf("strength"));
+        if (r.has("mirror")) p.perturbation.mirror = readMirror(r.required("mirror"), r.pathOf("mirror"));
         r.finish();
         return p;
     }
@@ -148,7 +171,18 @@ JournalRecord parseJournalRecord(const std::string& text, const std::string& pat
         r.finish();
         return m;
     }
-    throw JsonError(childPath(path, "action"), "unknown action '" + action + "' (expected stroke, perturb, undo, redo, discard or morph)");
+    if (action == "move") {
+        ObjectReader r(v, path, {"action", "sculpture", "position", "yaw", "scale"});
+        MoveRecord m;
+        m.sculpture = readString(r.required("sculpture"), r.pathOf("sculpture"));
+        m.placement.position = readPoint(r.required("position"), r.pathOf("position"));
+        m.placement.yawDegrees = finite(r.required("yaw"), r.pathOf("yaw"));
+        m.placement.scale = readPositive(r.required("scale"), r.pathOf("scale"));
+        r.finish();
+        return m;
+    }
+    throw JsonError(childPath(path, "action"),
+                    "unknown action '" + action + "' (expected stroke, perturb, undo, redo, discard, morph or move)");
 }
 
 JournalRead parseJournal(const std::string& text, const std::string& name) {

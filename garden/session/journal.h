@@ -13,10 +13,12 @@
 #include <array>
 #include <cstdint>
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
 
+#include "garden/scene/garden.h"
 #include "garden/sculpt/edit.h"
 
 namespace hg::garden {
@@ -31,11 +33,18 @@ struct StrokeRecord {
     double radius = 0.0;
     double softness = 2.0;
     std::vector<ModelPoint> path;
+    std::optional<MirrorPlane> mirror;
 };
 
 struct PerturbRecord {
     std::string sculpture;
     Perturbation perturbation;  // model frame
+};
+
+// A sculpture moved, turned or scaled: its new placement.
+struct MoveRecord {
+    std::string sculpture;
+    Placement placement;
 };
 
 struct UndoRecord {};
@@ -48,7 +57,8 @@ struct MorphWeightsRecord {
     std::array<double, 3> balance{1.0, 1.0, 1.0};
 };
 
-using JournalRecord = std::variant<StrokeRecord, PerturbRecord, UndoRecord, RedoRecord, DiscardRecord, MorphWeightsRecord>;
+using JournalRecord =
+    std::variant<StrokeRecord, PerturbRecord, UndoRecord, RedoRecord, DiscardRecord, MorphWeightsRecord, MoveRecord>;
 
 std::string journalRecordKind(const JournalRecord& r);
 

@@ -16,14 +16,19 @@ namespace {
 class JournalTest : public test::ScratchDir {};
 
 std::vector<JournalRecord> everyKind() {
-    StrokeRecord s{"column west", StrokeTool::Melt, 0.031, 2.5, {{0.1, 0.2, 0.3}, {0.1000000000000001, -2.5e-9, 7.0}}};
+    StrokeRecord s{"column west", StrokeTool::Melt, 0.031, 2.5, {{0.1, 0.2, 0.3}, {0.1000000000000001, -2.5e-9, 7.0}},
+                   MirrorPlane{{0.0, 0.0, 0.0}, {1.0, 0.0, 0.0}}};
     Perturbation q;
     q.shape = QuadricShape::Torus;
     q.center = {1.0 / 3.0, 0.5, -0.25};
     q.radii = {0.1, 0.03, 0.0};
     q.strength = -2.75;
+    Placement moved;
+    moved.position = {1.5, 0.0, -2.25};
+    moved.yawDegrees = 33.0;
+    moved.scale = 1.25;
     return {s, PerturbRecord{"dancer", q}, UndoRecord{}, RedoRecord{}, DiscardRecord{"metamorphosis"},
-            MorphWeightsRecord{{0.2, 0.3, 0.5}, {1.1, 0.9, 1.0}}};
+            MorphWeightsRecord{{0.2, 0.3, 0.5}, {1.1, 0.9, 1.0}}, MoveRecord{"dryad", moved}};
 }
 
 std::string slurp(const std::string& path) {

@@ -143,6 +143,59 @@ TEST_F(SessionSculptingTest, EditsOnTheMorphResultPersistWhenTheWeightsChangeAnd
     EXPECT_EQ(differences(*r.volume, *blend), 0);
 }
 
+TEST_F(SessionSculptingTest, AMirrorPlaneAppliesEachStrokeOnBothSides) {
+    GardenSession s(loadGarden(writeGarden()), smallSettings());
+    const int c = s.findSculpture("c");  // a ball about the model's x = 0 plane, on a lattice symmetric about it
+    s.setMirror(c, MirrorPlane{{0.0, 0.0, 0.0}, {2.0, 0.0, 0.0}});  // normalized on the way in
+    ASSERT_EQ(s.applyStroke(c, StrokeTool::Carve, {{2.45, 0.9, 1.3}, {2.5, 0.6, 1.4}}, 0.1), "");
+    ASSERT_EQ(s.applyPerturbation(c, QuadricShape::Ellipsoid, {2.5, 0.3, 1.0}, {0.1, 0.08, 0.1}, 2.5), "");
+    const voxel::Volume& v = *s.sculptures()[static_cast<std::size_t>(c)].volume;
+    const voxel::IndexBox& b = v.frame.indexBox;
+    ASSERT_EQ(b.lo[0] + b.hi[0], 2 * v.frame.indexOf(0, 0.0));
+    double worst = 0.0;
+    int changed = 0;
+    const auto& base = s.sculptures()[static_cast<std::size_t>(c)].edits->base();
+    for (int k = b.lo[2]; k <= b.hi[2]; ++k)
+        for (int j = b.lo[1]; j <= b.hi[1]; ++j)
+            for (int i = b.lo[0]; i <= b.hi[0]; ++i) {
+                worst = std::max(worst, static_cast<double>(std::fabs(v.value(i, j, k) - v.value(b.lo[0] + b.hi[0] - i, j, k))));
+                changed += v.value(i, j, k) != base.value(i, j, k);
+            }
+    EXPECT_LT(worst, 1e-3);  // symmetric up to the rounding of mirrored positions
+    EXPECT_GT(changed, 200);
+    EXPECT_EQ(s.editCount(c), 2u);  // each one edit, undone as one
+    ASSERT_TRUE(s.undo());
+    ASSERT_TRUE(s.undo());
+    EXPECT_EQ(differences(v, base), 0);
+}
+
+TEST_F(SessionSculptingTest, MovesAreUndoneAndRedoneAndTheirScaleIsChecked) {
+    GardenSession s(loadGarden(writeGarden()), smallSettings());
+    const int a = s.findSculpture("a");
+    const Placement before = s.sculptures()[static_cast<std::size_t>(a)].placement;
+    Placement p = before;
+    p.position = {0.5, 0.0, -3.0};
+    p.yawDegrees = 45.0;
+    p.scale = 2.0;
+    ASSERT_EQ(s.moveSculpture(a, p), "");
+    const Sculpture& sa = s.sculptures()[static_cast<std::size_t>(a)];
+    EXPECT_EQ(sa.scale, 2.0);
+    const glm::vec3 centre = sa.worldCentre();
+    EXPECT_NEAR(centre.y, 1.0f, 1e-4f);  // the ball's model centre (0, 0.5, 0) doubled
+    ASSERT_TRUE(s.undo());
+    EXPECT_EQ(sa.placement.position, before.position);
+    EXPECT_EQ(sa.scale, before.scale);
+    ASSERT_TRUE(s.redo());
+    EXPECT_EQ(sa.placement.yawDegrees, 45.0);
+    Placement bad = p;
+    bad.scale = -1.0;
+    EXPECT_NE(s.moveSculpture(a, bad), "");
+    bad.scale = 1.0;
+    bad.position[1] = std::numeric_limits<double>::infinity();
+    EXPECT_NE(s.moveSculpture(a, bad), "");
+    EXPECT_EQ(sa.placement.scale, 2.0);
+}
+
 TEST_F(SessionSculptingTest, BadInputIsRefusedAndChangesNothing) {
     GardenSession s(loadGarden(writeGarden()), smallSettings());
     const int a = s.findSculpture("a");
