@@ -6,7 +6,6 @@
 #include <atomic>
 #include <chrono>
 
-#include "frep/bounds.h"
 #include "voxel/box_walker.h"
 #include "voxel/memory_guard.h"
 #include "voxel/volume_vdb.h"
@@ -86,39 +85,21 @@ std::unique_ptr<FloatLeaf> makeLeaf(const LeafSamples& s, float background, floa
 
 }  // namespace
 
-std::string resolveModelBox(const frep::Model& model, const VolumeRequest& request, frep::Box3& box, bool& estimated) {
-    estimated = false;
-    if (request.box) {
-        box = *request.box;
-        return "";
-    }
-    if (!model.tape())
-        return "the model box cannot be estimated because the program runs on the scalar interpreter (" +
-               model.fallbackReason() + "); give the box explicitly";
-    frep::BoundsEstimate est = frep::estimateBounds(*model.tape());
-    if (est.empty) return "the solid is empty: no point of the search cube is inside it";
-    if (est.unbounded && est.budgetSpent)
-        return "the model box cannot be estimated: interval bounds do not separate the solid from far space "
-               "within the estimate's budget (an unbounded solid, or bounds too loose far away, as with twists "
-               "over huge boxes); give the model box explicitly";
-    if (est.unbounded)
-        return "the solid is unbounded (it reaches the search cube's faces); give the model box explicitly";
-    box = est.box;
-    estimated = true;
-    return "";
-}
-
 VoxelizeResult voxelize(const frep::Model& model, const VolumeRequest& request, const SampleOptions& options) {
     VoxelizeResult result;
     auto start = Clock::now();
-    frep::Box3 box;
-    bool estimated = false;
-    if (std::string why = resolveModelBox(model, request, box, estimated); !why.empty()) {
+    // A bad request is refused before a model box is searched for (which may
+    // take two coarse samplings).
+    if (std::string why = checkResolutionAndBand(request.resolution, request.band); !why.empty()) {
+        result.error = why;
+        return result;
+    }
+    if (std::string why = resolveModelBox(model, request.box, result.modelBox); !why.empty()) {
         result.error = why;
         return result;
     }
     VolumeFrame frame;
-    if (std::string why = makeFrame(box, request.resolution, request.band, frame); !why.empty()) {
+    if (std::string why = makeFrame(result.modelBox.box, request.resolution, request.band, frame); !why.empty()) {
         result.error = why;
         return result;
     }
@@ -159,7 +140,7 @@ VoxelizeResult voxelize(const frep::Model& model, const VolumeRequest& request, 
     Volume volume;
     volume.frame = frame;
     volume.normalization = scale;
-    volume.boxEstimated = estimated;
+    volume.boxOrigin = result.modelBox.origin;
     volume.source = request.source;
     openvdb::FloatGrid::Ptr grid = openvdb::FloatGrid::create(-band);
     grid->setTransform(frameTransform(frame));

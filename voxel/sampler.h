@@ -12,6 +12,7 @@
 
 #include "frep/domain_error.h"
 #include "frep/model.h"
+#include "voxel/model_box.h"
 #include "voxel/normalization.h"
 #include "voxel/volume.h"
 
@@ -39,7 +40,7 @@ struct SampleStats {
 };
 
 struct VolumeRequest {
-    std::optional<frep::Box3> box;  // none: estimate by interval subdivision
+    std::optional<frep::Box3> box;  // none: found as resolveModelBox() says (model_box.h)
     int resolution = 256;
     float band = 3.0f;
     VolumeSource source;            // recorded in the volume's metadata
@@ -48,14 +49,10 @@ struct VolumeRequest {
 struct VoxelizeResult {
     std::optional<Volume> volume;
     std::string error;              // why there is no volume
+    ModelBox modelBox;              // the box used and how it was found
     Normalization normalization;
     SampleStats stats;
 };
-
-// The model box a request will use: the given one, or the interval estimate
-// (which needs a tape). "" on success, else why there is none.
-std::string resolveModelBox(const frep::Model& model, const VolumeRequest& request, frep::Box3& box,
-                            bool& estimated);
 
 VoxelizeResult voxelize(const frep::Model& model, const VolumeRequest& request, const SampleOptions& options = {});
 

@@ -47,7 +47,8 @@ void addMetadata(openvdb::GridBase& grid, const Volume& v) {
     grid.insertMeta(meta::kResolution, openvdb::Int32Metadata(f.resolution));
     grid.insertMeta(meta::kModelBoxMin, openvdb::Vec3DMetadata(openvdb::Vec3d(f.modelBox.lo[0], f.modelBox.lo[1], f.modelBox.lo[2])));
     grid.insertMeta(meta::kModelBoxMax, openvdb::Vec3DMetadata(openvdb::Vec3d(f.modelBox.hi[0], f.modelBox.hi[1], f.modelBox.hi[2])));
-    grid.insertMeta(meta::kBoxEstimated, openvdb::BoolMetadata(v.boxEstimated));
+    grid.insertMeta(meta::kBoxEstimated, openvdb::BoolMetadata(v.boxOrigin != BoxOrigin::Given));
+    grid.insertMeta(meta::kBoxOrigin, openvdb::StringMetadata(boxOriginName(v.boxOrigin)));
     grid.insertMeta(meta::kIndexMin, openvdb::Vec3IMetadata(openvdb::Vec3i(f.indexBox.lo[0], f.indexBox.lo[1], f.indexBox.lo[2])));
     grid.insertMeta(meta::kIndexMax, openvdb::Vec3IMetadata(openvdb::Vec3i(f.indexBox.hi[0], f.indexBox.hi[1], f.indexBox.hi[2])));
 }
@@ -153,6 +154,7 @@ std::string readVolume(const std::string& path, Volume& volume, const std::strin
         Volume v;
         VolumeFrame& f = v.frame;
         std::string kind, params;
+        bool boxEstimated = false;
         openvdb::Vec3d lo, hi;
         openvdb::Vec3i ilo, ihi;
         bool ok = readMeta<std::string, openvdb::StringMetadata>(*grid, meta::kKind, kind) &&
@@ -164,12 +166,19 @@ std::string readVolume(const std::string& path, Volume& volume, const std::strin
                   readMeta<int, openvdb::Int32Metadata>(*grid, meta::kResolution, f.resolution) &&
                   readMeta<openvdb::Vec3d, openvdb::Vec3DMetadata>(*grid, meta::kModelBoxMin, lo) &&
                   readMeta<openvdb::Vec3d, openvdb::Vec3DMetadata>(*grid, meta::kModelBoxMax, hi) &&
-                  readMeta<bool, openvdb::BoolMetadata>(*grid, meta::kBoxEstimated, v.boxEstimated) &&
+                  readMeta<bool, openvdb::BoolMetadata>(*grid, meta::kBoxEstimated, boxEstimated) &&
                   readMeta<openvdb::Vec3i, openvdb::Vec3IMetadata>(*grid, meta::kIndexMin, ilo) &&
                   readMeta<openvdb::Vec3i, openvdb::Vec3IMetadata>(*grid, meta::kIndexMax, ihi);
         if (!ok) return path + ": grid '" + base->getName() + "' lacks some Hypergarden metadata";
         v.kind = kind == "dense-source" ? VolumeKind::DenseSource : VolumeKind::NarrowBand;
         v.source.parameters = parseList(params);
+        // Grids written before the sampled fallback have no origin: their
+        // found boxes were all interval estimates.
+        v.boxOrigin = boxEstimated ? BoxOrigin::IntervalEstimate : BoxOrigin::Given;
+        std::string origin;
+        if (readMeta<std::string, openvdb::StringMetadata>(*grid, meta::kBoxOrigin, origin))
+            for (BoxOrigin o : {BoxOrigin::Given, BoxOrigin::IntervalEstimate, BoxOrigin::Sampled})
+                if (origin == boxOriginName(o)) v.boxOrigin = o;
         for (int a = 0; a < 3; ++a) {
             f.modelBox.lo[a] = lo[a];
             f.modelBox.hi[a] = hi[a];

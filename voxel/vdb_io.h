@@ -25,7 +25,8 @@ constexpr const char* kSign = "hypergarden.sign";                // human-readab
 constexpr const char* kResolution = "hypergarden.resolution";
 constexpr const char* kModelBoxMin = "hypergarden.model_box_min";
 constexpr const char* kModelBoxMax = "hypergarden.model_box_max";
-constexpr const char* kBoxEstimated = "hypergarden.box_estimated";
+constexpr const char* kBoxEstimated = "hypergarden.box_estimated";  // bool: the box was not given
+constexpr const char* kBoxOrigin = "hypergarden.box_origin";        // boxOriginName()
 constexpr const char* kIndexMin = "hypergarden.index_min";
 constexpr const char* kIndexMax = "hypergarden.index_max";
 }  // namespace meta

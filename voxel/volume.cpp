@@ -17,6 +17,15 @@ openvdb::math::Transform::Ptr frameTransform(const VolumeFrame& frame) {
     return xform;
 }
 
+const char* boxOriginName(BoxOrigin origin) {
+    switch (origin) {
+        case BoxOrigin::Given: return "given";
+        case BoxOrigin::IntervalEstimate: return "interval estimate";
+        case BoxOrigin::Sampled: return "sampled";
+    }
+    return "given";
+}
+
 Volume::Volume() : grid_(std::make_unique<VolumeGrid>()) {
     ensureOpenVdbInitialized();
     grid_->grid = openvdb::FloatGrid::create(-frame.band);
@@ -30,7 +39,7 @@ Volume Volume::clone() const {
     Volume c;
     c.frame = frame;
     c.normalization = normalization;
-    c.boxEstimated = boxEstimated;
+    c.boxOrigin = boxOrigin;
     c.kind = kind;
     c.source = source;
     c.grid_->grid = grid_->grid->deepCopy();

@@ -27,6 +27,16 @@ struct VolumeSource {
 
 struct VolumeGrid;  // defined in voxel/volume_vdb.h
 
+// How a volume's model box was found (voxel/model_box.h).
+enum class BoxOrigin {
+    Given,             // by the caller (--box, the garden file)
+    IntervalEstimate,  // by interval subdivision (frep::estimateBounds)
+    Sampled,           // by sampling the default box when the estimate failed
+};
+
+// "given", "interval estimate", "sampled": the .vdb metadata's words.
+const char* boxOriginName(BoxOrigin origin);
+
 enum class VolumeKind {
     NarrowBand,   // clamped to +-band, tiles beyond it (what the garden draws)
     DenseSource,  // every voxel active, unclamped (a morph source cache)
@@ -45,7 +55,7 @@ public:
     VolumeFrame frame;
     // Stored value = f * normalization (then clamped): voxels per unit of f.
     double normalization = 1.0;
-    bool boxEstimated = false;  // the model box came from interval subdivision
+    BoxOrigin boxOrigin = BoxOrigin::Given;
     VolumeKind kind = VolumeKind::NarrowBand;
     VolumeSource source;
 

@@ -9,7 +9,7 @@ int VolumeFrame::indexOf(int axis, double model) const {
     return static_cast<int>(std::lround((model - modelBox.lo[axis]) / voxelSize));
 }
 
-std::string makeFrame(const frep::Box3& box, int resolution, float band, VolumeFrame& frame) {
+std::string checkResolutionAndBand(int resolution, float band) {
     std::ostringstream why;
     if (resolution < kMinResolution || resolution > kMaxResolution) {
         why << "resolution " << resolution << " is out of range: give " << kMinResolution << " to "
@@ -20,6 +20,12 @@ std::string makeFrame(const frep::Box3& box, int resolution, float band, VolumeF
         why << "band " << band << " is out of range: give " << kMinBand << " to " << kMaxBand << " voxels";
         return why.str();
     }
+    return "";
+}
+
+std::string makeFrame(const frep::Box3& box, int resolution, float band, VolumeFrame& frame) {
+    if (std::string why = checkResolutionAndBand(resolution, band); !why.empty()) return why;
+    std::ostringstream why;
     double longest = 0.0;
     for (int a = 0; a < 3; ++a) {
         double e = box.hi[a] - box.lo[a];

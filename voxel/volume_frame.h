@@ -40,6 +40,10 @@ constexpr int kMaxResolution = 16384;
 constexpr float kMinBand = 1.0f;
 constexpr float kMaxBand = 64.0f;
 
+// "" when a frame may have `resolution` and `band`, else what is wrong:
+// checked before a model box is searched for.
+std::string checkResolutionAndBand(int resolution, float band);
+
 // Builds the frame for `box` at `resolution` voxels along its longest side.
 // Returns "" on success, else what is wrong (empty or inverted box, bad
 // resolution or band).

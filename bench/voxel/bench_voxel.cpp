@@ -165,17 +165,16 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "%s...\n", s.name.c_str());
         // The model box is estimated once, timed on its own: both samplers
         // then work on the same given box.
-        frep::Box3 box;
-        bool estimated = false;
+        voxel::ModelBox box;
         std::string why;
-        row.boxSeconds = bestOf(1, [&] { why = voxel::resolveModelBox(*s.model, req, box, estimated); });
+        row.boxSeconds = bestOf(1, [&] { why = voxel::resolveModelBox(*s.model, req.box, box); });
         if (!why.empty()) {
             row.note = why;
             rows.push_back(row);
             continue;
         }
-        if (!estimated) row.boxSeconds = 0;
-        req.box = box;
+        if (box.origin == voxel::BoxOrigin::Given) row.boxSeconds = 0;
+        req.box = box.box;
         for (int r = 0; r < 3; ++r) {
             req.resolution = resolutions[r];
             voxel::VoxelizeResult result;

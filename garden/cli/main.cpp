@@ -49,7 +49,7 @@ int main(int argc, char** argv) {
     vox->add_option("--a", voxA, "Values of a[1], a[2], ... separated by commas");
     vox->add_option("--res", voxOpts.resolution, "Voxels along the model box's longest side")->required();
     vox->add_option("--band", voxOpts.band, "Half-width of the narrow band in voxels (default 3)");
-    vox->add_option("--box", voxBox, "Model box x0,y0,z0,x1,y1,z1 (default: estimated by interval subdivision)");
+    vox->add_option("--box", voxBox, "Model box x0,y0,z0,x1,y1,z1 (default: estimated, else found by sampling [-10, 10]^3)");
     vox->add_flag("--dense", voxOpts.dense, "Write the unclamped dense source cache (every voxel) instead");
     vox->add_option("-o,--output", voxOpts.output, "Output .vdb file")->required();
     vox->add_flag("--levelset", voxOpts.levelset, "Write an OpenVDB level set (negative inside, model units)");
@@ -64,7 +64,7 @@ int main(int argc, char** argv) {
     meshCmd->add_option("--body", meshOpts.model.body, "Body to mesh (default: my_model, else the first)");
     meshCmd->add_option("--a", meshA, "Values of a[1], a[2], ... separated by commas");
     meshCmd->add_option("--res", meshOpts.resolution, "Voxels along the model box's longest side (for .hf)");
-    meshCmd->add_option("--box", meshBox, "Model box x0,y0,z0,x1,y1,z1 (default: estimated)");
+    meshCmd->add_option("--box", meshBox, "Model box x0,y0,z0,x1,y1,z1 (default: as for voxelize)");
     meshCmd->add_option("-o,--output", meshOpts.output, "Output .stl file")->required();
     meshCmd->add_flag("--ascii", meshOpts.ascii, "Write ASCII STL instead of binary");
     meshCmd->add_option("--mm-per-unit", meshOpts.mmPerUnit, "Millimetres per model unit (default 1)");

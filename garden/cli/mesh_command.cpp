@@ -53,6 +53,7 @@ int runMesh(const MeshOptions& o) {
             return 1;
         }
         volume = std::move(*r.volume);
+        std::printf("model box: %s\n", voxel::describeModelBox(r.modelBox).c_str());
         std::printf("sampled %s at %d voxels along the longest side in %.3f s\n", o.model.file.c_str(),
                     volume.frame.resolution, r.stats.seconds);
     }

@@ -21,11 +21,6 @@ namespace hg::garden::cli {
 
 namespace {
 
-void printBox(const char* label, const frep::Box3& b, bool estimated) {
-    std::printf("%s: [%.4g, %.4g] x [%.4g, %.4g] x [%.4g, %.4g] (%s)\n", label, b.lo[0], b.hi[0], b.lo[1], b.hi[1],
-                b.lo[2], b.hi[2], estimated ? "estimated by interval subdivision" : "given");
-}
-
 void printErrors(const std::string& file, const frep::ErrorReport& e) {
     if (!e.count) return;
     std::fprintf(stderr, "%s:%d:%d: warning: %llu sample%s failed (%s); treated as outside\n", file.c_str(),
@@ -49,14 +44,15 @@ voxel::VolumeRequest makeRequest(const VoxelizeOptions& o, const frep::Model& mo
 }
 
 int runDense(const VoxelizeOptions& o, const frep::Model& model, const voxel::VolumeRequest& request) {
-    frep::Box3 box;
-    bool estimated = false;
-    if (std::string why = voxel::resolveModelBox(model, request, box, estimated); !why.empty())
+    if (std::string why = voxel::checkResolutionAndBand(request.resolution, request.band); !why.empty())
+        return fail(o.model.file, why);
+    voxel::ModelBox box;
+    if (std::string why = voxel::resolveModelBox(model, request.box, box); !why.empty())
         return fail(o.model.file, why);
     voxel::VolumeFrame frame;
-    if (std::string why = voxel::makeFrame(box, request.resolution, request.band, frame); !why.empty())
+    if (std::string why = voxel::makeFrame(box.box, request.resolution, request.band, frame); !why.empty())
         return fail(o.model.file, why);
-    printBox("model box", box, estimated);
+    std::printf("model box: %s\n", voxel::describeModelBox(box).c_str());
     voxel::Normalization norm = voxel::estimateNormalization(model, frame);
     voxel::DenseResult dense = voxel::sampleDense(model, frame, norm.scale, frame.indexBox,
                                                   static_cast<std::uint64_t>(o.memoryLimitMiB * 1048576.0));
@@ -66,7 +62,7 @@ int runDense(const VoxelizeOptions& o, const frep::Model& model, const voxel::Vo
                 frame.indexBox.extent(1), frame.indexBox.extent(2), voxel::formatBytes(dense.bytes).c_str(),
                 dense.seconds);
     voxel::Volume volume = voxel::volumeFromDense(std::move(dense.field), frame, norm.scale, request.source);
-    volume.boxEstimated = estimated;
+    volume.boxOrigin = box.origin;
     if (std::string why = voxel::writeVolume(volume, o.output); !why.empty()) return fail(o.model.file, why);
     std::printf("wrote %s (unclamped, every voxel active)\n", o.output.c_str());
     return 0;
@@ -107,7 +103,7 @@ int runVoxelize(const VoxelizeOptions& o) {
     const voxel::VolumeFrame& f = volume.frame;
     const voxel::SampleStats& s = result.stats;
     printErrors(o.model.file, s.errors);
-    printBox("model box", f.modelBox, volume.boxEstimated);
+    std::printf("model box: %s\n", voxel::describeModelBox(result.modelBox).c_str());
     std::printf("grid: %d voxels along the longest side, voxel %.4g, index box %d x %d x %d, band %g voxels\n",
                 f.resolution, f.voxelSize, f.indexBox.extent(0), f.indexBox.extent(1), f.indexBox.extent(2),
                 static_cast<double>(f.band));

@@ -28,11 +28,10 @@ std::string morphModelBox(const GardenLoad& load, frep::Box3& box, const Resolve
             boxes[i] = *resolved[m.sourceIndex[i]];
             continue;
         }
-        voxel::VolumeRequest request;
-        request.box = spec.box;
-        bool estimated = false;
-        std::string why = voxel::resolveModelBox(*load.sculptures[m.sourceIndex[i]].model, request, boxes[i], estimated);
+        voxel::ModelBox found;
+        std::string why = voxel::resolveModelBox(*load.sculptures[m.sourceIndex[i]].model, spec.box, found);
         if (!why.empty()) return "morph source '" + spec.name + "': " + why;
+        boxes[i] = found.box;
     }
     box = unionBox(boxes);
     return "";

@@ -25,9 +25,9 @@ MorphTriangle morphTriangle(const Garden& garden);
 using ResolvedBoxes = std::vector<std::optional<frep::Box3>>;
 
 // The shared model box: $.morph.result.box, else the union of the sources'
-// boxes (given, resolved, or estimated by interval subdivision). "" on
+// boxes (given, resolved, or found by voxel::resolveModelBox). "" on
 // success, else why not (a source is missing, or its box cannot be
-// estimated).
+// found).
 std::string morphModelBox(const GardenLoad& load, frep::Box3& box, const ResolvedBoxes& resolved = {});
 
 // The three caches at $.morph.result.resolution and band.

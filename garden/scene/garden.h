@@ -39,7 +39,7 @@ struct SculptureSpec {
     std::string fileAsWritten;        // as in the garden file (for messages and saving)
     std::string body;                 // "": my_model, else the first body
     std::vector<double> a;            // a[1], a[2], ... (missing items are 0)
-    std::optional<frep::Box3> box;    // model box; none: estimated by interval subdivision
+    std::optional<frep::Box3> box;    // model box; none: voxel::resolveModelBox
     int resolution = 128;             // voxels along the model box's longest side
     float band = 3.0f;                // narrow band half-width, voxels
     Placement placement;

@@ -86,5 +86,48 @@ TEST_F(MeshCli, BadInputsSayWhatIsWrongAndWriteNothing) {
     EXPECT_EQ(entries(), 2u) << "only the inputs remain";
 }
 
+TEST_F(MeshCli, BoundedFilesMeshWithoutABox) {
+    // Sculptures written outside the project (tests/data/bounded) that the
+    // interval estimate cannot bound: the box is found by sampling, said so,
+    // and the mesh is the same solid as over a given box around it.
+    for (const char* name : {"arc_torus", "figure_on_block", "totem"}) {
+        SCOPED_TRACE(name);
+        const std::string hf = "'" + std::string(HG_TEST_DATA_DIR) + "/bounded/" + name + ".hf'";
+        CommandRun r = runHypergarden("mesh " + hf + " --res 64 -o " + path("found.stl"));
+        ASSERT_EQ(r.status, 0) << r.output;
+        EXPECT_NE(r.output.find("model box: ["), std::string::npos) << r.output;
+        EXPECT_NE(r.output.find("(sampled: the interval estimate failed"), std::string::npos) << r.output;
+        EXPECT_NE(r.output.find("the default box [-10, 10]^3"), std::string::npos) << r.output;
+        EXPECT_NE(r.output.find("verdict: watertight and manifold"), std::string::npos) << r.output;
+        StlReadResult found = readStl((dir / "found.stl").string());
+        ASSERT_EQ(found.error, "");
+        MeshReport rep = validateMesh(weldByPosition(found.mesh));
+        EXPECT_TRUE(rep.ok()) << describe(rep);
+
+        r = runHypergarden("mesh " + hf + " --res 64 --box -2.5,-2.5,-2.5,2.5,2.5,2.5 -o " + path("given.stl"));
+        ASSERT_EQ(r.status, 0) << r.output;
+        EXPECT_NE(r.output.find("(given)"), std::string::npos) << r.output;
+        StlReadResult given = readStl((dir / "given.stl").string());
+        ASSERT_EQ(given.error, "");
+        MeshReport ref = validateMesh(weldByPosition(given.mesh));
+        // The given box's voxels are about twice as large: within a few of
+        // them (0.08 units) of each other, and of the same volume.
+        EXPECT_NEAR(rep.volume, ref.volume, 0.03 * ref.volume);
+        for (int a = 0; a < 3; ++a) {
+            EXPECT_NEAR(rep.boxMin[a], ref.boxMin[a], 0.1) << "axis " << a;
+            EXPECT_NEAR(rep.boxMax[a], ref.boxMax[a], 0.1) << "axis " << a;
+        }
+    }
+
+    // A truly unbounded solid (an infinite cylinder along y) is refused with
+    // the faces of the default box it reaches, and nothing is written.
+    std::ofstream(dir / "pillar.hf") << "pillar(x[3], a[1]) { pillar = 0.3 - x[1]^2 - x[3]^2; }\n";
+    CommandRun r = runHypergarden("mesh " + path("pillar.hf") + " --res 32 -o " + path("o.stl"));
+    EXPECT_NE(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("the solid is unbounded"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("reaching y = -10, y = 10;"), std::string::npos) << r.output;
+    EXPECT_FALSE(exists("o.stl"));
+}
+
 }  // namespace
 }  // namespace hg::poly

@@ -303,8 +303,11 @@ TEST(Sampler, BadRequestsSayWhatIsWrong) {
     req.band = 3.0f;
     frep::Model plane = test::modelFromSource("p(x[3], a[1]) { p = x[2]; }");
     EXPECT_NE(voxelize(plane, req).error.find("unbounded"), std::string::npos);
+    // A bad resolution is refused before any model box is searched for.
     frep::Model wavy = test::modelFromSource(kInterpreterOnly);
-    EXPECT_NE(voxelize(wavy, req).error.find("scalar interpreter"), std::string::npos);
+    req.resolution = 2;
+    EXPECT_NE(voxelize(wavy, req).error.find("resolution 2 is out of range"), std::string::npos);
+    req.resolution = 32;
     frep::Model empty = test::modelFromSource("e(x[3], a[1]) { e = -1; }");
     EXPECT_NE(voxelize(empty, req).error.find("empty"), std::string::npos);
 }

@@ -63,7 +63,7 @@ TEST(VdbIo, RoundTripKeepsValuesFrameAndMetadata) {
         EXPECT_EQ(back.frame.modelBox.lo[a], v.frame.modelBox.lo[a]);
         EXPECT_EQ(back.frame.modelBox.hi[a], v.frame.modelBox.hi[a]);
     }
-    EXPECT_EQ(back.boxEstimated, v.boxEstimated);
+    EXPECT_EQ(back.boxOrigin, v.boxOrigin);
     EXPECT_EQ(back.kind, VolumeKind::NarrowBand);
     EXPECT_EQ(back.activeVoxelCount(), v.activeVoxelCount());
     const IndexBox& ib = v.frame.indexBox;
@@ -77,6 +77,15 @@ TEST(VdbIo, RoundTripKeepsValuesFrameAndMetadata) {
     openvdb::Vec3d lo = vdb(back).indexToWorld(openvdb::Coord(0, 0, 0));
     EXPECT_DOUBLE_EQ(lo[0], v.frame.modelBox.lo[0]);
     EXPECT_DOUBLE_EQ(lo[1], v.frame.modelBox.lo[1]);
+
+    // How the model box was found survives too, whichever way it was.
+    EXPECT_EQ(v.boxOrigin, BoxOrigin::IntervalEstimate);
+    for (BoxOrigin origin : {BoxOrigin::Given, BoxOrigin::Sampled}) {
+        v.boxOrigin = origin;
+        ASSERT_EQ(writeVolume(v, dir.file("origin.vdb")), "");
+        ASSERT_EQ(readVolume(dir.file("origin.vdb"), back), "");
+        EXPECT_EQ(back.boxOrigin, origin) << boxOriginName(origin);
+    }
 }
 
 TEST(VdbIo, LevelSetExportFollowsOpenVdbsConvention) {

@@ -78,5 +78,52 @@ TEST_F(VoxelizeCli, BadInputsSayWhatIsWrongAndWriteNothing) {
     EXPECT_FALSE(exists("o.vdb"));
 }
 
+TEST_F(VoxelizeCli, BoundedFilesVoxelizeWithoutABox) {
+    // Sculptures written outside the project (tests/data/bounded) that the
+    // interval estimate cannot bound: sampled for their box, which the
+    // output and the grid's metadata say.
+    for (const char* name : {"arc_torus", "figure_on_block", "totem"}) {
+        SCOPED_TRACE(name);
+        const std::string hf = "'" + std::string(HG_TEST_DATA_DIR) + "/bounded/" + name + ".hf'";
+        CommandRun r = run("voxelize " + hf + " --res 48 -o " + path("b.vdb"));
+        ASSERT_EQ(r.status, 0) << r.output;
+        EXPECT_NE(r.output.find("model box: ["), std::string::npos) << r.output;
+        EXPECT_NE(r.output.find("(sampled: the interval estimate failed: interval bounds did not separate"),
+                  std::string::npos)
+            << r.output;
+        EXPECT_NE(r.output.find("the default box [-10, 10]^3 was sampled"), std::string::npos) << r.output;
+        Volume v;
+        ASSERT_EQ(readVolume((dir / "b.vdb").string(), v), "");
+        EXPECT_EQ(v.boxOrigin, BoxOrigin::Sampled);
+        for (int a = 0; a < 3; ++a) {
+            EXPECT_GT(v.frame.modelBox.lo[a], -2.5) << "axis " << a;
+            EXPECT_LT(v.frame.modelBox.hi[a], 2.5) << "axis " << a;
+        }
+        EXPECT_GT(v.activeVoxelCount(), 1000u);
+
+        // --dense finds the same box.
+        r = run("voxelize " + hf + " --res 48 --dense -o " + path("d.vdb"));
+        ASSERT_EQ(r.status, 0) << r.output;
+        EXPECT_NE(r.output.find("(sampled: the interval estimate failed"), std::string::npos) << r.output;
+        Volume d;
+        ASSERT_EQ(readVolume((dir / "d.vdb").string(), d), "");
+        EXPECT_EQ(d.boxOrigin, BoxOrigin::Sampled);
+        for (int a = 0; a < 3; ++a) {
+            EXPECT_EQ(d.frame.modelBox.lo[a], v.frame.modelBox.lo[a]);
+            EXPECT_EQ(d.frame.modelBox.hi[a], v.frame.modelBox.hi[a]);
+        }
+    }
+}
+
+TEST_F(VoxelizeCli, UnboundedSolidsNameTheFacesTheyReach) {
+    // The half-space y <= 0.3: every face of the default box but y = 10.
+    std::ofstream(dir / "ground.hf") << "ground(x[3], a[1]) { ground = 0.3 - x[2]; }\n";
+    CommandRun r = run("voxelize " + path("ground.hf") + " --res 32 -o " + path("o.vdb"));
+    EXPECT_NE(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("the solid is unbounded"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("reaching x = -10, x = 10, y = -10, z = -10, z = 10;"), std::string::npos) << r.output;
+    EXPECT_FALSE(exists("o.vdb"));
+}
+
 }  // namespace
 }  // namespace hg::voxel
