@@ -121,6 +121,15 @@ public:
     // false when there is nothing to undo or redo.
     bool undo();
     bool redo();
+    // Fires an impact tool along the world ray (origin, direction); sizes in
+    // metres, the compaction volume in cubic metres. The impacts that meet
+    // the sculpture are one edit.
+    std::string applyImpacts(int sculpture, const std::array<double, 3>& worldOrigin,
+                             const std::array<double, 3>& worldDirection, ImpactTool tool);
+    // Fires the last impact series made on `from` again at `to`, its rays
+    // placed the same way in `to`'s model box.
+    std::string reapplyImpacts(int from, int to);
+    std::string applyImpactsModel(int sculpture, const ImpactSeries& series);
     // Moves, turns or scales a sculpture (undoable, journalled): its grid
     // stays, in its model frame. "" or why not (a scale out of range, say).
     std::string moveSculpture(int sculpture, const Placement& placement);

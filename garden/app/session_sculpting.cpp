@@ -10,7 +10,9 @@
 #include "garden/morph/morph_blend.h"
 #include "garden/scene/to_glm.h"
 #include "garden/sculpt/sculpture_edits.h"
+#include "garden/sculpt/impacts.h"
 #include "garden/sculpt/stroke_segments.h"
+#include "garden/sculpt/surface_ray.h"
 #include "voxel/volume.h"
 
 namespace hg::garden {
@@ -92,6 +94,9 @@ std::string GardenSession::restore(const std::vector<JournalRecord>& records) {
         } else if (const auto* d = std::get_if<DiscardRecord>(&r)) {
             const int i = sculptureOf(d->sculpture);
             if (why.empty()) discardEdits(i);
+        } else if (const auto* im = std::get_if<ImpactRecord>(&r)) {
+            const int i = sculptureOf(im->sculpture);
+            if (why.empty()) why = applyImpactsModel(i, im->series);
         } else if (const auto* mv = std::get_if<MoveRecord>(&r)) {
             const int i = findSculpture(mv->sculpture);
             if (i < 0) why = "no sculpture named '" + mv->sculpture + "'";
@@ -238,6 +243,81 @@ std::string GardenSession::applyPerturbationModel(int sculpture, const Perturbat
     return "";
 }
 
+std::string GardenSession::applyImpacts(int sculpture, const std::array<double, 3>& worldOrigin,
+                                        const std::array<double, 3>& worldDirection, ImpactTool tool) {
+    if (stroking()) endStroke();
+    if (std::string why = checkEditable(sculpture); !why.empty()) return why;
+    if (!finite3(worldOrigin) || !finite3(worldDirection)) return "the impact ray is not finite";
+    const Sculpture& s = sculptures_[static_cast<std::size_t>(sculpture)];
+    // Into the model frame: lengths by the scale, volumes by its cube.
+    tool.size /= s.scale;
+    tool.volume /= s.scale * s.scale * s.scale;
+    if (tool.spread != ImpactSpread::Cone) tool.spreadSize /= s.scale;
+    SculptureEdits& edits = editsOf(sculpture);
+    if (std::string why = checkImpactTool(tool, edits.units().voxelSize); !why.empty()) return why;
+    const glm::dmat4 toModelM = glm::inverse(glm::dmat4(s.modelToWorld));
+    const glm::dvec3 o = glm::dvec3(toModelM * glm::dvec4(worldOrigin[0], worldOrigin[1], worldOrigin[2], 1.0));
+    glm::dvec3 d = glm::dvec3(toModelM * glm::dvec4(worldDirection[0], worldDirection[1], worldDirection[2], 0.0));
+    if (!(glm::length(d) > 0.0)) return "the impact ray has no direction";
+    d = glm::normalize(d);
+    ImpactSeries series;
+    series.volume = tool.volume;
+    const frep::Box3& box = s.volume->frame.modelBox;
+    for (const ImpactRay& ray : drawImpactRays({{o.x, o.y, o.z}, {d.x, d.y, d.z}}, tool)) {
+        const ImpactRay relative = raysInBox({ray}, box)[0];
+        series.rayOrigins.push_back(relative.origin);
+        series.rayDirections.push_back(relative.direction);
+        if (auto m = castImpact(*s.volume, ray, tool, edits.units())) series.impacts.push_back(*m);
+    }
+    if (series.impacts.empty()) return "no impact met the sculpture";
+    return applyImpactsModel(sculpture, series);
+}
+
+std::string GardenSession::applyImpactsModel(int sculpture, const ImpactSeries& series) {
+    if (stroking()) endStroke();
+    if (std::string why = checkEditable(sculpture); !why.empty()) return why;
+    if (series.impacts.empty()) return "the series has no impacts";
+    SculptureEdits& edits = editsOf(sculpture);
+    Edit e;
+    e.op = series;
+    auto& added = std::get<ImpactSeries>(e.op);
+    for (Impact& m : added.impacts) m.reach = impactReach(m, edits.units());
+    showChanged(sculpture, edits.append(std::move(e)));
+    undoOrder_.push_back({sculpture, std::nullopt});
+    redoOrder_.clear();
+    record(ImpactRecord{sculptures_[static_cast<std::size_t>(sculpture)].name, series});
+    return "";
+}
+
+std::string GardenSession::reapplyImpacts(int from, int to) {
+    if (from < 0 || from >= static_cast<int>(sculptures_.size()) || to < 0 || to >= static_cast<int>(sculptures_.size()))
+        return "no such sculpture";
+    const Sculpture& src = sculptures_[static_cast<std::size_t>(from)];
+    const ImpactSeries* last = nullptr;
+    if (src.edits)
+        for (const Edit& e : src.edits->list().edits())
+            if (const auto* m = std::get_if<ImpactSeries>(&e.op)) last = m;
+    if (!last) return "'" + src.name + "' has no impacts to fire again";
+    if (std::string why = checkEditable(to); !why.empty()) return why;
+    const Sculpture& dst = sculptures_[static_cast<std::size_t>(to)];
+    SculptureEdits& edits = editsOf(to);
+    ImpactTool tool;
+    tool.shape = last->impacts[0].shape;
+    // The same tool in the other sculpture's model units.
+    const double k = src.scale / dst.scale;
+    tool.size = last->impacts[0].size * k;
+    tool.volume = last->volume * k * k * k;
+    ImpactSeries series = *last;
+    series.impacts.clear();
+    series.volume = tool.volume;
+    std::vector<ImpactRay> relative;
+    for (std::size_t i = 0; i < last->rayOrigins.size(); ++i) relative.push_back({last->rayOrigins[i], last->rayDirections[i]});
+    for (const ImpactRay& ray : raysFromBox(relative, dst.volume->frame.modelBox))
+        if (auto m = castImpact(*dst.volume, ray, tool, edits.units())) series.impacts.push_back(*m);
+    if (series.impacts.empty()) return "no impact met '" + dst.name + "'";
+    return applyImpactsModel(to, series);
+}
+
 bool GardenSession::undo() { return stepHistory(undoOrder_, redoOrder_, true); }
 bool GardenSession::redo() { return stepHistory(redoOrder_, undoOrder_, false); }
 
@@ -315,33 +395,12 @@ std::optional<std::pair<int, glm::vec3>> GardenSession::toolHit(const Pose& aim)
         const glm::dmat4 toModelM = glm::inverse(glm::dmat4(s.modelToWorld));
         const glm::dvec3 o = glm::dvec3(toModelM * glm::dvec4(glm::dvec3(aim.position), 1.0));
         const glm::dvec3 d = glm::dvec3(toModelM * glm::dvec4(glm::dvec3(aim.forward()), 0.0));
-        const voxel::VolumeFrame& f = s.volume->frame;
-        // The ray's span inside the model box.
-        double t0 = 0.0, t1 = 1e300;
-        for (int a = 0; a < 3; ++a) {
-            const double lo = f.modelBox.lo[a], hi = f.modelBox.hi[a];
-            if (std::fabs(d[a]) < 1e-300) {
-                if (o[a] < lo || o[a] > hi) t1 = -1.0;
-                continue;
-            }
-            double ta = (lo - o[a]) / d[a], tb = (hi - o[a]) / d[a];
-            if (ta > tb) std::swap(ta, tb);
-            t0 = std::max(t0, ta);
-            t1 = std::min(t1, tb);
-        }
-        if (t1 < t0) continue;
-        const double step = 0.5 * f.voxelSize / glm::length(d);
-        for (double t = t0; t <= t1; t += step) {
-            const glm::dvec3 p = o + d * t;
-            if (s.volume->value(f.indexOf(0, p.x), f.indexOf(1, p.y), f.indexOf(2, p.z)) < 0.0f) continue;
-            // t is model-frame ray length per world-ray length: comparable
-            // across sculptures (d is the world direction taken into the model).
-            if (t < bestT) {
-                bestT = t;
-                best = std::make_pair(static_cast<int>(i), glm::vec3(s.modelToWorld * glm::vec4(glm::vec3(p), 1.0f)));
-            }
-            break;
-        }
+        // t is in world ray lengths (d is the world direction taken into the
+        // model): comparable across sculptures.
+        const auto t = marchToSurface(*s.volume, {o.x, o.y, o.z}, {d.x, d.y, d.z});
+        if (!t || *t >= bestT) continue;
+        bestT = *t;
+        best = std::make_pair(static_cast<int>(i), aim.position + aim.forward() * static_cast<float>(*t));
     }
     return best;
 }
@@ -377,6 +436,19 @@ void GardenSession::sculptWithHands(const Hands& hands) {
     if (!hit) return;
     toolArmed_ = false;
     const auto [sculpture, point] = *hit;
+    if (tool_.kind == ToolSettings::Kind::Impacts) {
+        ImpactTool t;
+        t.shape = tool_.impactShape;
+        t.size = tool_.impactSize;
+        t.volume = tool_.compactionCm3 * 1e-6;
+        t.spread = tool_.spread;
+        t.spreadSize = tool_.spread == ImpactSpread::Cone ? tool_.spreadSize * 3.14159265358979323846 / 180.0 : tool_.spreadSize;
+        t.count = tool_.impactCount;
+        t.seed = tool_.seed++;
+        const glm::vec3 dir = h.aim.forward();
+        applyImpacts(sculpture, toArray(h.aim.position), toArray(dir), t);
+        return;
+    }
     if (tool_.kind == ToolSettings::Kind::Perturb) {
         const double k = tool_.reverse ? -tool_.strength : tool_.strength;
         applyPerturbation(sculpture, tool_.shape, toArray(point), tool_.radii, k);

@@ -86,6 +86,19 @@ std::string runSculptCommand(const SculptCommand& command, GardenSession& sessio
         if (std::string why = find(c->sculpture, i); !why.empty()) return why;
         return session.applyPerturbation(i, c->shape, c->center, c->radii, c->strength);
     }
+    if (const auto* c = std::get_if<ImpactsCommand>(&command)) {
+        if (std::string why = find(c->sculpture, i); !why.empty()) return why;
+        ImpactTool tool = c->tool;
+        tool.volume *= 1e-6;  // cm^3 to m^3
+        if (tool.spread == ImpactSpread::Cone) tool.spreadSize *= 3.14159265358979323846 / 180.0;
+        return session.applyImpacts(i, c->origin, c->direction, tool);
+    }
+    if (const auto* c = std::get_if<ReapplyImpactsCommand>(&command)) {
+        int j = -1;
+        if (std::string why = find(c->from, i); !why.empty()) return why;
+        if (std::string why = find(c->to, j); !why.empty()) return why;
+        return session.reapplyImpacts(i, j);
+    }
     if (const auto* c = std::get_if<UndoCommand>(&command)) {
         for (int n = 0; n < c->times; ++n)
             if (!session.undo()) return "nothing to undo";

@@ -53,6 +53,41 @@ SculptCommand readSculptCommand(const std::string& key, const nlohmann::json& v,
         r.finish();
         return c;
     }
+    if (key == "impacts") {
+        ObjectReader r(v, path, {"sculpture", "origin", "direction", "shape", "size", "volume_cm3", "spread", "spread_size",
+                                 "count", "seed"});
+        ImpactsCommand c;
+        c.sculpture = readString(r.required("sculpture"), r.pathOf("sculpture"));
+        c.origin = readVec3(r.required("origin"), r.pathOf("origin"));
+        c.direction = readVec3(r.required("direction"), r.pathOf("direction"));
+        if (r.has("shape")) {
+            const std::string shape = readString(r.required("shape"), r.pathOf("shape"));
+            if (shape == "sphere") c.tool.shape = ImpactShape::Sphere;
+            else if (shape == "chisel") c.tool.shape = ImpactShape::Chisel;
+            else if (shape == "square") c.tool.shape = ImpactShape::Square;
+            else throw JsonError(r.pathOf("shape"), "expected sphere, chisel or square");
+        }
+        c.tool.size = readNumber(r.required("size"), r.pathOf("size"), 1e-6, 100.0);
+        c.tool.volume = readNumber(r.required("volume_cm3"), r.pathOf("volume_cm3"), 1e-9, 1e9);
+        if (r.has("spread")) {
+            const std::string spread = readString(r.required("spread"), r.pathOf("spread"));
+            if (spread == "uniform") c.tool.spread = ImpactSpread::Uniform;
+            else if (spread == "gaussian") c.tool.spread = ImpactSpread::Gaussian;
+            else if (spread == "cone") c.tool.spread = ImpactSpread::Cone;
+            else throw JsonError(r.pathOf("spread"), "expected uniform, gaussian or cone");
+        }
+        if (r.has("spread_size")) c.tool.spreadSize = readNumber(r.required("spread_size"), r.pathOf("spread_size"), 0.0, 100.0);
+        if (r.has("count")) c.tool.count = readInt(r.required("count"), r.pathOf("count"), 1, 100000);
+        if (r.has("seed")) c.tool.seed = static_cast<std::uint64_t>(readInt(r.required("seed"), r.pathOf("seed"), 0, 2000000000));
+        r.finish();
+        return c;
+    }
+    if (key == "reapply_impacts") {
+        ObjectReader r(v, path, {"from", "to"});
+        ReapplyImpactsCommand c{readString(r.required("from"), r.pathOf("from")), readString(r.required("to"), r.pathOf("to"))};
+        r.finish();
+        return c;
+    }
     if (key == "undo" || key == "redo") {
         const int times = readInt(v, path, 1, 1000000);
         if (key == "undo") return UndoCommand{times};

@@ -10,6 +10,7 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include "garden/sculpt/edit.h"
+#include "garden/sculpt/impacts.h"
 #include "garden/sculpt/tool_settings.h"
 
 namespace hg::garden {
@@ -31,15 +32,31 @@ struct PerturbCommand {
     double strength = 2.0;
 };
 
+// Impacts fired along a world ray (sizes in metres, the volume in cubic
+// centimetres, a cone's half-angle in degrees).
+struct ImpactsCommand {
+    std::string sculpture;
+    std::array<double, 3> origin{};
+    std::array<double, 3> direction{0, 0, -1};
+    ImpactTool tool;  // as read: metres, cm^3 (converted when run)
+};
+
+// The last impact series made on one sculpture fired again at another.
+struct ReapplyImpactsCommand {
+    std::string from, to;
+};
+
 struct UndoCommand { int times = 1; };
 struct RedoCommand { int times = 1; };
 
 // The tool the tool hand works from now on (hand-driven sculpting).
 struct ToolCommand { ToolSettings settings; };
 
-using SculptCommand = std::variant<StrokeCommand, PerturbCommand, UndoCommand, RedoCommand, ToolCommand>;
+using SculptCommand = std::variant<StrokeCommand, PerturbCommand, UndoCommand, RedoCommand, ToolCommand, ImpactsCommand,
+                                   ReapplyImpactsCommand>;
 
-// Reads the command under `key` (stroke, perturb, undo, redo, sculpt_tool);
+// Reads the command under `key` (stroke, perturb, impacts, reapply_impacts,
+// undo, redo, sculpt_tool);
 // throws JsonError with the JSON path of a bad value.
 SculptCommand readSculptCommand(const std::string& key, const nlohmann::json& v, const std::string& path);
 class GardenSession;

@@ -81,7 +81,34 @@ struct Perturbation {
 // The reflected quadric of a mirrored perturbation.
 Perturbation mirrored(const Perturbation& p);
 
-using EditOp = std::variant<Stroke, Perturbation>;
+enum class ImpactShape { Sphere, Chisel, Square };
+const char* impactShapeName(ImpactShape s);
+
+// One impact (seed 002): a small tool pushed into the surface along a ray,
+// as deep as removes the compaction volume; its field is the tool's solid,
+// subtracted like a carve (min(f, -G)). Resolved against the grid when it
+// was made, so a journal replays it exactly.
+struct Impact {
+    ImpactShape shape = ImpactShape::Sphere;
+    ModelPoint tip{};             // the tool's deepest point
+    ModelPoint direction{0, 0, -1};  // unit, into the material
+    ModelPoint across{1, 0, 0};   // unit, normal to direction: the chisel's width, the square's side
+    double size = 0.02;           // sphere radius, chisel edge length, square side (model units)
+    double depth = 0.0;           // how far below the surface the tip went (model units)
+    frep::Box3 reach;             // outside it G == -band exactly
+};
+
+// The impacts of one trigger pull: one edit, undone as one.
+struct ImpactSeries {
+    std::vector<Impact> impacts;
+    // The series as fired, to fire again at another sculpture: each ray's
+    // origin as fractions of the model box, its direction, and the tool's
+    // compaction volume (cubic model units).
+    std::vector<ModelPoint> rayOrigins, rayDirections;
+    double volume = 0.0;
+};
+
+using EditOp = std::variant<Stroke, Perturbation, ImpactSeries>;
 
 struct Edit {
     std::uint64_t id = 0;  // unique in the sculpture, in creation order

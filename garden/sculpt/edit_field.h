@@ -83,6 +83,49 @@ V applyStroke(const V& f, const V& x, const V& y, const V& z, const Stroke& s, c
     return out;
 }
 
+// An impact tool's field at (x, y, z), voxels, clamped to [-band, band]:
+// about the distance into the tool's solid (a ball; a V-shaped chisel, its
+// edge at the tip across `across`, opening back along the ray at 45
+// degrees; a square punch of side `size`, as deep as it is wide).
+template <class V>
+V impactField(const V& x, const V& y, const V& z, const Impact& m, const FieldUnits& u) {
+    using namespace editops;
+    const V dx = x - V(m.tip[0]), dy = y - V(m.tip[1]), dz = z - V(m.tip[2]);
+    const double inv = 1.0 / u.voxelSize;
+    if (m.shape == ImpactShape::Sphere) {
+        // The ball's centre is one radius back from the tip.
+        const double r = m.size;
+        const V cx = dx + V(r * m.direction[0]), cy = dy + V(r * m.direction[1]), cz = dz + V(r * m.direction[2]);
+        return clamp<V>((V(r) - vsqrt(cx * cx + cy * cy + cz * cz)) * V(inv), -u.band, u.band);
+    }
+    const ModelPoint& d = m.direction;
+    const ModelPoint& a = m.across;
+    const ModelPoint b{d[1] * a[2] - d[2] * a[1], d[2] * a[0] - d[0] * a[2], d[0] * a[1] - d[1] * a[0]};
+    const V back = -(dx * V(d[0]) + dy * V(d[1]) + dz * V(d[2]));  // >= 0 behind the tip
+    const V w = dx * V(a[0]) + dy * V(a[1]) + dz * V(a[2]);
+    const V l = dx * V(b[0]) + dy * V(b[1]) + dz * V(b[2]);
+    const double half = 0.5 * m.size;
+    V g;
+    if (m.shape == ImpactShape::Chisel) {
+        // Inside: back >= |l| (the V's faces at 45 degrees), |w| <= half
+        // (its edge's length), back <= size (its height).
+        const double s = 0.7071067811865476;
+        g = vmin(vmin((back - vabs(l)) * V(s), V(half) - vabs(w)), V(m.size) - back);
+    } else {
+        g = vmin(vmin(V(half) - vabs(w), V(half) - vabs(l)), vmin(back, V(m.size) - back));
+    }
+    return clamp<V>(g * V(inv), -u.band, u.band);
+}
+
+// The listed impacts of a series subtracted, in order.
+template <class V>
+V applyImpacts(const V& f, const V& x, const V& y, const V& z, const ImpactSeries& s,
+               const std::vector<std::uint32_t>& pieces, const FieldUnits& u) {
+    V out = f;
+    for (std::uint32_t i : pieces) out = editops::vmin(out, -impactField(x, y, z, s.impacts[i], u));
+    return out;
+}
+
 // Q of a perturbation's quadric at (x, y, z): >= 0 inside.
 template <class V>
 V quadric(const V& x, const V& y, const V& z, const Perturbation& p) {

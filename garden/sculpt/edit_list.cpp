@@ -31,6 +31,7 @@ template <class V>
 V applyPick(const V& f, const V& x, const V& y, const V& z, const Edit& e, const std::vector<std::uint32_t>& pieces,
             const FieldUnits& u) {
     if (const auto* s = std::get_if<Stroke>(&e.op)) return applyStroke(f, x, y, z, *s, pieces, u);
+    if (const auto* m = std::get_if<ImpactSeries>(&e.op)) return applyImpacts(f, x, y, z, *m, pieces, u);
     return applyPerturbation(f, x, y, z, std::get<Perturbation>(e.op), pieces, u);
 }
 
@@ -38,6 +39,7 @@ V applyPick(const V& f, const V& x, const V& y, const V& z, const Edit& e, const
 
 std::size_t pieceCount(const Edit& e) {
     if (const auto* s = std::get_if<Stroke>(&e.op)) return s->segments.size();
+    if (const auto* m = std::get_if<ImpactSeries>(&e.op)) return m->impacts.size();
     return std::get<Perturbation>(e.op).mirror ? 2 : 1;
 }
 
@@ -78,6 +80,7 @@ frep::Box3 perturbationReach(const Perturbation& p) {
 
 frep::Box3 pieceReach(const Edit& e, std::size_t piece) {
     if (const auto* s = std::get_if<Stroke>(&e.op)) return s->segments[piece].reach;
+    if (const auto* m = std::get_if<ImpactSeries>(&e.op)) return m->impacts[piece].reach;
     const auto& p = std::get<Perturbation>(e.op);
     return perturbationReach(piece == 0 ? p : mirrored(p));
 }
@@ -204,7 +207,19 @@ double editedValue(const EditList& list, double base, double x, double y, double
     return f;
 }
 
+const char* impactShapeName(ImpactShape s) {
+    switch (s) {
+        case ImpactShape::Sphere: return "sphere";
+        case ImpactShape::Chisel: return "chisel";
+        case ImpactShape::Square: return "square";
+    }
+    return "?";
+}
+
 std::string describe(const Edit& e) {
+    if (const auto* m = std::get_if<ImpactSeries>(&e.op))
+        return std::to_string(m->impacts.size()) + " impacts" +
+               (m->impacts.empty() ? std::string() : std::string(" (") + impactShapeName(m->impacts[0].shape) + ")");
     if (const auto* s = std::get_if<Stroke>(&e.op))
         return std::string(strokeToolName(s->tool)) + " stroke, radius " + std::to_string(s->radius) + ", " +
                std::to_string(s->path.size()) + " path points, " + std::to_string(s->segments.size()) + " segments";

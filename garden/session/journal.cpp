@@ -76,7 +76,7 @@ std::uint32_t crc32(const std::string& text) {
 }
 
 std::string journalRecordKind(const JournalRecord& r) {
-    static const char* const names[] = {"stroke", "perturb", "undo", "redo", "discard", "morph", "move"};
+    static const char* const names[] = {"stroke", "perturb", "undo", "redo", "discard", "morph", "move", "impacts"};
     return names[r.index()];
 }
 
@@ -106,6 +106,18 @@ std::string journalRecordJson(const JournalRecord& record) {
     } else if (const auto* m = std::get_if<MorphWeightsRecord>(&record)) {
         j["barycentric"] = point(m->barycentric);
         j["balance"] = point(m->balance);
+    } else if (const auto* im = std::get_if<ImpactRecord>(&record)) {
+        j["sculpture"] = im->sculpture;
+        nlohmann::json list = nlohmann::json::array();
+        for (const Impact& hit : im->series.impacts)
+            list.push_back({{"shape", impactShapeName(hit.shape)}, {"tip", point(hit.tip)}, {"direction", point(hit.direction)},
+                            {"across", point(hit.across)}, {"size", hit.size}, {"depth", hit.depth}});
+        j["impacts"] = std::move(list);
+        nlohmann::json rays = nlohmann::json::array();
+        for (std::size_t i = 0; i < im->series.rayOrigins.size(); ++i)
+            rays.push_back({point(im->series.rayOrigins[i]), point(im->series.rayDirections[i])});
+        j["rays"] = std::move(rays);
+        j["volume"] = im->series.volume;
     } else if (const auto* mv = std::get_if<MoveRecord>(&record)) {
         j["sculpture"] = mv->sculpture;
         j["position"] = point(mv->placement.position);
@@ -171,6 +183,41 @@ JournalRecord parseJournalRecord(const std::string& text, const std::string& pat
         r.finish();
         return m;
     }
+    if (action == "impacts") {
+        ObjectReader r(v, path, {"action", "sculpture", "impacts", "rays", "volume"});
+        ImpactRecord rec;
+        rec.sculpture = readString(r.required("sculpture"), r.pathOf("sculpture"));
+        const nlohmann::json& list = r.required("impacts");
+        if (!list.is_array()) throw JsonError(r.pathOf("impacts"), "expected an array of impacts");
+        for (std::size_t i = 0; i < list.size(); ++i) {
+            const std::string ip = indexPath(r.pathOf("impacts"), i);
+            ObjectReader ir(list[i], ip, {"shape", "tip", "direction", "across", "size", "depth"});
+            Impact m;
+            const std::string shape = readString(ir.required("shape"), ir.pathOf("shape"));
+            if (shape == "sphere") m.shape = ImpactShape::Sphere;
+            else if (shape == "chisel") m.shape = ImpactShape::Chisel;
+            else if (shape == "square") m.shape = ImpactShape::Square;
+            else throw JsonError(ir.pathOf("shape"), "expected sphere, chisel or square");
+            m.tip = readPoint(ir.required("tip"), ir.pathOf("tip"));
+            m.direction = readPoint(ir.required("direction"), ir.pathOf("direction"));
+            m.across = readPoint(ir.required("across"), ir.pathOf("across"));
+            m.size = readPositive(ir.required("size"), ir.pathOf("size"));
+            m.depth = finite(ir.required("depth"), ir.pathOf("depth"));
+            ir.finish();
+            rec.series.impacts.push_back(m);
+        }
+        const nlohmann::json& rays = r.required("rays");
+        if (!rays.is_array()) throw JsonError(r.pathOf("rays"), "expected an array of [origin, direction] pairs");
+        for (std::size_t i = 0; i < rays.size(); ++i) {
+            const std::string rp = indexPath(r.pathOf("rays"), i);
+            if (!rays[i].is_array() || rays[i].size() != 2) throw JsonError(rp, "expected [origin, direction]");
+            rec.series.rayOrigins.push_back(readPoint(rays[i][0], indexPath(rp, 0)));
+            rec.series.rayDirections.push_back(readPoint(rays[i][1], indexPath(rp, 1)));
+        }
+        rec.series.volume = readPositive(r.required("volume"), r.pathOf("volume"));
+        r.finish();
+        return rec;
+    }
     if (action == "move") {
         ObjectReader r(v, path, {"action", "sculpture", "position", "yaw", "scale"});
         MoveRecord m;
@@ -182,7 +229,7 @@ JournalRecord parseJournalRecord(const std::string& text, const std::string& pat
         return m;
     }
     throw JsonError(childPath(path, "action"),
-                    "unknown action '" + action + "' (expected stroke, perturb, undo, redo, discard, morph or move)");
+                    "unknown action '" + action + "' (expected stroke, perturb, impacts, undo, redo, discard, morph or move)");
 }
 
 JournalRead parseJournal(const std::string& text, const std::string& name) {

@@ -41,6 +41,12 @@ struct PerturbRecord {
     Perturbation perturbation;  // model frame
 };
 
+// Impacts as they were resolved (and their rays, to fire again).
+struct ImpactRecord {
+    std::string sculpture;
+    ImpactSeries series;
+};
+
 // A sculpture moved, turned or scaled: its new placement.
 struct MoveRecord {
     std::string sculpture;
@@ -58,7 +64,8 @@ struct MorphWeightsRecord {
 };
 
 using JournalRecord =
-    std::variant<StrokeRecord, PerturbRecord, UndoRecord, RedoRecord, DiscardRecord, MorphWeightsRecord, MoveRecord>;
+    std::variant<StrokeRecord, PerturbRecord, UndoRecord, RedoRecord, DiscardRecord, MorphWeightsRecord, MoveRecord,
+                 ImpactRecord>;
 
 std::string journalRecordKind(const JournalRecord& r);
 

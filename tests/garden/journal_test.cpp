@@ -27,8 +27,17 @@ std::vector<JournalRecord> everyKind() {
     moved.position = {1.5, 0.0, -2.25};
     moved.yawDegrees = 33.0;
     moved.scale = 1.25;
+    ImpactSeries series;
+    Impact m;
+    m.shape = ImpactShape::Chisel;
+    m.tip = {0.25, 1.0 / 7.0, -0.5};
+    m.depth = 0.0125;
+    series.impacts = {m, m};
+    series.rayOrigins = {{0.5, 1.5, 0.25}};
+    series.rayDirections = {{0.0, -1.0, 0.0}};
+    series.volume = 3e-6;
     return {s, PerturbRecord{"dancer", q}, UndoRecord{}, RedoRecord{}, DiscardRecord{"metamorphosis"},
-            MorphWeightsRecord{{0.2, 0.3, 0.5}, {1.1, 0.9, 1.0}}, MoveRecord{"dryad", moved}};
+            MorphWeightsRecord{{0.2, 0.3, 0.5}, {1.1, 0.9, 1.0}}, MoveRecord{"dryad", moved}, ImpactRecord{"knot", series}};
 }
 
 std::string slurp(const std::string& path) {

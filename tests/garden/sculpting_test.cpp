@@ -10,6 +10,7 @@
 #include "frep/eval_batch.h"
 #include "garden/sculpt/edit_field.h"
 #include "garden/sculpt/edit_list.h"
+#include "garden/sculpt/impacts.h"
 #include "garden/sculpt/sculpture_edits.h"
 #include "garden/sculpt/stroke_segments.h"
 #include "tests/test_models.h"
@@ -56,8 +57,26 @@ double sphereBase(double x, double y, double z) {
     return std::clamp(f, -3.0, 3.0);
 }
 
+Edit impactEdit() {
+    ImpactSeries series;
+    for (ImpactShape shape : {ImpactShape::Sphere, ImpactShape::Chisel, ImpactShape::Square}) {
+        Impact m;
+        m.shape = shape;
+        m.size = 0.06;
+        m.tip = {shape == ImpactShape::Sphere ? -0.2 : shape == ImpactShape::Chisel ? 0.0 : 0.2, 0.46, 0.0};
+        m.direction = {0.0, -1.0, 0.0};
+        m.across = {1.0, 0.0, 0.0};
+        m.depth = 0.02;
+        m.reach = impactReach(m, kUnits);
+        series.impacts.push_back(m);
+    }
+    Edit e;
+    e.op = series;
+    return e;
+}
+
 std::vector<Edit> everyTool() {
-    return {strokeEdit(StrokeTool::Carve, 0.1, {{0.4, 0.0, 0.0}, {0.45, 0.2, 0.1}, {0.3, 0.4, 0.2}}),
+    return {impactEdit(), strokeEdit(StrokeTool::Carve, 0.1, {{0.4, 0.0, 0.0}, {0.45, 0.2, 0.1}, {0.3, 0.4, 0.2}}),
             strokeEdit(StrokeTool::Add, 0.05, {{-0.5, 0.0, 0.0}, {-0.5, -0.3, 0.0}}),
             strokeEdit(StrokeTool::Melt, 0.08, {{0.0, 0.5, 0.0}, {0.2, 0.45, 0.0}}, 3.0),
             perturbEdit(QuadricShape::Ellipsoid, {0.0, 0.0, 0.5}, {0.15, 0.08, 0.1}, 4.0),
@@ -114,6 +133,46 @@ TEST(EditField, EachToolChangesTheFieldInsideItsReachOnly) {
         EXPECT_GT(in, 0);
         EXPECT_GT(changedInside, 0);
     }
+}
+
+TEST(Impacts, DepthRemovesTheCompactionVolumeFromAFlatSurface) {
+    const double kPi = 3.14159265358979323846;
+    for (double v : {1e-7, 1e-6, 1e-5}) {
+        const double r = 0.02, d = impactDepth(ImpactShape::Sphere, r, v);
+        EXPECT_NEAR(kPi * d * d * (3 * r - d) / 3, v, 1e-9 * v + 1e-15);
+        const double c = impactDepth(ImpactShape::Chisel, 0.03, v);
+        EXPECT_NEAR(0.03 * c * c, v, 1e-12);
+        EXPECT_NEAR(impactDepth(ImpactShape::Square, 0.04, v) * 0.04 * 0.04, v, 1e-15);
+    }
+    // Too much for the tool: it goes in all the way, no further.
+    EXPECT_EQ(impactDepth(ImpactShape::Sphere, 0.01, 1.0), 0.02);
+}
+
+TEST(Impacts, RaysAreDrawnFromTheSeedAndTheSpread) {
+    ImpactTool t;
+    t.count = 500;
+    t.spreadSize = 0.1;
+    const ImpactRay aim{{0, 0, 1}, {0, 0, -1}};
+    const auto a = drawImpactRays(aim, t), b = drawImpactRays(aim, t);
+    ASSERT_EQ(a.size(), 500u);
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        EXPECT_EQ(a[i].origin, b[i].origin);
+        EXPECT_LE(std::hypot(a[i].origin[0], a[i].origin[1]), 0.1 + 1e-12);  // a disc across the aim
+    }
+    t.seed = 2;
+    EXPECT_NE(drawImpactRays(aim, t)[0].origin, a[0].origin);
+    t.spread = ImpactSpread::Cone;
+    t.spreadSize = 0.2;
+    for (const ImpactRay& r : drawImpactRays(aim, t)) {
+        EXPECT_EQ(r.origin, aim.origin);
+        EXPECT_GE(-r.direction[2], std::cos(0.2) - 1e-12);
+    }
+    t.spread = ImpactSpread::Gaussian;
+    t.spreadSize = 0.05;
+    double sum2 = 0.0;
+    const auto g = drawImpactRays(aim, t);
+    for (const ImpactRay& r : g) sum2 += r.origin[0] * r.origin[0] + r.origin[1] * r.origin[1];
+    EXPECT_NEAR(std::sqrt(sum2 / (2.0 * static_cast<double>(g.size()))), 0.05, 0.006);  // sigma per axis
 }
 
 TEST(EditField, StrokeSurfaceHasTheToolRadius) {

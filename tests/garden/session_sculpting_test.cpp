@@ -4,6 +4,7 @@
 // the hand's buttons restore it exactly, and bad input changes nothing.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -194,6 +195,59 @@ TEST_F(SessionSculptingTest, MovesAreUndoneAndRedoneAndTheirScaleIsChecked) {
     bad.position[1] = std::numeric_limits<double>::infinity();
     EXPECT_NE(s.moveSculpture(a, bad), "");
     EXPECT_EQ(sa.placement.scale, 2.0);
+}
+
+// The solid's volume: each voxel counts the part of it inside, read from
+// the stored field (about one unit per voxel across the surface).
+double solidVolume(const voxel::Volume& v) {
+    const voxel::IndexBox& b = v.frame.indexBox;
+    double n = 0.0;
+    for (int k = b.lo[2]; k <= b.hi[2]; ++k)
+        for (int j = b.lo[1]; j <= b.hi[1]; ++j)
+            for (int i = b.lo[0]; i <= b.hi[0]; ++i) n += std::clamp(0.5 + static_cast<double>(v.value(i, j, k)), 0.0, 1.0);
+    return n * v.frame.voxelSize * v.frame.voxelSize * v.frame.voxelSize;
+}
+
+TEST_F(SessionSculptingTest, ImpactsRemoveTheirCompactionVolumeAndFireAgainAtAnotherSculpture) {
+    // Finer balls, so that a few cubic centimetres are many voxels.
+    GardenSession s(loadGarden(writeGarden(nlohmann::json::parse(
+                        R"({"sculptures": [{"name": "a", "file": "ball.hf", "a": [0.25], "resolution": 96,
+                              "box": {"min": [-0.6, -0.1, -0.6], "max": [0.6, 1.1, 0.6]}, "placement": {"position": [0, 0, -2.3094]}},
+                            {"name": "c", "file": "ball.hf", "a": [0.36], "resolution": 96,
+                              "box": {"min": [-0.6, -0.1, -0.6], "max": [0.6, 1.1, 0.6]}, "placement": {"position": [2, 0, 1.1547]}}],
+                            "morph": null})"))),
+                    smallSettings());
+    const int c = s.findSculpture("c");
+    const Sculpture& sc = s.sculptures()[static_cast<std::size_t>(c)];
+    const double before = solidVolume(*sc.volume);
+    ImpactTool t;
+    t.shape = ImpactShape::Sphere;
+    t.size = 0.04;
+    t.volume = 8e-6;  // 8 cm^3 each
+    t.count = 12;
+    t.spreadSize = 0.25;
+    t.seed = 7;
+    // From above the ball (radius 0.6 about (2, 0.5, 1.1547)), straight down.
+    ASSERT_EQ(s.applyImpacts(c, {2.0, 2.0, 1.1547}, {0.0, -1.0, 0.0}, t), "");
+    ASSERT_EQ(s.editCount(c), 1u);
+    const auto& series = std::get<ImpactSeries>(sc.edits->list().edits()[0].op);
+    EXPECT_EQ(series.impacts.size(), 12u);
+    const double removed = before - solidVolume(*sc.volume);
+    // Twelve dents of 8 cm^3 on a gently curved top, overlapping a little.
+    EXPECT_GT(removed, 0.5 * 12 * 8e-6);
+    EXPECT_LT(removed, 1.5 * 12 * 8e-6);
+    EXPECT_EQ(differences(*sc.volume, *sc.edits->rebuild()), 0);
+    // The same rays fired at the other ball.
+    const int a = s.findSculpture("a");
+    ASSERT_EQ(s.reapplyImpacts(c, a), "");
+    const auto& again = std::get<ImpactSeries>(s.sculptures()[static_cast<std::size_t>(a)].edits->list().edits()[0].op);
+    EXPECT_GT(again.impacts.size(), 6u);
+    EXPECT_EQ(again.rayOrigins, series.rayOrigins);
+    // One undo takes the whole series away.
+    ASSERT_TRUE(s.undo());
+    ASSERT_TRUE(s.undo());
+    EXPECT_NEAR(solidVolume(*sc.volume), before, 1e-12);
+    EXPECT_NE(s.applyImpacts(c, {2.0, 5.0, 9.0}, {0.0, 1.0, 0.0}, t), "");  // pointing away: nothing met
 }
 
 TEST_F(SessionSculptingTest, BadInputIsRefusedAndChangesNothing) {
