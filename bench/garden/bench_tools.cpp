@@ -1,4 +1,4 @@
-// Sculpting benchmark (seed 004's carving table form): a key sculpture at
+// Sculpting benchmark. Seed 004's carving table form: a key sculpture at
 // 256^3, a live stroke extended one step at a time, for tool radii of 8, 16
 // and 32 voxels: the box each step recomputes, the time to apply it and to
 // remesh the chunks it touched (level 0, 32^3 chunks), with no earlier edits
@@ -6,6 +6,8 @@
 // stroke with 1,000 edits. The peer, measured in the same run: the same box
 // resampled from the sculpture's HyperFun source alone (voxel::resampleRegion,
 // interval-culled), what a box update costs without the unedited grid.
+// Seed 002's impact table form: 10, 100 and 1,000 impacts in one pull, cast,
+// applied and remeshed.
 // Prints a Markdown table; --json FILE writes the rows too.
 //
 //   ./build/release/bench/bench_tools [--json out.json] [--filter NAME] [--repeat N]
@@ -20,6 +22,7 @@
 
 #include "../bench_common.h"
 
+#include "garden/sculpt/impacts.h"
 #include "garden/sculpt/sculpture_edits.h"
 #include "garden/sculpt/stroke_segments.h"
 #include "garden/scene/garden_file.h"
@@ -157,6 +160,46 @@ int main(int argc, char** argv) {
                             {"box_voxels", r.voxels}, {"apply_ms", r.applyMs}, {"remesh_ms", r.remeshMs},
                             {"chunks", r.chunks}, {"peer_resample_ms", r.peerMs}, {"undo_ms", undoMs}});
         }
+    }
+    // Seed 002's table form: impacts fired at the dryad's front in one pull,
+    // applied and remeshed.
+    std::printf("\n| sculpture | impacts | tool | cast (ms) | apply (ms) | remesh (ms) | total (ms) | per impact (ms) | seed 002 per impact (ms) |\n");
+    std::printf("|---|---:|---|---:|---:|---:|---:|---:|---:|\n");
+    for (int count : {10, 100, 1000}) {
+        const std::string name = "impacts/" + std::to_string(count);
+        if (!args.matches(name)) continue;
+        voxel::Volume shown = vr.volume->clone();
+        garden::SculptureEdits edits(shown);
+        Meshing meshing(shown);
+        const voxel::VolumeFrame& f = shown.frame;
+        garden::ImpactTool tool;
+        tool.shape = garden::ImpactShape::Sphere;
+        tool.size = 4.0 * f.voxelSize;
+        tool.volume = 20.0 * f.voxelSize * f.voxelSize * f.voxelSize;
+        tool.count = count;
+        tool.spreadSize = 0.25 * (f.modelBox.hi[0] - f.modelBox.lo[0]);
+        const garden::ImpactRay aim{{0.5 * (f.modelBox.lo[0] + f.modelBox.hi[0]), 0.5 * (f.modelBox.lo[1] + f.modelBox.hi[1]),
+                                     f.modelBox.hi[2] + 0.1},
+                                    {0.0, 0.0, -1.0}};
+        auto t0 = Clock::now();
+        garden::ImpactSeries series;
+        for (const garden::ImpactRay& ray : garden::drawImpactRays(aim, tool))
+            if (auto m = garden::castImpact(shown, ray, tool, edits.units())) series.impacts.push_back(*m);
+        const double castMs = msSince(t0);
+        garden::Edit e;
+        e.op = series;
+        t0 = Clock::now();
+        const voxel::IndexBox box = edits.append(std::move(e));
+        const double applyMs = msSince(t0);
+        t0 = Clock::now();
+        meshing.remesh(box);
+        const double remeshMs = msSince(t0);
+        const double total = castMs + applyMs + remeshMs;
+        const std::size_t hits = series.impacts.size();
+        std::printf("| key_dryad 256^3 | %zu of %d | sphere, 4 voxels | %.1f | %.1f | %.1f | %.1f | %.3f | 25-32 |\n", hits, count,
+                    castMs, applyMs, remeshMs, total, total / static_cast<double>(std::max<std::size_t>(hits, 1)));
+        rows.push_back({{"name", name}, {"impacts", hits}, {"cast_ms", castMs}, {"apply_ms", applyMs},
+                        {"remesh_ms", remeshMs}, {"total_ms", total}});
     }
     if (!args.jsonPath.empty()) std::ofstream(args.jsonPath) << rows.dump(2) << "\n";
     return 0;

@@ -32,6 +32,38 @@ voxel::IndexBox SculptureEdits::voxelsOf(const frep::Box3& box) const {
     return voxel::intersect(r, f.indexBox);
 }
 
+namespace {
+
+// The model box of `cell`'s voxels, one voxel wider than their positions:
+// picking a piece too many changes no value, one too few would.
+frep::Box3 modelBoxOf(const voxel::VolumeFrame& f, const voxel::IndexBox& cell) {
+    frep::Box3 model;
+    for (int a = 0; a < 3; ++a) {
+        model.lo[a] = f.coordinate(a, cell.lo[a] - 1);
+        model.hi[a] = f.coordinate(a, cell.hi[a] + 1);
+    }
+    return model;
+}
+
+// The index cells (kEditIndexCellVoxels a side, aligned) that cover `box`,
+// each clipped to it: a big box (a long stroke, a pull of a thousand
+// impacts) is evaluated cell by cell with the pieces that reach each cell.
+std::vector<voxel::IndexBox> cellsOf(const voxel::IndexBox& box) {
+    std::vector<voxel::IndexBox> out;
+    const int n = kEditIndexCellVoxels - 1;
+    for (const auto& o : voxel::alignedBoxes(box, kEditIndexCellVoxels))
+        out.push_back(voxel::intersect(voxel::IndexBox::fromCorners(o[0], o[1], o[2], o[0] + n, o[1] + n, o[2] + n), box));
+    return out;
+}
+
+void add(voxel::EditRegionStats& total, const voxel::EditRegionStats& s) {
+    total.voxels += s.voxels;
+    total.seconds += s.seconds;
+    total.errors.merge(s.errors);
+}
+
+}  // namespace
+
 voxel::EditRegionStats SculptureEdits::update(const voxel::IndexBox& box) {
     const voxel::IndexBox clip = voxel::intersect(box, shown_.frame.indexBox);
     if (clip.empty()) return {};
@@ -39,16 +71,12 @@ voxel::EditRegionStats SculptureEdits::update(const voxel::IndexBox& box) {
         pending_.push_back(clip);
         return {};
     }
-    // The model box of the voxels, one voxel wider than their positions:
-    // picking a piece too many changes no value, one too few would.
-    const voxel::VolumeFrame& f = shown_.frame;
-    frep::Box3 model;
-    for (int a = 0; a < 3; ++a) {
-        model.lo[a] = f.coordinate(a, clip.lo[a] - 1);
-        model.hi[a] = f.coordinate(a, clip.hi[a] + 1);
+    voxel::EditRegionStats total;
+    for (const voxel::IndexBox& cell : cellsOf(clip)) {
+        const frep::Tape tape = editTape(list_, list_.reaching(modelBoxOf(shown_.frame, cell)));
+        add(total, voxel::applyEditTape(*base_, shown_, cell, tape));
     }
-    const frep::Tape tape = editTape(list_, list_.reaching(model));
-    lastStats_ = voxel::applyEditTape(*base_, shown_, clip, tape);
+    lastStats_ = total;
     return lastStats_;
 }
 
@@ -56,10 +84,18 @@ voxel::EditRegionStats SculptureEdits::applyOnTop(const voxel::IndexBox& box, st
     if (deferred_) return update(box);
     const voxel::IndexBox clip = voxel::intersect(box, shown_.frame.indexBox);
     if (clip.empty()) return {};
-    EditPick pick{static_cast<std::uint32_t>(list_.size() - 1), {}};
-    for (std::size_t p = firstPiece; p < pieceCount(list_.edits().back()); ++p)
-        pick.pieces.push_back(static_cast<std::uint32_t>(p));
-    lastStats_ = voxel::applyEditTape(shown_, shown_, clip, editTape(list_, {pick}));
+    const auto last = static_cast<std::uint32_t>(list_.size() - 1);
+    voxel::EditRegionStats total;
+    for (const voxel::IndexBox& cell : cellsOf(clip)) {
+        EditPick pick{last, {}};
+        for (const EditPick& p : list_.reaching(modelBoxOf(shown_.frame, cell)))
+            if (p.edit == last)
+                for (std::uint32_t piece : p.pieces)
+                    if (piece >= firstPiece) pick.pieces.push_back(piece);
+        if (pick.pieces.empty()) continue;  // nothing new reaches the cell: it stands
+        add(total, voxel::applyEditTape(shown_, shown_, cell, editTape(list_, {pick})));
+    }
+    lastStats_ = total;
     return lastStats_;
 }
 
