@@ -30,6 +30,21 @@ struct Frame {
     std::vector<Slot> vars;
 };
 
+// The values built while an expression compiles (its own operations, or
+// the whole expansion of a library call) carry its location, so that an
+// evaluator can say where a NaN came from.
+class LocScope {
+public:
+    LocScope(TapeBuilder& b, SourceLoc loc) : b_(b), saved_(b.setLoc(loc)) {}
+    ~LocScope() { b_.setLoc(saved_); }
+    LocScope(const LocScope&) = delete;
+    LocScope& operator=(const LocScope&) = delete;
+
+private:
+    TapeBuilder& b_;
+    SourceLoc saved_;
+};
+
 class Compiler {
 public:
     Compiler(const Program& p, TapeBuilder& b) : program_(p), b_(b) {
@@ -168,6 +183,7 @@ private:
     }
 
     std::uint32_t expr(const Expr& e, const Body& bd, Frame& f, std::uint32_t guard) {
+        LocScope at(b_, e.loc);
         switch (e.kind) {
             case ExprKind::Number: return b_.constant(e.number);
             case ExprKind::Variable: return read(f.vars[static_cast<size_t>(e.slot)], guard, e.loc);
@@ -328,7 +344,9 @@ CompileResult compile(const Program& program, int body, const std::vector<double
         return result;
     }
     try {
-        TapeBuilder b;
+        // Inputs (x, a[]) carry the body's location, as the interpreter
+        // reports a NaN that no operation produced.
+        TapeBuilder b(program.bodies[static_cast<size_t>(body)].resultLoc);
         Compiler c(program, b);
         Frame f = c.newFrame(body);
         const std::uint32_t xyz[3] = {b.x(), b.y(), b.z()};

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
-
+#include <limits>
 #include <type_traits>
 
 #include "frep/conv_kernels.h"
@@ -98,13 +98,37 @@ void transcendental(T* __restrict o, const T* __restrict a, size_t n, Op op) {
 }  // namespace
 
 template <class T>
+void BatchEvaluator<T>::traceNan(size_t k) {
+    const Instr& in = tape_.code[k];
+    const std::uint32_t o = tape_.out[k];
+    if (!std::isnan(reg(o)[0])) {
+        nanFrom_[o] = kNoReg;
+        return;
+    }
+    // A NaN operand passes its origin on (a select only its chosen one);
+    // with none, this instruction made the NaN. The earliest built wins:
+    // instructions are in the order the compiler met them in the source.
+    auto from = static_cast<std::uint32_t>(k);
+    const std::uint32_t picked = in.op == Op::Select ? (reg(in.a)[0] != T(0) ? in.b : in.c) : kNoReg;
+    for (std::uint32_t r : {in.a, in.b, in.c}) {
+        if (r == kNoReg || (picked != kNoReg && r != picked) || !std::isnan(reg(r)[0])) continue;
+        from = std::min(from, nanFrom_[r]);
+    }
+    nanFrom_[o] = from;
+}
+
+template <class T>
 void BatchEvaluator<T>::chunk(const T* x, const T* y, const T* z, const T* w, T* out, size_t n,
-                              ErrorReport& errors, std::uint8_t* failed) {
+                              ErrorReport& errors, std::uint8_t* failed, bool trace) {
     // Registers 0..2 are x, y, z (TapeBuilder::finish).
     for (size_t i = 0; i < tape_.code.size() && i < 3; ++i) {
         const Op op = tape_.code[i].op;
         const T* src = op == Op::X ? x : op == Op::Y ? y : z;
         std::copy_n(src, n, reg(tape_.out[i]));
+    }
+    if (trace) {
+        nanFrom_.assign(tape_.registers, kNoReg);
+        for (size_t k = 0; k < firstInstr_; ++k) traceNan(k);
     }
     std::fill_n(fail_.data(), n, std::uint8_t(0));
     bool anyFail = false;
@@ -224,21 +248,41 @@ void BatchEvaluator<T>::chunk(const T* x, const T* y, const T* z, const T* w, T*
                 break;
             }
         }
+        if (trace) traceNan(k);
     }
 
     const T* r = reg(tape_.result);
-    const T limit = static_cast<T>(kValueLimit);
+    const T limit = clamped_ ? static_cast<T>(kValueLimit) : std::numeric_limits<T>::infinity();
     std::uint64_t failures = 0;
+    size_t nanPoint = n;  // the first point that failed only by being NaN, when that is the first error
     for (size_t i = 0; i < n; ++i) {
         T v = r[i];
         bool f = fail_[i] || std::isnan(v);
-        if (f && !fail_[i] && firstError == DomainError::None) firstError = DomainError::NotANumber;
+        if (f && !fail_[i] && firstError == DomainError::None) {
+            firstError = DomainError::NotANumber;
+            nanPoint = i;
+        }
         failures += f;
         v = f ? static_cast<T>(kOutsideValue) : std::min(std::max(v, -limit), limit);
         out[i] = v;
         if (failed) failed[i] = f;
     }
-    if (failures) errors.add(firstError, firstLoc, failures);
+    if (!failures) return;
+    if (nanPoint < n) {
+        // Where the NaN came from: that point again, following it through
+        // the tape (the registers are free now). Rare, so not worth a
+        // register of origins on every point.
+        if (trace) {
+            const std::uint32_t from = nanFrom_[tape_.result];
+            if (from < tape_.locs.size()) firstLoc = tape_.locs[from];
+        } else {
+            ErrorReport one;
+            T v;
+            chunk(x + nanPoint, y + nanPoint, z + nanPoint, w ? w + nanPoint : nullptr, &v, 1, one, nullptr, true);
+            firstLoc = one.firstLoc;
+        }
+    }
+    errors.add(firstError, firstLoc, failures);
 }
 
 template class BatchEvaluator<float>;

@@ -2,7 +2,9 @@
 // of arrays, one tight loop per instruction (the compiler vectorizes the
 // arithmetic ones). Templated on float (sampling) and double (conformance,
 // export checks). Failing points and NaN come out as kOutsideValue and are
-// counted; infinities are clamped to +-kValueLimit.
+// counted (a NaN at the location of the operation that produced it);
+// values beyond +-kValueLimit, infinities included, are clamped to it unless
+// the caller asks for them as computed.
 #pragma once
 
 #include <cstddef>
@@ -31,11 +33,19 @@ public:
     void evaluate(const T* x, const T* y, const T* z, const T* w, T* out, size_t n, ErrorReport& errors,
                   std::uint8_t* failed = nullptr);
 
+    // Clamp to +-kValueLimit (the default: what sampling, bounds and
+    // gradients expect), or keep every non-NaN value as computed, as the
+    // interpreter and the reference do (`hypergarden eval` prints those).
+    void setClamped(bool clamped) { clamped_ = clamped; }
+
     const Tape& tape() const { return tape_; }
 
 private:
+    // `w`: the base value input (Op::W), or null. `trace` (one point):
+    // also follow where a NaN comes from, in nanFrom_.
     void chunk(const T* x, const T* y, const T* z, const T* w, T* out, size_t n, ErrorReport& errors,
-               std::uint8_t* failed);
+               std::uint8_t* failed, bool trace = false);
+    void traceNan(size_t k);
     T* reg(std::uint32_t r) { return regs_.data() + static_cast<size_t>(r) * kBatch; }
 
     const Tape& tape_;
@@ -43,6 +53,10 @@ private:
     std::vector<T> regs_;
     std::vector<std::uint8_t> fail_;
     std::vector<std::uint8_t> bad_;
+    bool clamped_ = true;
+    // While tracing: per register, the instruction that made the NaN it
+    // holds (the earliest one, where several meet), else kNoReg.
+    std::vector<std::uint32_t> nanFrom_;
 };
 
 extern template class BatchEvaluator<float>;

@@ -31,6 +31,7 @@ void Interpreter::resetFrame(int bodyIndex, Frame& f) {
 
 PointResult Interpreter::evaluate(double x, double y, double z) {
     error_ = DomainError::None;
+    nanSeen_ = false;
     steps_ = 0;
     Frame& f = frames_[static_cast<size_t>(body_)];
     resetFrame(body_, f);
@@ -44,6 +45,10 @@ PointResult Interpreter::evaluate(double x, double y, double z) {
         r.value = kOutsideValue;
         r.error = error_;
         r.loc = errorLoc_;
+    } else if (std::isnan(r.value)) {
+        r.value = kOutsideValue;
+        r.error = DomainError::NotANumber;
+        r.loc = nanSeen_ ? nanLoc_ : program_.bodies[static_cast<size_t>(body_)].resultLoc;
     }
     return r;
 }
@@ -52,10 +57,6 @@ double Interpreter::evaluateSafe(double x, double y, double z, ErrorReport& erro
     PointResult r = evaluate(x, y, z);
     if (!r.ok()) {
         errors.add(r.error, r.loc);
-        return kOutsideValue;
-    }
-    if (std::isnan(r.value)) {
-        errors.add(DomainError::NotANumber, program_.bodies[static_cast<size_t>(body_)].resultLoc);
         return kOutsideValue;
     }
     if (r.value > kValueLimit) return kValueLimit;
@@ -190,6 +191,7 @@ bool Interpreter::eval(const Expr& e, const Body& b, Frame& frame, double& out) 
                 case BinaryOp::Or: out = hf::logicalOr(l, r); break;
             }
             if (err != DomainError::None) return fail(err, e.loc);
+            noteNan(out, e.loc, std::isnan(l) || std::isnan(r));
             return true;
         }
         case ExprKind::BuiltinCall: return evalBuiltin(e, b, frame, out);
@@ -231,6 +233,7 @@ bool Interpreter::evalBuiltin(const Expr& e, const Body& b, Frame& frame, double
         case Builtin::Frac: out = hf::fraction(v[0]); break;
     }
     if (err != DomainError::None) return fail(err, e.loc);
+    noteNan(out, e.loc, std::isnan(v[0]) || std::isnan(v[1]));
     return true;
 }
 
@@ -251,6 +254,12 @@ bool Interpreter::evalLibrary(const Expr& e, const Body& b, Frame& frame, double
         }
     }
     out = lib::call<double>(e.function, args);
+    if (std::isnan(out)) {
+        bool nanIn = false;
+        for (size_t i = 0; i < e.args.size(); ++i)
+            nanIn |= info.params[i] == lib::ParamKind::Scalar && std::isnan(args.scalars[i]);
+        noteNan(out, e.loc, nanIn);
+    }
     return true;
 }
 

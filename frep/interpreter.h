@@ -5,6 +5,7 @@
 // batch evaluator is checked and measured against.
 #pragma once
 
+#include <cmath>
 #include <vector>
 
 #include "frep/ast.h"
@@ -25,11 +26,14 @@ public:
     // (missing items are 0); s[] starts at 0.
     Interpreter(const Program& program, int body, std::vector<double> a = {});
 
-    // Raw reference result: the value, or the runtime error.
+    // The reference's result: the value as computed (beyond +-kValueLimit
+    // too), or the runtime error. A NaN result is an error located at the
+    // first operation or library call that produced a NaN (the body's
+    // assignment when none did: a NaN given in x or a[]).
     PointResult evaluate(double x, double y, double z);
 
     // Evaluator contract: failures and NaN become kOutsideValue and are
-    // counted in `errors`; infinities are clamped to +-kValueLimit.
+    // counted in `errors`; values beyond +-kValueLimit are clamped to it.
     double evaluateSafe(double x, double y, double z, ErrorReport& errors);
 
     int body() const { return body_; }
@@ -50,6 +54,15 @@ private:
     bool evalBodyCall(const Expr& e, const Body& body, Frame& frame, double& out);
     bool index(const Expr& e, const Body& body, Frame& frame, int slot, size_t& out);
     bool fail(DomainError e, SourceLoc loc);
+    // Remembers where the point's first NaN was made: an operation whose
+    // result is NaN while no value it was given is (a library call: no
+    // scalar argument). The tape evaluators trace a NaN to the same place.
+    void noteNan(double result, SourceLoc loc, bool nanIn) {
+        if (std::isnan(result) && !nanIn && !nanSeen_) {
+            nanSeen_ = true;
+            nanLoc_ = loc;
+        }
+    }
     void resetFrame(int body, Frame& frame);
 
     const Program& program_;
@@ -58,6 +71,8 @@ private:
     std::vector<Frame> frames_;  // one per body: a body only calls earlier ones
     DomainError error_ = DomainError::None;
     SourceLoc errorLoc_;
+    bool nanSeen_ = false;
+    SourceLoc nanLoc_;
     long long steps_ = 0;        // loop iteration guard
 };
 

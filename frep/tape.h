@@ -74,6 +74,10 @@ struct Tape {
     std::uint32_t registers = 0;
     std::uint32_t result = kNoReg;  // register holding the body's value
     std::vector<SourceLoc> sites;   // locations of fallible operations
+    // Where each instruction's value comes from in the source: the
+    // expression or library call that built it (its first one when shared).
+    // Evaluators name it when a point's value is NaN.
+    std::vector<SourceLoc> locs;
     std::vector<double> params;     // constant parameters of fused kernels
 
     size_t size() const { return code.size(); }

@@ -26,7 +26,7 @@ size_t TapeBuilder::KeyHash::operator()(const Key& k) const {
     return static_cast<size_t>(h);
 }
 
-TapeBuilder::TapeBuilder() {
+TapeBuilder::TapeBuilder(SourceLoc loc) : loc_(loc) {
     Instr in;
     in.op = Op::X; x_ = push(in);
     in.op = Op::Y; y_ = push(in);
@@ -40,6 +40,7 @@ std::uint32_t TapeBuilder::push(const Instr& in) {
     if (code_.size() >= kMaxValues)
         throw std::length_error("program too large to flatten into a tape");
     code_.push_back(in);
+    locs_.push_back(loc_);
     auto id = static_cast<std::uint32_t>(code_.size() - 1);
     cse_.emplace(key, id);
     return id;
@@ -212,6 +213,7 @@ Tape TapeBuilder::finish(std::uint32_t result) const {
             Instr in = code_[i];
             t.code.push_back(in);
             t.out.push_back(reg[i]);
+            t.locs.push_back(locs_[i]);
         }
     }
     std::vector<std::uint32_t> freeRegs;
@@ -227,6 +229,7 @@ Tape TapeBuilder::finish(std::uint32_t result) const {
         reg[i] = r;
         t.code.push_back(in);
         t.out.push_back(r);
+        t.locs.push_back(locs_[i]);
         // Operands whose last use is here free their registers only now, so
         // an instruction never writes a register it reads.
         for (std::uint32_t s : {src.a, src.b, src.c, src.guard}) {

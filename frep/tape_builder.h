@@ -17,7 +17,17 @@ public:
     // Hard cap on SSA values, so that unrolling cannot exhaust memory.
     static constexpr size_t kMaxValues = 4'000'000;
 
-    TapeBuilder();
+    // `loc` is recorded with the inputs (x, y, z) and with every value built
+    // until setLoc() says otherwise.
+    explicit TapeBuilder(SourceLoc loc = {});
+
+    // The source location recorded with the values built from now on (the
+    // expression being compiled); returns the previous one.
+    SourceLoc setLoc(SourceLoc loc) {
+        SourceLoc previous = loc_;
+        loc_ = loc;
+        return previous;
+    }
 
     std::uint32_t x() const { return x_; }
     std::uint32_t y() const { return y_; }
@@ -69,6 +79,8 @@ private:
     struct KeyHash { size_t operator()(const Key& k) const; };
 
     std::vector<Instr> code_;
+    std::vector<SourceLoc> locs_;  // one per value in code_
+    SourceLoc loc_;
     std::vector<SourceLoc> sites_;
     std::vector<double> params_;
     // Parameter blocks by opcode and bits, so identical kernels share one.

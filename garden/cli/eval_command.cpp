@@ -1,64 +1,168 @@
 // `hypergarden eval FILE.hf [--body NAME] [--a V,...] [x y z]`: the body's
 // value at one point, or at each "x y z" line of standard input. A point
 // where the program fails prints "error: <reason> at line L, column C".
+//
+// Lines from standard input are evaluated in batches on the compiled tape
+// (the double path, bit for bit the interpreter's) and the answers written
+// in blocks: one process answers 100,000 points about as fast as it starts.
+// Before waiting for more input it answers every line it has read, so a
+// terminal, or a program writing a line and waiting for its answer, gets
+// each answer as soon as its line is complete.
+#include <charconv>
+#include <cstdint>
 #include <cstdio>
-#include <iostream>
-#include <sstream>
+#include <cstring>
+#include <optional>
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include "frep/eval_batch.h"
 #include "frep/interpreter.h"
 #include "garden/cli/commands.h"
 #include "garden/cli/load_model.h"
+#include "garden/cli/point_lines.h"
 
 namespace hg::garden::cli {
 namespace {
 
-void printResult(const frep::PointResult& r) {
-    if (r.ok()) std::printf("%.17g\n", r.value);
-    else std::printf("error: %s at line %d, column %d\n", frep::describe(r.error), r.loc.line, r.loc.column);
-}
+// Answers in order, written to stdout in large blocks.
+class Answers {
+public:
+    ~Answers() { flush(); }
 
-frep::PointResult evalPoint(const frep::Model& model, frep::Interpreter& interp, bool forceInterpreter,
-                            double x, double y, double z) {
-    if (forceInterpreter || !model.tape()) return interp.evaluate(x, y, z);
-    frep::BatchEvaluator<double> ev(*model.tape());
-    frep::ErrorReport errors;
-    std::uint8_t failed = 0;
-    frep::PointResult r;
-    ev.evaluate(&x, &y, &z, &r.value, 1, errors, &failed);
-    if (failed) { r.error = errors.first; r.loc = errors.firstLoc; }
-    return r;
-}
+    void value(double v) {
+        // "%.17g" (std::to_chars is specified as printf's output), without
+        // printf's per-call cost.
+        char buf[32];
+        auto r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::general, 17);
+        text_.append(buf, r.ptr);
+        text_ += '\n';
+        if (text_.size() >= kBlock) flush();
+    }
+    void error(frep::DomainError e, frep::SourceLoc loc) {
+        text_ += "error: ";
+        text_ += frep::describe(e);
+        text_ += " at line " + std::to_string(loc.line) + ", column " + std::to_string(loc.column) + "\n";
+        if (text_.size() >= kBlock) flush();
+    }
+    void flush() {
+        if (!text_.empty()) std::fwrite(text_.data(), 1, text_.size(), stdout);
+        text_.clear();
+        std::fflush(stdout);
+    }
+
+private:
+    static constexpr size_t kBlock = 1 << 16;
+    std::string text_;
+};
+
+// Points waiting for their values, evaluated together.
+class PointBatch {
+public:
+    static constexpr size_t kMax = 4096;
+
+    PointBatch(const frep::Model& model, bool forceInterpreter)
+        : interp_(model.program(), model.bodyIndex(), model.parameters()) {
+        if (model.tape() && !forceInterpreter) {
+            tape_.emplace(*model.tape());
+            // eval prints what the program computes, as the interpreter does.
+            tape_->setClamped(false);
+        }
+    }
+
+    bool full() const { return x_.size() == kMax; }
+    void add(double x, double y, double z) {
+        x_.push_back(x);
+        y_.push_back(y);
+        z_.push_back(z);
+    }
+
+    void answer(Answers& out) {
+        const size_t n = x_.size();
+        if (n == 0) return;
+        if (tape_) {
+            values_.resize(n);
+            failed_.resize(n);
+            frep::ErrorReport errors;
+            tape_->evaluate(x_.data(), y_.data(), z_.data(), values_.data(), n, errors, failed_.data());
+            for (size_t i = 0; i < n; ++i) {
+                if (!failed_[i]) {
+                    out.value(values_[i]);
+                    continue;
+                }
+                // The batch reports its first error only: this point's own
+                // comes from evaluating it alone (rare, so cheap enough).
+                frep::ErrorReport one;
+                double v;
+                tape_->evaluate(&x_[i], &y_[i], &z_[i], &v, 1, one);
+                out.error(one.first, one.firstLoc);
+            }
+        } else {
+            for (size_t i = 0; i < n; ++i) {
+                frep::PointResult r = interp_.evaluate(x_[i], y_[i], z_[i]);
+                if (r.ok()) out.value(r.value);
+                else out.error(r.error, r.loc);
+            }
+        }
+        x_.clear();
+        y_.clear();
+        z_.clear();
+    }
+
+private:
+    frep::Interpreter interp_;
+    std::optional<frep::BatchEvaluator<double>> tape_;
+    std::vector<double> x_, y_, z_, values_;
+    std::vector<std::uint8_t> failed_;
+};
 
 }  // namespace
 
 int runEval(const EvalOptions& options) {
     auto lm = loadModel(options.model);
     if (!lm) return 1;
-    const frep::Model& model = *lm->model;
-    frep::Interpreter interp(model.program(), model.bodyIndex(), model.parameters());
+    PointBatch batch(*lm->model, options.interpreter);
+    Answers out;
     if (!options.point.empty()) {
         if (options.point.size() != 3) {
-            std::cerr << "eval: give a point as three numbers: x y z\n";
+            std::fprintf(stderr, "eval: give a point as three numbers: x y z\n");
             return 2;
         }
-        printResult(evalPoint(model, interp, options.interpreter, options.point[0], options.point[1], options.point[2]));
+        batch.add(options.point[0], options.point[1], options.point[2]);
+        batch.answer(out);
         return 0;
     }
-    std::string line;
+    LineReader input(0);
+    std::string_view line;
     int lineNo = 0, bad = 0;
-    while (std::getline(std::cin, line)) {
-        ++lineNo;
-        if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
-        std::istringstream s(line);
-        double x, y, z;
-        if (!(s >> x >> y >> z)) {
-            std::cerr << "<stdin>:" << lineNo << ": error: expected three numbers \"x y z\", got \"" << line << "\"\n";
-            ++bad;
-            continue;
+    do {
+        while (input.next(line)) {
+            ++lineNo;
+            if (blankLine(line)) continue;
+            double x, y, z;
+            if (!parsePointLine(line, x, y, z)) {
+                // Answers to the lines before this one come first.
+                batch.answer(out);
+                out.flush();
+                std::string msg = "<stdin>:" + std::to_string(lineNo) +
+                                  ": error: expected three numbers \"x y z\", got \"";
+                msg.append(line);
+                msg += "\"\n";
+                std::fwrite(msg.data(), 1, msg.size(), stderr);
+                ++bad;
+                continue;
+            }
+            batch.add(x, y, z);
+            if (batch.full()) batch.answer(out);
         }
-        printResult(evalPoint(model, interp, options.interpreter, x, y, z));
+        // Everything read so far is answered before waiting for more.
+        batch.answer(out);
+        out.flush();
+    } while (input.fill());
+    if (input.error()) {
+        std::fprintf(stderr, "eval: error reading standard input: %s\n", std::strerror(input.error()));
+        return 1;
     }
     return bad ? 1 : 0;
 }

@@ -6,7 +6,6 @@
 #include <sstream>
 
 #include "garden/scene/model_file.h"
-#include "voxel/vdb_io.h"
 
 namespace hg::garden::cli {
 
@@ -55,12 +54,6 @@ bool boxOption(const std::vector<double>& numbers, std::optional<frep::Box3>& bo
     }
     box = b;
     return true;
-}
-
-bool outputWritable(const std::string& path) {
-    std::string why = voxel::checkWritable(path);
-    if (!why.empty()) std::cerr << "error: " << why << "\n";
-    return why.empty();
 }
 
 }  // namespace hg::garden::cli

@@ -31,7 +31,8 @@ int pickBody(const frep::Program& program, const std::string& name, const std::s
 bool boxOption(const std::vector<double>& numbers, std::optional<frep::Box3>& box);
 
 // Whether the output file can be written (checked before any work); prints
-// why not.
+// why not. In output_writable.cpp: it needs the voxel library, which the
+// kernel-only executable does not link (full_executable.h).
 bool outputWritable(const std::string& path);
 
 }  // namespace hg::garden::cli

@@ -1,12 +1,17 @@
-// hypergarden: the one executable. With no subcommand it opens the desktop
+// hypergarden: the command line. With no subcommand it opens the desktop
 // garden; subcommands check and evaluate HyperFun files, voxelize them, mesh
-// them to STL and replay scripted sessions.
+// them to STL and replay scripted sessions. Built twice: `hypergarden-full`
+// runs everything, `hypergarden` (HG_CLI_KERNEL_ONLY) runs check and eval
+// and hands the rest to hypergarden-full.
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
 #include <iostream>
 
 #include "garden/cli/commands.h"
+#ifdef HG_CLI_KERNEL_ONLY
+#include "garden/cli/full_executable.h"
+#endif
 
 int main(int argc, char** argv) {
     using namespace hg::garden::cli;
@@ -101,6 +106,13 @@ int main(int argc, char** argv) {
         std::cerr << "error: --a expects numbers separated by commas, for example --a 0.5,1\n";
         return 2;
     }
+    if (*check) return runCheck(checkOpts);
+    if (*eval) return runEval(evalOpts);
+#ifdef HG_CLI_KERNEL_ONLY
+    // This executable holds the HyperFun kernel only, so that check and eval
+    // start in a few milliseconds (see full_executable.h).
+    return runFullExecutable(argv);
+#else
     if (*replay) {
         if (!offscreen.empty()) {
             if (replayOpts.headless) {
@@ -118,8 +130,6 @@ int main(int argc, char** argv) {
     }
     if (app.get_subcommands().empty()) return runGarden(gardenOpts);
     if (*sessionCmd) return runSessionCommand(sessionOpts);
-    if (*check) return runCheck(checkOpts);
-    if (*eval) return runEval(evalOpts);
     if (*vox) {
         if (!parseNumberList(voxBox, voxOpts.box)) {
             std::cerr << "error: --box expects six numbers separated by commas: x0,y0,z0,x1,y1,z1\n";
@@ -135,4 +145,5 @@ int main(int argc, char** argv) {
         return runMesh(meshOpts);
     }
     return 2;
+#endif
 }

@@ -1,6 +1,8 @@
 // Reads the HyperFun conformance tables (tests/data/hyperfun/conformance/README.md).
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
