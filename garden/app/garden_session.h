@@ -130,6 +130,13 @@ public:
     // placed the same way in `to`'s model box.
     std::string reapplyImpacts(int from, int to);
     std::string applyImpactsModel(int sculpture, const ImpactSeries& series);
+    // The perturbation of a sculpture under a world point (the latest whose
+    // quadric holds it), by its index in the edit list; none when none does.
+    std::optional<std::size_t> pickPerturbation(int sculpture, const std::array<double, 3>& worldPoint) const;
+    // A perturbation's factor and extent changed: replaced in the edit list,
+    // not stacked (undoable, journalled). Radii in metres.
+    std::string editPerturbation(int sculpture, std::size_t edit, double strength, const std::array<double, 3>& radii);
+    std::string replacePerturbationModel(int sculpture, std::size_t edit, const Perturbation& p);
     // Moves, turns or scales a sculpture (undoable, journalled): its grid
     // stays, in its model frame. "" or why not (a scale out of range, say).
     std::string moveSculpture(int sculpture, const Placement& placement);
@@ -189,6 +196,15 @@ private:
     struct UndoEntry {
         int sculpture = -1;
         std::optional<std::pair<Placement, Placement>> move;
+        // A replaced perturbation: its index and the perturbations before and after.
+        std::optional<std::size_t> replaced;
+        std::optional<std::pair<Perturbation, Perturbation>> replacement;
+
+        static UndoEntry edit(int s) {
+            UndoEntry u;
+            u.sculpture = s;
+            return u;
+        }
     };
     void buildSculpture(std::size_t index);
     void buildMorph();

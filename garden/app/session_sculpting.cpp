@@ -10,6 +10,7 @@
 #include "garden/morph/morph_blend.h"
 #include "garden/scene/to_glm.h"
 #include "garden/sculpt/sculpture_edits.h"
+#include "garden/sculpt/edit_field.h"
 #include "garden/sculpt/impacts.h"
 #include "garden/sculpt/stroke_segments.h"
 #include "garden/sculpt/surface_ray.h"
@@ -54,6 +55,7 @@ void GardenSession::discardEdits(int sculpture) {
     while (const auto box = s.edits->undo()) showChanged(sculpture, *box);
     s.edits->clearRedo();
     const auto isEdit = [sculpture](const UndoEntry& u) { return u.sculpture == sculpture && !u.move; };
+    // (replacements go too: the edits they replaced are gone)
     undoOrder_.erase(std::remove_if(undoOrder_.begin(), undoOrder_.end(), isEdit), undoOrder_.end());
     redoOrder_.erase(std::remove_if(redoOrder_.begin(), redoOrder_.end(), isEdit), redoOrder_.end());
     record(DiscardRecord{s.name});
@@ -94,6 +96,9 @@ std::string GardenSession::restore(const std::vector<JournalRecord>& records) {
         } else if (const auto* d = std::get_if<DiscardRecord>(&r)) {
             const int i = sculptureOf(d->sculpture);
             if (why.empty()) discardEdits(i);
+        } else if (const auto* rp = std::get_if<ReplaceRecord>(&r)) {
+            const int i = sculptureOf(rp->sculpture);
+            if (why.empty()) why = replacePerturbationModel(i, rp->edit, rp->perturbation);
         } else if (const auto* im = std::get_if<ImpactRecord>(&r)) {
             const int i = sculptureOf(im->sculpture);
             if (why.empty()) why = applyImpactsModel(i, im->series);
@@ -165,7 +170,7 @@ std::string GardenSession::startStroke(int sculpture, Stroke stroke) {
     e.op = std::move(stroke);
     showChanged(sculpture, edits.append(std::move(e)));
     strokeSculpture_ = sculpture;
-    undoOrder_.push_back({sculpture, std::nullopt});
+    undoOrder_.push_back(UndoEntry::edit(sculpture));
     redoOrder_.clear();
     return "";
 }
@@ -237,7 +242,7 @@ std::string GardenSession::applyPerturbationModel(int sculpture, const Perturbat
     Edit e;
     e.op = p;
     showChanged(sculpture, edits.append(std::move(e)));
-    undoOrder_.push_back({sculpture, std::nullopt});
+    undoOrder_.push_back(UndoEntry::edit(sculpture));
     redoOrder_.clear();
     record(PerturbRecord{sculptures_[static_cast<std::size_t>(sculpture)].name, p});
     return "";
@@ -283,7 +288,7 @@ std::string GardenSession::applyImpactsModel(int sculpture, const ImpactSeries& 
     auto& added = std::get<ImpactSeries>(e.op);
     for (Impact& m : added.impacts) m.reach = impactReach(m, edits.units());
     showChanged(sculpture, edits.append(std::move(e)));
-    undoOrder_.push_back({sculpture, std::nullopt});
+    undoOrder_.push_back(UndoEntry::edit(sculpture));
     redoOrder_.clear();
     record(ImpactRecord{sculptures_[static_cast<std::size_t>(sculpture)].name, series});
     return "";
@@ -318,6 +323,62 @@ std::string GardenSession::reapplyImpacts(int from, int to) {
     return applyImpactsModel(to, series);
 }
 
+std::optional<std::size_t> GardenSession::pickPerturbation(int sculpture, const std::array<double, 3>& worldPoint) const {
+    if (sculpture < 0 || sculpture >= static_cast<int>(sculptures_.size())) return std::nullopt;
+    const Sculpture& s = sculptures_[static_cast<std::size_t>(sculpture)];
+    if (!s.edits || !finite3(worldPoint)) return std::nullopt;
+    const ModelPoint m = toModel(s, toGlm(worldPoint));
+    const auto& edits = s.edits->list().edits();
+    for (std::size_t i = edits.size(); i-- > 0;) {
+        const auto* p = std::get_if<Perturbation>(&edits[i].op);
+        if (!p) continue;
+        if (quadric(m[0], m[1], m[2], *p) >= 0.0 || (p->mirror && quadric(m[0], m[1], m[2], mirrored(*p)) >= 0.0))
+            return i;
+    }
+    return std::nullopt;
+}
+
+std::string GardenSession::editPerturbation(int sculpture, std::size_t edit, double strength,
+                                            const std::array<double, 3>& radii) {
+    if (std::string why = checkEditable(sculpture); !why.empty()) return why;
+    const Sculpture& s = sculptures_[static_cast<std::size_t>(sculpture)];
+    if (!s.edits || edit >= s.edits->list().size()) return "no such edit";
+    const auto* old = std::get_if<Perturbation>(&s.edits->list().edits()[edit].op);
+    if (!old) return "edit " + std::to_string(edit) + " is not a perturbation";
+    Perturbation p = *old;
+    p.strength = strength;
+    p.radii = {radii[0] / s.scale, radii[1] / s.scale, radii[2] / s.scale};
+    return replacePerturbationModel(sculpture, edit, p);
+}
+
+std::string GardenSession::replacePerturbationModel(int sculpture, std::size_t edit, const Perturbation& p) {
+    if (stroking()) endStroke();
+    if (std::string why = checkEditable(sculpture); !why.empty()) return why;
+    Sculpture& s = sculptures_[static_cast<std::size_t>(sculpture)];
+    if (!s.edits || edit >= s.edits->list().size()) return "no such edit";
+    const auto* old = std::get_if<Perturbation>(&s.edits->list().edits()[edit].op);
+    if (!old) return "edit " + std::to_string(edit) + " is not a perturbation";
+    const int used = p.shape == QuadricShape::Ellipsoid ? 3 : 2;
+    for (int i = 0; i < used; ++i)
+        if (!(std::isfinite(p.radii[static_cast<std::size_t>(i)]) && p.radii[static_cast<std::size_t>(i)] >= 0.5 * s.edits->units().voxelSize))
+            return "the perturbation's radii must be at least half a voxel";
+    if (p.shape == QuadricShape::Torus && p.radii[1] >= p.radii[0]) return "a torus's tube radius must be under its ring radius";
+    if (!(std::isfinite(p.strength) && std::fabs(p.strength) <= 1000.0)) return "the strength must be a number in [-1000, 1000] voxels";
+    const Perturbation before = *old;
+    Edit e;
+    e.op = p;
+    Edit replaced;
+    showChanged(sculpture, s.edits->replace(edit, std::move(e), replaced));
+    UndoEntry entry;
+    entry.sculpture = sculpture;
+    entry.replaced = edit;
+    entry.replacement = std::make_pair(before, p);
+    undoOrder_.push_back(entry);
+    redoOrder_.clear();
+    record(ReplaceRecord{s.name, edit, p});
+    return "";
+}
+
 bool GardenSession::undo() { return stepHistory(undoOrder_, redoOrder_, true); }
 bool GardenSession::redo() { return stepHistory(redoOrder_, undoOrder_, false); }
 
@@ -330,6 +391,12 @@ bool GardenSession::stepHistory(std::vector<UndoEntry>& from, std::vector<UndoEn
         if (entry.move) {
             // A move holds the placements before and after it.
             placeSculpture(entry.sculpture, undoing ? entry.move->first : entry.move->second);
+        } else if (entry.replaced) {
+            if (!s.edits || *entry.replaced >= s.edits->list().size()) continue;
+            Edit e;
+            e.op = undoing ? entry.replacement->first : entry.replacement->second;
+            Edit out;
+            showChanged(entry.sculpture, s.edits->replace(*entry.replaced, std::move(e), out));
         } else {
             if (!s.edits) continue;
             const auto box = undoing ? s.edits->undo() : s.edits->redo();
@@ -354,7 +421,9 @@ std::string GardenSession::moveSculpture(int sculpture, const Placement& placeme
         return "the scale must be in [" + std::to_string(kMinSculptureScale) + ", " + std::to_string(kMaxSculptureScale) +
                "] metres per model unit";
     Sculpture& s = sculptures_[static_cast<std::size_t>(sculpture)];
-    undoOrder_.push_back({sculpture, std::make_pair(s.placement, placement)});
+    UndoEntry entry = UndoEntry::edit(sculpture);
+    entry.move = std::make_pair(s.placement, placement);
+    undoOrder_.push_back(entry);
     redoOrder_.clear();
     placeSculpture(sculpture, placement);
     record(MoveRecord{s.name, placement});

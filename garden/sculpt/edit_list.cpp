@@ -139,26 +139,42 @@ frep::Box3 EditList::extendLast(std::size_t firstPiece) {
 }
 
 Edit EditList::removeLast() {
-    const auto e = static_cast<std::uint32_t>(edits_.size() - 1);
-    const std::size_t n = garden::pieceCount(edits_.back());
-    for (std::size_t p = 0; p < n; ++p) {
+    unindex(static_cast<std::uint32_t>(edits_.size() - 1));
+    Edit out = std::move(edits_.back());
+    edits_.pop_back();
+    return out;
+}
+
+void EditList::unindex(std::uint32_t e) {
+    const Edit& edit = edits_[e];
+    for (std::size_t p = 0; p < garden::pieceCount(edit); ++p) {
         std::int64_t lo[3], hi[3];
-        cellRange(pieceReach(edits_.back(), p), lo, hi);
+        cellRange(pieceReach(edit, p), lo, hi);
         for (std::int64_t k = lo[2]; k <= hi[2]; ++k)
             for (std::int64_t j = lo[1]; j <= hi[1]; ++j)
                 for (std::int64_t i = lo[0]; i <= hi[0]; ++i) {
                     auto it = cells_.find(key(i, j, k));
                     if (it == cells_.end()) continue;
                     auto& v = it->second;
-                    // The last edit's pieces sit at the end of every cell.
-                    while (!v.empty() && v.back().edit == e) v.pop_back();
+                    v.erase(std::remove_if(v.begin(), v.end(), [e](const Piece& q) { return q.edit == e; }), v.end());
                     if (v.empty()) cells_.erase(it);
                 }
         --pieceCount_;
     }
-    Edit out = std::move(edits_.back());
-    edits_.pop_back();
-    return out;
+}
+
+Edit EditList::replace(std::size_t at, Edit edit) {
+    const auto e = static_cast<std::uint32_t>(at);
+    unindex(e);
+    Edit old = std::move(edits_[at]);
+    edits_[at] = std::move(edit);
+    Edit& added = edits_[at];
+    for (std::size_t p = 0; p < garden::pieceCount(added); ++p) {
+        const frep::Box3 box = pieceReach(added, p);
+        index(e, static_cast<std::uint32_t>(p), box);
+        added.reach = p == 0 ? box : hull(added.reach, box);
+    }
+    return old;
 }
 
 std::vector<EditPick> EditList::reaching(const frep::Box3& box) const {

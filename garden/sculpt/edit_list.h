@@ -41,6 +41,9 @@ public:
     frep::Box3 extendLast(std::size_t firstPiece);
     // Removes the last edit (undo) and returns it.
     Edit removeLast();
+    // Puts `edit` in place of edit `index` (a perturbation's factor or
+    // extent changed: replaced, not stacked) and returns the one it replaced.
+    Edit replace(std::size_t index, Edit edit);
 
     // The pieces that reach `box`, by edit in list order.
     std::vector<EditPick> reaching(const frep::Box3& box) const;
@@ -56,6 +59,7 @@ private:
     };
     using CellKey = std::uint64_t;
     void index(std::uint32_t edit, std::uint32_t piece, const frep::Box3& box);
+    void unindex(std::uint32_t edit);
     void cellRange(const frep::Box3& box, std::int64_t lo[3], std::int64_t hi[3]) const;
     static CellKey key(std::int64_t i, std::int64_t j, std::int64_t k);
 

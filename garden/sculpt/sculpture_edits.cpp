@@ -123,6 +123,21 @@ voxel::IndexBox SculptureEdits::extendLastStroke(const std::vector<ModelPoint>& 
     return box;
 }
 
+voxel::IndexBox SculptureEdits::replace(std::size_t index, Edit edit, Edit& replaced) {
+    edit.id = list_.edits()[index].id;
+    const frep::Box3 before = list_.edits()[index].reach;
+    replaced = list_.replace(index, std::move(edit));
+    const frep::Box3& after = list_.edits()[index].reach;
+    frep::Box3 both;
+    for (int a = 0; a < 3; ++a) {
+        both.lo[a] = std::min(before.lo[a], after.lo[a]);
+        both.hi[a] = std::max(before.hi[a], after.hi[a]);
+    }
+    const voxel::IndexBox box = voxelsOf(both);
+    update(box);
+    return box;
+}
+
 std::optional<voxel::IndexBox> SculptureEdits::undo() {
     if (list_.empty()) return std::nullopt;
     Edit removed = list_.removeLast();

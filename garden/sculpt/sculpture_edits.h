@@ -48,6 +48,9 @@ public:
     // or redo. A new edit clears the redo stack.
     std::optional<voxel::IndexBox> undo();
     std::optional<voxel::IndexBox> redo();
+    // Puts `edit` in place of edit `index` and recomputes where either
+    // reaches; `replaced` receives the edit it replaced (to put back).
+    voxel::IndexBox replace(std::size_t index, Edit edit, Edit& replaced);
 
     // The shown grid's `box` recomputed from the base and the edits that
     // reach it.

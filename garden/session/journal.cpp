@@ -58,6 +58,15 @@ MirrorPlane readMirror(const nlohmann::json& v, const std::string& path) {
     return m;
 }
 
+void writePerturbation(const Perturbation& q, nlohmann::json& j) {
+    j["shape"] = q.shape == QuadricShape::Ellipsoid ? "ellipsoid" : "torus";
+    j["center"] = point(q.center);
+    j["axes"] = nlohmann::json::array({point(q.axes[0]), point(q.axes[1]), point(q.axes[2])});
+    j["radii"] = point(q.radii);
+    j["strength"] = q.strength;
+    if (q.mirror) j["mirror"] = mirrorJson(*q.mirror);
+}
+
 }  // namespace
 
 std::uint32_t crc32(const std::string& text) {
@@ -76,7 +85,7 @@ std::uint32_t crc32(const std::string& text) {
 }
 
 std::string journalRecordKind(const JournalRecord& r) {
-    static const char* const names[] = {"stroke", "perturb", "undo", "redo", "discard", "morph", "move", "impacts"};
+    static const char* const names[] = {"stroke", "perturb", "undo", "redo", "discard", "morph", "move", "impacts", "replace"};
     return names[r.index()];
 }
 
@@ -93,14 +102,12 @@ std::string journalRecordJson(const JournalRecord& record) {
         j["path"] = std::move(path);
         if (s->mirror) j["mirror"] = mirrorJson(*s->mirror);
     } else if (const auto* p = std::get_if<PerturbRecord>(&record)) {
-        const Perturbation& q = p->perturbation;
         j["sculpture"] = p->sculpture;
-        j["shape"] = q.shape == QuadricShape::Ellipsoid ? "ellipsoid" : "torus";
-        j["center"] = point(q.center);
-        j["axes"] = nlohmann::json::array({point(q.axes[0]), point(q.axes[1]), point(q.axes[2])});
-        j["radii"] = point(q.radii);
-        j["strength"] = q.strength;
-        if (q.mirror) j["mirror"] = mirrorJson(*q.mirror);
+        writePerturbation(p->perturbation, j);
+    } else if (const auto* rp = std::get_if<ReplaceRecord>(&record)) {
+        j["sculpture"] = rp->sculpture;
+        j["edit"] = rp->edit;
+        writePerturbation(rp->perturbation, j);
     } else if (const auto* d = std::get_if<DiscardRecord>(&record)) {
         j["sculpture"] = d->sculpture;
     } else if (const auto* m = std::get_if<MorphWeightsRecord>(&record)) {
@@ -145,8 +152,12 @@ JournalRecord parseJournalRecord(const std::string& text, const std::string& pat
         r.finish();
         return s;
     }
-    if (action == "perturb") {
-        ObjectReader r(v, path, {"action", "sculpture", "shape", "center", "axes", "radii", "strength", "mirror"});
+    if (action == "perturb" || action == "replace") {
+        ObjectReader r(v, path, action == "perturb"
+                                    ? std::initializer_list<const char*>{"action", "sculpture", "shape", "center", "axes",
+                                                                         "radii", "strength", "mirror"}
+                                    : std::initializer_list<const char*>{"action", "sculpture", "edit", "shape", "center",
+                                                                         "axes", "radii", "strength", "mirror"});
         PerturbRecord p;
         p.sculpture = readString(r.required("sculpture"), r.pathOf("sculpture"));
         const std::string shape = readString(r.required("shape"), r.pathOf("shape"));
@@ -161,6 +172,12 @@ JournalRecord parseJournalRecord(const std::string& text, const std::string& pat
             if (!(p.perturbation.radii[i] > 0.0)) throw JsonError(indexPath(r.pathOf("radii"), i), "expected a positive radius");
         p.perturbation.strength = finite(r.required("strength"), r.pathOf("strength"));
         if (r.has("mirror")) p.perturbation.mirror = readMirror(r.required("mirror"), r.pathOf("mirror"));
+        if (action == "replace") {
+            ReplaceRecord rp{p.sculpture, static_cast<std::size_t>(readInt(r.required("edit"), r.pathOf("edit"), 0, 100000000)),
+                             p.perturbation};
+            r.finish();
+            return rp;
+        }
         r.finish();
         return p;
     }
@@ -229,7 +246,7 @@ JournalRecord parseJournalRecord(const std::string& text, const std::string& pat
         return m;
     }
     throw JsonError(childPath(path, "action"),
-                    "unknown action '" + action + "' (expected stroke, perturb, impacts, undo, redo, discard, morph or move)");
+                    "unknown action '" + action + "' (expected stroke, perturb, replace, impacts, undo, redo, discard, morph or move)");
 }
 
 JournalRead parseJournal(const std::string& text, const std::string& name) {

@@ -53,6 +53,14 @@ struct MoveRecord {
     Placement placement;
 };
 
+// A perturbation's factor or extent changed: edit `edit` of the sculpture's
+// list replaced.
+struct ReplaceRecord {
+    std::string sculpture;
+    std::size_t edit = 0;
+    Perturbation perturbation;
+};
+
 struct UndoRecord {};
 struct RedoRecord {};
 struct DiscardRecord { std::string sculpture; };
@@ -65,7 +73,7 @@ struct MorphWeightsRecord {
 
 using JournalRecord =
     std::variant<StrokeRecord, PerturbRecord, UndoRecord, RedoRecord, DiscardRecord, MorphWeightsRecord, MoveRecord,
-                 ImpactRecord>;
+                 ImpactRecord, ReplaceRecord>;
 
 std::string journalRecordKind(const JournalRecord& r);
 

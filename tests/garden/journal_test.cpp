@@ -37,7 +37,8 @@ std::vector<JournalRecord> everyKind() {
     series.rayDirections = {{0.0, -1.0, 0.0}};
     series.volume = 3e-6;
     return {s, PerturbRecord{"dancer", q}, UndoRecord{}, RedoRecord{}, DiscardRecord{"metamorphosis"},
-            MorphWeightsRecord{{0.2, 0.3, 0.5}, {1.1, 0.9, 1.0}}, MoveRecord{"dryad", moved}, ImpactRecord{"knot", series}};
+            MorphWeightsRecord{{0.2, 0.3, 0.5}, {1.1, 0.9, 1.0}}, MoveRecord{"dryad", moved}, ImpactRecord{"knot", series},
+            ReplaceRecord{"dancer", 3, q}};
 }
 
 std::string slurp(const std::string& path) {

@@ -250,6 +250,33 @@ TEST_F(SessionSculptingTest, ImpactsRemoveTheirCompactionVolumeAndFireAgainAtAno
     EXPECT_NE(s.applyImpacts(c, {2.0, 5.0, 9.0}, {0.0, 1.0, 0.0}, t), "");  // pointing away: nothing met
 }
 
+TEST_F(SessionSculptingTest, APickedPerturbationIsReplacedNotStacked) {
+    const std::string garden = writeGarden();
+    GardenSession s(loadGarden(garden), smallSettings());
+    const int c = s.findSculpture("c");
+    ASSERT_EQ(s.applyPerturbation(c, QuadricShape::Ellipsoid, {2.0, 1.1, 1.15}, {0.15, 0.1, 0.15}, 2.0), "");
+    ASSERT_EQ(s.applyStroke(c, StrokeTool::Carve, {{2.5, 0.5, 1.5}, {2.5, 0.7, 1.5}}, 0.08), "");
+    const Sculpture& sc = s.sculptures()[static_cast<std::size_t>(c)];
+    const voxel::Volume first = sc.volume->clone();
+    EXPECT_FALSE(s.pickPerturbation(c, {2.5, 0.5, 1.5}));  // under the stroke, no bump
+    const auto picked = s.pickPerturbation(c, {2.0, 1.12, 1.15});
+    ASSERT_TRUE(picked);
+    EXPECT_EQ(*picked, 0u);
+    ASSERT_EQ(s.editPerturbation(c, *picked, -3.0, {0.2, 0.12, 0.2}), "");
+    EXPECT_EQ(s.editCount(c), 2u);
+    EXPECT_EQ(differences(*sc.volume, *sc.edits->rebuild()), 0);
+    // The same as a session that made the changed bump in the first place.
+    GardenSession other(loadGarden(garden), smallSettings());
+    ASSERT_EQ(other.applyPerturbation(c, QuadricShape::Ellipsoid, {2.0, 1.1, 1.15}, {0.2, 0.12, 0.2}, -3.0), "");
+    ASSERT_EQ(other.applyStroke(c, StrokeTool::Carve, {{2.5, 0.5, 1.5}, {2.5, 0.7, 1.5}}, 0.08), "");
+    EXPECT_EQ(differences(*sc.volume, *other.sculptures()[static_cast<std::size_t>(c)].volume), 0);
+    ASSERT_TRUE(s.undo());
+    EXPECT_EQ(differences(*sc.volume, first), 0);
+    ASSERT_TRUE(s.redo());
+    EXPECT_EQ(differences(*sc.volume, *other.sculptures()[static_cast<std::size_t>(c)].volume), 0);
+    EXPECT_NE(s.editPerturbation(c, 1, 1.0, {0.1, 0.1, 0.1}), "");  // edit 1 is the stroke
+}
+
 TEST_F(SessionSculptingTest, BadInputIsRefusedAndChangesNothing) {
     GardenSession s(loadGarden(writeGarden()), smallSettings());
     const int a = s.findSculpture("a");
