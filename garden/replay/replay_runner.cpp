@@ -93,6 +93,12 @@ std::string runSculptCommand(const SculptCommand& command, GardenSession& sessio
         if (tool.spread == ImpactSpread::Cone) tool.spreadSize *= 3.14159265358979323846 / 180.0;
         return session.applyImpacts(i, c->origin, c->direction, tool);
     }
+    if (const auto* c = std::get_if<EditPerturbationCommand>(&command)) {
+        if (std::string why = find(c->sculpture, i); !why.empty()) return why;
+        const auto edit = session.pickPerturbation(i, c->at);
+        if (!edit) return "no perturbation of '" + c->sculpture + "' under that point";
+        return session.editPerturbation(i, *edit, c->strength, c->radii);
+    }
     if (const auto* c = std::get_if<ReapplyImpactsCommand>(&command)) {
         int j = -1;
         if (std::string why = find(c->from, i); !why.empty()) return why;

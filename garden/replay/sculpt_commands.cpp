@@ -82,6 +82,16 @@ SculptCommand readSculptCommand(const std::string& key, const nlohmann::json& v,
         r.finish();
         return c;
     }
+    if (key == "edit_perturbation") {
+        ObjectReader r(v, path, {"sculpture", "at", "strength", "radii"});
+        EditPerturbationCommand c;
+        c.sculpture = readString(r.required("sculpture"), r.pathOf("sculpture"));
+        c.at = readVec3(r.required("at"), r.pathOf("at"));
+        c.strength = readNumber(r.required("strength"), r.pathOf("strength"), -1000.0, 1000.0);
+        c.radii = readVec3(r.required("radii"), r.pathOf("radii"));
+        r.finish();
+        return c;
+    }
     if (key == "reapply_impacts") {
         ObjectReader r(v, path, {"from", "to"});
         ReapplyImpactsCommand c{readString(r.required("from"), r.pathOf("from")), readString(r.required("to"), r.pathOf("to"))};

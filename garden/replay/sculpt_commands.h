@@ -46,6 +46,14 @@ struct ReapplyImpactsCommand {
     std::string from, to;
 };
 
+// The perturbation under a world point given a new strength and radii.
+struct EditPerturbationCommand {
+    std::string sculpture;
+    std::array<double, 3> at{};
+    double strength = 2.0;
+    std::array<double, 3> radii{0.05, 0.05, 0.05};
+};
+
 struct UndoCommand { int times = 1; };
 struct RedoCommand { int times = 1; };
 
@@ -53,10 +61,10 @@ struct RedoCommand { int times = 1; };
 struct ToolCommand { ToolSettings settings; };
 
 using SculptCommand = std::variant<StrokeCommand, PerturbCommand, UndoCommand, RedoCommand, ToolCommand, ImpactsCommand,
-                                   ReapplyImpactsCommand>;
+                                   ReapplyImpactsCommand, EditPerturbationCommand>;
 
-// Reads the command under `key` (stroke, perturb, impacts, reapply_impacts,
-// undo, redo, sculpt_tool);
+// Reads the command under `key` (stroke, perturb, edit_perturbation,
+// impacts, reapply_impacts, undo, redo, sculpt_tool);
 // throws JsonError with the JSON path of a bad value.
 SculptCommand readSculptCommand(const std::string& key, const nlohmann::json& v, const std::string& path);
 class GardenSession;
