@@ -76,4 +76,58 @@ EditRegionStats applyEditTape(const Volume& base, Volume& target, const IndexBox
     return stats;
 }
 
+EditRegionStats applyEditTapes(const Volume& base, Volume& target, const std::vector<IndexBox>& regions,
+                               const std::function<frep::Tape(std::size_t)>& tapeOf) {
+    const auto start = std::chrono::steady_clock::now();
+    EditRegionStats stats;
+    const VolumeFrame& frame = target.frame;
+    const float band = frame.band;
+    openvdb::FloatTree& tree = vdb(target).tree();
+    // Every region's leaves first (touching the tree is not thread-safe).
+    std::vector<IndexBox> clips(regions.size());
+    std::vector<std::vector<FloatLeaf*>> leaves(regions.size());
+    std::vector<std::vector<std::array<int, 3>>> origins(regions.size());
+    for (std::size_t r = 0; r < regions.size(); ++r) {
+        clips[r] = intersect(regions[r], frame.indexBox);
+        origins[r] = alignedBoxes(clips[r], static_cast<int>(FloatLeaf::DIM));
+        for (const auto& o : origins[r]) leaves[r].push_back(tree.touchLeaf(openvdb::Coord(o[0], o[1], o[2])));
+        stats.voxels += clips[r].volume();
+    }
+    const openvdb::FloatTree& baseTree = vdb(base).tree();
+    tbb::enumerable_thread_specific<frep::ErrorReport> errors;
+    tbb::parallel_for(std::size_t{0}, regions.size(), [&](std::size_t r) {
+        if (clips[r].empty()) return;
+        const frep::Tape tape = tapeOf(r);
+        Worker wk(tape, baseTree);
+        const IndexBox& clip = clips[r];
+        const int dim = static_cast<int>(FloatLeaf::DIM);
+        for (std::size_t b = 0; b < origins[r].size(); ++b) {
+            const auto& o = origins[r][b];
+            wk.x.clear(); wk.y.clear(); wk.z.clear(); wk.w.clear(); wk.offsets.clear();
+            for (int i = std::max(o[0], clip.lo[0]); i <= std::min(o[0] + dim - 1, clip.hi[0]); ++i)
+                for (int j = std::max(o[1], clip.lo[1]); j <= std::min(o[1] + dim - 1, clip.hi[1]); ++j)
+                    for (int k = std::max(o[2], clip.lo[2]); k <= std::min(o[2] + dim - 1, clip.hi[2]); ++k) {
+                        const openvdb::Coord c(i, j, k);
+                        wk.x.push_back(static_cast<float>(frame.coordinate(0, i)));
+                        wk.y.push_back(static_cast<float>(frame.coordinate(1, j)));
+                        wk.z.push_back(static_cast<float>(frame.coordinate(2, k)));
+                        wk.w.push_back(wk.acc.getValue(c));
+                        wk.offsets.push_back(FloatLeaf::coordToOffset(c));
+                    }
+            wk.out.resize(wk.x.size());
+            wk.eval.evaluate(wk.x.data(), wk.y.data(), wk.z.data(), wk.w.data(), wk.out.data(), wk.x.size(), wk.errors);
+            FloatLeaf& leaf = *leaves[r][b];
+            for (std::size_t n = 0; n < wk.out.size(); ++n) {
+                const float v = std::clamp(wk.out[n], -band, band);
+                if (std::fabs(v) < band) leaf.setValueOn(wk.offsets[n], v);
+                else leaf.setValueOff(wk.offsets[n], v);
+            }
+        }
+        errors.local().merge(wk.errors);
+    });
+    for (const auto& e : errors) stats.errors.merge(e);
+    stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return stats;
+}
+
 }  // namespace hg::voxel

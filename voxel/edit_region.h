@@ -7,6 +7,8 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
+#include <vector>
 
 #include "frep/domain_error.h"
 #include "frep/tape.h"
@@ -25,5 +27,11 @@ struct EditRegionStats {
 // is read before it is written); `region` is clipped to it. Values are
 // clamped to the band and stored active inside it, like the sampler's.
 EditRegionStats applyEditTape(const Volume& base, Volume& target, const IndexBox& region, const frep::Tape& tape);
+
+// Many regions, each with its own tape (`tapeOf(i)`, called from any
+// thread), side by side on TBB: what a bulk rebuild of thousands of small
+// cells needs (`base` and `target` distinct).
+EditRegionStats applyEditTapes(const Volume& base, Volume& target, const std::vector<IndexBox>& regions,
+                               const std::function<frep::Tape(std::size_t)>& tapeOf);
 
 }  // namespace hg::voxel

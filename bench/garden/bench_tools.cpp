@@ -7,7 +7,7 @@
 // resampled from the sculpture's HyperFun source alone (voxel::resampleRegion,
 // interval-culled), what a box update costs without the unedited grid.
 // Seed 002's impact table form: 10, 100 and 1,000 impacts in one pull, cast,
-// applied and remeshed.
+// applied and remeshed. Reopening a session of 10,000 journalled actions.
 // Prints a Markdown table; --json FILE writes the rows too.
 //
 //   ./build/release/bench/bench_tools [--json out.json] [--filter NAME] [--repeat N]
@@ -22,6 +22,7 @@
 
 #include "../bench_common.h"
 
+#include "garden/app/garden_session.h"
 #include "garden/sculpt/impacts.h"
 #include "garden/sculpt/sculpture_edits.h"
 #include "garden/sculpt/stroke_segments.h"
@@ -200,6 +201,54 @@ int main(int argc, char** argv) {
                     castMs, applyMs, remeshMs, total, total / static_cast<double>(std::max<std::size_t>(hits, 1)));
         rows.push_back({{"name", name}, {"impacts", hits}, {"cast_ms", castMs}, {"apply_ms", applyMs},
                         {"remesh_ms", remeshMs}, {"total_ms", total}});
+    }
+    // Reopening a session: 10,000 journalled actions (strokes, perturbations,
+    // impacts, a tenth of them undone) played into the default garden, the
+    // grids recomputed once at the end. Peer: opening the garden itself.
+    if (args.matches("reopen")) {
+        std::printf("\n| garden | journalled actions | open the garden (s) | play the journal (s) | total (s) | play / open |\n");
+        std::printf("|---|---:|---:|---:|---:|---:|\n");
+        const std::string gardenPath = std::string(HG_SOURCE_DIR) + "/content/gardens/default.json";
+        std::vector<garden::JournalRecord> records;
+        {
+            garden::GardenSession probe(garden::loadGarden(gardenPath));
+            std::mt19937 rng(9);
+            std::vector<int> editable;
+            for (std::size_t i = 0; i < probe.sculptures().size(); ++i)
+                if (!probe.sculptures()[i].missing() && !probe.sculptures()[i].morphResult()) editable.push_back(static_cast<int>(i));
+            std::size_t made = 0;
+            while (records.size() < 10000) {
+                const auto& sc = probe.sculptures()[static_cast<std::size_t>(editable[rng() % editable.size()])];
+                const frep::Box3& b = sc.volume->frame.modelBox;
+                const double v = sc.volume->frame.voxelSize;
+                std::uniform_real_distribution<double> ux(b.lo[0], b.hi[0]), uy(b.lo[1], b.hi[1]), uz(b.lo[2], b.hi[2]);
+                const garden::ModelPoint a{ux(rng), uy(rng), uz(rng)};
+                if (made > 0 && rng() % 10 == 0) {
+                    records.push_back(garden::UndoRecord{});
+                    --made;
+                } else if (rng() % 4 == 0) {
+                    garden::Perturbation p;
+                    p.center = a;
+                    p.radii = {6 * v, 5 * v, 6 * v};
+                    p.strength = 2.0;
+                    records.push_back(garden::PerturbRecord{sc.name, p});
+                    ++made;
+                } else {
+                    records.push_back(garden::StrokeRecord{sc.name, rng() % 2 ? garden::StrokeTool::Carve : garden::StrokeTool::Add,
+                                                           4 * v, 2.0, {a, {a[0] + 10 * v, a[1] + 4 * v, a[2]}}, std::nullopt});
+                    ++made;
+                }
+            }
+        }
+        auto t0 = Clock::now();
+        garden::GardenSession session(garden::loadGarden(gardenPath));
+        const double openS = msSince(t0) / 1000.0;
+        t0 = Clock::now();
+        const std::string why = session.restore(records);
+        const double playS = msSince(t0) / 1000.0;
+        if (!why.empty()) std::fprintf(stderr, "reopen: %s\n", why.c_str());
+        std::printf("| default | %zu | %.2f | %.2f | %.2f | %.2f |\n", records.size(), openS, playS, openS + playS, playS / openS);
+        rows.push_back({{"name", "reopen/10000"}, {"open_s", openS}, {"play_s", playS}});
     }
     if (!args.jsonPath.empty()) std::ofstream(args.jsonPath) << rows.dump(2) << "\n";
     return 0;

@@ -115,15 +115,16 @@ std::string GardenSession::restore(const std::vector<JournalRecord>& records) {
         }
         if (!why.empty()) error = "record " + std::to_string(n + 1) + " (" + journalRecordKind(r) + "): " + why;
     }
+    restoring_ = false;
     for (std::size_t i = 0; i < sculptures_.size(); ++i)
         if (sculptures_[i].edits)
             for (const voxel::IndexBox& box : sculptures_[i].edits->flush()) showChanged(static_cast<int>(i), box);
-    restoring_ = false;
     return error;
 }
 
 void GardenSession::showChanged(int sculpture, const voxel::IndexBox& box) {
-    if (box.empty()) return;
+    // Playing a journal: the grids are recomputed at the end, and shown then.
+    if (box.empty() || restoring_) return;
     Sculpture& s = sculptures_[static_cast<std::size_t>(sculpture)];
     s.pyramid->update(box);
     s.queue->markChanged(box);

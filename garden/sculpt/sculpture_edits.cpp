@@ -34,6 +34,8 @@ voxel::IndexBox SculptureEdits::voxelsOf(const frep::Box3& box) const {
 
 namespace {
 
+constexpr int kFlushCellVoxels = 16;
+
 // The model box of `cell`'s voxels, one voxel wider than their positions:
 // picking a piece too many changes no value, one too few would.
 frep::Box3 modelBoxOf(const voxel::VolumeFrame& f, const voxel::IndexBox& cell) {
@@ -48,10 +50,10 @@ frep::Box3 modelBoxOf(const voxel::VolumeFrame& f, const voxel::IndexBox& cell) 
 // The index cells (kEditIndexCellVoxels a side, aligned) that cover `box`,
 // each clipped to it: a big box (a long stroke, a pull of a thousand
 // impacts) is evaluated cell by cell with the pieces that reach each cell.
-std::vector<voxel::IndexBox> cellsOf(const voxel::IndexBox& box) {
+std::vector<voxel::IndexBox> cellsOf(const voxel::IndexBox& box, int size = kEditIndexCellVoxels) {
     std::vector<voxel::IndexBox> out;
-    const int n = kEditIndexCellVoxels - 1;
-    for (const auto& o : voxel::alignedBoxes(box, kEditIndexCellVoxels))
+    const int n = size - 1;
+    for (const auto& o : voxel::alignedBoxes(box, size))
         out.push_back(voxel::intersect(voxel::IndexBox::fromCorners(o[0], o[1], o[2], o[0] + n, o[1] + n, o[2] + n), box));
     return out;
 }
@@ -165,14 +167,20 @@ std::vector<voxel::IndexBox> SculptureEdits::flush() {
         for (const auto& o : voxel::alignedBoxes(b, kEditIndexCellVoxels)) cells.push_back(o);
     std::sort(cells.begin(), cells.end());
     cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
-    std::vector<voxel::IndexBox> done;
+    std::vector<voxel::IndexBox> done, parts;
     for (const auto& o : cells) {
         const int n = kEditIndexCellVoxels - 1;
-        const voxel::IndexBox cell = voxel::IndexBox::fromCorners(o[0], o[1], o[2], o[0] + n, o[1] + n, o[2] + n);
-        update(cell);
-        done.push_back(voxel::intersect(cell, shown_.frame.indexBox));
+        const voxel::IndexBox cell =
+            voxel::intersect(voxel::IndexBox::fromCorners(o[0], o[1], o[2], o[0] + n, o[1] + n, o[2] + n), shown_.frame.indexBox);
+        // Thousands of edits crowd a cell: its eighths pick fewer pieces each.
+        for (const voxel::IndexBox& part : cellsOf(cell, kFlushCellVoxels)) parts.push_back(part);
+        done.push_back(cell);
     }
     pending_.clear();
+    // Each part from the base and the edits that reach it, side by side.
+    lastStats_ = voxel::applyEditTapes(*base_, shown_, parts, [&](std::size_t i) {
+        return editTape(list_, list_.reaching(modelBoxOf(shown_.frame, parts[i])));
+    });
     return done;
 }
 
