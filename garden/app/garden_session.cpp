@@ -281,7 +281,7 @@ void GardenSession::morph() {
     blender_->setViewer(toModel(r, navigator_.eye()));
     const BlendStep step = blender_->step(budget);
     for (const voxel::IndexBox& box : step.changed) {
-        if (r.edits) r.edits->update(box);  // the blend changed under the edits
+        if (r.edits) r.edits->baseChanged(box);  // the blend changed under the edits
         r.pyramid->update(box);
         r.queue->markChanged(box);
     }

@@ -101,11 +101,36 @@ voxel::EditRegionStats SculptureEdits::applyOnTop(const voxel::IndexBox& box, st
     return lastStats_;
 }
 
+void SculptureEdits::capture(const voxel::IndexBox& box) {
+    if (deferred_ || before_.empty() || !before_.back()) return;
+    before_.back()->capture(shown_, box);
+    // Over the budget: the oldest copies go (their undo recomputes instead).
+    std::size_t total = 0;
+    for (const auto& b : before_) total += b ? b->bytes() : 0;
+    for (auto& b : before_) {
+        if (total <= kUndoCopyBytes || &b == &before_.back()) break;
+        if (!b) continue;
+        total -= b->bytes();
+        b.reset();
+    }
+}
+
+void SculptureEdits::dropCopies() {
+    for (auto& b : before_) b.reset();
+}
+
+voxel::EditRegionStats SculptureEdits::baseChanged(const voxel::IndexBox& box) {
+    dropCopies();
+    return update(box);
+}
+
 voxel::IndexBox SculptureEdits::append(Edit edit) {
     edit.id = nextId_++;
     redo_.clear();
     list_.append(std::move(edit));
+    before_.push_back(deferred_ ? nullptr : std::make_unique<voxel::LeafSnapshot>());
     const voxel::IndexBox box = voxelsOf(list_.edits().back().reach);
+    capture(box);
     applyOnTop(box, 0);
     return box;
 }
@@ -117,6 +142,7 @@ voxel::IndexBox SculptureEdits::extendLastStroke(const std::vector<ModelPoint>& 
     const std::size_t firstPiece = extendStrokeSegments(stroke, firstPoint, list_.units());
     if (firstPiece == stroke.segments.size()) return {};
     const voxel::IndexBox box = voxelsOf(list_.extendLast(firstPiece));
+    capture(box);
     // Carving and adding fold their segments with min and max, which
     // associate: the new segments go on top of the grid. Melt blends the
     // field before the stroke with all its segments at once: recomputed.
@@ -136,6 +162,9 @@ voxel::IndexBox SculptureEdits::replace(std::size_t index, Edit edit, Edit& repl
         both.hi[a] = std::max(before.hi[a], after.hi[a]);
     }
     const voxel::IndexBox box = voxelsOf(both);
+    // The edits after this one were applied over what it changes: their
+    // copies no longer hold the grid before them.
+    dropCopies();
     update(box);
     return box;
 }
@@ -145,7 +174,11 @@ std::optional<voxel::IndexBox> SculptureEdits::undo() {
     Edit removed = list_.removeLast();
     const voxel::IndexBox box = voxelsOf(removed.reach);
     redo_.push_back(std::move(removed));
-    update(box);
+    std::unique_ptr<voxel::LeafSnapshot> copy = before_.empty() ? nullptr : std::move(before_.back());
+    if (!before_.empty()) before_.pop_back();
+    // The grid before the edit, as it was copied; else recomputed.
+    if (copy && !deferred_) copy->restore(shown_);
+    else update(box);
     return box;
 }
 
@@ -154,7 +187,9 @@ std::optional<voxel::IndexBox> SculptureEdits::redo() {
     Edit again = std::move(redo_.back());
     redo_.pop_back();
     list_.append(std::move(again));
+    before_.push_back(deferred_ ? nullptr : std::make_unique<voxel::LeafSnapshot>());
     const voxel::IndexBox box = voxelsOf(list_.edits().back().reach);
+    capture(box);
     applyOnTop(box, 0);
     return box;
 }

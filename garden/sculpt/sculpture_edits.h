@@ -15,6 +15,7 @@
 #include "garden/sculpt/edit_list.h"
 #include "voxel/edit_region.h"
 #include "voxel/index_box.h"
+#include "voxel/leaf_snapshot.h"
 #include "voxel/volume.h"
 
 namespace hg::garden {
@@ -55,6 +56,9 @@ public:
     // The shown grid's `box` recomputed from the base and the edits that
     // reach it.
     voxel::EditRegionStats update(const voxel::IndexBox& box);
+    // The base changed in `box` (the morph's blend): the shown grid there is
+    // recomputed, and the copies undo would restore are dropped.
+    voxel::EditRegionStats baseChanged(const voxel::IndexBox& box);
     // The last edit's pieces from `firstPiece` on applied to the shown grid
     // as it stands: the field is bounded, so what the grid stores is the
     // field before them exactly, and the float operations are those a
@@ -88,6 +92,15 @@ private:
     voxel::EditRegionStats lastStats_;
     bool deferred_ = false;
     std::vector<voxel::IndexBox> pending_;
+    // For each edit of the list, the shown grid's leaves as they were before
+    // it, where it wrote (none: dropped, or never taken): undo of the last
+    // edit puts them back. Kept within kUndoCopyBytes, oldest dropped first.
+    std::vector<std::unique_ptr<voxel::LeafSnapshot>> before_;
+    void capture(const voxel::IndexBox& box);
+    void dropCopies();
 };
+
+// Memory the leaf copies for undo may take per sculpture.
+constexpr std::size_t kUndoCopyBytes = std::size_t{256} << 20;
 
 }  // namespace hg::garden
