@@ -24,6 +24,32 @@ struct Worker {
     frep::ErrorReport errors;
 };
 
+// The voxels of the leaf at `o` inside `clip`: base values and positions
+// through the worker's tape, clamped to the band, stored active inside it.
+void fillLeaf(Worker& wk, const VolumeFrame& frame, const IndexBox& clip, const std::array<int, 3>& o, FloatLeaf& leaf) {
+    wk.x.clear(); wk.y.clear(); wk.z.clear(); wk.w.clear(); wk.offsets.clear();
+    const int dim = static_cast<int>(FloatLeaf::DIM);
+    for (int i = std::max(o[0], clip.lo[0]); i <= std::min(o[0] + dim - 1, clip.hi[0]); ++i)
+        for (int j = std::max(o[1], clip.lo[1]); j <= std::min(o[1] + dim - 1, clip.hi[1]); ++j)
+            for (int k = std::max(o[2], clip.lo[2]); k <= std::min(o[2] + dim - 1, clip.hi[2]); ++k) {
+                const openvdb::Coord c(i, j, k);
+                // Rounded like the sampler's points (box_walker.cpp).
+                wk.x.push_back(static_cast<float>(frame.coordinate(0, i)));
+                wk.y.push_back(static_cast<float>(frame.coordinate(1, j)));
+                wk.z.push_back(static_cast<float>(frame.coordinate(2, k)));
+                wk.w.push_back(wk.acc.getValue(c));
+                wk.offsets.push_back(FloatLeaf::coordToOffset(c));
+            }
+    wk.out.resize(wk.x.size());
+    wk.eval.evaluate(wk.x.data(), wk.y.data(), wk.z.data(), wk.w.data(), wk.out.data(), wk.x.size(), wk.errors);
+    const float band = frame.band;
+    for (std::size_t n = 0; n < wk.out.size(); ++n) {
+        const float v = std::clamp(wk.out[n], -band, band);
+        if (std::fabs(v) < band) leaf.setValueOn(wk.offsets[n], v);
+        else leaf.setValueOff(wk.offsets[n], v);
+    }
+}
+
 }  // namespace
 
 EditRegionStats applyEditTape(const Volume& base, Volume& target, const IndexBox& region, const frep::Tape& tape) {
@@ -32,7 +58,6 @@ EditRegionStats applyEditTape(const Volume& base, Volume& target, const IndexBox
     const VolumeFrame& frame = target.frame;
     const IndexBox clip = intersect(region, frame.indexBox);
     if (clip.empty()) return stats;
-    const float band = frame.band;
 
     // Leaves first, serially (touching the tree is not thread-safe), then
     // each leaf filled on its own.
@@ -47,28 +72,7 @@ EditRegionStats applyEditTape(const Volume& base, Volume& target, const IndexBox
         [&] { return std::make_unique<Worker>(tape, baseTree); });
     tbb::parallel_for(std::size_t{0}, origins.size(), [&](std::size_t b) {
         Worker& wk = *workers.local();
-        wk.x.clear(); wk.y.clear(); wk.z.clear(); wk.w.clear(); wk.offsets.clear();
-        const auto& o = origins[b];
-        const int dim = static_cast<int>(FloatLeaf::DIM);
-        for (int i = std::max(o[0], clip.lo[0]); i <= std::min(o[0] + dim - 1, clip.hi[0]); ++i)
-            for (int j = std::max(o[1], clip.lo[1]); j <= std::min(o[1] + dim - 1, clip.hi[1]); ++j)
-                for (int k = std::max(o[2], clip.lo[2]); k <= std::min(o[2] + dim - 1, clip.hi[2]); ++k) {
-                    const openvdb::Coord c(i, j, k);
-                    // Rounded like the sampler's points (box_walker.cpp).
-                    wk.x.push_back(static_cast<float>(frame.coordinate(0, i)));
-                    wk.y.push_back(static_cast<float>(frame.coordinate(1, j)));
-                    wk.z.push_back(static_cast<float>(frame.coordinate(2, k)));
-                    wk.w.push_back(wk.acc.getValue(c));
-                    wk.offsets.push_back(FloatLeaf::coordToOffset(c));
-                }
-        wk.out.resize(wk.x.size());
-        wk.eval.evaluate(wk.x.data(), wk.y.data(), wk.z.data(), wk.w.data(), wk.out.data(), wk.x.size(), wk.errors);
-        FloatLeaf& leaf = *leaves[b];
-        for (std::size_t n = 0; n < wk.out.size(); ++n) {
-            const float v = std::clamp(wk.out[n], -band, band);
-            if (std::fabs(v) < band) leaf.setValueOn(wk.offsets[n], v);
-            else leaf.setValueOff(wk.offsets[n], v);
-        }
+        fillLeaf(wk, frame, clip, origins[b], *leaves[b]);
     });
     for (const auto& wk : workers) stats.errors.merge(wk->errors);
     stats.voxels = clip.volume();
@@ -81,7 +85,6 @@ EditRegionStats applyEditTapes(const Volume& base, Volume& target, const std::ve
     const auto start = std::chrono::steady_clock::now();
     EditRegionStats stats;
     const VolumeFrame& frame = target.frame;
-    const float band = frame.band;
     openvdb::FloatTree& tree = vdb(target).tree();
     // Every region's leaves first (touching the tree is not thread-safe).
     std::vector<IndexBox> clips(regions.size());
@@ -99,30 +102,7 @@ EditRegionStats applyEditTapes(const Volume& base, Volume& target, const std::ve
         if (clips[r].empty()) return;
         const frep::Tape tape = tapeOf(r);
         Worker wk(tape, baseTree);
-        const IndexBox& clip = clips[r];
-        const int dim = static_cast<int>(FloatLeaf::DIM);
-        for (std::size_t b = 0; b < origins[r].size(); ++b) {
-            const auto& o = origins[r][b];
-            wk.x.clear(); wk.y.clear(); wk.z.clear(); wk.w.clear(); wk.offsets.clear();
-            for (int i = std::max(o[0], clip.lo[0]); i <= std::min(o[0] + dim - 1, clip.hi[0]); ++i)
-                for (int j = std::max(o[1], clip.lo[1]); j <= std::min(o[1] + dim - 1, clip.hi[1]); ++j)
-                    for (int k = std::max(o[2], clip.lo[2]); k <= std::min(o[2] + dim - 1, clip.hi[2]); ++k) {
-                        const openvdb::Coord c(i, j, k);
-                        wk.x.push_back(static_cast<float>(frame.coordinate(0, i)));
-                        wk.y.push_back(static_cast<float>(frame.coordinate(1, j)));
-                        wk.z.push_back(static_cast<float>(frame.coordinate(2, k)));
-                        wk.w.push_back(wk.acc.getValue(c));
-                        wk.offsets.push_back(FloatLeaf::coordToOffset(c));
-                    }
-            wk.out.resize(wk.x.size());
-            wk.eval.evaluate(wk.x.data(), wk.y.data(), wk.z.data(), wk.w.data(), wk.out.data(), wk.x.size(), wk.errors);
-            FloatLeaf& leaf = *leaves[r][b];
-            for (std::size_t n = 0; n < wk.out.size(); ++n) {
-                const float v = std::clamp(wk.out[n], -band, band);
-                if (std::fabs(v) < band) leaf.setValueOn(wk.offsets[n], v);
-                else leaf.setValueOff(wk.offsets[n], v);
-            }
-        }
+        for (std::size_t b = 0; b < origins[r].size(); ++b) fillLeaf(wk, frame, clips[r], origins[r][b], *leaves[r][b]);
         errors.local().merge(wk.errors);
     });
     for (const auto& e : errors) stats.errors.merge(e);

@@ -3,27 +3,9 @@
 #include <nlohmann/json.hpp>
 
 #include "garden/scene/json_reader.h"
+#include "garden/sculpt/edit_names.h"
 
 namespace hg::garden {
-
-namespace {
-
-StrokeTool readStrokeTool(const nlohmann::json& v, const std::string& path) {
-    const std::string t = readString(v, path);
-    if (t == "carve") return StrokeTool::Carve;
-    if (t == "add") return StrokeTool::Add;
-    if (t == "melt") return StrokeTool::Melt;
-    throw JsonError(path, "expected carve, add or melt");
-}
-
-QuadricShape readShape(const nlohmann::json& v, const std::string& path) {
-    const std::string t = readString(v, path);
-    if (t == "ellipsoid") return QuadricShape::Ellipsoid;
-    if (t == "torus") return QuadricShape::Torus;
-    throw JsonError(path, "expected ellipsoid or torus");
-}
-
-}  // namespace
 
 SculptCommand readSculptCommand(const std::string& key, const nlohmann::json& v, const std::string& path) {
     if (key == "stroke") {
@@ -43,7 +25,7 @@ SculptCommand readSculptCommand(const std::string& key, const nlohmann::json& v,
         ObjectReader r(v, path, {"sculpture", "shape", "center", "radii", "strength"});
         PerturbCommand c;
         c.sculpture = readString(r.required("sculpture"), r.pathOf("sculpture"));
-        if (r.has("shape")) c.shape = readShape(r.required("shape"), r.pathOf("shape"));
+        if (r.has("shape")) c.shape = readQuadricShape(r.required("shape"), r.pathOf("shape"));
         c.center = readVec3(r.required("center"), r.pathOf("center"));
         c.radii = readVec3(r.required("radii"), r.pathOf("radii"));
         for (std::size_t i = 0; i < (c.shape == QuadricShape::Ellipsoid ? 3u : 2u); ++i)
@@ -60,22 +42,10 @@ SculptCommand readSculptCommand(const std::string& key, const nlohmann::json& v,
         c.sculpture = readString(r.required("sculpture"), r.pathOf("sculpture"));
         c.origin = readVec3(r.required("origin"), r.pathOf("origin"));
         c.direction = readVec3(r.required("direction"), r.pathOf("direction"));
-        if (r.has("shape")) {
-            const std::string shape = readString(r.required("shape"), r.pathOf("shape"));
-            if (shape == "sphere") c.tool.shape = ImpactShape::Sphere;
-            else if (shape == "chisel") c.tool.shape = ImpactShape::Chisel;
-            else if (shape == "square") c.tool.shape = ImpactShape::Square;
-            else throw JsonError(r.pathOf("shape"), "expected sphere, chisel or square");
-        }
+        if (r.has("shape")) c.tool.shape = readImpactShape(r.required("shape"), r.pathOf("shape"));
         c.tool.size = readNumber(r.required("size"), r.pathOf("size"), 1e-6, 100.0);
         c.tool.volume = readNumber(r.required("volume_cm3"), r.pathOf("volume_cm3"), 1e-9, 1e9);
-        if (r.has("spread")) {
-            const std::string spread = readString(r.required("spread"), r.pathOf("spread"));
-            if (spread == "uniform") c.tool.spread = ImpactSpread::Uniform;
-            else if (spread == "gaussian") c.tool.spread = ImpactSpread::Gaussian;
-            else if (spread == "cone") c.tool.spread = ImpactSpread::Cone;
-            else throw JsonError(r.pathOf("spread"), "expected uniform, gaussian or cone");
-        }
+        if (r.has("spread")) c.tool.spread = readImpactSpread(r.required("spread"), r.pathOf("spread"));
         if (r.has("spread_size")) c.tool.spreadSize = readNumber(r.required("spread_size"), r.pathOf("spread_size"), 0.0, 100.0);
         if (r.has("count")) c.tool.count = readInt(r.required("count"), r.pathOf("count"), 1, 100000);
         if (r.has("seed")) c.tool.seed = static_cast<std::uint64_t>(readInt(r.required("seed"), r.pathOf("seed"), 0, 2000000000));
@@ -116,7 +86,7 @@ SculptCommand readSculptCommand(const std::string& key, const nlohmann::json& v,
     else throw JsonError(r.pathOf("kind"), "expected none, carve, add, melt or perturb");
     if (r.has("radius")) c.settings.radius = readNumber(r.required("radius"), r.pathOf("radius"), 1e-6, 100.0);
     if (r.has("softness")) c.settings.softness = readNumber(r.required("softness"), r.pathOf("softness"), 0.01, 64.0);
-    if (r.has("shape")) c.settings.shape = readShape(r.required("shape"), r.pathOf("shape"));
+    if (r.has("shape")) c.settings.shape = readQuadricShape(r.required("shape"), r.pathOf("shape"));
     if (r.has("radii")) c.settings.radii = readVec3(r.required("radii"), r.pathOf("radii"));
     if (r.has("strength")) c.settings.strength = readNumber(r.required("strength"), r.pathOf("strength"), -1000.0, 1000.0);
     if (r.has("reverse")) c.settings.reverse = readBool(r.required("reverse"), r.pathOf("reverse"));

@@ -32,15 +32,6 @@ double unit(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * (1
 
 }  // namespace
 
-const char* impactSpreadName(ImpactSpread s) {
-    switch (s) {
-        case ImpactSpread::Uniform: return "uniform";
-        case ImpactSpread::Gaussian: return "gaussian";
-        case ImpactSpread::Cone: return "cone";
-    }
-    return "?";
-}
-
 std::string checkImpactTool(const ImpactTool& t, double voxelSize) {
     if (!(std::isfinite(t.size) && t.size >= voxelSize && t.size <= 4096 * voxelSize))
         return "the impact tool's size must be between one voxel and 4096 voxels";

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "garden/scene/json_reader.h"
+#include "garden/sculpt/edit_names.h"
 
 namespace hg::garden {
 
@@ -21,15 +22,6 @@ const char* const kHeader = "hypergarden-journal";
 
 nlohmann::json point(const ModelPoint& p) { return nlohmann::json::array({p[0], p[1], p[2]}); }
 
-const char* toolKey(StrokeTool t) { return strokeToolName(t); }
-
-StrokeTool readTool(const nlohmann::json& v, const std::string& path) {
-    const std::string t = readString(v, path);
-    if (t == "carve") return StrokeTool::Carve;
-    if (t == "add") return StrokeTool::Add;
-    if (t == "melt") return StrokeTool::Melt;
-    throw JsonError(path, "expected carve, add or melt");
-}
 
 // A finite number: journals hold only what the session accepted.
 double finite(const nlohmann::json& v, const std::string& path) {
@@ -59,7 +51,7 @@ MirrorPlane readMirror(const nlohmann::json& v, const std::string& path) {
 }
 
 void writePerturbation(const Perturbation& q, nlohmann::json& j) {
-    j["shape"] = q.shape == QuadricShape::Ellipsoid ? "ellipsoid" : "torus";
+    j["shape"] = quadricShapeName(q.shape);
     j["center"] = point(q.center);
     j["axes"] = nlohmann::json::array({point(q.axes[0]), point(q.axes[1]), point(q.axes[2])});
     j["radii"] = point(q.radii);
@@ -94,7 +86,7 @@ std::string journalRecordJson(const JournalRecord& record) {
     j["action"] = journalRecordKind(record);
     if (const auto* s = std::get_if<StrokeRecord>(&record)) {
         j["sculpture"] = s->sculpture;
-        j["tool"] = toolKey(s->tool);
+        j["tool"] = strokeToolName(s->tool);
         j["radius"] = s->radius;
         if (s->tool == StrokeTool::Melt) j["softness"] = s->softness;
         nlohmann::json path = nlohmann::json::array();
@@ -142,7 +134,7 @@ JournalRecord parseJournalRecord(const std::string& text, const std::string& pat
         ObjectReader r(v, path, {"action", "sculpture", "tool", "radius", "softness", "path", "mirror"});
         StrokeRecord s;
         s.sculpture = readString(r.required("sculpture"), r.pathOf("sculpture"));
-        s.tool = readTool(r.required("tool"), r.pathOf("tool"));
+        s.tool = readStrokeTool(r.required("tool"), r.pathOf("tool"));
         s.radius = readPositive(r.required("radius"), r.pathOf("radius"));
         if (r.has("softness")) s.softness = readPositive(r.required("softness"), r.pathOf("softness"));
         const nlohmann::json& p = r.required("path");
@@ -160,15 +152,13 @@ JournalRecord parseJournalRecord(const std::string& text, const std::string& pat
                                                                          "axes", "radii", "strength", "mirror"});
         PerturbRecord p;
         p.sculpture = readString(r.required("sculpture"), r.pathOf("sculpture"));
-        const std::string shape = readString(r.required("shape"), r.pathOf("shape"));
-        if (shape != "ellipsoid" && shape != "torus") throw JsonError(r.pathOf("shape"), "expected ellipsoid or torus");
-        p.perturbation.shape = shape == "ellipsoid" ? QuadricShape::Ellipsoid : QuadricShape::Torus;
+        p.perturbation.shape = readQuadricShape(r.required("shape"), r.pathOf("shape"));
         p.perturbation.center = readPoint(r.required("center"), r.pathOf("center"));
         const nlohmann::json& axes = r.required("axes");
         if (!axes.is_array() || axes.size() != 3) throw JsonError(r.pathOf("axes"), "expected three axes");
         for (std::size_t i = 0; i < 3; ++i) p.perturbation.axes[i] = readPoint(axes[i], indexPath(r.pathOf("axes"), i));
         p.perturbation.radii = readPoint(r.required("radii"), r.pathOf("radii"));
-        for (std::size_t i = 0; i < (shape == "ellipsoid" ? 3u : 2u); ++i)
+        for (std::size_t i = 0; i < (p.perturbation.shape == QuadricShape::Ellipsoid ? 3u : 2u); ++i)
             if (!(p.perturbation.radii[i] > 0.0)) throw JsonError(indexPath(r.pathOf("radii"), i), "expected a positive radius");
         p.perturbation.strength = finite(r.required("strength"), r.pathOf("strength"));
         if (r.has("mirror")) p.perturbation.mirror = readMirror(r.required("mirror"), r.pathOf("mirror"));
@@ -210,11 +200,7 @@ JournalRecord parseJournalRecord(const std::string& text, const std::string& pat
             const std::string ip = indexPath(r.pathOf("impacts"), i);
             ObjectReader ir(list[i], ip, {"shape", "tip", "direction", "across", "size", "depth"});
             Impact m;
-            const std::string shape = readString(ir.required("shape"), ir.pathOf("shape"));
-            if (shape == "sphere") m.shape = ImpactShape::Sphere;
-            else if (shape == "chisel") m.shape = ImpactShape::Chisel;
-            else if (shape == "square") m.shape = ImpactShape::Square;
-            else throw JsonError(ir.pathOf("shape"), "expected sphere, chisel or square");
+            m.shape = readImpactShape(ir.required("shape"), ir.pathOf("shape"));
             m.tip = readPoint(ir.required("tip"), ir.pathOf("tip"));
             m.direction = readPoint(ir.required("direction"), ir.pathOf("direction"));
             m.across = readPoint(ir.required("across"), ir.pathOf("across"));

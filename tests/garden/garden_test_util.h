@@ -13,6 +13,7 @@
 #include "frep/model.h"
 #include "frep/parser.h"
 #include "tests/test_models.h"
+#include "voxel/volume.h"
 #include "garden/morph/morph_sources.h"
 
 namespace hg::garden::test {
@@ -27,6 +28,16 @@ using ::hg::test::kTorusBlock;
 // A rounded bar along x (superellipsoid), f of a very different scale.
 constexpr const char* kBar =
     "bar(x[3], a[1]) { bar = 40 * (1 - (x[1]/1.0)^4 - (x[2]/0.3)^4 - (x[3]/0.35)^4); }";
+
+// Voxels of a's frame whose stored values differ in b.
+inline int differingVoxels(const voxel::Volume& a, const voxel::Volume& b) {
+    int n = 0;
+    const voxel::IndexBox& box = a.frame.indexBox;
+    for (int k = box.lo[2]; k <= box.hi[2]; ++k)
+        for (int j = box.lo[1]; j <= box.hi[1]; ++j)
+            for (int i = box.lo[0]; i <= box.hi[0]; ++i) n += a.value(i, j, k) != b.value(i, j, k);
+    return n;
+}
 
 class ScratchDir : public ::testing::Test {
 protected:

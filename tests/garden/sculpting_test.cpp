@@ -14,6 +14,7 @@
 #include "garden/sculpt/sculpture_edits.h"
 #include "garden/sculpt/stroke_segments.h"
 #include "tests/test_models.h"
+#include "garden_test_util.h"
 #include "voxel/sampler.h"
 
 namespace hg::garden {
@@ -240,15 +241,6 @@ voxel::Volume sphereVolume() {
     return std::move(*r.volume);
 }
 
-// Every voxel of the frame, compared.
-int differences(const voxel::Volume& a, const voxel::Volume& b) {
-    int n = 0;
-    const voxel::IndexBox& box = a.frame.indexBox;
-    for (int i = box.lo[0]; i <= box.hi[0]; ++i)
-        for (int j = box.lo[1]; j <= box.hi[1]; ++j)
-            for (int k = box.lo[2]; k <= box.hi[2]; ++k) n += a.value(i, j, k) != b.value(i, j, k);
-    return n;
-}
 
 TEST(SculptureEdits, BoxUpdatesEqualARebuildThroughUndoAndRedo) {
     voxel::Volume shown = sphereVolume();
@@ -291,14 +283,14 @@ TEST(SculptureEdits, BoxUpdatesEqualARebuildThroughUndoAndRedo) {
             }
         }
     }
-    EXPECT_EQ(differences(shown, *edits.rebuild()), 0);
-    EXPECT_GT(differences(shown, untouched), 1000);
+    EXPECT_EQ(test::differingVoxels(shown, *edits.rebuild()), 0);
+    EXPECT_GT(test::differingVoxels(shown, untouched), 1000);
     // Undo everything: the grid of a session that never edited.
     while (edits.undo()) {}
-    EXPECT_EQ(differences(shown, untouched), 0);
+    EXPECT_EQ(test::differingVoxels(shown, untouched), 0);
     // Redo everything: back to the edited grid.
     while (edits.redo()) {}
-    EXPECT_EQ(differences(shown, *edits.rebuild()), 0);
+    EXPECT_EQ(test::differingVoxels(shown, *edits.rebuild()), 0);
 }
 
 TEST(SculptureEdits, AStrokeChangesTheGridInsideItsBoxOnly) {

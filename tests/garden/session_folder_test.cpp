@@ -33,14 +33,6 @@ SessionSettings settings() {
     return s;
 }
 
-int differences(const voxel::Volume& a, const voxel::Volume& b) {
-    int n = 0;
-    const voxel::IndexBox& box = a.frame.indexBox;
-    for (int k = box.lo[2]; k <= box.hi[2]; ++k)
-        for (int j = box.lo[1]; j <= box.hi[1]; ++j)
-            for (int i = box.lo[0]; i <= box.hi[0]; ++i) n += a.value(i, j, k) != b.value(i, j, k);
-    return n;
-}
 
 const voxel::Volume& grid(const OpenedSession& o, const char* name) {
     return *o.session->sculptures()[static_cast<std::size_t>(o.session->findSculpture(name))].volume;
@@ -69,11 +61,11 @@ TEST_F(SessionFolderTest, ASessionReopensWithIdenticalGridsAndItsUndoHistory) {
     EXPECT_EQ(o.session->editCount(o.session->findSculpture("a")), 1u);
     EXPECT_EQ(o.session->editCount(o.session->findSculpture("c")), 1u);
     int i = 0;
-    for (const char* n : {"a", "b", "c"}) EXPECT_EQ(differences(grid(o, n), saved[static_cast<std::size_t>(i++)]), 0) << n;
+    for (const char* n : {"a", "b", "c"}) EXPECT_EQ(test::differingVoxels(grid(o, n), saved[static_cast<std::size_t>(i++)]), 0) << n;
     // The undo history came back too: undo removes c's stroke, then b's bump.
     const voxel::Volume before = o.session->sculptures()[static_cast<std::size_t>(o.session->findSculpture("c"))].edits->base().clone();
     ASSERT_TRUE(o.session->undo());
-    EXPECT_EQ(differences(grid(o, "c"), before), 0);
+    EXPECT_EQ(test::differingVoxels(grid(o, "c"), before), 0);
     ASSERT_TRUE(o.session->undo());
     EXPECT_EQ(o.session->editCount(o.session->findSculpture("b")), 0u);
     // The snapshot agrees with a rebuild from the journal.
@@ -190,7 +182,7 @@ TEST_F(SessionFolderTest, AProcessKilledAtAnyMomentReopensWithEveryFinishedActio
             const Sculpture& s = o.session->sculptures()[i];
             EXPECT_EQ(o.session->editCount(static_cast<int>(i)), fresh.editCount(static_cast<int>(i))) << s.name;
             if (s.volume) {
-                EXPECT_EQ(differences(*s.volume, *fresh.sculptures()[i].volume), 0) << s.name << " run " << run;
+                EXPECT_EQ(test::differingVoxels(*s.volume, *fresh.sculptures()[i].volume), 0) << s.name << " run " << run;
             }
         }
     }

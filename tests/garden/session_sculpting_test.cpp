@@ -32,14 +32,6 @@ SessionSettings smallSettings() {
     return s;
 }
 
-int differences(const voxel::Volume& a, const voxel::Volume& b) {
-    int n = 0;
-    const voxel::IndexBox& box = a.frame.indexBox;
-    for (int k = box.lo[2]; k <= box.hi[2]; ++k)
-        for (int j = box.lo[1]; j <= box.hi[1]; ++j)
-            for (int i = box.lo[0]; i <= box.hi[0]; ++i) n += a.value(i, j, k) != b.value(i, j, k);
-    return n;
-}
 
 void frame(GardenSession& s, const Hands& h) {
     s.beginFrame();
@@ -69,8 +61,8 @@ TEST_F(SessionSculptingTest, TheToolHandCarvesAndItsButtonsUndoAndRedoExactly) {
     frame(s, h);
     ASSERT_EQ(s.editCount(c), 1u);
     Sculpture& st = s.sculptures()[static_cast<std::size_t>(c)];
-    EXPECT_GT(differences(*st.volume, original), 100);
-    EXPECT_EQ(differences(*st.volume, *st.edits->rebuild()), 0);
+    EXPECT_GT(test::differingVoxels(*st.volume, original), 100);
+    EXPECT_EQ(test::differingVoxels(*st.volume, *st.edits->rebuild()), 0);
     // Where the ray met the surface is now outside, and the morph did not move.
     const voxel::VolumeFrame& fr = st.volume->frame;
     const int i = fr.indexOf(0, 0.0), j = fr.indexOf(1, 0.5), k = fr.indexOf(2, 0.55);
@@ -83,10 +75,10 @@ TEST_F(SessionSculptingTest, TheToolHandCarvesAndItsButtonsUndoAndRedoExactly) {
     h.tool.buttons = 0;
     frame(s, h);
     EXPECT_EQ(s.editCount(c), 0u);
-    EXPECT_EQ(differences(*st.volume, original), 0);
+    EXPECT_EQ(test::differingVoxels(*st.volume, original), 0);
     h.tool.buttons = kButtonRedo;
     frame(s, h);
-    EXPECT_EQ(differences(*st.volume, carved), 0);
+    EXPECT_EQ(test::differingVoxels(*st.volume, carved), 0);
     // The carved chunks were remeshed.
     for (int f = 0; f < 200 && !s.idle(); ++f) frame(s, Hands{});
     EXPECT_TRUE(s.idle());
@@ -117,7 +109,7 @@ TEST_F(SessionSculptingTest, ReplayCommandsSculptUndoAndRedo) {
     EXPECT_EQ(s.editCount(s.findSculpture("c")), 0u);  // undone, not redone
     for (const char* name : {"a", "b"}) {
         const Sculpture& st = s.sculptures()[static_cast<std::size_t>(s.findSculpture(name))];
-        EXPECT_EQ(differences(*st.volume, *st.edits->rebuild()), 0) << name;
+        EXPECT_EQ(test::differingVoxels(*st.volume, *st.edits->rebuild()), 0) << name;
     }
 }
 
@@ -135,13 +127,13 @@ TEST_F(SessionSculptingTest, EditsOnTheMorphResultPersistWhenTheWeightsChangeAnd
     EXPECT_EQ(s.editCount(m), 2u);
     // The unedited grid is the new blend; the shown grid is that blend with the edits.
     const auto blend = s.blendFromScratch();
-    EXPECT_EQ(differences(r.edits->base(), *blend), 0);
-    EXPECT_EQ(differences(*r.volume, *r.edits->rebuild()), 0);
-    EXPECT_GT(differences(*r.volume, *blend), 100);
+    EXPECT_EQ(test::differingVoxels(r.edits->base(), *blend), 0);
+    EXPECT_EQ(test::differingVoxels(*r.volume, *r.edits->rebuild()), 0);
+    EXPECT_GT(test::differingVoxels(*r.volume, *blend), 100);
     s.discardEdits(m);
     EXPECT_EQ(s.editCount(m), 0u);
     EXPECT_FALSE(s.redo());
-    EXPECT_EQ(differences(*r.volume, *blend), 0);
+    EXPECT_EQ(test::differingVoxels(*r.volume, *blend), 0);
 }
 
 TEST_F(SessionSculptingTest, AMirrorPlaneAppliesEachStrokeOnBothSides) {
@@ -167,7 +159,7 @@ TEST_F(SessionSculptingTest, AMirrorPlaneAppliesEachStrokeOnBothSides) {
     EXPECT_EQ(s.editCount(c), 2u);  // each one edit, undone as one
     ASSERT_TRUE(s.undo());
     ASSERT_TRUE(s.undo());
-    EXPECT_EQ(differences(v, base), 0);
+    EXPECT_EQ(test::differingVoxels(v, base), 0);
 }
 
 TEST_F(SessionSculptingTest, MovesAreUndoneAndRedoneAndTheirScaleIsChecked) {
@@ -236,7 +228,7 @@ TEST_F(SessionSculptingTest, ImpactsRemoveTheirCompactionVolumeAndFireAgainAtAno
     // Twelve dents of 8 cm^3 on a gently curved top, overlapping a little.
     EXPECT_GT(removed, 0.5 * 12 * 8e-6);
     EXPECT_LT(removed, 1.5 * 12 * 8e-6);
-    EXPECT_EQ(differences(*sc.volume, *sc.edits->rebuild()), 0);
+    EXPECT_EQ(test::differingVoxels(*sc.volume, *sc.edits->rebuild()), 0);
     // The same rays fired at the other ball.
     const int a = s.findSculpture("a");
     ASSERT_EQ(s.reapplyImpacts(c, a), "");
@@ -264,16 +256,16 @@ TEST_F(SessionSculptingTest, APickedPerturbationIsReplacedNotStacked) {
     EXPECT_EQ(*picked, 0u);
     ASSERT_EQ(s.editPerturbation(c, *picked, -3.0, {0.2, 0.12, 0.2}), "");
     EXPECT_EQ(s.editCount(c), 2u);
-    EXPECT_EQ(differences(*sc.volume, *sc.edits->rebuild()), 0);
+    EXPECT_EQ(test::differingVoxels(*sc.volume, *sc.edits->rebuild()), 0);
     // The same as a session that made the changed bump in the first place.
     GardenSession other(loadGarden(garden), smallSettings());
     ASSERT_EQ(other.applyPerturbation(c, QuadricShape::Ellipsoid, {2.0, 1.1, 1.15}, {0.2, 0.12, 0.2}, -3.0), "");
     ASSERT_EQ(other.applyStroke(c, StrokeTool::Carve, {{2.5, 0.5, 1.5}, {2.5, 0.7, 1.5}}, 0.08), "");
-    EXPECT_EQ(differences(*sc.volume, *other.sculptures()[static_cast<std::size_t>(c)].volume), 0);
+    EXPECT_EQ(test::differingVoxels(*sc.volume, *other.sculptures()[static_cast<std::size_t>(c)].volume), 0);
     ASSERT_TRUE(s.undo());
-    EXPECT_EQ(differences(*sc.volume, first), 0);
+    EXPECT_EQ(test::differingVoxels(*sc.volume, first), 0);
     ASSERT_TRUE(s.redo());
-    EXPECT_EQ(differences(*sc.volume, *other.sculptures()[static_cast<std::size_t>(c)].volume), 0);
+    EXPECT_EQ(test::differingVoxels(*sc.volume, *other.sculptures()[static_cast<std::size_t>(c)].volume), 0);
     EXPECT_NE(s.editPerturbation(c, 1, 1.0, {0.1, 0.1, 0.1}), "");  // edit 1 is the stroke
 }
 
@@ -291,7 +283,7 @@ TEST_F(SessionSculptingTest, BadInputIsRefusedAndChangesNothing) {
               std::string::npos);
     EXPECT_FALSE(s.undo());
     EXPECT_EQ(s.editCount(a), 0u);
-    EXPECT_EQ(differences(*s.sculptures()[static_cast<std::size_t>(a)].volume, original), 0);
+    EXPECT_EQ(test::differingVoxels(*s.sculptures()[static_cast<std::size_t>(a)].volume, original), 0);
 
     // A replay stops at a bad command with its JSON path.
     try {

@@ -1,0 +1,49 @@
+#include "garden/sculpt/edit_names.h"
+
+#include <nlohmann/json.hpp>
+
+#include "garden/scene/json_reader.h"
+
+namespace hg::garden {
+
+namespace {
+
+// The value among `count` enumerators whose name(i) is the JSON string.
+template <class E, class Name>
+E readEnum(const nlohmann::json& v, const std::string& path, int count, Name name) {
+    const std::string word = readString(v, path);
+    std::string expected;
+    for (int i = 0; i < count; ++i) {
+        if (word == name(static_cast<E>(i))) return static_cast<E>(i);
+        expected += (i == 0 ? "" : i + 1 == count ? " or " : ", ") + std::string(name(static_cast<E>(i)));
+    }
+    throw JsonError(path, "expected " + expected);
+}
+
+}  // namespace
+
+const char* quadricShapeName(QuadricShape s) { return s == QuadricShape::Ellipsoid ? "ellipsoid" : "torus"; }
+
+const char* impactSpreadName(ImpactSpread s) {
+    switch (s) {
+        case ImpactSpread::Uniform: return "uniform";
+        case ImpactSpread::Gaussian: return "gaussian";
+        case ImpactSpread::Cone: return "cone";
+    }
+    return "?";
+}
+
+StrokeTool readStrokeTool(const nlohmann::json& v, const std::string& path) {
+    return readEnum<StrokeTool>(v, path, 3, strokeToolName);
+}
+QuadricShape readQuadricShape(const nlohmann::json& v, const std::string& path) {
+    return readEnum<QuadricShape>(v, path, 2, quadricShapeName);
+}
+ImpactShape readImpactShape(const nlohmann::json& v, const std::string& path) {
+    return readEnum<ImpactShape>(v, path, 3, impactShapeName);
+}
+ImpactSpread readImpactSpread(const nlohmann::json& v, const std::string& path) {
+    return readEnum<ImpactSpread>(v, path, 3, impactSpreadName);
+}
+
+}  // namespace hg::garden

@@ -1,0 +1,20 @@
+// The edit enums as the JSON files spell them (replay scripts, journals):
+// readers that refuse any other word with its JSON path.
+#pragma once
+
+#include <string>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include "garden/sculpt/edit.h"
+#include "garden/sculpt/impacts.h"
+
+namespace hg::garden {
+
+StrokeTool readStrokeTool(const nlohmann::json& v, const std::string& path);          // carve, add, melt
+QuadricShape readQuadricShape(const nlohmann::json& v, const std::string& path);      // ellipsoid, torus
+ImpactShape readImpactShape(const nlohmann::json& v, const std::string& path);        // sphere, chisel, square
+ImpactSpread readImpactSpread(const nlohmann::json& v, const std::string& path);      // uniform, gaussian, cone
+const char* quadricShapeName(QuadricShape s);
+
+}  // namespace hg::garden
