@@ -72,10 +72,14 @@ StrokeSegment makeStrokeSegment(const ModelPoint& a, const ModelPoint& b, double
     return g;
 }
 
+double strokeStep(double radius, double voxelSize) {
+    return std::clamp(std::sqrt(2.0 * radius * voxelSize), 0.25 * radius, 0.5 * radius);
+}
+
 std::size_t extendStrokeSegments(Stroke& stroke, std::size_t firstPoint, const FieldUnits& units) {
     const std::size_t first = stroke.segments.size();
     if (stroke.path.empty()) return first;
-    const double step = kSegmentLengthPerRadius * stroke.radius;
+    const double step = strokeStep(stroke.radius, units.voxelSize);
     const double floor = strokeFloor(stroke, units);
     // Segment 0 is a short one through the first point (the stroke's round
     // start, and all of a click); then the path, each point taken once it

@@ -10,10 +10,13 @@
 
 namespace hg::garden {
 
-// Segments are at most this fraction of the radius long: each segment's
-// surface is rounded at its ends, and at a quarter radius the union of
-// neighbours dips by under 1% of the radius between them.
-constexpr double kSegmentLengthPerRadius = 0.25;
+// How long a stroke's segments are. Each segment's surface is rounded at
+// its ends, so the union of neighbours a step s apart dips between them by
+// about s^2 / (8 r): steps of sqrt(2 r v) keep that to a quarter voxel v
+// (invisible), within a quarter and a half of the radius (under 1% and 3%
+// of it). Small tools get far fewer segments than a fixed fraction would
+// give them, and every box update and rebuild evaluates fewer.
+double strokeStep(double radius, double voxelSize);
 
 // The segment from a to b (a != b) with its constants and reach.
 StrokeSegment makeStrokeSegment(const ModelPoint& a, const ModelPoint& b, double radius, double floor,
@@ -21,8 +24,8 @@ StrokeSegment makeStrokeSegment(const ModelPoint& a, const ModelPoint& b, double
 
 // Appends to `stroke.segments` the segments for path points from
 // `firstPoint` on (the points before were segmented already): points
-// closer than half a segment to the last one taken are skipped, longer
-// steps split. Returns the index of the first new segment.
+// closer than half a step to the last one taken are skipped, longer steps
+// split. Returns the index of the first new segment.
 std::size_t extendStrokeSegments(Stroke& stroke, std::size_t firstPoint, const FieldUnits& units);
 
 // "" when the stroke's parameters are usable, else why not.
