@@ -274,8 +274,9 @@ JournalRead parseJournal(const std::string& text, const std::string& name) {
             return out;
         }
         const std::string json = line.substr(9);
+        const std::string crcText = line.substr(0, 8);  // outlives `stop`, which points into it
         char* stop = nullptr;
-        const unsigned long crc = std::strtoul(line.substr(0, 8).c_str(), &stop, 16);
+        const unsigned long crc = std::strtoul(crcText.c_str(), &stop, 16);
         if (*stop != '\0' || crc != crc32(json)) {
             fail("the record's checksum does not match its text");
             return out;
