@@ -6,6 +6,7 @@
 #include <tbb/parallel_reduce.h>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <functional>
 #include <limits>
@@ -59,37 +60,35 @@ private:
     std::unique_ptr<std::atomic<Id>[]> parent_;
 };
 
-// An edge of one bucket: its two vertices as one key, its first use's
-// triangle, how many uses it has and how many of them run from the lower
-// vertex to the upper one. `stamp` says which bucket wrote the slot (the
-// table is reused from bucket to bucket without clearing it).
-template <class Id>
-struct EdgeSlot {
-    std::uint64_t key;  // lower << 32 | upper
-    Id firstTriangle;
-    std::uint32_t stamp;  // bucket + 1; anything else: empty
-    std::uint32_t uses;
-    std::uint32_t forward;
-};
-
-// One thread's open-addressing table (linear probing) with at least one and
-// a half times as many slots as the bucket has uses, so it is never full:
-// half full or less for a welded mesh (two uses an edge), two thirds for a
-// triangle soup.
+// One thread's hash table of a bucket's edges (open addressing, linear
+// probing), and what a pass over the bucket's uses leaves to do. The table
+// has at least one and a half times as many slots as the bucket has uses,
+// so it is never full, and about three times as many as a welded mesh's
+// bucket has edges, so a probe nearly always ends at its first slot. It is
+// not cleared between buckets: a slot belongs to the bucket whose stamp
+// (bucket + 1) it carries.
 template <class Id>
 struct EdgeTable {
-    std::vector<EdgeSlot<Id>> slots;
-    std::uint64_t mask = 0;
+    struct Slot {
+        std::uint64_t key;  // lower << 32 | upper
+        Id firstTriangle;   // of the edge's first use
+        std::uint32_t stamp;
+        std::uint32_t uses;
+        std::uint32_t forward;  // uses from the lower vertex to the upper one
+    };
+    std::vector<Slot> slots;
+    std::size_t mask = 0;
     int bits = 0;
+    std::vector<std::size_t> edges;        // the slot of each edge, in order of first use
+    std::vector<std::array<Id, 2>> joins;  // triangles sharing an edge
 
-    void prepare(std::size_t uses) {
+    void start(std::size_t uses) {
         bits = 4;
         while ((std::size_t{1} << bits) < uses + uses / 2 + 1) ++bits;
-        if (slots.size() < (std::size_t{1} << bits)) slots.assign(std::size_t{1} << bits, EdgeSlot<Id>{});
-        mask = (std::uint64_t{1} << bits) - 1;
-    }
-    std::size_t home(std::uint64_t key) const {
-        return static_cast<std::size_t>((key * 0x9e3779b97f4a7c15ull) >> (64 - bits));
+        if (slots.size() < (std::size_t{1} << bits)) slots.assign(std::size_t{1} << bits, Slot{});
+        mask = (std::size_t{1} << bits) - 1;
+        edges.resize(uses);
+        joins.resize(uses);
     }
 };
 
@@ -110,40 +109,48 @@ EdgeCensus census(const Mesh& mesh, const std::vector<std::uint8_t>& live, const
     const int shift = layout.bucketShift;
     const std::size_t buckets = (vertices >> shift) + 1;
 
-    // Calls use(k, bucket) for each edge of each counted triangle of chunk c.
+    // Calls use(row, t, k, bucket) for edge k of each counted triangle t.
+    // Each chunk has a row of counts per corner k: consecutive triangles
+    // then rarely add to one counter twice in a row, which would wait on
+    // the previous addition.
+    const std::size_t rows = 3 * chunks;
     auto forChunks = [&](auto use) {
         tbb::parallel_for(tbb::blocked_range<std::size_t>(0, chunks, 1), [&](const tbb::blocked_range<std::size_t>& r) {
             for (std::size_t c = r.begin(); c != r.end(); ++c)
                 for (std::size_t t = c * chunkSize; t < std::min(triangles, (c + 1) * chunkSize); ++t) {
                     if (!live[t]) continue;
                     const std::uint32_t* v = idx + 3 * t;
-                    use(c, t, 0, std::min(v[0], v[1]) >> shift);
-                    use(c, t, 1, std::min(v[1], v[2]) >> shift);
-                    use(c, t, 2, std::min(v[2], v[0]) >> shift);
+                    use(3 * c, t, 0, std::min(v[0], v[1]) >> shift);
+                    use(3 * c + 1, t, 1, std::min(v[1], v[2]) >> shift);
+                    use(3 * c + 2, t, 2, std::min(v[2], v[0]) >> shift);
                 }
         });
     };
 
-    // Uses per chunk and bucket, then where each chunk's go in each bucket:
-    // bucket by bucket, chunk by chunk, so every use has one fixed place.
-    std::vector<Id> place(chunks * buckets, 0);
-    forChunks([&](std::size_t c, std::size_t, int, std::size_t b) { ++place[c * buckets + b]; });
+    // Uses per row and bucket, then where each row's go in each bucket:
+    // bucket by bucket, row by row, so every use has one fixed place.
+    std::vector<Id> place(rows * buckets, 0);
+    forChunks([&](std::size_t row, std::size_t, int, std::size_t b) { ++place[row * buckets + b]; });
     std::vector<Id> bucketStart(buckets + 1);
     Id total = 0;
     for (std::size_t b = 0; b < buckets; ++b) {
         bucketStart[b] = total;
-        for (std::size_t c = 0; c < chunks; ++c) {
-            const Id n = place[c * buckets + b];
-            place[c * buckets + b] = total;
+        for (std::size_t row = 0; row < rows; ++row) {
+            const Id n = place[row * buckets + b];
+            place[row * buckets + b] = total;
             total += n;
         }
     }
     bucketStart[buckets] = total;
     std::unique_ptr<Id[]> uses(new Id[total]);
-    forChunks([&](std::size_t c, std::size_t t, int k, std::size_t b) { uses[place[c * buckets + b]++] = useOf<Id>(t, k); });
+    forChunks([&](std::size_t row, std::size_t t, int k, std::size_t b) {
+        uses[place[row * buckets + b]++] = useOf<Id>(t, k);
+    });
 
-    // Per bucket: its edges in a hash table, the triangles of each edge's
-    // uses joined as they meet.
+    // Per bucket: its edges in the table, then their counts, then the
+    // triangles sharing an edge joined. Whether a use is its edge's first
+    // is a coin toss to the processor (exactly half are, in a closed mesh),
+    // so the pass over the uses selects instead of branching on it.
     ConcurrentUnionFind<Id> parts(triangles);
     std::vector<EdgeCensus> perBucket(buckets);
     tbb::enumerable_thread_specific<EdgeTable<Id>> tables;
@@ -153,38 +160,34 @@ EdgeCensus census(const Mesh& mesh, const std::vector<std::uint8_t>& live, const
             const std::size_t first = bucketStart[b], last = bucketStart[b + 1];
             if (first == last) continue;
             const auto stamp = static_cast<std::uint32_t>(b + 1);
-            table.prepare(last - first);
-            // Kept up to date as uses come: a table scan at the end costs
-            // more than the inserts.
-            EdgeCensus out;
+            table.start(last - first);
+            std::size_t edges = 0, joins = 0;
             for (std::size_t i = first; i < last; ++i) {
                 const Id t = uses[i] >> 2;
                 const auto k = static_cast<std::size_t>(uses[i] & 3);
                 const std::uint32_t a = idx[3 * std::size_t{t} + k], c = idx[3 * std::size_t{t} + (k == 2 ? 0 : k + 1)];
                 const std::uint64_t key = std::uint64_t{std::min(a, c)} << 32 | std::max(a, c);
-                for (std::size_t h = table.home(key);; h = (h + 1) & table.mask) {
-                    EdgeSlot<Id>& slot = table.slots[h];
-                    if (slot.stamp != stamp) {
-                        slot = {key, t, stamp, 1, a < c ? 1u : 0u};
-                        ++out.boundaryEdges;
-                        break;
-                    }
-                    if (slot.key == key) {
-                        const bool wasConsistent = slot.forward == 1;
-                        slot.forward += a < c ? 1 : 0;
-                        if (++slot.uses == 2) {
-                            --out.boundaryEdges;
-                            if (slot.forward != 1) ++out.inconsistentEdges;
-                        } else if (slot.uses == 3) {
-                            if (!wasConsistent) --out.inconsistentEdges;
-                            ++out.nonManifoldEdges;
-                        }
-                        parts.unite(slot.firstTriangle, t);
-                        break;
-                    }
-                }
+                std::size_t h = static_cast<std::size_t>((key * 0x9e3779b97f4a7c15ull) >> (64 - table.bits));
+                while (table.slots[h].stamp == stamp && table.slots[h].key != key) h = (h + 1) & table.mask;
+                typename EdgeTable<Id>::Slot& slot = table.slots[h];
+                const bool fresh = slot.stamp != stamp;
+                const Id firstTriangle = fresh ? t : slot.firstTriangle;
+                slot = {key, firstTriangle, stamp, (fresh ? 0 : slot.uses) + 1,
+                        (fresh ? 0 : slot.forward) + (a < c ? 1 : 0)};
+                table.edges[edges] = h;
+                edges += fresh ? 1 : 0;
+                table.joins[joins] = {firstTriangle, t};
+                joins += fresh ? 0 : 1;
+            }
+            EdgeCensus out;
+            for (std::size_t e = 0; e < edges; ++e) {
+                const auto& slot = table.slots[table.edges[e]];
+                out.boundaryEdges += slot.uses == 1 ? 1 : 0;
+                out.nonManifoldEdges += slot.uses > 2 ? 1 : 0;
+                out.inconsistentEdges += slot.uses == 2 && slot.forward != 1 ? 1 : 0;
             }
             perBucket[b] = out;
+            for (std::size_t j = 0; j < joins; ++j) parts.unite(table.joins[j][0], table.joins[j][1]);
         }
     });
 

@@ -33,7 +33,7 @@ struct EdgeCensus {
 // buckets out of small meshes.
 struct EdgeLayout {
     std::size_t chunkTriangles = 0;  // triangles per chunk, at least 1
-    int bucketShift = 0;             // 2^bucketShift vertices per bucket
+    int bucketShift = 0;             // 2^bucketShift vertices per bucket, fewer than 2^32 buckets
     bool wideIds = false;            // 64-bit edge-use and triangle numbers even where 32 bits hold them
 };
 

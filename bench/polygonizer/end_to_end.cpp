@@ -99,7 +99,8 @@ nlohmann::json benchMeshEndToEnd(const BenchArgs& args) {
         fs::remove(stl);
         ProcessRun run = runHypergarden("mesh '" + model.string() + "' --res " + std::to_string(kResolution) + " -o '" +
                                         stl + "'");
-        if (run.status != 0) std::fprintf(stderr, "hypergarden mesh: exit status %d\n%s", run.status, run.output.c_str());
+        if (run.status != 0)
+            std::fprintf(stderr, "hypergarden mesh: exit status %d\n%s", run.status, run.output.c_str());
         if (run.wall < whole.wall) whole = run;
     }
 

@@ -134,7 +134,9 @@ inline Mesh latLongSphere(int rings, int segments, double radius, double cx = 0)
     add(cx, 0, -radius);
     const auto south = static_cast<std::uint32_t>(m.vertexCount() - 1);
     auto at = [&](int ring, int j) { return static_cast<std::uint32_t>(1 + (ring - 1) * segments + j % segments); };
-    auto tri = [&m](std::uint32_t a, std::uint32_t b, std::uint32_t c) { m.indices.insert(m.indices.end(), {a, b, c}); };
+    auto tri = [&m](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+        m.indices.insert(m.indices.end(), {a, b, c});
+    };
     for (int j = 0; j < segments; ++j) {
         tri(0, at(1, j), at(1, j + 1));
         for (int i = 1; i + 1 < rings; ++i) {
@@ -167,7 +169,8 @@ inline Mesh withDefects(Mesh m, unsigned seed, bool shuffle = true) {
         if (roll >= 20 && roll < 25) out.insert(out.end(), {a, b, c});  // duplicate: three uses an edge
         if (roll >= 25 && roll < 28) out.insert(out.end(), {a, c, b});  // back to back: edges used both ways twice
         if (roll >= 28 && roll < 31) out.insert(out.end(), {a, a, b});  // degenerate
-        if (roll >= 31 && roll < 33) out.insert(out.end(), {a, b, static_cast<std::uint32_t>(n + 4 + pick(5))});  // invalid
+        if (roll >= 31 && roll < 33)  // invalid
+            out.insert(out.end(), {a, b, static_cast<std::uint32_t>(n + 4 + pick(5))});
         if (roll >= 33 && roll < 36)
             out.insert(out.end(), {static_cast<std::uint32_t>(pick(n)), static_cast<std::uint32_t>(pick(n)),
                                    static_cast<std::uint32_t>(pick(n))});  // stray

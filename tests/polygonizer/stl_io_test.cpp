@@ -363,7 +363,8 @@ std::string serialStl(const Mesh& m, bool ascii, double scale, const std::string
             e1[a] = static_cast<double>(v[1][a]) - static_cast<double>(v[0][a]);
             e2[a] = static_cast<double>(v[2][a]) - static_cast<double>(v[0][a]);
         }
-        const double c[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]};
+        const double c[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+                             e1[0] * e2[1] - e1[1] * e2[0]};
         const double len = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
         if (len > 0 && std::isfinite(len))
             for (int a = 0; a < 3; ++a) n[a] = static_cast<float>(c[a] / len);
