@@ -163,13 +163,14 @@ struct VertexSpan {
     float lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};  // over values that are not NaN
 
     void add(const float* p) {
-        VertexSpan one;
-        one.used = 1;
         for (int a = 0; a < 3; ++a) {
-            one.first[a] = one.lo[a] = one.hi[a] = p[a];
-            one.numeric[a] = !std::isnan(p[a]);
+            if (used == 0) first[a] = p[a];
+            if (std::isnan(p[a])) continue;
+            lo[a] = numeric[a] ? std::min(lo[a], p[a]) : p[a];
+            hi[a] = numeric[a] ? std::max(hi[a], p[a]) : p[a];
+            numeric[a] = true;
         }
-        append(one);
+        ++used;
     }
     void append(const VertexSpan& o) {
         if (o.used == 0) return;
@@ -278,17 +279,20 @@ MeshReport validateMesh(const Mesh& mesh) {
     std::vector<std::uint8_t> live(triCount, 0);  // in range and not degenerate
     std::vector<std::array<std::size_t, 2>> bad(chunks, {0, 0});  // invalid, degenerate per chunk
     forChunks([&](std::size_t c, std::size_t begin, std::size_t end) {
+        const std::uint32_t* indices = mesh.indices.data();
+        std::size_t invalid = 0, collapsed = 0;
         for (std::size_t t = begin; t < end; ++t) {
-            if (!inRange(mesh, t)) {
-                ++bad[c][0];
+            const std::uint32_t* i = indices + 3 * t;
+            if (i[0] >= vertexCount || i[1] >= vertexCount || i[2] >= vertexCount) {
+                ++invalid;
                 continue;
             }
-            for (int k = 0; k < 3; ++k) usedVertex[mesh.indices[3 * t + k]].store(1, std::memory_order_relaxed);
-            if (degenerate(&mesh.indices[3 * t]))
-                ++bad[c][1];
-            else
-                live[t] = 1;
+            for (int k = 0; k < 3; ++k) usedVertex[i[k]].store(1, std::memory_order_relaxed);
+            const bool d = degenerate(i);
+            collapsed += d ? 1 : 0;
+            live[t] = d ? 0 : 1;
         }
+        bad[c] = {invalid, collapsed};
     });
     for (const auto& b : bad) {
         r.invalidTriangles += b[0];
@@ -310,12 +314,14 @@ MeshReport validateMesh(const Mesh& mesh) {
                      0.5 * (static_cast<double>(r.boxMin[2]) + static_cast<double>(r.boxMax[2]))};
     std::vector<std::array<double, 2>> sums(chunks, {0.0, 0.0});  // six times the volume, twice the area
     forChunks([&](std::size_t c, std::size_t begin, std::size_t end) {
+        const std::uint32_t* indices = mesh.indices.data();
+        const std::uint8_t* counted = live.data();
         double sixVolume = 0, twiceArea = 0;
         for (std::size_t t = begin; t < end; ++t) {
-            if (!live[t]) continue;
-            const Vec a = sub(position(mesh, mesh.indices[3 * t]), centre);
-            const Vec b = sub(position(mesh, mesh.indices[3 * t + 1]), centre);
-            const Vec d = sub(position(mesh, mesh.indices[3 * t + 2]), centre);
+            if (!counted[t]) continue;
+            const Vec a = sub(position(mesh, indices[3 * t]), centre);
+            const Vec b = sub(position(mesh, indices[3 * t + 1]), centre);
+            const Vec d = sub(position(mesh, indices[3 * t + 2]), centre);
             sixVolume += dot(a, cross(b, d));
             const Vec n = cross(sub(b, a), sub(d, a));
             twiceArea += std::sqrt(dot(n, n));

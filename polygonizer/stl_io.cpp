@@ -44,6 +44,26 @@ constexpr std::string_view kHeaderPrefix = "Hypergarden STL: ";
 constexpr std::size_t kSliceFacets = std::size_t{1} << 14;
 constexpr std::size_t kCheckGrain = std::size_t{1} << 16;  // indices or coordinates per task of the checks
 
+// How many i in [0, n) have is(i), on TBB. Counted in blocks of a fixed
+// length with no early exit, so the compiler vectorizes the inner loop.
+template <class Is>
+std::size_t countOnThreads(std::size_t n, Is is) {
+    return tbb::parallel_reduce(
+        tbb::blocked_range<std::size_t>(0, n, kCheckGrain), std::size_t{0},
+        [&](const tbb::blocked_range<std::size_t>& r, std::size_t count) {
+            constexpr std::size_t kBlock = 64;
+            std::size_t i = r.begin();
+            for (; i + kBlock <= r.end(); i += kBlock) {
+                unsigned block = 0;
+                for (std::size_t j = 0; j < kBlock; ++j) block += is(i + j) ? 1u : 0u;
+                count += block;
+            }
+            for (; i < r.end(); ++i) count += is(i) ? 1 : 0;
+            return count;
+        },
+        std::plus<>());
+}
+
 // Little-endian whatever the host; the compiler makes one store of it.
 char* putU32(char* out, std::uint32_t v) {
     for (int i = 0; i < 4; ++i) out[i] = static_cast<char>((v >> (8 * i)) & 0xffu);
@@ -464,24 +484,19 @@ std::string writeStl(const Mesh& mesh, const std::string& path, bool ascii, doub
 
     // Checked before the file is opened, on all threads: an index out of
     // range, or the first vertex that is not finite once scaled.
-    const std::size_t indexCount = mesh.indices.size(), vertexCount = mesh.vertexCount();
-    const bool indicesInRange = tbb::parallel_reduce(
-        tbb::blocked_range<std::size_t>(0, indexCount, kCheckGrain), true,
-        [&](const tbb::blocked_range<std::size_t>& r, bool ok) {
-            for (std::size_t i = r.begin(); i != r.end() && ok; ++i) ok = mesh.indices[i] < vertexCount;
-            return ok;
-        },
-        std::logical_and<>());
-    if (!indicesInRange) return cannot + "the mesh has an index out of range";
-    const std::size_t firstNonFinite = tbb::parallel_reduce(
-        tbb::blocked_range<std::size_t>(0, mesh.positions.size(), kCheckGrain), SIZE_MAX,
-        [&](const tbb::blocked_range<std::size_t>& r, std::size_t first) {
-            for (std::size_t i = r.begin(); i != r.end() && i < first; ++i)
-                if (!std::isfinite(scaled(mesh.positions[i], scale))) first = i;
-            return first;
-        },
-        [](std::size_t x, std::size_t y) { return std::min(x, y); });
-    if (firstNonFinite != SIZE_MAX) return cannot + "vertex " + std::to_string(firstNonFinite / 3) + " is not finite";
+    if (mesh.vertexCount() <= std::numeric_limits<std::uint32_t>::max()) {
+        const auto limit = static_cast<std::uint32_t>(mesh.vertexCount());
+        const std::uint32_t* indices = mesh.indices.data();
+        if (countOnThreads(mesh.indices.size(), [indices, limit](std::size_t i) { return indices[i] >= limit; }) > 0)
+            return cannot + "the mesh has an index out of range";
+    }
+    const float* positions = mesh.positions.data();
+    auto notFinite = [positions, scale](std::size_t i) { return !std::isfinite(scaled(positions[i], scale)); };
+    if (countOnThreads(mesh.positions.size(), notFinite) > 0) {
+        std::size_t i = 0;
+        while (!notFinite(i)) ++i;
+        return cannot + "vertex " + std::to_string(i / 3) + " is not finite";
+    }
 
     return voxel::writeAtomically(path, [&](const std::string& tmp) {
         return writeContents(mesh, scale, tmp, path, ascii, sanitizeName(solidName));
