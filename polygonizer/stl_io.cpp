@@ -240,7 +240,7 @@ std::string writeContents(const Mesh& mesh, double scale, const std::string& tmp
 
     BufferPool pool;
     std::size_t next = 0;
-    std::atomic<int> error{0};  // errno of the first failed write; no slice is formatted or written after it
+    std::atomic<int> error{0};  // errno of the first failed write: no slice is started or written after it
     const auto tokens = static_cast<std::size_t>(2 * std::max(1, tbb::this_task_arena::max_concurrency()));
     tbb::parallel_pipeline(
         tokens,
