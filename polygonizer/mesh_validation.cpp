@@ -1,15 +1,21 @@
 #include "polygonizer/mesh_validation.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
-#include <numeric>
+#include <memory>
 #include <unordered_map>
 #include <utility>
 #include <vector>
+
+#include "polygonizer/mesh_validation_edges.h"
 
 namespace hg::poly {
 
@@ -130,25 +136,70 @@ std::vector<std::uint32_t> groupVertices(const Mesh& mesh, float tolerance, std:
     return group;
 }
 
-struct UnionFind {
-    std::vector<std::size_t> parent;
-    explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), std::size_t{0}); }
-    std::size_t find(std::size_t x) {
-        while (parent[x] != x) {
-            parent[x] = parent[parent[x]];
-            x = parent[x];
-        }
-        return x;
-    }
-    void unite(std::size_t a, std::size_t b) { parent[find(a)] = find(b); }
-};
-
 bool inRange(const Mesh& m, std::size_t t) {
     const std::size_t n = m.vertexCount();
     return m.indices[3 * t] < n && m.indices[3 * t + 1] < n && m.indices[3 * t + 2] < n;
 }
 
 bool degenerate(const std::uint32_t* i) { return i[0] == i[1] || i[1] == i[2] || i[0] == i[2]; }
+
+// validateMesh's unit of parallel work: large enough that a task's
+// overhead does not show, small enough for a mesh of 100k triangles to
+// keep two threads busy. Fixed, so sums come out the same on any number of
+// threads.
+constexpr std::size_t kChunkTriangles = std::size_t{1} << 15;
+constexpr std::size_t kChunkVertices = std::size_t{1} << 16;
+
+// The count and box of the used vertices, as a serial loop keeping
+// std::min(lo, x) and std::max(hi, x) from the first used vertex on would
+// find them: a value replaces a bound only when strictly beyond it, so a
+// NaN never does (but a NaN first value stays the bound), and of equal
+// values (-0 and +0) the first stays. Spans of consecutive vertices combine
+// in order to the same box.
+struct VertexSpan {
+    std::size_t used = 0;
+    float first[3] = {0, 0, 0};                  // the first used vertex
+    bool numeric[3] = {false, false, false};     // lo and hi hold a value that is not NaN
+    float lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};  // over values that are not NaN
+
+    void add(const float* p) {
+        for (int a = 0; a < 3; ++a) {
+            if (used == 0) first[a] = p[a];
+            if (std::isnan(p[a])) continue;
+            lo[a] = numeric[a] ? std::min(lo[a], p[a]) : p[a];
+            hi[a] = numeric[a] ? std::max(hi[a], p[a]) : p[a];
+            numeric[a] = true;
+        }
+        ++used;
+    }
+    void append(const VertexSpan& o) {
+        if (o.used == 0) return;
+        for (int a = 0; a < 3; ++a) {
+            if (used == 0) first[a] = o.first[a];
+            if (!o.numeric[a]) continue;
+            lo[a] = numeric[a] ? std::min(lo[a], o.lo[a]) : o.lo[a];
+            hi[a] = numeric[a] ? std::max(hi[a], o.hi[a]) : o.hi[a];
+            numeric[a] = true;
+        }
+        used += o.used;
+    }
+    float boxMin(int a) const { return used == 0 ? 0.0f : std::isnan(first[a]) ? first[a] : lo[a]; }
+    float boxMax(int a) const { return used == 0 ? 0.0f : std::isnan(first[a]) ? first[a] : hi[a]; }
+};
+
+VertexSpan spanOfUsed(const Mesh& mesh, const std::atomic<std::uint8_t>* used) {
+    const std::size_t n = mesh.vertexCount();
+    const std::size_t chunks = (n + kChunkVertices - 1) / kChunkVertices;
+    std::vector<VertexSpan> spans(chunks);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, chunks, 1), [&](const tbb::blocked_range<std::size_t>& r) {
+        for (std::size_t c = r.begin(); c != r.end(); ++c)
+            for (std::size_t v = c * kChunkVertices; v < std::min(n, (c + 1) * kChunkVertices); ++v)
+                if (used[v].load(std::memory_order_relaxed)) spans[c].add(&mesh.positions[3 * v]);
+    });
+    VertexSpan all;
+    for (const VertexSpan& s : spans) all.append(s);
+    return all;
+}
 
 }  // namespace
 
@@ -213,89 +264,83 @@ Mesh weldByPosition(const Mesh& mesh, float tolerance) {
 MeshReport validateMesh(const Mesh& mesh) {
     MeshReport r;
     const std::size_t triCount = mesh.triangleCount();
+    const std::size_t vertexCount = mesh.vertexCount();
     r.triangles = triCount;
+    const std::size_t chunks = (triCount + kChunkTriangles - 1) / kChunkTriangles;
+    auto forChunks = [&](auto body) {
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, chunks, 1), [&](const tbb::blocked_range<std::size_t>& c) {
+            for (std::size_t k = c.begin(); k != c.end(); ++k)
+                body(k, k * kChunkTriangles, std::min(triCount, (k + 1) * kChunkTriangles));
+        });
+    };
 
-    std::vector<bool> usedVertex(mesh.vertexCount(), false);
-    std::vector<bool> live(triCount, false);  // in range and not degenerate
-    for (std::size_t t = 0; t < triCount; ++t) {
-        if (!inRange(mesh, t)) {
-            ++r.invalidTriangles;
-            continue;
+    // Flags written by many threads at once, all with the same value.
+    std::unique_ptr<std::atomic<std::uint8_t>[]> usedVertex(new std::atomic<std::uint8_t>[vertexCount]());
+    std::vector<std::uint8_t> live(triCount, 0);  // in range and not degenerate
+    std::vector<std::array<std::size_t, 2>> bad(chunks, {0, 0});  // invalid, degenerate per chunk
+    forChunks([&](std::size_t c, std::size_t begin, std::size_t end) {
+        const std::uint32_t* indices = mesh.indices.data();
+        std::size_t invalid = 0, collapsed = 0;
+        for (std::size_t t = begin; t < end; ++t) {
+            const std::uint32_t* i = indices + 3 * t;
+            if (i[0] >= vertexCount || i[1] >= vertexCount || i[2] >= vertexCount) {
+                ++invalid;
+                continue;
+            }
+            for (int k = 0; k < 3; ++k) usedVertex[i[k]].store(1, std::memory_order_relaxed);
+            const bool d = degenerate(i);
+            collapsed += d ? 1 : 0;
+            live[t] = d ? 0 : 1;
         }
-        for (int k = 0; k < 3; ++k) usedVertex[mesh.indices[3 * t + k]] = true;
-        if (degenerate(&mesh.indices[3 * t]))
-            ++r.degenerateTriangles;
-        else
-            live[t] = true;
+        bad[c] = {invalid, collapsed};
+    });
+    for (const auto& b : bad) {
+        r.invalidTriangles += b[0];
+        r.degenerateTriangles += b[1];
     }
 
-    bool anyVertex = false;
-    for (std::size_t v = 0; v < usedVertex.size(); ++v) {
-        if (!usedVertex[v]) continue;
-        ++r.vertices;
-        for (int a = 0; a < 3; ++a) {
-            const float x = mesh.positions[3 * v + a];
-            r.boxMin[a] = anyVertex ? std::min(r.boxMin[a], x) : x;
-            r.boxMax[a] = anyVertex ? std::max(r.boxMax[a], x) : x;
-        }
-        anyVertex = true;
+    const VertexSpan span = spanOfUsed(mesh, usedVertex.get());
+    r.vertices = span.used;
+    for (int a = 0; a < 3; ++a) {
+        r.boxMin[a] = span.boxMin(a);
+        r.boxMax[a] = span.boxMax(a);
     }
 
     // Measured from the box centre: the terms stay small for a model far
-    // from the origin, so less cancels.
+    // from the origin, so less cancels. Summed per chunk, then the chunks
+    // in order: the same total on any number of threads.
     const Vec centre{0.5 * (static_cast<double>(r.boxMin[0]) + static_cast<double>(r.boxMax[0])),
                      0.5 * (static_cast<double>(r.boxMin[1]) + static_cast<double>(r.boxMax[1])),
                      0.5 * (static_cast<double>(r.boxMin[2]) + static_cast<double>(r.boxMax[2]))};
+    std::vector<std::array<double, 2>> sums(chunks, {0.0, 0.0});  // six times the volume, twice the area
+    forChunks([&](std::size_t c, std::size_t begin, std::size_t end) {
+        const std::uint32_t* indices = mesh.indices.data();
+        const std::uint8_t* counted = live.data();
+        double sixVolume = 0, twiceArea = 0;
+        for (std::size_t t = begin; t < end; ++t) {
+            if (!counted[t]) continue;
+            const Vec a = sub(position(mesh, indices[3 * t]), centre);
+            const Vec b = sub(position(mesh, indices[3 * t + 1]), centre);
+            const Vec d = sub(position(mesh, indices[3 * t + 2]), centre);
+            sixVolume += dot(a, cross(b, d));
+            const Vec n = cross(sub(b, a), sub(d, a));
+            twiceArea += std::sqrt(dot(n, n));
+        }
+        sums[c] = {sixVolume, twiceArea};
+    });
     double sixVolume = 0, twiceArea = 0;
-    for (std::size_t t = 0; t < triCount; ++t) {
-        if (!live[t]) continue;
-        const Vec a = sub(position(mesh, mesh.indices[3 * t]), centre);
-        const Vec b = sub(position(mesh, mesh.indices[3 * t + 1]), centre);
-        const Vec c = sub(position(mesh, mesh.indices[3 * t + 2]), centre);
-        sixVolume += dot(a, cross(b, c));
-        const Vec n = cross(sub(b, a), sub(c, a));
-        twiceArea += std::sqrt(dot(n, n));
+    for (const auto& s : sums) {
+        sixVolume += s[0];
+        twiceArea += s[1];
     }
     r.volume = sixVolume / 6;
     r.area = twiceArea / 2;
 
-    // Each directed edge as (sorted pair, triangle, whether it runs low to
-    // high); sorting brings the uses of one edge together.
-    struct EdgeUse {
-        std::uint64_t key;
-        std::size_t tri;
-        bool forward;
-    };
-    std::vector<EdgeUse> uses;
-    uses.reserve(3 * triCount);
-    for (std::size_t t = 0; t < triCount; ++t) {
-        if (!live[t]) continue;
-        for (int k = 0; k < 3; ++k) {
-            const std::uint32_t a = mesh.indices[3 * t + k], b = mesh.indices[3 * t + (k + 1) % 3];
-            const std::uint64_t lo = std::min(a, b), hi = std::max(a, b);
-            uses.push_back({(lo << 32) | hi, t, a < b});
-        }
-    }
-    std::sort(uses.begin(), uses.end(), [](const EdgeUse& x, const EdgeUse& y) { return x.key < y.key; });
-
-    UnionFind components(triCount);
-    for (std::size_t i = 0; i < uses.size();) {
-        std::size_t j = i, forward = 0;
-        for (; j < uses.size() && uses[j].key == uses[i].key; ++j) {
-            forward += uses[j].forward ? 1 : 0;
-            components.unite(uses[j].tri, uses[i].tri);
-        }
-        const std::size_t count = j - i;
-        if (count == 1)
-            ++r.boundaryEdges;
-        else if (count > 2)
-            ++r.nonManifoldEdges;
-        else if (forward != 1)
-            ++r.inconsistentEdges;
-        i = j;
-    }
-    for (std::size_t t = 0; t < triCount; ++t)
-        if (live[t] && components.find(t) == t) ++r.components;
+    const EdgeCensus edges = censusEdges(mesh, live, defaultEdgeLayout(triCount, vertexCount));
+    r.boundaryEdges = edges.boundaryEdges;
+    r.nonManifoldEdges = edges.nonManifoldEdges;
+    r.inconsistentEdges = edges.inconsistentEdges;
+    r.components = edges.components;
     return r;
 }
 

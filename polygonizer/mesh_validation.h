@@ -42,7 +42,9 @@ struct MeshReport {
 };
 
 // Edges are the sorted index pairs of the non-degenerate, valid triangles;
-// volume, area and box are over those triangles too.
+// volume, area and box are over those triangles too. Runs on TBB (edges:
+// mesh_validation_edges.h) and gives the same report on any number of
+// threads.
 MeshReport validateMesh(const Mesh& mesh);
 
 // A few lines for a person: counts, volume and size in millimetres (model

@@ -1,5 +1,12 @@
 #include "polygonizer/stl_io.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_pipeline.h>
+#include <tbb/parallel_reduce.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <atomic>
 #include <cctype>
 #include <cerrno>
 #include <charconv>
@@ -7,7 +14,10 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <functional>
 #include <limits>
+#include <memory>
+#include <mutex>
 #include <string_view>
 #include <vector>
 
@@ -27,14 +37,43 @@ constexpr std::string_view kHeaderPrefix = "Hypergarden STL: ";
 
 // ---------------------------------------------------------------- writing
 
-void putU32(std::string& out, std::uint32_t v) {
-    for (int i = 0; i < 4; ++i) out.push_back(static_cast<char>((v >> (8 * i)) & 0xffu));
+// Facets are formatted a slice at a time on TBB workers and written in
+// order as each slice is ready: the file is written while later slices are
+// formatted, and only a few slices are in memory at once. A binary slice is
+// 800 KiB, an ASCII one about 4 MiB.
+constexpr std::size_t kSliceFacets = std::size_t{1} << 14;
+constexpr std::size_t kCheckGrain = std::size_t{1} << 16;  // indices or coordinates per task of the checks
+
+// How many i in [0, n) have is(i), on TBB. Counted in blocks of a fixed
+// length with no early exit, so the compiler vectorizes the inner loop.
+template <class Is>
+std::size_t countOnThreads(std::size_t n, Is is) {
+    return tbb::parallel_reduce(
+        tbb::blocked_range<std::size_t>(0, n, kCheckGrain), std::size_t{0},
+        [&](const tbb::blocked_range<std::size_t>& r, std::size_t count) {
+            constexpr std::size_t kBlock = 64;
+            std::size_t i = r.begin();
+            for (; i + kBlock <= r.end(); i += kBlock) {
+                unsigned block = 0;
+                for (std::size_t j = 0; j < kBlock; ++j) block += is(i + j) ? 1u : 0u;
+                count += block;
+            }
+            for (; i < r.end(); ++i) count += is(i) ? 1 : 0;
+            return count;
+        },
+        std::plus<>());
 }
 
-void putF32(std::string& out, float f) {
+// Little-endian whatever the host; the compiler makes one store of it.
+char* putU32(char* out, std::uint32_t v) {
+    for (int i = 0; i < 4; ++i) out[i] = static_cast<char>((v >> (8 * i)) & 0xffu);
+    return out + 4;
+}
+
+char* putF32(char* out, float f) {
     std::uint32_t bits;
     std::memcpy(&bits, &f, sizeof bits);
-    putU32(out, bits);
+    return putU32(out, bits);
 }
 
 void putNumber(std::string& out, float f) {
@@ -44,6 +83,8 @@ void putNumber(std::string& out, float f) {
     out.append(buf, res.ptr);
 }
 
+float scaled(float x, double scale) { return static_cast<float>(static_cast<double>(x) * scale); }
+
 // The three scaled corners of a triangle and its unit normal (zero for a
 // triangle without area).
 struct Facet {
@@ -51,20 +92,75 @@ struct Facet {
     float n[3];
 };
 
-Facet facet(const std::vector<float>& scaled, const std::uint32_t* tri) {
-    Facet f{};
-    for (int k = 0; k < 3; ++k)
-        for (int a = 0; a < 3; ++a) f.v[k][a] = scaled[3 * std::size_t{tri[k]} + a];
-    double e1[3], e2[3];
-    for (int a = 0; a < 3; ++a) {
-        e1[a] = static_cast<double>(f.v[1][a]) - static_cast<double>(f.v[0][a]);
-        e2[a] = static_cast<double>(f.v[2][a]) - static_cast<double>(f.v[0][a]);
+// Facets a group at a time, stage by stage: the square roots and divisions
+// of one facet's normal wait on each other, those of different facets do
+// not, and a loop over the group lets the processor overlap them.
+constexpr std::size_t kFacetGroup = 16;
+
+void facets(const Mesh& mesh, double scale, std::size_t first, std::size_t count, Facet* out) {
+    double n[kFacetGroup][3], len[kFacetGroup];
+    for (std::size_t g = 0; g < count; ++g) {
+        Facet& f = out[g];
+        const std::uint32_t* tri = &mesh.indices[3 * (first + g)];
+        for (int k = 0; k < 3; ++k)
+            for (int a = 0; a < 3; ++a) f.v[k][a] = scaled(mesh.positions[3 * std::size_t{tri[k]} + a], scale);
+        double e1[3], e2[3];
+        for (int a = 0; a < 3; ++a) {
+            e1[a] = static_cast<double>(f.v[1][a]) - static_cast<double>(f.v[0][a]);
+            e2[a] = static_cast<double>(f.v[2][a]) - static_cast<double>(f.v[0][a]);
+        }
+        n[g][0] = e1[1] * e2[2] - e1[2] * e2[1];
+        n[g][1] = e1[2] * e2[0] - e1[0] * e2[2];
+        n[g][2] = e1[0] * e2[1] - e1[1] * e2[0];
     }
-    const double n[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]};
-    const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-    if (len > 0 && std::isfinite(len))
-        for (int a = 0; a < 3; ++a) f.n[a] = static_cast<float>(n[a] / len);
-    return f;
+    for (std::size_t g = 0; g < count; ++g)
+        len[g] = std::sqrt(n[g][0] * n[g][0] + n[g][1] * n[g][1] + n[g][2] * n[g][2]);
+    for (std::size_t g = 0; g < count; ++g) {
+        const bool area = len[g] > 0 && std::isfinite(len[g]);
+        for (int a = 0; a < 3; ++a) out[g].n[a] = area ? static_cast<float>(n[g][a] / len[g]) : 0.0f;
+    }
+}
+
+// Calls f(facet) for facets begin..end in order.
+template <class F>
+void forFacets(const Mesh& mesh, double scale, std::size_t begin, std::size_t end, F f) {
+    Facet group[kFacetGroup];
+    for (std::size_t t = begin; t < end; t += kFacetGroup) {
+        const std::size_t count = std::min(kFacetGroup, end - t);
+        facets(mesh, scale, t, count, group);
+        for (std::size_t g = 0; g < count; ++g) f(group[g]);
+    }
+}
+
+void formatBinary(const Mesh& mesh, double scale, std::size_t begin, std::size_t end, std::string& out) {
+    out.resize((end - begin) * kFacetBytes);
+    char* p = out.data();
+    forFacets(mesh, scale, begin, end, [&p](const Facet& f) {
+        for (float x : f.n) p = putF32(p, x);
+        for (const auto& v : f.v)
+            for (float x : v) p = putF32(p, x);
+        *p++ = '\0';  // attribute byte count: unused
+        *p++ = '\0';
+    });
+}
+
+void formatAscii(const Mesh& mesh, double scale, std::size_t begin, std::size_t end, std::string& out) {
+    out.clear();
+    forFacets(mesh, scale, begin, end, [&out](const Facet& f) {
+        out += "  facet normal ";
+        for (int a = 0; a < 3; ++a) {
+            putNumber(out, f.n[a]);
+            out += a < 2 ? " " : "\n    outer loop\n";
+        }
+        for (int k = 0; k < 3; ++k) {
+            out += "      vertex ";
+            for (int a = 0; a < 3; ++a) {
+                putNumber(out, f.v[k][a]);
+                out += a < 2 ? ' ' : '\n';
+            }
+        }
+        out += "    endloop\n  endfacet\n";
+    });
 }
 
 // A name on the "solid" line must stay on that line.
@@ -95,55 +191,87 @@ private:
     std::FILE* f_;
 };
 
-std::string writeContents(const Mesh& mesh, const std::vector<float>& scaled, const std::string& tmp,
-                          const std::string& path, bool ascii, const std::string& name) {
+// Slice buffers handed from the writing stage back to the formatting one,
+// so their pages are touched once, not once per slice.
+class BufferPool {
+public:
+    std::shared_ptr<std::string> take() {
+        std::lock_guard<std::mutex> lock(mutex_);
+        if (free_.empty()) return std::make_shared<std::string>();
+        std::shared_ptr<std::string> b = std::move(free_.back());
+        free_.pop_back();
+        return b;
+    }
+    void give(std::shared_ptr<std::string> b) {
+        std::lock_guard<std::mutex> lock(mutex_);
+        free_.push_back(std::move(b));
+    }
+
+private:
+    std::mutex mutex_;
+    std::vector<std::shared_ptr<std::string>> free_;
+};
+
+struct Slice {
+    std::size_t begin = 0, end = 0;
+    std::shared_ptr<std::string> text;
+};
+
+std::string writeContents(const Mesh& mesh, double scale, const std::string& tmp, const std::string& path, bool ascii,
+                          const std::string& name) {
     File file(tmp, "wb");
-    if (!file.get()) return "cannot write " + path + ": " + std::strerror(errno);
-    std::string buf;
-    auto flush = [&]() {
-        const bool good = std::fwrite(buf.data(), 1, buf.size(), file.get()) == buf.size();
-        buf.clear();
-        return good;
+    const std::string cannot = "cannot write " + path + ": ";
+    if (!file.get()) return cannot + std::strerror(errno);
+    auto put = [&file](const std::string& bytes) {
+        return std::fwrite(bytes.data(), 1, bytes.size(), file.get()) == bytes.size();
     };
-    constexpr std::size_t kChunk = 1 << 20;
     const std::size_t triangles = mesh.triangleCount();
 
+    std::string head;
     if (ascii) {
-        buf += name.empty() ? "solid\n" : "solid " + name + "\n";
+        head = name.empty() ? "solid\n" : "solid " + name + "\n";
     } else {
-        std::string header(kHeaderPrefix);
-        header += name;
-        header.resize(kHeaderBytes, '\0');
-        buf += header;
-        putU32(buf, static_cast<std::uint32_t>(triangles));
+        head = std::string(kHeaderPrefix) + name;
+        head.resize(kHeaderBytes, '\0');
+        head.resize(kHeaderBytes + 4);
+        putU32(&head[kHeaderBytes], static_cast<std::uint32_t>(triangles));
     }
-    for (std::size_t t = 0; t < triangles; ++t) {
-        const Facet f = facet(scaled, &mesh.indices[3 * t]);
-        if (ascii) {
-            buf += "  facet normal ";
-            for (int a = 0; a < 3; ++a) {
-                putNumber(buf, f.n[a]);
-                buf += a < 2 ? " " : "\n    outer loop\n";
-            }
-            for (int k = 0; k < 3; ++k) {
-                buf += "      vertex ";
-                for (int a = 0; a < 3; ++a) {
-                    putNumber(buf, f.v[k][a]);
-                    buf += a < 2 ? ' ' : '\n';
-                }
-            }
-            buf += "    endloop\n  endfacet\n";
-        } else {
-            for (float x : f.n) putF32(buf, x);
-            for (const auto& v : f.v)
-                for (float x : v) putF32(buf, x);
-            buf.push_back('\0');  // attribute byte count: unused
-            buf.push_back('\0');
-        }
-        if (buf.size() >= kChunk && !flush()) return "cannot write " + path + ": " + std::strerror(errno);
-    }
-    if (ascii) buf += name.empty() ? "endsolid\n" : "endsolid " + name + "\n";
-    if (!flush() || !file.close()) return "cannot write " + path + ": " + std::strerror(errno);
+    if (!put(head)) return cannot + std::strerror(errno);
+
+    BufferPool pool;
+    std::size_t next = 0;
+    std::atomic<int> error{0};  // errno of the first failed write: no slice is started or written after it
+    const auto tokens = static_cast<std::size_t>(2 * std::max(1, tbb::this_task_arena::max_concurrency()));
+    tbb::parallel_pipeline(
+        tokens,
+        tbb::make_filter<void, Slice>(tbb::filter_mode::serial_in_order,
+                                      [&](tbb::flow_control& fc) {
+                                          Slice s;
+                                          if (next == triangles || error) {
+                                              fc.stop();
+                                              return s;
+                                          }
+                                          s.begin = next;
+                                          s.end = next = std::min(triangles, next + kSliceFacets);
+                                          return s;
+                                      }) &
+            tbb::make_filter<Slice, Slice>(tbb::filter_mode::parallel,
+                                           [&](Slice s) {
+                                               s.text = pool.take();
+                                               if (ascii)
+                                                   formatAscii(mesh, scale, s.begin, s.end, *s.text);
+                                               else
+                                                   formatBinary(mesh, scale, s.begin, s.end, *s.text);
+                                               return s;
+                                           }) &
+            tbb::make_filter<Slice, void>(tbb::filter_mode::serial_in_order, [&](Slice s) {
+                if (!error && !put(*s.text)) error = errno ? errno : EIO;
+                pool.give(std::move(s.text));
+            }));
+    if (error) return cannot + std::strerror(error.load());
+
+    if (ascii && !put(name.empty() ? "endsolid\n" : "endsolid " + name + "\n")) return cannot + std::strerror(errno);
+    if (!file.close()) return cannot + std::strerror(errno);
     return "";
 }
 
@@ -353,17 +481,25 @@ std::string writeStl(const Mesh& mesh, const std::string& path, bool ascii, doub
     if (mesh.indices.size() % 3 != 0) return cannot + "the mesh's index count is not a multiple of three";
     if (!ascii && mesh.triangleCount() > std::numeric_limits<std::uint32_t>::max())
         return cannot + "too many triangles for binary STL";
-    for (std::uint32_t i : mesh.indices)
-        if (i >= mesh.vertexCount()) return cannot + "the mesh has an index out of range";
 
-    std::vector<float> scaled(mesh.positions.size());
-    for (std::size_t i = 0; i < scaled.size(); ++i) {
-        scaled[i] = static_cast<float>(static_cast<double>(mesh.positions[i]) * scale);
-        if (!std::isfinite(scaled[i])) return cannot + "vertex " + std::to_string(i / 3) + " is not finite";
+    // Checked before the file is opened, on all threads: an index out of
+    // range, or the first vertex that is not finite once scaled.
+    if (mesh.vertexCount() <= std::numeric_limits<std::uint32_t>::max()) {
+        const auto limit = static_cast<std::uint32_t>(mesh.vertexCount());
+        const std::uint32_t* indices = mesh.indices.data();
+        if (countOnThreads(mesh.indices.size(), [indices, limit](std::size_t i) { return indices[i] >= limit; }) > 0)
+            return cannot + "the mesh has an index out of range";
+    }
+    const float* positions = mesh.positions.data();
+    auto notFinite = [positions, scale](std::size_t i) { return !std::isfinite(scaled(positions[i], scale)); };
+    if (countOnThreads(mesh.positions.size(), notFinite) > 0) {
+        std::size_t i = 0;
+        while (!notFinite(i)) ++i;
+        return cannot + "vertex " + std::to_string(i / 3) + " is not finite";
     }
 
     return voxel::writeAtomically(path, [&](const std::string& tmp) {
-        return writeContents(mesh, scaled, tmp, path, ascii, sanitizeName(solidName));
+        return writeContents(mesh, scale, tmp, path, ascii, sanitizeName(solidName));
     });
 }
 

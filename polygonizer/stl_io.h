@@ -14,7 +14,9 @@ namespace hg::poly {
 // millimetres per model unit; must be finite and positive, since a negative
 // one would turn the solid inside out). Facet normals are computed from each
 // triangle, not taken from the vertex normals. "" on success, otherwise what
-// went wrong, with the path.
+// went wrong, with the path. Facets are formatted on TBB workers a slice at
+// a time and written in order as slices are ready: the same bytes on any
+// number of threads.
 std::string writeStl(const Mesh& mesh, const std::string& path, bool ascii = false, double scale = 1.0,
                      const std::string& solidName = "hypergarden");
 

@@ -1,8 +1,10 @@
 // Export meshing benchmark: poly::meshVolume (one level, welded triangles
 // with gradient normals) against OpenVDB's tools::volumeToMesh on the same
 // grid (isovalue 0, adaptivity 0: shared points, quads, no normals), at
-// 128^3 and 256^3, for our sculptures and an analytic sphere and torus.
-// Prints a Markdown table; --json FILE writes the rows too.
+// 128^3 and 256^3, for our sculptures and an analytic sphere and torus;
+// then `hypergarden mesh` end to end on the union of 64 spheres
+// (end_to_end.cpp). Prints Markdown tables; --json FILE writes the rows too
+// ({"export_mesher": [...], "end_to_end": [...]}).
 //
 //   ./build/release/bench/bench_poly [--json out.json] [--filter NAME] [--repeat N]
 #include <openvdb/tools/VolumeToMesh.h>
@@ -18,6 +20,7 @@
 #include <nlohmann/json.hpp>
 
 #include "../bench_common.h"
+#include "end_to_end.h"
 
 #include "frep/parser.h"
 #include "polygonizer/export_mesher.h"
@@ -86,6 +89,8 @@ int main(int argc, char** argv) {
                             {"openvdb_points", points.size()}});
         }
     }
-    if (!jsonPath.empty()) std::ofstream(jsonPath) << rows.dump(2) << "\n";
+    nlohmann::json endToEnd = bench::benchMeshEndToEnd(args);
+    if (!jsonPath.empty())
+        std::ofstream(jsonPath) << nlohmann::json{{"export_mesher", rows}, {"end_to_end", endToEnd}}.dump(2) << "\n";
     return 0;
 }

@@ -2,6 +2,8 @@
 // [--mm-per-unit S]`: the export mesher over a sculpture's volume (sampled
 // from a HyperFun file, or read from one of our .vdb grids), validated and
 // written as STL for printing.
+#include <tbb/parallel_invoke.h>
+
 #include <cstdio>
 #include <iostream>
 
@@ -63,9 +65,14 @@ int runMesh(const MeshOptions& o) {
         std::cerr << o.model.file << ": error: the volume has no surface (nothing inside the model box)\n";
         return 1;
     }
-    poly::MeshReport report = poly::validateMesh(mesh);
+    // Validation and writing only read the mesh: side by side, so that one
+    // computes while the other waits on the file.
+    poly::MeshReport report;
+    std::string why;
+    tbb::parallel_invoke([&] { report = poly::validateMesh(mesh); },
+                         [&] { why = poly::writeStl(mesh, o.output, o.ascii, o.mmPerUnit); });
     std::printf("meshed in %.3f s\n%s", stats.seconds, poly::describe(report, o.mmPerUnit).c_str());
-    if (std::string why = poly::writeStl(mesh, o.output, o.ascii, o.mmPerUnit); !why.empty()) {
+    if (!why.empty()) {
         std::cerr << "error: " << why << "\n";
         return 1;
     }

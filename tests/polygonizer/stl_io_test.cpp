@@ -5,9 +5,14 @@
 // checker, finds nothing to repair in what we write.
 #include <gtest/gtest.h>
 
+#include <sys/resource.h>
+#include <tbb/task_arena.h>
 #include <unistd.h>
 
 #include <array>
+#include <cerrno>
+#include <csignal>
+#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -21,6 +26,7 @@
 #include <string>
 #include <vector>
 
+#include "mesh_validation_reference.h"
 #include "polygonizer/mesh_validation.h"
 #include "polygonizer/stl_io.h"
 
@@ -324,6 +330,125 @@ TEST(StlIo, EmptyMeshWritesAnEmptySolid) {
         EXPECT_EQ(r.ascii, ascii);
         EXPECT_TRUE(r.mesh.empty());
     }
+}
+
+// ------------------------------------------------------- large, streamed files
+
+// What the writer wrote before it streamed slices on several threads, one
+// facet after another: every file must still be these bytes.
+std::string serialStl(const Mesh& m, bool ascii, double scale, const std::string& name) {
+    std::string out;
+    auto u32 = [&out](std::uint32_t v) {
+        for (int i = 0; i < 4; ++i) out.push_back(static_cast<char>((v >> (8 * i)) & 0xffu));
+    };
+    auto number = [&out](float f) {
+        char buf[32];
+        out.append(buf, std::to_chars(buf, buf + sizeof buf, f).ptr);
+    };
+    if (ascii) {
+        out += "solid " + name + "\n";
+    } else {
+        std::string header = "Hypergarden STL: " + name;
+        header.resize(80, '\0');
+        out += header;
+        u32(static_cast<std::uint32_t>(m.triangleCount()));
+    }
+    for (std::size_t t = 0; t < m.triangleCount(); ++t) {
+        float v[3][3], n[3] = {0, 0, 0};
+        for (int k = 0; k < 3; ++k)
+            for (int a = 0; a < 3; ++a)
+                v[k][a] = static_cast<float>(static_cast<double>(m.positions[3 * m.indices[3 * t + k] + a]) * scale);
+        double e1[3], e2[3];
+        for (int a = 0; a < 3; ++a) {
+            e1[a] = static_cast<double>(v[1][a]) - static_cast<double>(v[0][a]);
+            e2[a] = static_cast<double>(v[2][a]) - static_cast<double>(v[0][a]);
+        }
+        const double c[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+                             e1[0] * e2[1] - e1[1] * e2[0]};
+        const double len = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+        if (len > 0 && std::isfinite(len))
+            for (int a = 0; a < 3; ++a) n[a] = static_cast<float>(c[a] / len);
+        if (ascii) {
+            out += "  facet normal ";
+            for (int a = 0; a < 3; ++a) number(n[a]), out += a < 2 ? " " : "\n    outer loop\n";
+            for (const auto& p : v) {
+                out += "      vertex ";
+                for (int a = 0; a < 3; ++a) number(p[a]), out += a < 2 ? ' ' : '\n';
+            }
+            out += "    endloop\n  endfacet\n";
+        } else {
+            auto f32 = [&u32](float f) {
+                std::uint32_t bits;
+                std::memcpy(&bits, &f, sizeof bits);
+                u32(bits);
+            };
+            for (float x : n) f32(x);
+            for (const auto& p : v)
+                for (float x : p) f32(x);
+            out += std::string(2, '\0');
+        }
+    }
+    if (ascii) out += "endsolid " + name + "\n";
+    return out;
+}
+
+// Many slices' worth of facets (the writer formats 16384 at a time), some
+// without area.
+Mesh largeMesh() {
+    Mesh m = test::latLongSphere(120, 240, 0.7);
+    m.indices.insert(m.indices.end(), {0, 0, 1, 5, 6, 5});
+    return m;
+}
+
+TEST(StlIo, LargeFilesAreTheSerialWritersBytes) {
+    TempDir dir;
+    const Mesh m = largeMesh();
+    ASSERT_GT(m.triangleCount(), 3u * 16384u);
+    for (bool ascii : {false, true}) {
+        const std::string path = dir.file(ascii ? "a.stl" : "b.stl");
+        ASSERT_EQ(writeStl(m, path, ascii, 25.4, "sphere"), "");
+        const std::string bytes = slurp(path);
+        if (!ascii) {
+            EXPECT_EQ(bytes.size(), 84u + 50u * m.triangleCount());
+        }
+        EXPECT_TRUE(bytes == serialStl(m, ascii, 25.4, "sphere")) << (ascii ? "ASCII" : "binary");
+        const StlReadResult r = readStl(path);
+        ASSERT_EQ(r.error, "");
+        EXPECT_EQ(r.mesh.triangleCount(), m.triangleCount());
+    }
+}
+
+TEST(StlIo, SameBytesOnAnyNumberOfThreads) {
+    TempDir dir;
+    const Mesh m = largeMesh();
+    for (bool ascii : {false, true}) {
+        std::string one, many;
+        tbb::task_arena(1).execute([&] { ASSERT_EQ(writeStl(m, dir.file("one.stl"), ascii), ""); });
+        tbb::task_arena(4).execute([&] { ASSERT_EQ(writeStl(m, dir.file("many.stl"), ascii), ""); });
+        EXPECT_TRUE(slurp(dir.file("one.stl")) == slurp(dir.file("many.stl"))) << (ascii ? "ASCII" : "binary");
+    }
+}
+
+TEST(StlIo, AWriteFailingHalfwayLeavesNothingBehind) {
+    // The file size limit stops the write after a few slices: EFBIG, and
+    // SIGXFSZ, which would otherwise end the process, is ignored meanwhile.
+    TempDir dir;
+    const Mesh m = largeMesh();
+    rlimit old{};
+    ASSERT_EQ(::getrlimit(RLIMIT_FSIZE, &old), 0);
+    const auto oldSignal = std::signal(SIGXFSZ, SIG_IGN);
+    rlimit small = old;
+    small.rlim_cur = 1 << 20;
+    ASSERT_EQ(::setrlimit(RLIMIT_FSIZE, &small), 0);
+    std::string why[2];
+    for (bool ascii : {false, true}) why[ascii] = writeStl(m, dir.file("big.stl"), ascii);
+    ::setrlimit(RLIMIT_FSIZE, &old);
+    std::signal(SIGXFSZ, oldSignal);
+    for (const std::string& w : why) {
+        EXPECT_TRUE(contains(w, dir.file("big.stl"))) << w;
+        EXPECT_TRUE(contains(w, std::strerror(EFBIG))) << w;
+    }
+    EXPECT_TRUE(dir.entries().empty()) << "no partial file is left";
 }
 
 // ------------------------------------------------------------------ ADMesh
