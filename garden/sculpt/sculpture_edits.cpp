@@ -127,6 +127,10 @@ voxel::EditRegionStats SculptureEdits::baseChanged(const voxel::IndexBox& box) {
 voxel::IndexBox SculptureEdits::append(Edit edit) {
     edit.id = nextId_++;
     redo_.clear();
+    return applyAppended(std::move(edit));
+}
+
+voxel::IndexBox SculptureEdits::applyAppended(Edit edit) {
     list_.append(std::move(edit));
     before_.push_back(deferred_ ? nullptr : std::make_unique<voxel::LeafSnapshot>());
     const voxel::IndexBox box = voxelsOf(list_.edits().back().reach);
@@ -186,12 +190,7 @@ std::optional<voxel::IndexBox> SculptureEdits::redo() {
     if (redo_.empty()) return std::nullopt;
     Edit again = std::move(redo_.back());
     redo_.pop_back();
-    list_.append(std::move(again));
-    before_.push_back(deferred_ ? nullptr : std::make_unique<voxel::LeafSnapshot>());
-    const voxel::IndexBox box = voxelsOf(list_.edits().back().reach);
-    capture(box);
-    applyOnTop(box, 0);
-    return box;
+    return applyAppended(std::move(again));
 }
 
 std::vector<voxel::IndexBox> SculptureEdits::flush() {

@@ -97,6 +97,9 @@ private:
     // edit puts them back. Kept within kUndoCopyBytes, oldest dropped first.
     std::vector<std::unique_ptr<voxel::LeafSnapshot>> before_;
     void capture(const voxel::IndexBox& box);
+    // Appends an edit (new, or redone), copies the leaves it will write and
+    // applies it on top of the grid; returns its box.
+    voxel::IndexBox applyAppended(Edit edit);
     void dropCopies();
 };
 

@@ -16,8 +16,10 @@
 namespace hg::poly {
 namespace {
 
+using test::concatenate;
 using test::latLongSphere;
 using test::referenceValidate;
+using test::soup;
 using test::withDefects;
 
 // What validateMesh hands the census: in range and three different corners.
@@ -38,22 +40,7 @@ void expectSame(const EdgeCensus& c, const MeshReport& ref, const std::string& w
     EXPECT_EQ(c.components, ref.components) << what;
 }
 
-Mesh concatenate(Mesh a, const Mesh& b) {
-    const auto offset = static_cast<std::uint32_t>(a.vertexCount());
-    a.positions.insert(a.positions.end(), b.positions.begin(), b.positions.end());
-    for (std::uint32_t i : b.indices) a.indices.push_back(i + offset);
-    return a;
-}
 
-// Every triangle with its own three vertices: only boundary edges.
-Mesh soup(const Mesh& m) {
-    Mesh s;
-    for (std::uint32_t i : m.indices) {
-        s.positions.insert(s.positions.end(), &m.positions[3 * i], &m.positions[3 * i] + 3);
-        s.indices.push_back(static_cast<std::uint32_t>(s.indices.size()));
-    }
-    return s;
-}
 
 struct Case {
     std::string name;

@@ -118,6 +118,25 @@ inline MeshReport referenceValidate(const Mesh& mesh) {
 
 // A closed latitude-longitude sphere (single-vertex poles), counter-
 // clockwise from outside; with many segments its poles are wide fans.
+// Every triangle with its own three vertices, as an STL file stores it:
+// only boundary edges.
+inline Mesh soup(const Mesh& m) {
+    Mesh s;
+    for (std::uint32_t i : m.indices) {
+        s.positions.insert(s.positions.end(), &m.positions[3 * i], &m.positions[3 * i] + 3);
+        s.indices.push_back(static_cast<std::uint32_t>(s.indices.size()));
+    }
+    return s;
+}
+
+// b's triangles after a's, on vertices of their own.
+inline Mesh concatenate(Mesh a, const Mesh& b) {
+    const auto offset = static_cast<std::uint32_t>(a.vertexCount());
+    a.positions.insert(a.positions.end(), b.positions.begin(), b.positions.end());
+    for (std::uint32_t i : b.indices) a.indices.push_back(i + offset);
+    return a;
+}
+
 inline Mesh latLongSphere(int rings, int segments, double radius, double cx = 0) {
     Mesh m;
     auto add = [&m](double x, double y, double z) {

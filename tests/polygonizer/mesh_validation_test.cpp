@@ -10,10 +10,14 @@
 #include <utility>
 #include <vector>
 
+#include "mesh_validation_reference.h"
 #include "polygonizer/mesh_validation.h"
 
 namespace hg::poly {
 namespace {
+
+using test::concatenate;
+using test::soup;
 
 constexpr double kPi = 3.14159265358979323846;
 
@@ -105,22 +109,7 @@ Mesh uvSphere(int rings, int segments, double radius) {
     return m;
 }
 
-// Every triangle with its own three vertices, as an STL file stores it.
-Mesh soup(const Mesh& m) {
-    Mesh s;
-    for (std::uint32_t i : m.indices) {
-        s.positions.insert(s.positions.end(), &m.positions[3 * i], &m.positions[3 * i] + 3);
-        s.indices.push_back(static_cast<std::uint32_t>(s.indices.size()));
-    }
-    return s;
-}
 
-Mesh concatenate(Mesh a, const Mesh& b) {
-    const auto offset = static_cast<std::uint32_t>(a.vertexCount());
-    a.positions.insert(a.positions.end(), b.positions.begin(), b.positions.end());
-    for (std::uint32_t i : b.indices) a.indices.push_back(i + offset);
-    return a;
-}
 
 void flipTriangle(Mesh& m, std::size_t t) { std::swap(m.indices[3 * t + 1], m.indices[3 * t + 2]); }
 
