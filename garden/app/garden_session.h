@@ -140,6 +140,14 @@ public:
     // Moves, turns or scales a sculpture (undoable, journalled): its grid
     // stays, in its model frame. "" or why not (a scale out of range, say).
     std::string moveSculpture(int sculpture, const Placement& placement);
+    // A move while a hand drags (garden/app/session_moving.cpp): shown at
+    // once, not journalled; endLiveMove makes the drag one undoable,
+    // journalled move from the placement before its first live move to the
+    // last (nothing when it ends where it began). Undo, redo, another move
+    // or a live move of another sculpture end it first.
+    std::string moveSculptureLive(int sculpture, const Placement& placement);
+    void endLiveMove();
+    bool movingLive() const { return liveMove_ >= 0; }
     // The sculpture's mirror plane (model frame; none: off): strokes and
     // perturbations made while it is set act on both sides of it.
     void setMirror(int sculpture, std::optional<MirrorPlane> plane);
@@ -162,6 +170,7 @@ public:
     // cannot be played (its number, from 1, and the reason).
     std::string restore(const std::vector<JournalRecord>& records);
     ToolSettings& tool() { return tool_; }
+    const ToolSettings& tool() const { return tool_; }
     // Where the tool hand's ray first meets a sculpture's surface (world):
     // the sculpture's index and the point, or none.
     std::optional<std::pair<int, glm::vec3>> toolHit(const Pose& aim) const;
@@ -218,6 +227,8 @@ private:
     void record(const JournalRecord& r);
     bool stepHistory(std::vector<UndoEntry>& from, std::vector<UndoEntry>& to, bool undoing);
     void placeSculpture(int sculpture, const Placement& placement);
+    std::string checkPlacement(int sculpture, const Placement& placement) const;
+    void moveWithHands(const HandState& h);
     void recordMorph();
 
     GardenLoad load_;
@@ -245,6 +256,21 @@ private:
     bool morphDragging_ = false;       // the tool hand holds the selector on the ground
     bool morphDragged_ = false;        // ... and moved it: journalled on release
     float strokeDepth_ = 0.0f;         // metres along the ray where the live stroke began
+    // The move tool's drag: which sculpture, moving or turning it, and
+    // where it began. The aim ray is followed on a horizontal plane, or,
+    // when it began near level, at the distance along it where it grabbed.
+    struct MoveDrag {
+        int sculpture = -1;
+        bool turning = false;
+        Placement start;
+        float planeY = 0.0f;
+        float depth = 0.0f;       // > 0: the near-level mode's distance along the ray
+        glm::vec3 startPoint{0.0f};
+        double startAngle = 0.0;  // radians about +y, turning only
+    };
+    std::optional<MoveDrag> moveDrag_;
+    int liveMove_ = -1;                // the sculpture moved live, or -1
+    Placement liveMoveFrom_;           // its placement before the drag
 };
 
 }  // namespace hg::garden

@@ -385,6 +385,7 @@ bool GardenSession::redo() { return stepHistory(redoOrder_, undoOrder_, false); 
 
 bool GardenSession::stepHistory(std::vector<UndoEntry>& from, std::vector<UndoEntry>& to, bool undoing) {
     if (stroking()) endStroke();
+    endLiveMove();
     while (!from.empty()) {
         UndoEntry entry = from.back();
         from.pop_back();
@@ -414,13 +415,8 @@ bool GardenSession::stepHistory(std::vector<UndoEntry>& from, std::vector<UndoEn
 
 std::string GardenSession::moveSculpture(int sculpture, const Placement& placement) {
     if (stroking()) endStroke();
-    if (sculpture < 0 || sculpture >= static_cast<int>(sculptures_.size())) return "no such sculpture";
-    for (double c : placement.position)
-        if (!std::isfinite(c)) return "the position is not a finite point";
-    if (!std::isfinite(placement.yawDegrees)) return "the yaw is not a finite angle";
-    if (!(std::isfinite(placement.scale) && placement.scale >= kMinSculptureScale && placement.scale <= kMaxSculptureScale))
-        return "the scale must be in [" + std::to_string(kMinSculptureScale) + ", " + std::to_string(kMaxSculptureScale) +
-               "] metres per model unit";
+    endLiveMove();
+    if (std::string why = checkPlacement(sculpture, placement); !why.empty()) return why;
     Sculpture& s = sculptures_[static_cast<std::size_t>(sculpture)];
     UndoEntry entry = UndoEntry::edit(sculpture);
     entry.move = std::make_pair(s.placement, placement);
@@ -481,6 +477,14 @@ void GardenSession::sculptWithHands(const Hands& hands) {
     lastButtons_ = h.buttons;
     if (pressedNow & kButtonUndo) undo();
     if (pressedNow & kButtonRedo) redo();
+    if (tool_.kind == ToolSettings::Kind::Move) {
+        moveWithHands(h);
+        return;
+    }
+    if (moveDrag_) {  // the tool changed during a drag
+        moveDrag_.reset();
+        endLiveMove();
+    }
     if (tool_.kind == ToolSettings::Kind::None || !h.tracked) {
         if (stroking()) endStroke();
         return;
@@ -520,8 +524,7 @@ void GardenSession::sculptWithHands(const Hands& hands) {
         return;
     }
     if (tool_.kind == ToolSettings::Kind::Perturb) {
-        const double k = tool_.reverse ? -tool_.strength : tool_.strength;
-        applyPerturbation(sculpture, tool_.shape, toArray(point), tool_.radii, k);
+        applyPerturbation(sculpture, tool_.shape, toArray(point), tool_.perturbRadii(), tool_.perturbStrength());
         return;
     }
     StrokeTool t = tool_.kind == ToolSettings::Kind::Add ? StrokeTool::Add

@@ -13,6 +13,7 @@
 #include <optional>
 
 #include "garden/app/garden_session.h"
+#include "garden/desktop/desktop_keys.h"
 #include "garden/desktop/garden_view.h"
 #include "garden/hands/desktop_hands.h"
 #include "garden/render/gl_context.h"
@@ -20,6 +21,7 @@
 #include "garden/render/overlay.h"
 #include "garden/render/panels.h"
 #include "garden/render/screenshot.h"
+#include "garden/render/tool_gizmo.h"
 #include "garden/session/open_session.h"
 
 namespace hg::garden {
@@ -30,7 +32,7 @@ namespace {
 // reads and clears them.
 struct Events {
     float wheel = 0.0f;
-    bool f12 = false, space = false, orbit = false, undo = false, redo = false, escape = false, detail = false;
+    DesktopKeys keys;
 };
 
 Events* eventsOf(GLFWwindow* w) { return static_cast<Events*>(glfwGetWindowUserPointer(w)); }
@@ -38,16 +40,7 @@ Events* eventsOf(GLFWwindow* w) { return static_cast<Events*>(glfwGetWindowUserP
 void onScroll(GLFWwindow* w, double, double dy) { eventsOf(w)->wheel += static_cast<float>(dy); }
 
 void onKey(GLFWwindow* w, int key, int, int action, int mods) {
-    if (action != GLFW_PRESS) return;
-    Events& e = *eventsOf(w);
-    const bool ctrl = (mods & GLFW_MOD_CONTROL) != 0;
-    if (key == GLFW_KEY_F12) e.f12 = true;
-    if (key == GLFW_KEY_SPACE) e.space = true;
-    if (key == GLFW_KEY_O) e.orbit = true;
-    if (key == GLFW_KEY_G) e.detail = true;
-    if (key == GLFW_KEY_ESCAPE) e.escape = true;
-    if (ctrl && key == GLFW_KEY_Z) e.undo = true;
-    if (ctrl && key == GLFW_KEY_Y) e.redo = true;
+    if (action == GLFW_PRESS) addKeyPress(eventsOf(w)->keys, key, mods);
 }
 
 std::string timestampedName(const std::string& dir) {
@@ -178,25 +171,23 @@ int runDesktopGarden(const DesktopOptions& options) {
             in.mouse = glm::vec2(cursor) * toFb;
             in.mouseDelta = glm::vec2(cursor - lastMouse);
             lastMouse = cursor;
+            // Keys ImGui wants (typing in a field) are not the garden's.
+            const DesktopKeys pressed = keys ? events.keys : DesktopKeys{};
             in.wheel = mouse ? events.wheel : 0.0f;
-            in.flyToggle = keys && events.space;
-            in.orbitToggle = keys && events.orbit;
-            in.undo = events.undo;
-            in.redo = events.redo;
+            in.turn = keys && (glfwGetKey(w, GLFW_KEY_LEFT_SHIFT) == GLFW_PRESS || glfwGetKey(w, GLFW_KEY_RIGHT_SHIFT) == GLFW_PRESS);
             in.viewport = glm::vec2(fb);
             const float fovY = static_cast<float>(session.settings().fovY);
             const glm::mat4 projection =
                 glm::perspective(fovY, static_cast<float>(fb.x) / static_cast<float>(std::max(fb.y, 1)), 0.05f, 500.0f);
-            const Hands hands = mapDesktop(in, session.view(), projection, DesktopMapping{}, speed);
-            speed = hands.speedScale;
-            if (events.escape) window.setShouldClose(true);
-            if (keys && events.detail) {
+            const Hands hands = desktopHands(in, pressed, session, projection, speed);
+            if (pressed.quit) window.setShouldClose(true);
+            if (pressed.detail) {
                 // Where the mouse ray meets the ground, a metre up; again: removed.
                 if (session.detail()) session.setDetail(std::nullopt);
                 else if (const auto hit = hands.tool.aim.groundHit(session.garden().ground.height))
                     session.setDetail(poly::Sphere{{hit->x, hit->y + 1.0, hit->z}, 1.0});
             }
-            const bool shoot = events.f12;
+            const bool shoot = pressed.screenshot;
             events = Events{};
 
             session.update(hands, dt);
@@ -207,6 +198,8 @@ int runDesktopGarden(const DesktopOptions& options) {
             session.stats().uploadsPending = pending;
             f.beginStage(Stage::Render);
             view.render(session, fb, fovY);
+            // The tool where the mouse points, unless it points at a panel.
+            drawToolGizmos(renderer, session, mouse ? std::optional<Pose>(hands.tool.aim) : std::nullopt);
             const RenderStats r = renderer.endFrame();
             session.stats().trianglesDrawn = r.trianglesDrawn;
             session.stats().drawCalls = r.drawCalls;
@@ -217,6 +210,7 @@ int runDesktopGarden(const DesktopOptions& options) {
             }
             overlay.newFrame();
             gardenPanel(session, selector);
+            drawToolPanel(session);
             drawStatsPanel(session.scheduler().history());
             overlay.render();
             session.endFrame();

@@ -41,6 +41,7 @@ Hands mapDesktop(const DesktopInput& in, const glm::mat4& view, const glm::mat4&
     h.tool.thumbstick = glm::vec2(0.0f, static_cast<float>(in.up) - static_cast<float>(in.down));
     if (in.undo) h.tool.buttons |= kButtonUndo;
     if (in.redo) h.tool.buttons |= kButtonRedo;
+    if (in.turn) h.tool.buttons |= kButtonSecondary;
 
     if (in.lookButton) h.look = glm::vec2(in.mouseDelta.x, -in.mouseDelta.y) * m.lookRadiansPerPixel;
     h.speedScale = previousSpeedScale * std::pow(m.speedStep, in.wheel);

@@ -5,11 +5,22 @@
 //   W A S D       navigation thumbstick (forward, left, back, right)
 //   Q / E         down / up (thumbstick of the tool hand, y axis)
 //   right button  mouse look (drag)
-//   wheel         walking speed (each notch x1.25)
+//   wheel         walking speed (each notch x1.25); with the move tool and
+//                 a selection, the selected sculpture's scale instead
 //   left button   tool trigger; the tool hand's aim is the ray under the mouse
+//   Shift         held: the tool hand's secondary button (the move tool
+//                 turns the sculpture instead of moving it)
 //   space         stick click: fly / walk
 //   O             primary button: orbit the selected sculpture
-//   Ctrl+Z / Ctrl+Y  undo / redo
+//   Ctrl+Z        undo (the tool hand's undo button)
+//   Ctrl+Shift+Z, Ctrl+Y  redo (its redo button)
+//
+// What the tool hand holds is set by keys that are not hands
+// (garden/desktop/desktop_keys.h): 0 none (the morph selector), 1 carve,
+// 2 add, 3 melt, 4 perturb, 5 impacts, 6 move; [ and ] the tool's size
+// (x1.25 a press); R reverse; M the selected sculpture's mirror plane; and
+// G the detail sphere, F12 a screenshot, Esc quits. Keys and clicks that
+// ImGui wants are not taken.
 #pragma once
 
 #include <glm/mat4x4.hpp>
@@ -24,6 +35,7 @@ struct DesktopInput {
     bool lookButton = false;   // right button held
     bool toolButton = false;   // left button held
     bool flyToggle = false, orbitToggle = false, undo = false, redo = false;  // pressed this frame
+    bool turn = false;         // Shift held
     glm::vec2 mouse{0.0f};     // pixels, origin top-left
     glm::vec2 mouseDelta{0.0f};
     float wheel = 0.0f;        // notches this frame

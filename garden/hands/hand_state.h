@@ -31,7 +31,7 @@ struct Pose {
 // Buttons, as bits of HandState::buttons.
 enum HandButton : std::uint32_t {
     kButtonPrimary = 1u << 0,    // A / X, or the desktop's orbit toggle
-    kButtonSecondary = 1u << 1,  // B / Y
+    kButtonSecondary = 1u << 1,  // B / Y; held, the move tool turns (desktop: Shift)
     kButtonMenu = 1u << 2,
     kButtonThumbstick = 1u << 3,  // stick click: fly / walk toggle
     kButtonUndo = 1u << 4,

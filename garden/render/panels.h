@@ -9,10 +9,18 @@
 
 namespace hg::garden {
 
+class GardenSession;
+
 // A window with the last frame's time per stage against the budget, the
 // morph, remesh and upload counters and queues, triangles and draw calls,
 // and a graph of the frame time over the history with the budget as a line.
 void drawStatsPanel(const FrameHistory& history);
+
+// The tool panel: the tool in hand and its parameters (the session's
+// ToolSettings, which the tools read), reverse, the selected sculpture's
+// mirror plane, its edit count and a button that discards its edits, undo
+// and redo. The desktop's key for each control is named beside it.
+void drawToolPanel(GardenSession& session);
 
 // The morph selector inside the current window: a triangle whose corners
 // carry labels[0..2] (bottom left, bottom right, top); clicking or dragging

@@ -1,0 +1,136 @@
+// The tool panel (panels.h): ImGui calls only, on the session's
+// ToolSettings and its sculpting API.
+#include <imgui.h>
+
+#include <cstdint>
+#include <iterator>
+
+#include "garden/app/garden_session.h"
+#include "garden/app/sculpture_gizmos.h"
+#include "garden/render/panels.h"
+
+namespace hg::garden {
+namespace {
+
+using Kind = ToolSettings::Kind;
+
+// The tools in key order: key 0 is none, 1..6 the rest.
+constexpr Kind kTools[] = {Kind::None, Kind::Carve, Kind::Add, Kind::Melt, Kind::Perturb, Kind::Impacts, Kind::Move};
+constexpr const char* kToolLabels[] = {"morph (0)", "carve (1)", "add (2)", "melt (3)", "perturb (4)", "impacts (5)",
+                                       "move (6)"};
+constexpr float kFieldWidth = 180.0f;
+
+// A slider on a double; logarithmic for sizes.
+bool sliderDouble(const char* label, double& value, double lo, double hi, const char* format, bool logarithmic = false) {
+    ImGui::SetNextItemWidth(kFieldWidth);
+    return ImGui::SliderScalar(label, ImGuiDataType_Double, &value, &lo, &hi, format,
+                               logarithmic ? ImGuiSliderFlags_Logarithmic : ImGuiSliderFlags_None);
+}
+
+template <class E, std::size_t N>
+bool comboEnum(const char* label, E& value, const char* const (&names)[N]) {
+    int i = static_cast<int>(value);
+    ImGui::SetNextItemWidth(kFieldWidth);
+    if (!ImGui::Combo(label, &i, names, static_cast<int>(N))) return false;
+    value = static_cast<E>(i);
+    return true;
+}
+
+void strokeParameters(ToolSettings& t) {
+    sliderDouble("radius (m)  [ ]", t.radius, kMinToolRadius, 1.0, "%.3f", true);
+    if (t.kind == Kind::Melt) sliderDouble("softness (voxels)", t.softness, 0.25, 16.0, "%.2f", true);
+}
+
+void perturbParameters(ToolSettings& t) {
+    constexpr const char* shapes[] = {"ellipsoid", "torus"};
+    comboEnum("shape", t.shape, shapes);
+    if (t.shape == QuadricShape::Ellipsoid) {
+        sliderDouble("radius x (m)", t.radii[0], 0.005, 1.0, "%.3f", true);
+        sliderDouble("radius y (m)", t.radii[1], 0.005, 1.0, "%.3f", true);
+        sliderDouble("radius z (m)", t.radii[2], 0.005, 1.0, "%.3f", true);
+    } else {
+        sliderDouble("ring R (m)", t.radii[0], 0.005, 1.0, "%.3f", true);
+        sliderDouble("tube r (m)", t.radii[1], 0.005, 1.0, "%.3f", true);
+        if (t.radii[1] >= t.radii[0]) ImGui::TextColored(ImVec4(1, 0.5f, 0.3f, 1), "the tube must be thinner than the ring");
+    }
+    sliderDouble("strength (voxels)", t.strength, 0.1, 50.0, "%.2f", true);
+    sliderDouble("scale  [ ]", t.perturbScale, kMinPerturbScale, kMaxPerturbScale, "%.2f", true);
+    ImGui::TextDisabled(t.perturbStrength() > 0 ? "pulls (R: pushes)" : "pushes (R: pulls)");
+}
+
+void impactParameters(ToolSettings& t) {
+    constexpr const char* shapes[] = {"sphere", "V chisel", "square punch"};
+    constexpr const char* spreads[] = {"uniform disc", "gaussian", "cone"};
+    comboEnum("impact", t.impactShape, shapes);
+    sliderDouble("size (m)  [ ]", t.impactSize, kMinImpactSize, kMaxImpactSize, "%.3f", true);
+    sliderDouble("compaction (cm3)", t.compactionCm3, 0.01, 100.0, "%.2f", true);
+    comboEnum("spread", t.spread, spreads);
+    if (t.spread == ImpactSpread::Cone) sliderDouble("half-angle (deg)", t.spreadSize, 0.5, 60.0, "%.1f");
+    else sliderDouble(t.spread == ImpactSpread::Gaussian ? "sigma (m)" : "disc radius (m)", t.spreadSize, 0.001, 2.0, "%.3f", true);
+    ImGui::SetNextItemWidth(kFieldWidth);
+    ImGui::SliderInt("count", &t.impactCount, 1, 500, "%d", ImGuiSliderFlags_Logarithmic);
+    ImGui::SetNextItemWidth(kFieldWidth);
+    ImGui::InputScalar("seed", ImGuiDataType_U64, &t.seed);
+}
+
+void selectionSection(GardenSession& session) {
+    const int selected = session.selected();
+    if (selected < 0) {
+        ImGui::TextDisabled("no sculpture selected (move tool, or the Garden panel)");
+        return;
+    }
+    const Sculpture& s = session.sculptures()[static_cast<std::size_t>(selected)];
+    ImGui::Text("%s%s", s.name.c_str(), s.morphResult() ? " (the morph result)" : "");
+    if (s.missing()) return;
+    bool mirror = s.mirror.has_value();
+    if (ImGui::Checkbox("mirror plane (M)", &mirror))
+        session.setMirror(selected, mirror ? std::optional<MirrorPlane>(centralMirror(s)) : std::nullopt);
+    const std::size_t edits = session.editCount(selected);
+    ImGui::Text("%zu edit%s", edits, edits == 1 ? "" : "s");
+    ImGui::SameLine();
+    ImGui::BeginDisabled(edits == 0);
+    if (ImGui::Button("discard edits")) session.discardEdits(selected);
+    ImGui::EndDisabled();
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+        ImGui::SetTooltip(s.morphResult() ? "back to the pure blend: the edits go for good (no redo)"
+                                          : "back to the unedited sculpture: the edits go for good (no redo)");
+    ImGui::TextDisabled("at (%.2f, %.2f, %.2f), turned %.0f deg, scale %.3g", s.placement.position[0],
+                        s.placement.position[1], s.placement.position[2], s.placement.yawDegrees, s.placement.scale);
+}
+
+}  // namespace
+
+void drawToolPanel(GardenSession& session) {
+    // Bottom left: the stats panel takes the top left, the garden panel the right.
+    const ImGuiIO& io = ImGui::GetIO();
+    ImGui::SetNextWindowPos(ImVec2(10.0f, io.DisplaySize.y - 10.0f), ImGuiCond_FirstUseEver, ImVec2(0.0f, 1.0f));
+    ImGui::Begin("Tool", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+    ToolSettings& t = session.tool();
+    for (std::size_t i = 0; i < std::size(kTools); ++i) {
+        if (i != 0 && i != 4) ImGui::SameLine();
+        if (ImGui::RadioButton(kToolLabels[i], t.kind == kTools[i])) t.kind = kTools[i];
+    }
+    switch (t.kind) {
+        case Kind::Carve:
+        case Kind::Add:
+        case Kind::Melt: strokeParameters(t); break;
+        case Kind::Perturb: perturbParameters(t); break;
+        case Kind::Impacts: impactParameters(t); break;
+        case Kind::Move:
+            ImGui::TextDisabled("click selects, drag moves, Shift+drag or the ring turns,");
+            ImGui::TextDisabled("[ ] or the wheel scale the selection");
+            break;
+        case Kind::None: ImGui::TextDisabled("the left button picks the blend on the ground triangle"); break;
+    }
+    // Melt and impacts have no reverse.
+    if (t.kind == Kind::Carve || t.kind == Kind::Add || t.kind == Kind::Perturb) ImGui::Checkbox("reverse (R)", &t.reverse);
+    ImGui::Separator();
+    selectionSection(session);
+    ImGui::Separator();
+    if (ImGui::Button("undo (Ctrl+Z)")) session.undo();
+    ImGui::SameLine();
+    if (ImGui::Button("redo (Ctrl+Shift+Z)")) session.redo();
+    ImGui::End();
+}
+
+}  // namespace hg::garden

@@ -1,0 +1,227 @@
+// The desktop's keys (garden/desktop/desktop_keys.*): GLFW presses become
+// the documented commands; the tool keys change the session's ToolSettings
+// and the selected sculpture; Ctrl+Z and Ctrl+Shift+Z undo and redo a real
+// stroke made with the mouse; a move drag with the mouse is one undo.
+#include <gtest/gtest.h>
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "../garden/session_garden.h"
+#include "garden/app/garden_session.h"
+#include "garden/desktop/desktop_keys.h"
+#include "garden/sculpt/sculpture_edits.h"
+
+namespace hg::garden {
+namespace {
+
+using Kind = ToolSettings::Kind;
+
+DesktopKeys press(int key, int mods = 0) {
+    DesktopKeys k;
+    EXPECT_TRUE(addKeyPress(k, key, mods)) << key;
+    return k;
+}
+
+TEST(DesktopKeys, KeysMapToTheDocumentedCommands) {
+    const Kind digits[] = {Kind::None, Kind::Carve, Kind::Add, Kind::Melt, Kind::Perturb, Kind::Impacts, Kind::Move};
+    for (int d = 0; d <= 6; ++d) {
+        EXPECT_EQ(press(GLFW_KEY_0 + d).tool, digits[d]) << d;
+        EXPECT_EQ(press(GLFW_KEY_KP_0 + d).tool, digits[d]) << "keypad " << d;
+    }
+    DesktopKeys none;
+    EXPECT_FALSE(addKeyPress(none, GLFW_KEY_7, 0));
+    EXPECT_FALSE(none.tool);
+    EXPECT_FALSE(addKeyPress(none, GLFW_KEY_K, 0));
+    EXPECT_EQ(press(GLFW_KEY_RIGHT_BRACKET).sizeSteps, 1);
+    EXPECT_EQ(press(GLFW_KEY_LEFT_BRACKET).sizeSteps, -1);
+    EXPECT_TRUE(press(GLFW_KEY_R).reverse);
+    EXPECT_TRUE(press(GLFW_KEY_M).mirror);
+    const DesktopKeys undo = press(GLFW_KEY_Z, GLFW_MOD_CONTROL);
+    EXPECT_TRUE(undo.undo);
+    EXPECT_FALSE(undo.redo);
+    const DesktopKeys redo = press(GLFW_KEY_Z, GLFW_MOD_CONTROL | GLFW_MOD_SHIFT);
+    EXPECT_TRUE(redo.redo);
+    EXPECT_FALSE(redo.undo);
+    EXPECT_TRUE(press(GLFW_KEY_Y, GLFW_MOD_CONTROL).redo);
+    EXPECT_FALSE(addKeyPress(none, GLFW_KEY_1, GLFW_MOD_CONTROL)) << "Ctrl+1 picks no tool";
+    EXPECT_FALSE(none.tool);
+    EXPECT_TRUE(press(GLFW_KEY_SPACE).fly);
+    EXPECT_TRUE(press(GLFW_KEY_O).orbit);
+    EXPECT_TRUE(press(GLFW_KEY_G).detail);
+    EXPECT_TRUE(press(GLFW_KEY_F12).screenshot);
+    EXPECT_TRUE(press(GLFW_KEY_ESCAPE).quit);
+    // Presses add up between frames: two ] and a [ are one step up.
+    DesktopKeys k;
+    addKeyPress(k, GLFW_KEY_RIGHT_BRACKET, 0);
+    addKeyPress(k, GLFW_KEY_RIGHT_BRACKET, 0);
+    addKeyPress(k, GLFW_KEY_LEFT_BRACKET, 0);
+    EXPECT_EQ(k.sizeSteps, 1);
+}
+
+class DesktopKeysSession : public test::SmallGarden {
+protected:
+    void SetUp() override {
+        test::SmallGarden::SetUp();
+        SessionSettings settings;
+        settings.chunkSize = 16;
+        settings.maxLevel = 1;
+        settings.remeshChunksPerFrame = 4;
+        settings.morphSamplesPerFrame = 2000;
+        session = std::make_unique<GardenSession>(loadGarden(writeGarden()), settings);
+        c = session->findSculpture("c");  // a ball of radius 0.6 about (2, 0.5, 1.1547)
+        // Flying 3 m in front of ball c at its centre's height, looking along -z.
+        session->navigator().setMode(NavigationMode::Fly);
+        session->navigator().setPose({2.0f, 0.5f, 4.1547f}, 0.0f, 0.0f);
+        projection = glm::perspective(static_cast<float>(session->settings().fovY), kViewport.x / kViewport.y, 0.05f, 500.0f);
+    }
+    // One frame of the window: these keys pressed, the mouse at `mouse`,
+    // the left button as given.
+    void frame(const DesktopKeys& keys, glm::vec2 mouse, bool leftButton, float wheel = 0.0f) {
+        DesktopInput in;
+        in.viewport = kViewport;
+        in.mouse = mouse;
+        in.toolButton = leftButton;
+        in.wheel = wheel;
+        const Hands h = desktopHands(in, keys, *session, projection, speed);
+        lastSpeed = h.speedScale;
+        session->beginFrame();
+        session->update(h, 1.0 / 90.0);
+        session->endFrame();
+    }
+    void frame(const DesktopKeys& keys) { frame(keys, kCentre, false); }
+    Sculpture& ball() { return session->sculptures()[static_cast<std::size_t>(c)]; }
+
+    static constexpr glm::vec2 kViewport{1280.0f, 720.0f};
+    static constexpr glm::vec2 kCentre{640.0f, 360.0f};
+    std::unique_ptr<GardenSession> session;
+    glm::mat4 projection{1.0f};
+    float speed = 1.0f, lastSpeed = 1.0f;
+    int c = -1;
+};
+
+TEST_F(DesktopKeysSession, ToolKeysPickToolsAndScaleTheirSizes) {
+    ToolSettings& t = session->tool();
+    frame(press(GLFW_KEY_1));
+    EXPECT_EQ(t.kind, Kind::Carve);
+    const double r = t.radius;
+    frame(press(GLFW_KEY_RIGHT_BRACKET));
+    EXPECT_DOUBLE_EQ(t.radius, r * 1.25);
+    DesktopKeys twoDown;
+    addKeyPress(twoDown, GLFW_KEY_LEFT_BRACKET, 0);
+    addKeyPress(twoDown, GLFW_KEY_LEFT_BRACKET, 0);
+    frame(twoDown);
+    EXPECT_DOUBLE_EQ(t.radius, r / 1.25);
+    frame(press(GLFW_KEY_4));
+    EXPECT_EQ(t.kind, Kind::Perturb);
+    const auto radii = t.radii;
+    frame(press(GLFW_KEY_RIGHT_BRACKET));
+    EXPECT_DOUBLE_EQ(t.perturbScale, 1.25) << "perturb: the global scale";
+    EXPECT_EQ(t.radii, radii) << "the radii themselves stay";
+    EXPECT_DOUBLE_EQ(t.perturbRadii()[1], radii[1] * 1.25);
+    EXPECT_DOUBLE_EQ(t.radius, r / 1.25) << "the stroke radius is another tool's";
+    frame(press(GLFW_KEY_5));
+    EXPECT_EQ(t.kind, Kind::Impacts);
+    const double size = t.impactSize;
+    frame(press(GLFW_KEY_RIGHT_BRACKET));
+    EXPECT_DOUBLE_EQ(t.impactSize, size * 1.25);
+    // Sizes stay in their bounds however often a key is pressed.
+    for (int i = 0; i < 100; ++i) frame(press(GLFW_KEY_RIGHT_BRACKET));
+    EXPECT_EQ(t.impactSize, kMaxImpactSize);
+    frame(press(GLFW_KEY_2));
+    EXPECT_EQ(t.kind, Kind::Add);
+    frame(press(GLFW_KEY_3));
+    EXPECT_EQ(t.kind, Kind::Melt);
+    frame(press(GLFW_KEY_6));
+    EXPECT_EQ(t.kind, Kind::Move);
+    frame(press(GLFW_KEY_0));
+    EXPECT_EQ(t.kind, Kind::None);
+    // R toggles the reverse.
+    EXPECT_FALSE(t.reverse);
+    frame(press(GLFW_KEY_R));
+    EXPECT_TRUE(t.reverse);
+    frame(press(GLFW_KEY_R));
+    EXPECT_FALSE(t.reverse);
+}
+
+TEST_F(DesktopKeysSession, MTogglesTheSelectedSculpturesMirrorThroughItsBoxCentre) {
+    frame(press(GLFW_KEY_M));
+    for (const Sculpture& s : session->sculptures()) EXPECT_FALSE(s.mirror) << "nothing selected: nothing mirrored";
+    session->select(c);
+    frame(press(GLFW_KEY_M));
+    ASSERT_TRUE(ball().mirror);
+    const frep::Box3& box = ball().volume->frame.modelBox;
+    EXPECT_DOUBLE_EQ(ball().mirror->point[1], 0.5 * (box.lo[1] + box.hi[1]));
+    EXPECT_DOUBLE_EQ(ball().mirror->normal[0], 1.0);
+    frame(press(GLFW_KEY_M));
+    EXPECT_FALSE(ball().mirror);
+}
+
+TEST_F(DesktopKeysSession, CtrlZAndCtrlShiftZUndoAndRedoAStrokeMadeWithTheMouse) {
+    const voxel::Volume original = ball().volume->clone();
+    frame(press(GLFW_KEY_1));
+    // Carve across the ball with the left button held.
+    for (int f = 0; f < 6; ++f) frame({}, kCentre + glm::vec2(10.0f * static_cast<float>(f), 0.0f), true);
+    frame({}, kCentre, false);
+    ASSERT_EQ(session->editCount(c), 1u);
+    const voxel::Volume carved = ball().volume->clone();
+    EXPECT_GT(test::differingVoxels(carved, original), 50);
+
+    frame(press(GLFW_KEY_Z, GLFW_MOD_CONTROL));
+    EXPECT_EQ(session->editCount(c), 0u);
+    EXPECT_EQ(test::differingVoxels(*ball().volume, original), 0) << "exactly the unedited grid";
+    frame({});
+    frame(press(GLFW_KEY_Z, GLFW_MOD_CONTROL | GLFW_MOD_SHIFT));
+    EXPECT_EQ(session->editCount(c), 1u);
+    EXPECT_EQ(test::differingVoxels(*ball().volume, carved), 0);
+    frame({});
+    frame(press(GLFW_KEY_Z, GLFW_MOD_CONTROL));
+    frame({});
+    frame(press(GLFW_KEY_Y, GLFW_MOD_CONTROL));
+    EXPECT_EQ(test::differingVoxels(*ball().volume, carved), 0) << "Ctrl+Y redoes too";
+    // Held keys repeat no action: one press, one undo (the hands' button edge).
+    frame(press(GLFW_KEY_Z, GLFW_MOD_CONTROL));
+    frame(press(GLFW_KEY_Z, GLFW_MOD_CONTROL));
+    EXPECT_EQ(session->editCount(c), 0u);
+    EXPECT_FALSE(session->undo()) << "two frames held: one undo, nothing left";
+}
+
+TEST_F(DesktopKeysSession, AMoveDragWithTheMouseIsOneUndo) {
+    const Placement start = ball().placement;
+    frame(press(GLFW_KEY_6));
+    frame({}, kCentre, true);
+    EXPECT_EQ(session->selected(), c) << "the click selected the ball";
+    for (int f = 1; f <= 10; ++f) frame({}, kCentre + glm::vec2(10.0f * static_cast<float>(f), 0.0f), true);
+    // 100 pixels right at 2.4 m: about 0.38 m right (the grabbed point stays
+    // under the mouse at its distance), height kept.
+    EXPECT_NEAR(ball().placement.position[0], start.position[0] + 0.38, 0.03);
+    EXPECT_EQ(ball().placement.position[1], start.position[1]);
+    frame({}, kCentre + glm::vec2(100.0f, 0.0f), false);
+    const Placement moved = ball().placement;
+
+    // The wheel scales the selection with the move tool: one action, and
+    // the walking speed is left alone.
+    frame({}, kCentre, false, 1.0f);
+    EXPECT_DOUBLE_EQ(ball().placement.scale, start.scale * 1.25);
+    EXPECT_EQ(lastSpeed, 1.0f);
+    frame(press(GLFW_KEY_LEFT_BRACKET));
+    EXPECT_DOUBLE_EQ(ball().placement.scale, start.scale);
+    frame(press(GLFW_KEY_Z, GLFW_MOD_CONTROL));
+    EXPECT_DOUBLE_EQ(ball().placement.scale, start.scale * 1.25);
+    frame({});
+    frame(press(GLFW_KEY_Z, GLFW_MOD_CONTROL));
+    EXPECT_EQ(ball().placement.position, moved.position);
+    EXPECT_DOUBLE_EQ(ball().placement.scale, start.scale);
+    frame({});
+    // The whole drag goes in one undo.
+    frame(press(GLFW_KEY_Z, GLFW_MOD_CONTROL));
+    EXPECT_EQ(ball().placement.position, start.position);
+    EXPECT_FALSE(session->undo());
+}
+
+}  // namespace
+}  // namespace hg::garden
