@@ -24,7 +24,7 @@ constexpr float kFieldWidth = 180.0f;
 bool sliderDouble(const char* label, double& value, double lo, double hi, const char* format, bool logarithmic = false) {
     ImGui::SetNextItemWidth(kFieldWidth);
     return ImGui::SliderScalar(label, ImGuiDataType_Double, &value, &lo, &hi, format,
-                               logarithmic ? ImGuiSliderFlags_Logarithmic : ImGuiSliderFlags_None);
+                               ImGuiSliderFlags_AlwaysClamp | (logarithmic ? ImGuiSliderFlags_Logarithmic : 0));
 }
 
 template <class E, std::size_t N>
@@ -44,13 +44,16 @@ void strokeParameters(ToolSettings& t) {
 void perturbParameters(ToolSettings& t) {
     constexpr const char* shapes[] = {"ellipsoid", "torus"};
     comboEnum("shape", t.shape, shapes);
+    // The radii per axis in one row: dragged a millimetre a pixel, or typed
+    // (Ctrl+click).
+    const double lo = 0.005, hi = 2.0;
+    ImGui::SetNextItemWidth(kFieldWidth);
     if (t.shape == QuadricShape::Ellipsoid) {
-        sliderDouble("radius x (m)", t.radii[0], 0.005, 1.0, "%.3f", true);
-        sliderDouble("radius y (m)", t.radii[1], 0.005, 1.0, "%.3f", true);
-        sliderDouble("radius z (m)", t.radii[2], 0.005, 1.0, "%.3f", true);
+        ImGui::DragScalarN("radii x y z (m)", ImGuiDataType_Double, t.radii.data(), 3, 0.001f, &lo, &hi, "%.3f",
+                            ImGuiSliderFlags_AlwaysClamp);
     } else {
-        sliderDouble("ring R (m)", t.radii[0], 0.005, 1.0, "%.3f", true);
-        sliderDouble("tube r (m)", t.radii[1], 0.005, 1.0, "%.3f", true);
+        ImGui::DragScalarN("ring R, tube r (m)", ImGuiDataType_Double, t.radii.data(), 2, 0.001f, &lo, &hi, "%.3f",
+                            ImGuiSliderFlags_AlwaysClamp);
         if (t.radii[1] >= t.radii[0]) ImGui::TextColored(ImVec4(1, 0.5f, 0.3f, 1), "the tube must be thinner than the ring");
     }
     sliderDouble("strength (voxels)", t.strength, 0.1, 50.0, "%.2f", true);
@@ -76,7 +79,7 @@ void impactParameters(ToolSettings& t) {
 void selectionSection(GardenSession& session) {
     const int selected = session.selected();
     if (selected < 0) {
-        ImGui::TextDisabled("no sculpture selected (move tool, or the Garden panel)");
+        ImGui::TextDisabled("no sculpture selected:\nclick one with the move tool,\nor pick it in the Garden panel");
         return;
     }
     const Sculpture& s = session.sculptures()[static_cast<std::size_t>(selected)];
@@ -94,42 +97,50 @@ void selectionSection(GardenSession& session) {
     if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
         ImGui::SetTooltip(s.morphResult() ? "back to the pure blend: the edits go for good (no redo)"
                                           : "back to the unedited sculpture: the edits go for good (no redo)");
-    ImGui::TextDisabled("at (%.2f, %.2f, %.2f), turned %.0f deg, scale %.3g", s.placement.position[0],
+    ImGui::TextDisabled("at (%.2f, %.2f, %.2f) m\nturned %.0f deg, scale %.3g", s.placement.position[0],
                         s.placement.position[1], s.placement.position[2], s.placement.yawDegrees, s.placement.scale);
 }
 
 }  // namespace
 
 void drawToolPanel(GardenSession& session) {
-    // Bottom left: the stats panel takes the top left, the garden panel the right.
+    // A bar along the bottom left, below the stats and garden panels: the
+    // tools, the tool's parameters, the selection. Kept there as it grows
+    // and shrinks with the tool.
     const ImGuiIO& io = ImGui::GetIO();
-    ImGui::SetNextWindowPos(ImVec2(10.0f, io.DisplaySize.y - 10.0f), ImGuiCond_FirstUseEver, ImVec2(0.0f, 1.0f));
-    ImGui::Begin("Tool", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+    ImGui::SetNextWindowPos(ImVec2(10.0f, io.DisplaySize.y - 10.0f), ImGuiCond_Always, ImVec2(0.0f, 1.0f));
+    ImGui::Begin("Tool", nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove);
     ToolSettings& t = session.tool();
-    for (std::size_t i = 0; i < std::size(kTools); ++i) {
-        if (i != 0 && i != 4) ImGui::SameLine();
-        if (ImGui::RadioButton(kToolLabels[i], t.kind == kTools[i])) t.kind = kTools[i];
+    if (ImGui::BeginTable("##tool", 3, ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_BordersInnerV)) {
+        ImGui::TableNextRow();
+        ImGui::TableSetColumnIndex(0);
+        for (std::size_t i = 0; i < std::size(kTools); ++i)
+            if (ImGui::RadioButton(kToolLabels[i], t.kind == kTools[i])) t.kind = kTools[i];
+
+        ImGui::TableSetColumnIndex(1);
+        switch (t.kind) {
+            case Kind::Carve:
+            case Kind::Add:
+            case Kind::Melt: strokeParameters(t); break;
+            case Kind::Perturb: perturbParameters(t); break;
+            case Kind::Impacts: impactParameters(t); break;
+            case Kind::Move:
+                ImGui::TextDisabled("click: select\ndrag: move on the ground\nShift+drag, or drag the ring: turn\n"
+                                    "[ ] or the wheel: scale");
+                break;
+            case Kind::None: ImGui::TextDisabled("the left button picks the blend\non the ground triangle"); break;
+        }
+        // Melt and impacts have no reverse.
+        if (t.kind == Kind::Carve || t.kind == Kind::Add || t.kind == Kind::Perturb) ImGui::Checkbox("reverse (R)", &t.reverse);
+
+        ImGui::TableSetColumnIndex(2);
+        selectionSection(session);
+        ImGui::Spacing();
+        if (ImGui::Button("undo (Ctrl+Z)")) session.undo();
+        ImGui::SameLine();
+        if (ImGui::Button("redo (Ctrl+Shift+Z)")) session.redo();
+        ImGui::EndTable();
     }
-    switch (t.kind) {
-        case Kind::Carve:
-        case Kind::Add:
-        case Kind::Melt: strokeParameters(t); break;
-        case Kind::Perturb: perturbParameters(t); break;
-        case Kind::Impacts: impactParameters(t); break;
-        case Kind::Move:
-            ImGui::TextDisabled("click selects, drag moves, Shift+drag or the ring turns,");
-            ImGui::TextDisabled("[ ] or the wheel scale the selection");
-            break;
-        case Kind::None: ImGui::TextDisabled("the left button picks the blend on the ground triangle"); break;
-    }
-    // Melt and impacts have no reverse.
-    if (t.kind == Kind::Carve || t.kind == Kind::Add || t.kind == Kind::Perturb) ImGui::Checkbox("reverse (R)", &t.reverse);
-    ImGui::Separator();
-    selectionSection(session);
-    ImGui::Separator();
-    if (ImGui::Button("undo (Ctrl+Z)")) session.undo();
-    ImGui::SameLine();
-    if (ImGui::Button("redo (Ctrl+Shift+Z)")) session.redo();
     ImGui::End();
 }
 
