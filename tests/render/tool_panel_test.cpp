@@ -1,0 +1,126 @@
+// The tool panel (garden/render/tool_panel.cpp) driven headless with a
+// synthetic mouse on a real session: its radio buttons pick the tool, its
+// buttons undo and redo a real stroke, its checkbox sets the selected
+// sculpture's mirror plane and "discard edits" drops the edits for good.
+#include <gtest/gtest.h>
+
+#include <imgui.h>
+#include <imgui_internal.h>
+
+#include <optional>
+
+#include "../garden/session_garden.h"
+#include "garden/app/garden_session.h"
+#include "garden/app/sculpture_gizmos.h"
+#include "garden/render/panels.h"
+
+namespace hg::garden {
+namespace {
+
+class ToolPanelTest : public test::SmallGarden {
+protected:
+    void SetUp() override {
+        test::SmallGarden::SetUp();
+        SessionSettings settings;
+        settings.chunkSize = 16;
+        settings.maxLevel = 1;
+        session = std::make_unique<GardenSession>(loadGarden(writeGarden()), settings);
+        ImGui::CreateContext();
+        ImGuiIO& io = ImGui::GetIO();
+        io.IniFilename = nullptr;
+        io.DisplaySize = ImVec2(1280, 720);
+        io.DeltaTime = 1.0f / 60.0f;
+        unsigned char* pixels = nullptr;
+        int w = 0, h = 0;
+        io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
+        frame({0, 0}, false);
+        frame({0, 0}, false);  // an auto-sized window shows from its second frame
+    }
+    void TearDown() override {
+        ImGui::DestroyContext();
+        test::SmallGarden::TearDown();
+    }
+    // One frame of the panel; the item hovered in it.
+    ImGuiID frame(ImVec2 mouse, bool down) {
+        ImGuiIO& io = ImGui::GetIO();
+        io.MousePos = mouse;
+        io.MouseDown[0] = down;
+        ImGui::NewFrame();
+        drawToolPanel(*session);
+        const ImGuiID hovered = ImGui::GetCurrentContext()->HoveredId;
+        ImGui::Render();
+        return hovered;
+    }
+    // A control's id: inside the panel's window and its table.
+    static ImGuiID idOf(const char* label) {
+        const ImGuiWindow* w = ImGui::FindWindowByName("Tool");
+        return ImHashStr(label, 0, ImHashStr("##tool", 0, w->ID));
+    }
+    // Where the mouse hovers the control `label`, found by moving it over
+    // the panel; none when the panel does not show it.
+    std::optional<ImVec2> find(const char* label) {
+        const ImGuiWindow* w = ImGui::FindWindowByName("Tool");
+        const ImGuiID id = idOf(label);
+        for (float y = w->Pos.y; y < w->Pos.y + w->Size.y; y += 3.0f)
+            for (float x = w->Pos.x; x < w->Pos.x + w->Size.x; x += 6.0f)
+                if (frame({x, y}, false) == id) return ImVec2(x, y);
+        return std::nullopt;
+    }
+    // Clicks the control `label`; false when it is not there.
+    bool click(const char* label) {
+        const auto at = find(label);
+        if (!at) return false;
+        frame(*at, true);
+        frame(*at, false);
+        frame({0, 0}, false);
+        frame({0, 0}, false);  // the panel's layout follows what the click changed
+        return true;
+    }
+    std::unique_ptr<GardenSession> session;
+};
+
+TEST_F(ToolPanelTest, TheRadioButtonsPickTheTool) {
+    using K = ToolSettings::Kind;
+    const std::pair<const char*, K> tools[] = {{"carve (1)", K::Carve}, {"add (2)", K::Add},         {"melt (3)", K::Melt},
+                                               {"perturb (4)", K::Perturb}, {"impacts (5)", K::Impacts}, {"move (6)", K::Move},
+                                               {"morph (0)", K::None}};
+    for (const auto& [label, kind] : tools) {
+        ASSERT_TRUE(click(label)) << label;
+        EXPECT_EQ(session->tool().kind, kind) << label;
+    }
+    // The reverse shows for the tools that have one.
+    EXPECT_FALSE(find("reverse (R)"));
+    ASSERT_TRUE(click("carve (1)"));
+    ASSERT_TRUE(click("reverse (R)"));
+    EXPECT_TRUE(session->tool().reverse);
+    ASSERT_TRUE(click("melt (3)"));
+    EXPECT_FALSE(find("reverse (R)")) << "melt has no reverse";
+}
+
+TEST_F(ToolPanelTest, UndoRedoMirrorAndDiscardActOnTheSession) {
+    const int c = session->findSculpture("c");
+    ASSERT_EQ(session->applyStroke(c, StrokeTool::Carve, {{1.8, 0.5, 1.75}, {2.2, 0.5, 1.75}}, 0.1), "");
+    ASSERT_EQ(session->editCount(c), 1u);
+    ASSERT_TRUE(click("undo (Ctrl+Z)"));
+    EXPECT_EQ(session->editCount(c), 0u);
+    ASSERT_TRUE(click("redo (Ctrl+Shift+Z)"));
+    EXPECT_EQ(session->editCount(c), 1u);
+
+    EXPECT_FALSE(find("mirror plane (M)")) << "nothing selected";
+    session->select(c);
+    frame({0, 0}, false);
+    ASSERT_TRUE(click("mirror plane (M)"));
+    const Sculpture& ball = session->sculptures()[static_cast<std::size_t>(c)];
+    ASSERT_TRUE(ball.mirror);
+    EXPECT_EQ(ball.mirror->point, centralMirror(ball).point);
+    ASSERT_TRUE(click("mirror plane (M)"));
+    EXPECT_FALSE(ball.mirror);
+
+    ASSERT_TRUE(click("discard edits"));
+    EXPECT_EQ(session->editCount(c), 0u);
+    EXPECT_FALSE(session->undo()) << "discarded for good";
+    EXPECT_FALSE(session->redo());
+}
+
+}  // namespace
+}  // namespace hg::garden
