@@ -119,6 +119,7 @@ int runExport(const ExportOptions& options) {
         std::cerr << "error: cannot export sculpture '" << s.name << "': " << r.error << "\n";
         return 1;
     }
+    if (!r.warning.empty()) std::cerr << "warning: " << r.warning << "\n";
     if (std::string why = writeHyperFunExport(r, options.output); !why.empty()) {
         std::cerr << "error: " << why << "\n";
         return 1;

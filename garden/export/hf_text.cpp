@@ -1,6 +1,7 @@
 #include "garden/export/hf_text.h"
 
 #include <cmath>
+#include <cstring>
 #include <stdexcept>
 
 #include "frep/hf_math.h"
@@ -25,11 +26,19 @@ HfStatements* bodyOf(const HfText& a, const HfText& b) {
 }
 
 HfText binary(const HfText& a, const char* op, const HfText& b) {
-    return HfText::assign(*bodyOf(a, b), a.operand() + " " + op + " " + b.operand());
+    HfStatements& w = *bodyOf(a, b);
+    return HfText::assign(w, a.operandIn(w) + " " + op + " " + b.operandIn(w));
 }
 
 HfText call(const char* f, const HfText& a, const HfText& b) {
-    return HfText::assign(*bodyOf(a, b), std::string(f) + "(" + a.operand() + ", " + b.operand() + ")");
+    HfStatements& w = *bodyOf(a, b);
+    return HfText::assign(w, std::string(f) + "(" + a.operandIn(w) + ", " + b.operandIn(w) + ")");
+}
+
+std::string asOperand(const std::string& s) { return plainDecimal(s) ? s : "(" + s + ")"; }
+
+bool plainItem(const std::string& s) {
+    return plainDecimal(s) || (s.size() > 1 && s[0] == '-' && plainDecimal(s.substr(1)));
 }
 
 }  // namespace
@@ -51,6 +60,14 @@ void HfStatements::comment(const std::string& text) {
     std::string line;
     for (char c : text) line += c == '\n' || c == '\r' ? ' ' : c;
     text_ += "   -- " + line + "\n";
+}
+
+const std::string& HfStatements::number(double v) {
+    std::uint64_t bits;
+    std::memcpy(&bits, &v, sizeof bits);
+    auto found = numbers_.find(bits);
+    if (found == numbers_.end()) found = numbers_.emplace(bits, frep::writeNumber(v)).first;
+    return found->second;
 }
 
 std::shared_ptr<const std::string> HfStatements::temporary() {
@@ -83,24 +100,22 @@ HfText HfText::assign(HfStatements& body, const std::string& rhs) {
     return t;
 }
 
-std::string HfText::operand() const {
-    if (body_) return *name_;
-    const std::string s = frep::writeNumber(constant_);
-    return plainDecimal(s) ? s : "(" + s + ")";
-}
+std::string HfText::operand() const { return body_ ? *name_ : asOperand(frep::writeNumber(constant_)); }
+
+std::string HfText::operandIn(HfStatements& body) const { return body_ ? *name_ : asOperand(body.number(constant_)); }
 
 std::string literalItem(double v) {
     const std::string s = frep::writeNumber(v);
-    return plainDecimal(s) || (s.size() > 1 && s[0] == '-' && plainDecimal(s.substr(1))) ? s : std::string();
+    return plainItem(s) ? s : std::string();
 }
 
 void fillArray(HfStatements& body, const std::string& name, const std::vector<double>& values) {
     std::string literal = name + " = [";
     std::vector<std::string> later;
     for (std::size_t i = 0; i < values.size(); ++i) {
-        std::string plain = literalItem(values[i]);
-        if (plain.empty()) {
-            later.push_back(name + "[" + std::to_string(i + 1) + "] = " + HfText(values[i]).operand());
+        std::string plain = body.number(values[i]);
+        if (!plainItem(plain)) {
+            later.push_back(name + "[" + std::to_string(i + 1) + "] = " + asOperand(plain));
             plain = "0";
         }
         literal += (i ? ", " : "") + plain;

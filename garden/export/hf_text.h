@@ -28,8 +28,10 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "frep/library/convolution.h"
@@ -50,6 +52,10 @@ public:
     void comment(const std::string& text);
     // Holds a free temporary's name until the last copy of it is gone.
     std::shared_ptr<const std::string> temporary();
+    // frep::writeNumber(v), remembered: a stroke's segments share their
+    // ends, widths and thresholds, and writeNumber checks its spelling by
+    // running the lexer on it.
+    const std::string& number(double v);
 
     // The arrays the segment calls use (declared by the body's writer).
     bool usesSegmentArrays() const { return segmentArrays_; }
@@ -65,6 +71,7 @@ private:
     std::size_t statements_ = 0;
     std::size_t next_ = 0;
     std::shared_ptr<std::vector<std::size_t>> free_;  // shared with the names' deleters
+    std::unordered_map<std::uint64_t, std::string> numbers_;  // by the double's bits
     bool segmentArrays_ = false;
 };
 
@@ -91,6 +98,8 @@ public:
     // The text as an operand: a name, or the constant's spelling
     // (parenthesized unless it is a plain unsigned decimal).
     std::string operand() const;
+    // The same, the constant's spelling remembered by `body`.
+    std::string operandIn(HfStatements& body) const;
 
 private:
     double constant_ = 0.0;

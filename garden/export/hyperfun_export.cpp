@@ -27,6 +27,10 @@ namespace {
 using hfexport::HfStatements;
 using hfexport::HfText;
 
+// Syntax nodes of a typical statement of my_model (`t3 = min(t2, 3);`:
+// the statement, the call, two operands), as our parser counts them.
+constexpr std::size_t kNodesPerStatement = 4;
+
 // Numbers in comments: short, for people (the code itself is exact).
 std::string num(double v) {
     char buf[32];
@@ -271,6 +275,10 @@ HyperFunExport exportOrThrow(const GardenSession& session, int index) {
     out += w.finish("my_model", f);
     r.statements = w.st.statementCount();
     r.text = std::move(out);
+    if (r.statements * kNodesPerStatement > frep::ParseLimits::kMaxNodes)
+        r.warning = std::to_string(r.statements) + " statements: more than our parser reads in one program (" +
+                    std::to_string(frep::ParseLimits::kMaxNodes) + " syntax nodes, about " +
+                    std::to_string(frep::ParseLimits::kMaxNodes / kNodesPerStatement) + " statements)";
     return r;
 }
 

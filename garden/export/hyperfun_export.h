@@ -30,6 +30,10 @@ struct HyperFunExport {
     std::size_t edits = 0;        // edits written
     std::size_t pieces = 0;       // their pieces (segments, quadrics, impacts)
     std::size_t statements = 0;   // statements of my_model
+    // Set when the file is likely too large for our own parser (about four
+    // syntax nodes a statement against frep::ParseLimits::kMaxNodes); the
+    // file is written all the same.
+    std::string warning;
 };
 
 // The sculpture with index `sculpture` in session.sculptures().
