@@ -417,6 +417,45 @@ TEST_F(HyperFunExportTest, OpeningTheExportInAGardenGivesTheSameSculpture) {
     EXPECT_NEAR(b.volume->normalization, 1.0, 0.2);
 }
 
+TEST_F(HyperFunExportTest, TheEditedMorphResultOpensInAGardenWithTheSameSurface) {
+    GardenSession s(loadGarden(writeGarden()), smallSettings());
+    finishMorph(s);
+    const int m = s.findSculpture("metamorphosis");
+    const glm::vec3 c = s.sculptures()[static_cast<std::size_t>(m)].worldCentre();
+    ASSERT_EQ(s.applyStroke(m, StrokeTool::Carve, {{c.x - 0.4, c.y + 0.1, c.z}, {c.x + 0.4, c.y + 0.1, c.z}}, 0.12), "");
+    ASSERT_EQ(s.applyStroke(m, StrokeTool::Add, {{c.x, c.y + 0.3, c.z + 0.5}, {c.x, c.y + 0.5, c.z + 0.6}}, 0.1), "");
+    ASSERT_EQ(exportSculptureHyperFun(s, m, (dir / "m.hf").string()), "");
+    const voxel::Volume& original = *s.sculptures()[static_cast<std::size_t>(m)].volume;
+    const frep::Box3& b = original.frame.modelBox;
+    nlohmann::json g = {{"version", 1},
+                        {"name", "roundtrip"},
+                        {"sculptures", {{{"name", "back"},
+                                         {"file", "m.hf"},
+                                         {"resolution", original.frame.resolution},
+                                         {"box", {{"min", {b.lo[0], b.lo[1], b.lo[2]}}, {"max", {b.hi[0], b.hi[1], b.hi[2]}}}}}}}};
+    std::ofstream(dir / "m.json") << g.dump();
+    GardenSession back(loadGarden((dir / "m.json").string()), smallSettings());
+    const Sculpture& r = back.sculptures()[0];
+    ASSERT_FALSE(r.missing()) << r.error;
+    for (int a = 0; a < 3; ++a) {  // the same frame
+        ASSERT_EQ(r.volume->frame.indexBox.lo[a], original.frame.indexBox.lo[a]);
+        ASSERT_EQ(r.volume->frame.indexBox.hi[a], original.frame.indexBox.hi[a]);
+    }
+    ASSERT_EQ(r.volume->frame.voxelSize, original.frame.voxelSize);
+    const voxel::IndexBox& box = original.frame.indexBox;
+    int compared = 0, wrongSign = 0;
+    for (int k = box.lo[2]; k <= box.hi[2]; ++k)
+        for (int j = box.lo[1]; j <= box.hi[1]; ++j)
+            for (int i = box.lo[0]; i <= box.hi[0]; ++i) {
+                const float v = original.value(i, j, k);
+                if (std::fabs(v) <= 0.5f) continue;
+                ++compared;
+                wrongSign += (v > 0) != (r.volume->value(i, j, k) > 0);
+            }
+    EXPECT_GT(compared, 10000);
+    EXPECT_EQ(wrongSign, 0);
+}
+
 TEST_F(HyperFunExportTest, AFailedWriteLeavesNoFileAndBadIndicesAreRefused) {
     GardenSession s(loadGarden(writeGarden()), smallSettings());
     EXPECT_NE(exportSculptureHyperFun(s, 0, (dir / "no" / "such" / "dir.hf").string()), "");
