@@ -179,7 +179,8 @@ struct BodyWriter {
 
 const frep::Model& modelOf(const GardenSession& session, std::size_t index) {
     const SculptureLoad& l = session.load().sculptures.at(index);
-    if (!l.model) throw std::runtime_error("sculpture '" + session.garden().sculptures[index].name + "' has no program");
+    if (!l.model)
+        throw std::runtime_error("sculpture '" + session.garden().sculptures[index].name + "' has no program");
     return *l.model;
 }
 
@@ -241,8 +242,8 @@ HyperFunExport exportOrThrow(const GardenSession& session, int index) {
          << "--   grid of " << frame.resolution << " voxels along its longest side (voxel size "
          << num(frame.voxelSize) << ").\n";
     if (s.mirror)
-        head << "-- Mirror plane for new edits: through " << vec(s.mirror->point) << ", normal " << vec(s.mirror->normal)
-             << ".\n";
+        head << "-- Mirror plane for new edits: through " << vec(s.mirror->point) << ", normal "
+             << vec(s.mirror->normal) << ".\n";
     if (!edited)
         head << "-- Unedited: my_model " << (s.morphResult() ? "is the morph's blend" : "evaluates as the source body")
              << ".\n";
