@@ -189,8 +189,9 @@ std::string sourceLabel(const SculptureSpec& spec, const frep::Model& m) {
            " (sculpture '" + spec.name + "')";
 }
 
-// The morph blend as a body named `name`, after its sources' bodies.
-std::string morphBodies(const GardenSession& session, const std::string& name) {
+// The morph blend as a body named `name`, after its sources' bodies;
+// `statements` receives the blend body's count.
+std::string morphBodies(const GardenSession& session, const std::string& name, std::size_t& statements) {
     const MorphSpec& spec = *session.garden().morph;
     const MorphSources* sources = session.morphSources();
     const auto& weights = session.morphWeights();
@@ -219,6 +220,7 @@ std::string morphBodies(const GardenSession& session, const std::string& name) {
            "'\n";
     out += w.finish(name, blend);
     out += "\n";
+    statements = w.st.statementCount();
     return out;
 }
 
@@ -256,7 +258,7 @@ HyperFunExport exportOrThrow(const GardenSession& session, int index) {
     BodyWriter w;
     HfText f;
     if (s.morphResult()) {
-        out += morphBodies(session, edited ? "hg_morph" : "my_model");
+        out += morphBodies(session, edited ? "hg_morph" : "my_model", r.statements);
         if (!edited) {
             r.text = out;
             return r;
