@@ -30,6 +30,9 @@ int main(int argc, char** argv) {
     app.add_option("--session", gardenOpts.session,
                    "Session folder: opened with every journalled action, or made from --garden when new; "
                    "every finished action is saved as it ends");
+    app.add_flag("--xr", gardenOpts.xr, "Open the garden in a headset through OpenXR (docs/xr.md)");
+    app.add_option("--script", gardenOpts.xrScript, "With --xr: run a replay script's commands at their frames");
+    app.add_flag("--left-handed", gardenOpts.leftHanded, "With --xr: the left controller holds the tool");
 
     ModelOptions checkOpts;
     auto* check = app.add_subcommand("check", "Parse a HyperFun file, list its bodies, evaluation path and model box");

@@ -1,0 +1,395 @@
+#include "xr/xr_garden.h"
+
+// The garden's headers before the XR and X11 ones (xr/headset.h keeps X11 out).
+#include "garden/app/garden_session.h"
+#include "garden/desktop/garden_view.h"
+#include "garden/render/gl_context.h"
+#include "garden/render/gl_objects.h"
+#include "garden/replay/replay_runner.h"
+#include "garden/replay/sculpt_commands.h"
+#include "garden/replay/replay_script.h"
+#include "garden/scene/json_reader.h"
+#include "garden/scene/to_glm.h"
+#include "garden/session/open_session.h"
+#include "xr/controllers.h"
+#include "xr/headset.h"
+#include "xr/stage_rig.h"
+#include "xr/world_grab.h"
+#include "xr/xr_result.h"
+
+#include <epoxy/gl.h>
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <thread>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace hg::xr {
+
+namespace {
+
+constexpr float kNearZ = 0.05f, kFarZ = 500.0f;
+constexpr float kSnapTurn = 0.5235988f;     // 30 degrees
+constexpr float kSnapThreshold = 0.7f;     // of the stick's reach
+constexpr int kMirrorWidth = 640, kMirrorHeight = 640;
+constexpr double kDegrees = 3.14159265358979323846 / 180.0;
+
+glm::mat4 projectionOf(const XrFovf& f) {
+    return glm::frustum(std::tan(f.angleLeft) * kNearZ, std::tan(f.angleRight) * kNearZ, std::tan(f.angleDown) * kNearZ,
+                        std::tan(f.angleUp) * kNearZ, kNearZ, kFarZ);
+}
+
+garden::Pose poseOf(const XrPosef& p, float floorOffset) {
+    garden::Pose g;
+    g.position = glm::vec3(p.position.x, p.position.y + floorOffset, p.position.z);
+    g.orientation = glm::quat(p.orientation.w, p.orientation.x, p.orientation.y, p.orientation.z);
+    return g;
+}
+
+// A replay script's command at its frame (docs/replay-format.md), as
+// `replay` runs it; "" or why it was refused.
+std::string runCommand(const garden::ReplayCommand& c, garden::GardenSession& s) {
+    using Kind = garden::ReplayCommand::Kind;
+    switch (c.kind) {
+        case Kind::Morph:
+            if (!s.hasMorph()) return "the garden has no metamorphosis to select";
+            s.setMorphPoint(c.pair[0], c.pair[1]);
+            return "";
+        case Kind::MorphWeights:
+            if (!s.hasMorph()) return "the garden has no metamorphosis to weigh";
+            s.setMorphWeights(c.vec);
+            return "";
+        case Kind::Screenshot: return "";  // the headset's frames are the runtime's to show
+        case Kind::Detail:
+            if (c.number <= 0.0) s.setDetail(std::nullopt);
+            else s.setDetail(poly::Sphere{c.vec, c.number});
+            return "";
+        case Kind::Pose:
+            s.navigator().setPose(garden::toGlm(c.vec), static_cast<float>(c.pair[0] * kDegrees), 0.0f);
+            return "";
+        case Kind::Select: {
+            const int i = c.text.empty() ? -1 : s.findSculpture(c.text);
+            if (!c.text.empty() && i < 0) return "no sculpture named '" + c.text + "'";
+            s.select(i);
+            return "";
+        }
+        case Kind::Orbit: return "";  // the headset does not orbit
+        case Kind::Budget: return "";  // the runtime's display period is the budget
+        case Kind::Sculpt: return garden::runSculptCommand(c.sculpt, s);
+    }
+    return "";
+}
+
+// Snap turn on the navigation stick: one turn each time it is pushed past
+// the threshold; the stick's x does not strafe.
+class SnapTurn {
+public:
+    float apply(garden::Hands& h) {
+        const float x = h.navigation.thumbstick.x;
+        h.navigation.thumbstick.x = 0.0f;
+        const int side = x > kSnapThreshold ? 1 : x < -kSnapThreshold ? -1 : 0;
+        const float turn = side != 0 && side != last_ ? static_cast<float>(side) * kSnapTurn : 0.0f;
+        last_ = side;
+        return turn;
+    }
+
+private:
+    int last_ = 0;
+};
+
+// Draws into one swapchain image (and its depth image, or our own depth buffer).
+class EyeTarget {
+public:
+    EyeTarget() : fbo_(garden::gl::Framebuffer::create()) {}
+    void bind(const EyeImages& e) {
+        glBindFramebuffer(GL_FRAMEBUFFER, fbo_.get());
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, e.color, 0);
+        if (e.depth != 0) {
+            glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, 0);
+            glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, e.depth, 0);
+        } else {
+            if (!depth_ || size_ != glm::ivec2(e.width, e.height)) {
+                depth_ = garden::gl::Renderbuffer::create();
+                glBindRenderbuffer(GL_RENDERBUFFER, depth_.get());
+                glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, e.width, e.height);
+                size_ = glm::ivec2(e.width, e.height);
+            }
+            glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_.get());
+        }
+        if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+            throw garden::GlError("the swapchain image cannot be drawn into (incomplete framebuffer)");
+    }
+    GLuint fbo() const { return fbo_.get(); }
+
+private:
+    garden::gl::Framebuffer fbo_;
+    garden::gl::Renderbuffer depth_;
+    glm::ivec2 size_{0};
+};
+
+// One run: everything that lives from the first frame to the last.
+class XrRun {
+public:
+    XrRun(const XrOptions& o, garden::GardenSession& s, Headset& h, garden::GlWindow& w,
+          const std::optional<garden::ReplayScript>& script)
+        : options_(o), session_(s), headset_(h), window_(w), view_(renderer_), script_(script) {
+        controllers_ = std::make_unique<Controllers>(headset_.instance(), options_.leftHanded);
+        headset_.createSession(window_.handle());
+        controllers_->attach(headset_.session());
+        info_.space = headset_.spaceName();
+        info_.depthSubmitted = headset_.depthSubmitted();
+        // The headset's height is the user's: the navigator flies, so a
+        // grab may lift or lower the world.
+        session_.navigator().setPose(session_.navigator().eye(), session_.navigator().yaw(), 0.0f);
+        session_.navigator().setMode(garden::NavigationMode::Fly);
+        if (script_) {
+            int start = 0;
+            for (const garden::ReplayStep& st : script_->steps) {
+                stepStarts_.push_back(start);
+                start += st.frames;
+            }
+        }
+    }
+
+    // Controllers go before the session they were attached to.
+    ~XrRun() { controllers_.reset(); }
+
+    int loop() {
+        bool exitAsked = false;
+        const auto askExit = [&] {
+            if (!exitAsked && headset_.running()) {
+                headset_.requestExit();
+                exitAsked = true;
+            }
+        };
+        while (!headset_.done()) {
+            garden::pollEvents();
+            if (window_.shouldClose()) askExit();
+            if (headset_.pollEvents()) {
+                controllers_->refreshProfile();
+                info_.interactionProfile = controllers_->interactionProfile();
+            }
+            if (headset_.done()) break;
+            if (!headset_.running()) {
+                // IDLE or READY: nothing to draw until the runtime says.
+                std::this_thread::sleep_for(std::chrono::milliseconds(5));
+                continue;
+            }
+            frame();
+            if (options_.frames > 0 && info_.framesSubmitted >= options_.frames) askExit();
+            if (script_ && scriptFrame_ >= script_->totalFrames()) askExit();
+            if (!error_.empty()) return 1;
+        }
+        info_.lost = headset_.lost();
+        info_.endReason = headset_.doneReason();
+        return 0;
+    }
+
+    const XrRunInfo& info() const { return info_; }
+    const std::string& error() const { return error_; }
+
+private:
+    // The navigator holds where the stage stands in the world and its turn;
+    // the scale is ours.
+    StageRig rig() const {
+        const garden::Navigator& n = session_.navigator();
+        StageRig r;
+        r.origin = n.eye() - glm::vec3(0.0f, garden::NavigationSettings{}.eyeHeight, 0.0f);
+        r.yaw = n.yaw();
+        r.scale = scale_;
+        return r;
+    }
+    void setRig(const StageRig& r) {
+        session_.navigator().setPose(r.origin + glm::vec3(0.0f, garden::NavigationSettings{}.eyeHeight, 0.0f), r.yaw, 0.0f);
+        scale_ = r.scale;
+    }
+
+    void runScriptCommands() {
+        for (std::size_t i = 0; i < stepStarts_.size(); ++i) {
+            if (stepStarts_[i] != scriptFrame_) continue;
+            for (std::size_t c = 0; c < script_->steps[i].commands.size(); ++c) {
+                const std::string why = runCommand(script_->steps[i].commands[c], session_);
+                if (!why.empty() && error_.empty())
+                    error_ = script_->file + ": $.steps[" + std::to_string(i) + "].commands[" + std::to_string(c) + "]: " + why;
+            }
+        }
+    }
+
+    void frame() {
+        const HeadsetFrame f = headset_.beginFrame();
+        const double periodMs = static_cast<double>(f.state.predictedDisplayPeriod) / 1e6;
+        if (periodMs > 0.0) session_.scheduler().setBudgetMs(periodMs);
+        session_.beginFrame();
+        const bool focused = headset_.focused();
+        garden::Hands stage = controllers_->read(headset_.space(), f.state.predictedDisplayTime, headset_.floorOffset(), focused);
+        if (focused) {
+            ++info_.focusedFrames;
+            if (script_) runScriptCommands();
+            ++scriptFrame_;
+        }
+        // The world grab moves the rig; then the hands go into the world.
+        const auto squeezing = [](const garden::HandState& h) {
+            return h.tracked && h.squeeze > 0.5f ? std::optional<glm::vec3>(h.grip.position) : std::nullopt;
+        };
+        setRig(grab_.update(rig(), squeezing(stage.navigation), squeezing(stage.tool)));
+        garden::Hands world = rig().toWorld(stage);
+        world.look.x = snap_.apply(world);
+        world.tool.thumbstick = glm::vec2(0.0f);  // tool size and strength: not yet
+        const bool wasStroking = session_.stroking();
+        session_.update(world, periodMs > 0.0 ? periodMs / 1000.0 : 1.0 / 90.0);
+        if (!wasStroking && session_.stroking() && focused) controllers_->pulseToolHand();
+
+        garden::FrameScheduler& sch = session_.scheduler();
+        sch.beginStage(garden::Stage::Upload);
+        std::size_t pending = 0;
+        session_.stats().uploadBytes += view_.upload(session_, sch.allowanceMs(garden::Stage::Upload), pending);
+        session_.stats().uploadsPending = pending;
+        sch.beginStage(garden::Stage::Render);
+        const bool render = f.state.shouldRender && f.viewsValid;
+        if (render) {
+            const StageRig r = rig();
+            for (int eye = 0; eye < 2; ++eye) {
+                const EyeImages images = headset_.acquireEye(eye);
+                EyeTarget& target = targets_[static_cast<std::size_t>(eye)];
+                target.bind(images);
+                const XrView& v = f.views[static_cast<std::size_t>(eye)];
+                const garden::Pose eyePose = poseOf(v.pose, headset_.floorOffset());
+                view_.render(session_, glm::ivec2(images.width, images.height), r.viewOf(eyePose), projectionOf(v.fov),
+                             r.toWorld(eyePose.position));
+                if (eye == 0 && options_.mirror) mirror(target, images);
+                glBindFramebuffer(GL_FRAMEBUFFER, 0);
+                headset_.releaseEye(eye);
+            }
+            const garden::RenderStats rs = renderer_.endFrame();
+            session_.stats().trianglesDrawn = rs.trianglesDrawn;
+            session_.stats().drawCalls = rs.drawCalls;
+            ++info_.framesRendered;
+        }
+        headset_.endFrame(f, render, kNearZ, kFarZ);
+        session_.endFrame();
+        ++info_.framesSubmitted;
+        if (options_.mirror) window_.swapBuffers();
+    }
+
+    // The left eye, scaled into the mirror window.
+    void mirror(const EyeTarget& target, const EyeImages& images) {
+        const glm::ivec2 fb = window_.framebufferSize();
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, target.fbo());
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+        glBlitFramebuffer(0, 0, images.width, images.height, 0, 0, fb.x, fb.y, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+    }
+
+    const XrOptions& options_;
+    garden::GardenSession& session_;
+    Headset& headset_;
+    garden::GlWindow& window_;
+    garden::Renderer renderer_;
+    garden::GardenView view_;
+    const std::optional<garden::ReplayScript>& script_;
+    std::vector<int> stepStarts_;
+    int scriptFrame_ = 0;
+    std::unique_ptr<Controllers> controllers_;
+    std::array<EyeTarget, 2> targets_;
+    WorldGrab grab_;
+    SnapTurn snap_;
+    float scale_ = 1.0f;
+    XrRunInfo info_;
+    std::string error_;
+};
+
+}  // namespace
+
+int runXrGarden(const XrOptions& options,
+                const std::function<void(garden::GardenSession&, const XrRunInfo&)>& atEnd) {
+    std::optional<garden::ReplayScript> script;
+    std::string gardenFile = options.garden;
+    if (!options.script.empty()) {
+        try {
+            script = garden::loadReplayScript(options.script);
+        } catch (const garden::JsonError& e) {
+            std::cerr << "error: " << options.script << ": " << e.what() << "\n";
+            return 2;
+        }
+        if (gardenFile.empty()) gardenFile = script->garden;
+    }
+    std::optional<garden::GardenLoad> load;
+    if (options.session.empty()) {
+        load = garden::loadGarden(gardenFile);
+        if (!load->ok()) {
+            std::cerr << "error: " << load->error << "\n";
+            return 2;
+        }
+    }
+    // The runtime first: without one there is no window to open.
+    std::unique_ptr<Headset> headset;
+    try {
+        headset = std::make_unique<Headset>("Hypergarden");
+    } catch (const NoRuntime& e) {
+        std::cerr << "error: no OpenXR runtime: " << e.what()
+                  << "; run hypergarden without --xr for the desktop garden\n";
+        return kExitNoRuntime;
+    } catch (const XrFailure& e) {
+        std::cerr << "error: OpenXR: " << e.what() << "\n";
+        return 1;
+    }
+    std::cerr << "OpenXR runtime: " << headset->runtimeName() << "\n";
+    try {
+        garden::WindowOptions wo;
+        wo.width = kMirrorWidth;
+        wo.height = kMirrorHeight;
+        wo.visible = options.mirror;
+        wo.vsync = false;  // xrWaitFrame paces the frames
+        wo.title = "Hypergarden - headset mirror (left eye)";
+        garden::GlWindow window(wo);
+        garden::SessionSettings settings;
+        settings.viewportHeight = 1024;  // level selection: about a headset's pixels per eye
+        garden::OpenedSession opened;
+        if (load) {
+            opened.session = std::make_unique<garden::GardenSession>(std::move(*load), settings);
+        } else {
+            opened = garden::openSession(options.session, gardenFile, settings);
+            if (!opened.error.empty()) {
+                std::cerr << "error: " << opened.error << "\n";
+                return opened.exitStatus;
+            }
+            for (const std::string& n : opened.notes) std::cerr << "note: " << n << "\n";
+        }
+        garden::GardenSession& session = *opened.session;
+        for (const garden::Sculpture& s : session.sculptures())
+            if (s.missing()) std::cerr << "warning: sculpture '" << s.name << "' is missing: " << s.error << "\n";
+        int status = 0;
+        XrRunInfo info;
+        try {
+            XrRun run(options, session, *headset, window, script);
+            status = run.loop();
+            info = run.info();
+            if (!run.error().empty()) std::cerr << "error: " << run.error() << "\n";
+        } catch (const XrFailure& e) {
+            std::cerr << "error: OpenXR: " << e.what() << "\n";
+            status = 1;
+        }
+        // A stroke still held is finished, so the journal has it.
+        if (session.stroking()) session.endStroke();
+        // The swapchains' textures belong to the window's context: the
+        // session goes while it is current.
+        window.makeCurrent();
+        headset.reset();
+        std::cerr << "xr: " << info.framesSubmitted << " frames (" << info.framesRendered << " drawn, "
+                  << info.focusedFrames << " focused), space " << info.space
+                  << (info.interactionProfile.empty() ? "" : ", " + info.interactionProfile)
+                  << (info.endReason.empty() ? "" : "; " + info.endReason) << "\n";
+        if (atEnd) atEnd(session, info);
+        return status;
+    } catch (const garden::GlError& e) {
+        std::cerr << "error: " << e.what() << "\n";
+        return 1;
+    }
+}
+
+}  // namespace hg::xr
