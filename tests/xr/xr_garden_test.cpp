@@ -1,0 +1,177 @@
+// The garden in a headset (xr/xr_garden.h) against the mock runtime, in
+// this process: the session reaches FOCUSED and both views are submitted
+// into sRGB swapchains with depth; a scripted right hand carves the same
+// grid as the replay of the same script; a lost or ended session keeps its
+// finished stroke in the journal; LOCAL stands in for a missing STAGE.
+#include "mock_xr_fixture.h"
+
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "../garden/session_garden.h"
+#include "garden/app/garden_session.h"
+#include "garden/replay/replay_runner.h"
+#include "garden/session/open_session.h"
+#include "voxel/volume.h"
+#include "xr/xr_garden.h"
+
+namespace hg::xr::test {
+namespace {
+
+// The right hand aims at sculpture 'a' (a ball of radius 0.5 at (0, 0.5,
+// -2.31)) from the viewer at the origin, pulls the trigger and sweeps.
+constexpr const char* kCarveSteps = R"([
+  {"frames": 2, "commands": [{"sculpt_tool": {"kind": "carve", "radius": 0.12}}]},
+  {"frames": 5, "tool": {"aim": {"position": [0.3, 1.2, -1.0], "direction": [-0.35, -0.6, -1.3]}, "trigger": 1}},
+  {"frames": 5, "tool": {"aim": {"position": [0.2, 1.2, -1.0], "direction": [-0.15, -0.6, -1.3]}, "trigger": 1}},
+  {"frames": 5, "tool": {"aim": {"position": [0.1, 1.2, -1.0], "direction": [0.05, -0.65, -1.3]}, "trigger": 1}},
+  {"frames": 4, "tool": {"aim": {"position": [0.1, 1.2, -1.0], "direction": [0.05, -0.65, -1.3]}, "trigger": 0}}
+])";
+
+class XrGarden : public garden::test::SmallGarden {
+protected:
+    void SetUp() override {
+        garden::test::SmallGarden::SetUp();
+        HG_REQUIRE_DISPLAY();
+        useMockRuntime();
+        ::setenv("HG_MOCK_XR_READBACK", (dir / "readback").c_str(), 1);
+        // The viewer at the origin looking along -z: the stage is the world.
+        // No morph, so nothing depends on how far a time-budgeted blend got.
+        gardenFile = writeGarden(nlohmann::json::parse(
+            R"({"start": {"position": [0, 1.7, 0], "look_at": [0, 1.7, -1]}, "morph": null})"));
+    }
+    std::string script(const std::string& steps) {
+        const std::string path = (dir / "carve.json").string();
+        std::ofstream(path) << R"({"garden": "garden.json", "steps": )" << steps << "}";
+        return path;
+    }
+    nlohmann::json readback() {
+        std::ifstream in(dir / "readback" / "frames.json");
+        return nlohmann::json::parse(in);
+    }
+    std::string gardenFile;
+};
+
+TEST_F(XrGarden, ReachesFocusedAndSubmitsBothViews) {
+    XrOptions o;
+    o.garden = gardenFile;
+    o.frames = 12;
+    o.mirror = false;
+    XrRunInfo info;
+    ASSERT_EQ(runXrGarden(o, [&](garden::GardenSession&, const XrRunInfo& i) { info = i; }), 0);
+    EXPECT_EQ(info.framesSubmitted, 12);
+    EXPECT_GE(info.focusedFrames, 10) << "focused from the second frame on";
+    EXPECT_EQ(info.framesRendered, 11) << "every frame once visible";
+    EXPECT_EQ(info.space, "STAGE");
+    EXPECT_EQ(info.interactionProfile, "/interaction_profiles/oculus/touch_controller");
+    EXPECT_TRUE(info.depthSubmitted);
+    EXPECT_FALSE(info.lost);
+    const nlohmann::json j = readback();
+    EXPECT_EQ(j["frames_ended"], 12);
+    EXPECT_EQ(j["frames_with_two_views"], 11);
+    EXPECT_EQ(j["last_frame"]["views"], 2);
+    EXPECT_EQ(j["last_frame"]["depth_views"], 2) << "XR_KHR_composition_layer_depth";
+    EXPECT_EQ(j["last_frame"]["layers"], nlohmann::json::array({"projection"}));
+    EXPECT_EQ(j["last_frame"]["image_size"], nlohmann::json::array({512, 512}));
+    // The left eye shows sky above and ground below.
+    EXPECT_TRUE(std::filesystem::exists(dir / "readback" / "left.png"));
+    EXPECT_TRUE(std::filesystem::exists(dir / "readback" / "right.png"));
+}
+
+TEST_F(XrGarden, ScriptedRightHandCarvesTheGridTheReplayCarves) {
+    const std::string s = script(kCarveSteps);
+    // The replay path: the same script's hands, headless.
+    garden::GardenLoad load = garden::loadGarden(gardenFile);
+    ASSERT_TRUE(load.ok()) << load.error;
+    garden::GardenSession replay(std::move(load));
+    const garden::ReplayScript parsed = garden::loadReplayScript(s);
+    const garden::ReplayResult r = garden::runReplay(parsed, replay, nullptr, {});
+    ASSERT_TRUE(r.ok()) << r.error;
+    const int a = replay.findSculpture("a");
+    ASSERT_EQ(replay.editCount(a), 1u) << "the replay carved one stroke";
+
+    ::setenv("HG_MOCK_XR_SCRIPT", s.c_str(), 1);
+    XrOptions o;
+    o.script = s;
+    o.mirror = false;
+    bool compared = false;
+    const int status = runXrGarden(o, [&](garden::GardenSession& xr, const XrRunInfo& info) {
+        EXPECT_GE(info.focusedFrames, parsed.totalFrames());
+        ASSERT_EQ(xr.editCount(a), 1u) << "the headset's right hand carved one stroke";
+        EXPECT_EQ(garden::test::differingVoxels(*replay.sculptures()[static_cast<std::size_t>(a)].volume,
+                                                *xr.sculptures()[static_cast<std::size_t>(a)].volume),
+                  0);
+        compared = true;
+    });
+    ASSERT_EQ(status, 0);
+    EXPECT_TRUE(compared);
+    EXPECT_GE(readback()["haptic_pulses"].get<int>(), 1) << "a pulse when the tool starts touching material";
+}
+
+TEST_F(XrGarden, SessionLossKeepsTheStrokeInTheJournal) {
+    // The trigger is still held when the runtime loses the session.
+    const std::string s = script(R"([
+      {"frames": 1, "commands": [{"sculpt_tool": {"kind": "carve", "radius": 0.12}}]},
+      {"frames": 200, "tool": {"aim": {"position": [0.3, 1.2, -1.0], "direction": [-0.35, -0.6, -1.3]}, "trigger": 1}}])");
+    ::setenv("HG_MOCK_XR_SCRIPT", s.c_str(), 1);
+    ::setenv("HG_MOCK_XR_EVENTS", "12:loss", 1);
+    XrOptions o;
+    o.script = s;
+    o.session = (dir / "session").string();
+    o.mirror = false;
+    std::unique_ptr<voxel::Volume> carved;
+    XrRunInfo info;
+    ASSERT_EQ(runXrGarden(o, [&](garden::GardenSession& xr, const XrRunInfo& i) {
+                  info = i;
+                  carved = std::make_unique<voxel::Volume>(
+                      xr.sculptures()[static_cast<std::size_t>(xr.findSculpture("a"))].volume->clone());
+              }),
+              0);
+    EXPECT_TRUE(info.lost);
+    EXPECT_LT(info.framesSubmitted, 20) << "the run ended at the loss, not at the script's end";
+    ASSERT_TRUE(carved);
+    // Reopened, the session has the stroke and the same grid.
+    garden::OpenedSession reopened = garden::openSession(o.session, gardenFile, {});
+    ASSERT_TRUE(reopened.error.empty()) << reopened.error;
+    const int a = reopened.session->findSculpture("a");
+    EXPECT_EQ(reopened.session->editCount(a), 1u);
+    EXPECT_EQ(garden::test::differingVoxels(*carved, *reopened.session->sculptures()[static_cast<std::size_t>(a)].volume), 0);
+}
+
+TEST_F(XrGarden, ExitRaisedByTheRuntimeEndsTheRunWithTheStrokeJournalled) {
+    // The carve, then a long wait the runtime's exit cuts short.
+    nlohmann::json steps = nlohmann::json::parse(kCarveSteps);
+    steps.push_back({{"frames", 400}});
+    const std::string s = script(steps.dump());
+    ::setenv("HG_MOCK_XR_SCRIPT", s.c_str(), 1);
+    ::setenv("HG_MOCK_XR_EVENTS", "30:exit", 1);
+    XrOptions o;
+    o.session = (dir / "session").string();
+    o.garden = gardenFile;
+    o.mirror = false;
+    o.script = s;  // the app runs its commands (the carve tool), the runtime plays its hands
+    XrRunInfo info;
+    ASSERT_EQ(runXrGarden(o, [&](garden::GardenSession&, const XrRunInfo& i) { info = i; }), 0);
+    EXPECT_FALSE(info.lost);
+    EXPECT_EQ(info.endReason, "the session ended");
+    EXPECT_LE(info.framesSubmitted, 30);
+    garden::OpenedSession reopened = garden::openSession(o.session, gardenFile, {});
+    ASSERT_TRUE(reopened.error.empty()) << reopened.error;
+    EXPECT_EQ(reopened.session->editCount(reopened.session->findSculpture("a")), 1u);
+}
+
+TEST_F(XrGarden, LocalSpaceStandsInForAMissingStage) {
+    ::setenv("HG_MOCK_XR_NO_STAGE", "1", 1);
+    XrOptions o;
+    o.garden = gardenFile;
+    o.frames = 4;
+    o.mirror = false;
+    XrRunInfo info;
+    ASSERT_EQ(runXrGarden(o, [&](garden::GardenSession&, const XrRunInfo& i) { info = i; }), 0);
+    EXPECT_EQ(info.space, "LOCAL");
+    EXPECT_EQ(info.framesRendered, 3);
+}
+
+}  // namespace
+}  // namespace hg::xr::test
