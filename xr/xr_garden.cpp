@@ -191,7 +191,11 @@ public:
         return 0;
     }
 
-    const XrRunInfo& info() const { return info_; }
+    XrRunInfo info() const {
+        XrRunInfo i = info_;
+        i.worldScale = scale_;
+        return i;
+    }
     const std::string& error() const { return error_; }
 
 private:

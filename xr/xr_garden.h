@@ -38,6 +38,7 @@ struct XrRunInfo {
     std::string interactionProfile;
     std::string space;         // STAGE or LOCAL
     bool depthSubmitted = false;
+    float worldScale = 1.0f;   // the stage rig's scale at the end (world metres per stage metre)
 };
 
 // Runs until the session ends. `atEnd` (if set) sees the garden session

@@ -4,6 +4,10 @@
 // kind the program could hit).
 #include "mock_xr_fixture.h"
 
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
 #include <vector>
 
 namespace hg::xr::test {
@@ -21,6 +25,13 @@ TEST_F(MockRuntime, SessionGoesThroughEveryStateToExiting) {
     EXPECT_GT(f.predictedDisplayTime, 0);
     EXPECT_EQ(endFrame(f.predictedDisplayTime), XR_SUCCESS);
     ASSERT_TRUE(pollUntil(XR_SESSION_STATE_FOCUSED));
+    auto frameInfo = mockFunction<PFN_hgMockXrFrameInfo>("hgMockXrFrameInfo");
+    ASSERT_NE(frameInfo, nullptr);
+    HgMockXrFrameInfo info{};
+    frameInfo(&info);
+    EXPECT_EQ(info.framesEnded, 1u);
+    EXPECT_EQ(info.layerCount, 0u) << "an empty frame";
+    EXPECT_EQ(info.sessionState, XR_SESSION_STATE_FOCUSED);
     ASSERT_EQ(xrRequestExitSession(session), XR_SUCCESS);
     ASSERT_TRUE(pollUntil(XR_SESSION_STATE_STOPPING));
     ASSERT_EQ(xrEndSession(session), XR_SUCCESS);
@@ -44,6 +55,23 @@ TEST_F(MockRuntime, LossIsRaisedOnDemand) {
     ASSERT_TRUE(pollUntil(XR_SESSION_STATE_LOSS_PENDING));
     XrFrameState state{XR_TYPE_FRAME_STATE};
     EXPECT_EQ(xrWaitFrame(session, nullptr, &state), XR_SESSION_LOSS_PENDING);
+}
+
+TEST_F(MockRuntime, ControlFileRaisesStatesNow) {
+    const std::string control = ::testing::TempDir() + "hg_mock_xr_control_" + std::to_string(::getpid());
+    ::setenv("HG_MOCK_XR_CONTROL", control.c_str(), 1);
+    makeSession();
+    beginSession();
+    const XrFrameState f = waitAndBegin();
+    ASSERT_EQ(endFrame(f.predictedDisplayTime), XR_SUCCESS);
+    ASSERT_TRUE(pollUntil(XR_SESSION_STATE_FOCUSED));
+    std::ofstream(control) << "unfocus\n";
+    ASSERT_TRUE(pollUntil(XR_SESSION_STATE_VISIBLE));
+    EXPECT_FALSE(std::filesystem::exists(control)) << "read once, then removed";
+    std::ofstream(control) << "exit\n";
+    ASSERT_TRUE(pollUntil(XR_SESSION_STATE_STOPPING));
+    ASSERT_EQ(xrEndSession(session), XR_SUCCESS);
+    ASSERT_TRUE(pollUntil(XR_SESSION_STATE_EXITING));
 }
 
 TEST_F(MockRuntime, HandleInvalid) {

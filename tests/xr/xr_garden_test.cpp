@@ -161,6 +161,41 @@ TEST_F(XrGarden, ExitRaisedByTheRuntimeEndsTheRunWithTheStrokeJournalled) {
     EXPECT_EQ(reopened.session->editCount(reopened.session->findSculpture("a")), 1u);
 }
 
+TEST_F(XrGarden, LeftHandMovesTheWorldAndBothHandsScaleIt) {
+    // The left hand squeezes and pulls half a metre towards the user: the
+    // world comes with it, so the rig (the user) moves half a metre along
+    // -z in the world. Then both hands squeeze
+    // and spread from 0.4 m to 0.8 m apart: the world seems twice as big.
+    const std::string s = script(R"([
+      {"frames": 3, "navigation": {"aim": {"position": [-0.3, 1.0, -0.8]}, "squeeze": 1}},
+      {"frames": 3, "navigation": {"aim": {"position": [-0.3, 1.0, -0.3]}, "squeeze": 1}},
+      {"frames": 2},
+      {"frames": 3, "navigation": {"aim": {"position": [-0.2, 1.0, -0.5]}, "squeeze": 1},
+                    "tool": {"aim": {"position": [0.2, 1.0, -0.5]}, "squeeze": 1}},
+      {"frames": 3, "navigation": {"aim": {"position": [-0.4, 1.0, -0.5]}, "squeeze": 1},
+                    "tool": {"aim": {"position": [0.4, 1.0, -0.5]}, "squeeze": 1}}])");
+    ::setenv("HG_MOCK_XR_SCRIPT", s.c_str(), 1);
+    XrOptions o;
+    o.script = s;
+    o.mirror = false;
+    glm::vec3 eye(0.0f);
+    XrRunInfo info;
+    ASSERT_EQ(runXrGarden(o, [&](garden::GardenSession& xr, const XrRunInfo& i) {
+                  eye = xr.navigator().eye();
+                  info = i;
+              }),
+              0);
+    EXPECT_NEAR(info.worldScale, 0.5f, 1e-5f);
+    // The one-hand grab moved the rig by -0.5 in z; the scaling about the
+    // hands' midpoint (0, 1, -0.5) keeps that point: the rig's origin goes
+    // to midpoint - 0.5 * (midpoint - origin).
+    const glm::vec3 origin1(0.0f, 0.0f, -0.5f), middle = origin1 + glm::vec3(0.0f, 1.0f, -0.5f);
+    const glm::vec3 origin2 = middle - 0.5f * glm::vec3(0.0f, 1.0f, -0.5f);
+    EXPECT_NEAR(eye.x, origin2.x, 1e-4f);
+    EXPECT_NEAR(eye.y - 1.7f, origin2.y, 1e-4f);
+    EXPECT_NEAR(eye.z, origin2.z, 1e-4f);
+}
+
 TEST_F(XrGarden, LocalSpaceStandsInForAMissingStage) {
     ::setenv("HG_MOCK_XR_NO_STAGE", "1", 1);
     XrOptions o;
