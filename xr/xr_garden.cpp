@@ -14,6 +14,7 @@
 #include "xr/controllers.h"
 #include "xr/headset.h"
 #include "xr/stage_rig.h"
+#include "xr/tool_stick.h"
 #include "xr/world_grab.h"
 #include "xr/xr_result.h"
 
@@ -37,6 +38,8 @@ namespace {
 constexpr float kNearZ = 0.05f, kFarZ = 500.0f;
 constexpr float kSnapTurn = 0.5235988f;     // 30 degrees
 constexpr float kSnapThreshold = 0.7f;     // of the stick's reach
+// A seated user's eyes are about this much lower than a standing one's.
+constexpr float kSeatedRaise = 0.5f;
 constexpr int kMirrorWidth = 640, kMirrorHeight = 640;
 constexpr double kDegrees = 3.14159265358979323846 / 180.0;
 
@@ -199,6 +202,9 @@ public:
     const std::string& error() const { return error_; }
 
 private:
+    // Added to tracked heights: the floor at 0, raised for a seated user.
+    float heightOffset() const { return headset_.floorOffset() + (options_.seated ? kSeatedRaise : 0.0f); }
+
     // The navigator holds where the stage stands in the world and its turn;
     // the scale is ours.
     StageRig rig() const {
@@ -231,7 +237,7 @@ private:
         if (periodMs > 0.0) session_.scheduler().setBudgetMs(periodMs);
         session_.beginFrame();
         const bool focused = headset_.focused();
-        garden::Hands stage = controllers_->read(headset_.space(), f.state.predictedDisplayTime, headset_.floorOffset(), focused);
+        garden::Hands stage = controllers_->read(headset_.space(), f.state.predictedDisplayTime, heightOffset(), focused);
         if (focused) {
             ++info_.focusedFrames;
             if (script_) runScriptCommands();
@@ -244,7 +250,9 @@ private:
         setRig(grab_.update(rig(), squeezing(stage.navigation), squeezing(stage.tool)));
         garden::Hands world = rig().toWorld(stage);
         world.look.x = snap_.apply(world);
-        world.tool.thumbstick = glm::vec2(0.0f);  // tool size and strength: not yet
+        // The tool stick reshapes the tool; the navigator must not fly with it.
+        adjustTool(session_.tool(), world.tool.thumbstick, periodMs > 0.0 ? periodMs / 1000.0 : 1.0 / 90.0);
+        world.tool.thumbstick = glm::vec2(0.0f);
         const bool wasStroking = session_.stroking();
         session_.update(world, periodMs > 0.0 ? periodMs / 1000.0 : 1.0 / 90.0);
         if (!wasStroking && session_.stroking() && focused) controllers_->pulseToolHand();
@@ -263,7 +271,7 @@ private:
                 EyeTarget& target = targets_[static_cast<std::size_t>(eye)];
                 target.bind(images);
                 const XrView& v = f.views[static_cast<std::size_t>(eye)];
-                const garden::Pose eyePose = poseOf(v.pose, headset_.floorOffset());
+                const garden::Pose eyePose = poseOf(v.pose, heightOffset());
                 view_.render(session_, glm::ivec2(images.width, images.height), r.viewOf(eyePose), projectionOf(v.fov),
                              r.toWorld(eyePose.position));
                 if (eye == 0 && options_.mirror) mirror(target, images);
@@ -276,7 +284,8 @@ private:
             ++info_.framesRendered;
         }
         headset_.endFrame(f, render, kNearZ, kFarZ);
-        session_.endFrame();
+        const garden::FrameStats& stats = session_.endFrame();
+        if (focused && options_.onFrame) options_.onFrame(stats, scriptFrame_ - 1);
         ++info_.framesSubmitted;
         if (options_.mirror) window_.swapBuffers();
     }

@@ -11,6 +11,7 @@
 
 namespace hg::garden {
 class GardenSession;
+struct FrameStats;
 }
 
 namespace hg::xr {
@@ -25,7 +26,11 @@ struct XrOptions {
     std::string script;      // a replay script whose commands run at their frames ("" : none)
     int frames = 0;          // ask the runtime to end the session after this many frames (0: never)
     bool leftHanded = false; // the left hand holds the tool
+    bool seated = false;     // raise the tracked heights by a seated user's shorter reach (0.5 m)
     bool mirror = true;      // show the mirror window (hidden when false)
+    // Called after every focused frame with its stats and its index from
+    // the first focused frame (benchmarks).
+    std::function<void(const garden::FrameStats&, int)> onFrame;
 };
 
 // What a run did, for the caller (tests) at its end.

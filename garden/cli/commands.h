@@ -69,6 +69,7 @@ struct GardenOptions {
     bool xr = false;                  // in a headset through OpenXR (docs/xr.md)
     std::string xrScript;             // with xr: a replay script's commands at their frames
     bool leftHanded = false;          // with xr: the left hand holds the tool
+    bool seated = false;              // with xr: seated use, heights raised
 };
 
 struct SessionCommandOptions {

@@ -13,6 +13,7 @@ int runGarden(const GardenOptions& options) {
         x.script = options.xrScript;
         x.frames = options.frames;
         x.leftHanded = options.leftHanded;
+        x.seated = options.seated;
         return xr::runXrGarden(x);
     }
     DesktopOptions d;
