@@ -5,6 +5,8 @@
 #include "garden/desktop/garden_view.h"
 #include "garden/render/gl_context.h"
 #include "garden/render/gl_objects.h"
+#include "garden/render/overlay.h"
+#include "garden/render/panels.h"
 #include "garden/replay/replay_runner.h"
 #include "garden/replay/sculpt_commands.h"
 #include "garden/replay/replay_script.h"
@@ -21,6 +23,7 @@
 #include <epoxy/gl.h>
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
+#include <imgui.h>
 
 #include <chrono>
 #include <cmath>
@@ -142,10 +145,12 @@ public:
     XrRun(const XrOptions& o, garden::GardenSession& s, Headset& h, garden::GlWindow& w,
           const std::optional<garden::ReplayScript>& script)
         : options_(o), session_(s), headset_(h), window_(w), view_(renderer_), script_(script) {
+        if (options_.mirror) overlay_ = std::make_unique<garden::Overlay>(window_);
         controllers_ = std::make_unique<Controllers>(headset_.instance(), options_.leftHanded);
         headset_.createSession(window_.handle());
         controllers_->attach(headset_.session());
         info_.space = headset_.spaceName();
+        runtimeName_ = headset_.runtimeName();
         info_.depthSubmitted = headset_.depthSubmitted();
         // The headset's height is the user's: the navigator flies, so a
         // grab may lift or lower the world.
@@ -278,6 +283,7 @@ private:
                 glBindFramebuffer(GL_FRAMEBUFFER, 0);
                 headset_.releaseEye(eye);
             }
+            if (overlay_) drawPanels();
             const garden::RenderStats rs = renderer_.endFrame();
             session_.stats().trianglesDrawn = rs.trianglesDrawn;
             session_.stats().drawCalls = rs.drawCalls;
@@ -288,6 +294,22 @@ private:
         if (focused && options_.onFrame) options_.onFrame(stats, scriptFrame_ - 1);
         ++info_.framesSubmitted;
         if (options_.mirror) window_.swapBuffers();
+    }
+
+    // Over the mirror: what the headset runs, and the frame statistics.
+    void drawPanels() {
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        overlay_->newFrame();
+        ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x - 10.0f, 10.0f), ImGuiCond_FirstUseEver,
+                                ImVec2(1.0f, 0.0f));
+        ImGui::Begin("Headset", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+        ImGui::Text("%s", runtimeName_.c_str());
+        ImGui::Text("space %s, world x%.2f", info_.space.c_str(), 1.0 / static_cast<double>(scale_));
+        ImGui::Text("%s", info_.interactionProfile.empty() ? "no interaction profile yet" : info_.interactionProfile.c_str());
+        ImGui::Text("tool radius %.3f m", session_.tool().radius);
+        ImGui::End();
+        garden::drawStatsPanel(session_.scheduler().history());
+        overlay_->render();
     }
 
     // The left eye, scaled into the mirror window.
@@ -308,11 +330,13 @@ private:
     std::vector<int> stepStarts_;
     int scriptFrame_ = 0;
     std::unique_ptr<Controllers> controllers_;
+    std::unique_ptr<garden::Overlay> overlay_;  // the mirror's panels
     std::array<EyeTarget, 2> targets_;
     WorldGrab grab_;
     SnapTurn snap_;
     float scale_ = 1.0f;
     XrRunInfo info_;
+    std::string runtimeName_;
     std::string error_;
 };
 
