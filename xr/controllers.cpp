@@ -160,10 +160,10 @@ bool Controllers::readBool(XrAction a, int hand) const {
 
 garden::HandState Controllers::readHand(int hand, XrSpace space, XrTime time, float floorOffset) {
     garden::HandState h;
-    const auto h_ = static_cast<std::size_t>(hand);
+    const auto index = static_cast<std::size_t>(hand);
     XrSpaceLocation grip{XR_TYPE_SPACE_LOCATION}, aim{XR_TYPE_SPACE_LOCATION};
-    check(xrLocateSpace(gripSpaces_[h_], space, time, &grip), "xrLocateSpace");
-    check(xrLocateSpace(aimSpaces_[h_], space, time, &aim), "xrLocateSpace");
+    check(xrLocateSpace(gripSpaces_[index], space, time, &grip), "xrLocateSpace");
+    check(xrLocateSpace(aimSpaces_[index], space, time, &aim), "xrLocateSpace");
     const XrSpaceLocationFlags valid = XR_SPACE_LOCATION_ORIENTATION_VALID_BIT | XR_SPACE_LOCATION_POSITION_VALID_BIT;
     h.tracked = (grip.locationFlags & valid) == valid && (aim.locationFlags & valid) == valid;
     if (!h.tracked) return h;
@@ -173,7 +173,7 @@ garden::HandState Controllers::readHand(int hand, XrSpace space, XrTime time, fl
     h.squeeze = readFloat(squeeze_, hand);
     XrActionStateGetInfo get{XR_TYPE_ACTION_STATE_GET_INFO};
     get.action = thumbstick_;
-    get.subactionPath = hands_[h_];
+    get.subactionPath = hands_[index];
     XrActionStateVector2f stick{XR_TYPE_ACTION_STATE_VECTOR2F};
     check(xrGetActionStateVector2f(session_, &get, &stick), "xrGetActionStateVector2f");
     if (stick.isActive) h.thumbstick = glm::vec2(stick.currentState.x, stick.currentState.y);

@@ -134,12 +134,12 @@ void Headset::createSession(GLFWwindow* window) {
     check(xrEnumerateReferenceSpaces(session_, 0, &count, nullptr), "xrEnumerateReferenceSpaces");
     std::vector<XrReferenceSpaceType> spaces(count);
     check(xrEnumerateReferenceSpaces(session_, count, &count, spaces.data()), "xrEnumerateReferenceSpaces");
-    const bool stage = std::find(spaces.begin(), spaces.end(), XR_REFERENCE_SPACE_TYPE_STAGE) != spaces.end();
+    stage_ = std::find(spaces.begin(), spaces.end(), XR_REFERENCE_SPACE_TYPE_STAGE) != spaces.end();
     XrReferenceSpaceCreateInfo space{XR_TYPE_REFERENCE_SPACE_CREATE_INFO};
-    space.referenceSpaceType = stage ? XR_REFERENCE_SPACE_TYPE_STAGE : XR_REFERENCE_SPACE_TYPE_LOCAL;
+    space.referenceSpaceType = stage_ ? XR_REFERENCE_SPACE_TYPE_STAGE : XR_REFERENCE_SPACE_TYPE_LOCAL;
     space.poseInReferenceSpace.orientation.w = 1.0f;
     check(xrCreateReferenceSpace(session_, &space, &space_), "xrCreateReferenceSpace");
-    floorOffset_ = stage ? 0.0f : kStandingEyeHeight;
+    floorOffset_ = stage_ ? 0.0f : kStandingEyeHeight;
 
     // Swapchains: sRGB colour (the renderer writes sRGB-encoded values, and
     // the compositor decodes them), 24-bit depth when submitted.

@@ -85,7 +85,7 @@ public:
     // Added to heights located in space() so that 0 is the floor (LOCAL: the
     // standing eye height).
     float floorOffset() const { return floorOffset_; }
-    const char* spaceName() const { return floorOffset_ == 0.0f ? "STAGE" : "LOCAL"; }
+    const char* spaceName() const { return stage_ ? "STAGE" : "LOCAL"; }
     bool depthSubmitted() const { return !depthSwapchains_.empty(); }
     std::int64_t colorFormat() const { return colorFormat_; }
     std::string runtimeName() const;
@@ -106,6 +106,7 @@ private:
     XrSession session_ = XR_NULL_HANDLE;
     XrSpace space_ = XR_NULL_HANDLE;
     bool depthExtension_ = false;
+    bool stage_ = false;
     float floorOffset_ = 0.0f;
     std::int64_t colorFormat_ = 0;
     std::vector<Swapchain> colorSwapchains_, depthSwapchains_;

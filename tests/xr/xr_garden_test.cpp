@@ -196,6 +196,51 @@ TEST_F(XrGarden, LeftHandMovesTheWorldAndBothHandsScaleIt) {
     EXPECT_NEAR(eye.z, origin2.z, 1e-4f);
 }
 
+TEST_F(XrGarden, InstanceLossEndsTheRun) {
+    ::setenv("HG_MOCK_XR_EVENTS", "5:instance_loss", 1);
+    XrOptions o;
+    o.garden = gardenFile;
+    o.frames = 300;  // a guard
+    o.mirror = false;
+    XrRunInfo info;
+    ASSERT_EQ(runXrGarden(o, [&](garden::GardenSession&, const XrRunInfo& i) { info = i; }), 0);
+    EXPECT_TRUE(info.lost);
+    EXPECT_NE(info.endReason.find("instance loss"), std::string::npos) << info.endReason;
+    EXPECT_LE(info.framesSubmitted, 6);
+}
+
+TEST_F(XrGarden, UnfocusedFramesRenderWithoutInput) {
+    // The runtime takes focus away for frames 6 to 15 (a system menu, say).
+    ::setenv("HG_MOCK_XR_EVENTS", "6:unfocus,16:focus", 1);
+    XrOptions o;
+    o.garden = gardenFile;
+    o.frames = 24;
+    o.mirror = false;
+    XrRunInfo info;
+    ASSERT_EQ(runXrGarden(o, [&](garden::GardenSession&, const XrRunInfo& i) { info = i; }), 0);
+    EXPECT_EQ(info.framesRendered, 23) << "visible all along";
+    EXPECT_EQ(info.focusedFrames, 13) << "input read only while focused";
+}
+
+TEST_F(XrGarden, LeftHandedTheLeftControllerCarves) {
+    // The script's navigation hand is the left controller: left-handed, it
+    // holds the tool and carves; the right one (the script's tool hand)
+    // only points.
+    const std::string s = script(R"([
+      {"frames": 2, "commands": [{"sculpt_tool": {"kind": "carve", "radius": 0.12}}]},
+      {"frames": 6, "navigation": {"aim": {"position": [0.3, 1.2, -1.0], "direction": [-0.35, -0.6, -1.3]}, "trigger": 1},
+                    "tool": {"aim": {"position": [0.3, 1.2, -1.0], "direction": [0.35, -0.6, -1.3]}}},
+      {"frames": 2}])");
+    ::setenv("HG_MOCK_XR_SCRIPT", s.c_str(), 1);
+    XrOptions o;
+    o.script = s;
+    o.leftHanded = true;
+    o.mirror = false;
+    std::size_t edits = 0;
+    ASSERT_EQ(runXrGarden(o, [&](garden::GardenSession& xr, const XrRunInfo&) { edits = xr.editCount(xr.findSculpture("a")); }), 0);
+    EXPECT_EQ(edits, 1u);
+}
+
 TEST_F(XrGarden, LocalSpaceStandsInForAMissingStage) {
     ::setenv("HG_MOCK_XR_NO_STAGE", "1", 1);
     XrOptions o;

@@ -559,15 +559,15 @@ std::optional<garden::Pose> stagePose(const Space& sp) {
     if (!sp.isAction) return compose(referencePose(sp.reference), offset);
     const garden::Hands hands = scriptedHands(*sp.session, false);
     const std::string* sub = pathString(sp.subaction);
-    const std::string* bind = nullptr;
-    // Which pose (grip or aim) the action is bound to on that hand.
     const bool left = sub && *sub == "/user/hand/left";
     const garden::HandState& h = left ? hands.navigation : hands.tool;
     if (!h.tracked) return std::nullopt;
+    // Which pose (grip or aim) the action is bound to on that hand.
+    const std::string* binding = nullptr;
     for (const std::string& b : sp.action->bindings)
-        if (b.rfind(left ? "/user/hand/left/" : "/user/hand/right/", 0) == 0) bind = &b;
-    if (!bind) return std::nullopt;
-    const bool aim = bind->find("/input/aim/pose") != std::string::npos;
+        if (b.rfind(left ? "/user/hand/left/" : "/user/hand/right/", 0) == 0) binding = &b;
+    if (!binding) return std::nullopt;
+    const bool aim = binding->find("/input/aim/pose") != std::string::npos;
     return compose(aim ? h.aim : h.grip, offset);
 }
 
