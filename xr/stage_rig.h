@@ -5,6 +5,8 @@
 // world seems half as big). Pure math, so tests check it without a headset.
 #pragma once
 
+#include <cmath>
+
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/mat4x4.hpp>
@@ -34,6 +36,18 @@ struct StageRig {
         }
         return h;
     }
+    // Recentering: the rig that puts a head at `headStage` (its pose in the
+    // stage) at the world point `eye` (x, z; the floor at eye.y - eyeHeight)
+    // looking along `yaw`. The scale stays.
+    StageRig recentered(const garden::Pose& headStage, const glm::vec3& eye, float eyeHeight, float headingYaw) const {
+        const glm::vec3 f = headStage.forward();
+        StageRig r = *this;
+        r.yaw = headingYaw - std::atan2(f.x, -f.z);
+        const glm::vec3 floor(eye.x, eye.y - eyeHeight, eye.z);
+        r.origin = floor - r.rotation() * (r.scale * glm::vec3(headStage.position.x, 0.0f, headStage.position.z));
+        return r;
+    }
+
     // The view matrix of an eye at `stage` (its pose in the stage).
     glm::mat4 viewOf(const garden::Pose& stage) const {
         const garden::Pose w = toWorld(stage);

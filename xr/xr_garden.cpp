@@ -154,7 +154,9 @@ public:
         info_.depthSubmitted = headset_.depthSubmitted();
         // The headset's height is the user's: the navigator flies, so a
         // grab may lift or lower the world.
-        session_.navigator().setPose(session_.navigator().eye(), session_.navigator().yaw(), 0.0f);
+        startEye_ = session_.navigator().eye();
+        startYaw_ = session_.navigator().yaw();
+        session_.navigator().setPose(startEye_, startYaw_, 0.0f);
         session_.navigator().setMode(garden::NavigationMode::Fly);
         if (script_) {
             int start = 0;
@@ -253,6 +255,15 @@ private:
             return h.tracked && h.squeeze > 0.5f ? std::optional<glm::vec3>(h.grip.position) : std::nullopt;
         };
         setRig(grab_.update(rig(), squeezing(stage.navigation), squeezing(stage.tool)));
+        // The navigation hand's menu button recenters: where the head is
+        // now becomes the garden's start, looking its way.
+        const bool menu = stage.navigation.pressed(garden::kButtonMenu);
+        if (menu && !menuHeld_ && f.viewsValid) {
+            garden::Pose head = poseOf(f.views[0].pose, heightOffset());
+            head.position = 0.5f * (head.position + poseOf(f.views[1].pose, heightOffset()).position);
+            setRig(rig().recentered(head, startEye_, garden::NavigationSettings{}.eyeHeight, startYaw_));
+        }
+        menuHeld_ = menu;
         garden::Hands world = rig().toWorld(stage);
         world.look.x = snap_.apply(world);
         // The tool stick reshapes the tool; the navigator must not fly with it.
@@ -335,6 +346,9 @@ private:
     WorldGrab grab_;
     SnapTurn snap_;
     float scale_ = 1.0f;
+    glm::vec3 startEye_{0.0f};
+    float startYaw_ = 0.0f;
+    bool menuHeld_ = false;
     XrRunInfo info_;
     std::string runtimeName_;
     std::string error_;

@@ -44,6 +44,22 @@ TEST(StageRig, ViewOfAnEyeLooksFromItsWorldPosition) {
     EXPECT_NEAR(ahead.z, -r.scale, kEps);
 }
 
+TEST(StageRig, RecenteringPutsTheHeadAtTheStartLookingItsWay) {
+    const StageRig r = someRig();
+    garden::Pose head;
+    head.position = glm::vec3(0.7f, 1.6f, -0.4f);
+    head.orientation = glm::angleAxis(0.9f, glm::vec3(0, 1, 0));  // turned left in the stage
+    const glm::vec3 start(2.0f, 1.7f, 5.0f);
+    const StageRig c = r.recentered(head, start, 1.7f, 0.3f);
+    const glm::vec3 at = c.toWorld(head.position);
+    EXPECT_NEAR(at.x, start.x, kEps);
+    EXPECT_NEAR(at.z, start.z, kEps);
+    EXPECT_NEAR(at.y, start.y - 1.7f + c.scale * head.position.y, kEps) << "heights stay the tracked ones";
+    const glm::vec3 f = c.toWorld(head).forward();
+    EXPECT_NEAR(std::atan2(f.x, -f.z), 0.3f, kEps) << "looking along the start's heading";
+    EXPECT_EQ(c.scale, r.scale);
+}
+
 TEST(WorldGrab, NoSqueezeLeavesTheRig) {
     WorldGrab g;
     const StageRig r = someRig();

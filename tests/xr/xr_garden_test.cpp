@@ -196,6 +196,27 @@ TEST_F(XrGarden, LeftHandMovesTheWorldAndBothHandsScaleIt) {
     EXPECT_NEAR(eye.z, origin2.z, 1e-4f);
 }
 
+TEST_F(XrGarden, MenuOnTheLeftHandRecenters) {
+    // A grab moves the user half a metre; the menu button brings the head
+    // back to the garden's start.
+    const std::string s = script(R"([
+      {"frames": 3, "navigation": {"aim": {"position": [-0.3, 1.0, -0.8]}, "squeeze": 1}},
+      {"frames": 3, "navigation": {"aim": {"position": [-0.3, 1.0, -0.3]}, "squeeze": 1}},
+      {"frames": 2, "navigation": {"aim": {"position": [-0.3, 1.0, -0.3]}}},
+      {"frames": 2, "navigation": {"aim": {"position": [-0.3, 1.0, -0.3]}, "buttons": ["menu"]}},
+      {"frames": 2}])");
+    ::setenv("HG_MOCK_XR_SCRIPT", s.c_str(), 1);
+    XrOptions o;
+    o.script = s;
+    o.mirror = false;
+    glm::vec3 eye(1e9f);
+    ASSERT_EQ(runXrGarden(o, [&](garden::GardenSession& xr, const XrRunInfo&) { eye = xr.navigator().eye(); }), 0);
+    // The mock's head stands at the stage's origin: the rig is back where it began.
+    EXPECT_NEAR(eye.x, 0.0f, 1e-4f);
+    EXPECT_NEAR(eye.y, 1.7f, 1e-4f);
+    EXPECT_NEAR(eye.z, 0.0f, 1e-4f);
+}
+
 TEST_F(XrGarden, InstanceLossEndsTheRun) {
     ::setenv("HG_MOCK_XR_EVENTS", "5:instance_loss", 1);
     XrOptions o;
