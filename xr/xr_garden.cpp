@@ -8,10 +8,8 @@
 #include "garden/render/overlay.h"
 #include "garden/render/panels.h"
 #include "garden/replay/replay_runner.h"
-#include "garden/replay/sculpt_commands.h"
 #include "garden/replay/replay_script.h"
 #include "garden/scene/json_reader.h"
-#include "garden/scene/to_glm.h"
 #include "garden/session/open_session.h"
 #include "xr/controllers.h"
 #include "xr/headset.h"
@@ -44,7 +42,6 @@ constexpr float kSnapThreshold = 0.7f;     // of the stick's reach
 // A seated user's eyes are about this much lower than a standing one's.
 constexpr float kSeatedRaise = 0.5f;
 constexpr int kMirrorWidth = 640, kMirrorHeight = 640;
-constexpr double kDegrees = 3.14159265358979323846 / 180.0;
 
 glm::mat4 projectionOf(const XrFovf& f) {
     return glm::frustum(std::tan(f.angleLeft) * kNearZ, std::tan(f.angleRight) * kNearZ, std::tan(f.angleDown) * kNearZ,
@@ -56,40 +53,6 @@ garden::Pose poseOf(const XrPosef& p, float floorOffset) {
     g.position = glm::vec3(p.position.x, p.position.y + floorOffset, p.position.z);
     g.orientation = glm::quat(p.orientation.w, p.orientation.x, p.orientation.y, p.orientation.z);
     return g;
-}
-
-// A replay script's command at its frame (docs/replay-format.md), as
-// `replay` runs it; "" or why it was refused.
-std::string runCommand(const garden::ReplayCommand& c, garden::GardenSession& s) {
-    using Kind = garden::ReplayCommand::Kind;
-    switch (c.kind) {
-        case Kind::Morph:
-            if (!s.hasMorph()) return "the garden has no metamorphosis to select";
-            s.setMorphPoint(c.pair[0], c.pair[1]);
-            return "";
-        case Kind::MorphWeights:
-            if (!s.hasMorph()) return "the garden has no metamorphosis to weigh";
-            s.setMorphWeights(c.vec);
-            return "";
-        case Kind::Screenshot: return "";  // the headset's frames are the runtime's to show
-        case Kind::Detail:
-            if (c.number <= 0.0) s.setDetail(std::nullopt);
-            else s.setDetail(poly::Sphere{c.vec, c.number});
-            return "";
-        case Kind::Pose:
-            s.navigator().setPose(garden::toGlm(c.vec), static_cast<float>(c.pair[0] * kDegrees), 0.0f);
-            return "";
-        case Kind::Select: {
-            const int i = c.text.empty() ? -1 : s.findSculpture(c.text);
-            if (!c.text.empty() && i < 0) return "no sculpture named '" + c.text + "'";
-            s.select(i);
-            return "";
-        }
-        case Kind::Orbit: return "";  // the headset does not orbit
-        case Kind::Budget: return "";  // the runtime's display period is the budget
-        case Kind::Sculpt: return garden::runSculptCommand(c.sculpt, s);
-    }
-    return "";
 }
 
 // Snap turn on the navigation stick: one turn each time it is pushed past
@@ -231,7 +194,8 @@ private:
         for (std::size_t i = 0; i < stepStarts_.size(); ++i) {
             if (stepStarts_[i] != scriptFrame_) continue;
             for (std::size_t c = 0; c < script_->steps[i].commands.size(); ++c) {
-                const std::string why = runCommand(script_->steps[i].commands[c], session_);
+                // Screenshots are skipped: the headset's frames are the runtime's to show.
+                const std::string why = garden::runReplayCommand(script_->steps[i].commands[c], session_);
                 if (!why.empty() && error_.empty())
                     error_ = script_->file + ": $.steps[" + std::to_string(i) + "].commands[" + std::to_string(c) + "]: " + why;
             }
