@@ -109,6 +109,65 @@ TEST_F(XrGarden, ScriptedRightHandCarvesTheGridTheReplayCarves) {
     EXPECT_GE(readback()["haptic_pulses"].get<int>(), 1) << "a pulse when the tool starts touching material";
 }
 
+TEST_F(XrGarden, CarvingWhileTheLeftHandHoldsTheWorldMovedEqualsTheReplay) {
+    // The left hand grabs the world and pulls it half a metre nearer, then
+    // holds it there while the right hand carves. In the world, the right
+    // hand is then half a metre further along -z than in the stage: the
+    // replay of the same strokes gets those world positions. (The numbers
+    // are exact in floats, so the grids must match voxel for voxel.)
+    const char* carve = R"([-0.35, -0.6, -1.3], [-0.15, -0.6, -1.3], [0.05, -0.65, -1.3])";
+    const nlohmann::json directions = nlohmann::json::parse(std::string("[") + carve + "]");
+    const auto steps = [&](double toolZ, bool withNavigation) {
+        nlohmann::json j = nlohmann::json::array();
+        j.push_back({{"frames", 2}, {"commands", {{{"sculpt_tool", {{"kind", "carve"}, {"radius", 0.12}}}}}}});
+        const auto nav = [](double z) {
+            return nlohmann::json{{"aim", {{"position", {-0.3, 1.0, z}}}}, {"squeeze", 1}};
+        };
+        nlohmann::json grab1 = {{"frames", 3}}, grab2 = {{"frames", 3}};
+        if (withNavigation) {
+            grab1["navigation"] = nav(-1.0);
+            grab2["navigation"] = nav(-0.5);
+        }
+        j.push_back(grab1);
+        j.push_back(grab2);
+        for (const auto& d : directions) {
+            nlohmann::json st = {{"frames", 5},
+                                 {"tool", {{"aim", {{"position", {0.3, 1.2, toolZ}}, {"direction", d}}}, {"trigger", 1}}}};
+            if (withNavigation) st["navigation"] = nav(-0.5);
+            j.push_back(st);
+        }
+        j.push_back({{"frames", 3}});
+        return j.dump();
+    };
+    // The replay: world positions.
+    const std::string replayScript = script(steps(-1.0, false));
+    garden::GardenLoad load = garden::loadGarden(gardenFile);
+    ASSERT_TRUE(load.ok()) << load.error;
+    garden::GardenSession replay(std::move(load));
+    const garden::ReplayResult r = garden::runReplay(garden::loadReplayScript(replayScript), replay, nullptr, {});
+    ASSERT_TRUE(r.ok()) << r.error;
+    const int a = replay.findSculpture("a");
+    ASSERT_EQ(replay.editCount(a), 1u);
+    // The headset: stage positions, the world moved by the left hand.
+    const std::string xrScript = (dir / "xr.json").string();
+    std::ofstream(xrScript) << R"({"garden": "garden.json", "steps": )" << steps(-0.5, true) << "}";
+    ::setenv("HG_MOCK_XR_SCRIPT", xrScript.c_str(), 1);
+    XrOptions o;
+    o.script = xrScript;
+    o.mirror = false;
+    bool compared = false;
+    ASSERT_EQ(runXrGarden(o, [&](garden::GardenSession& xr, const XrRunInfo&) {
+                  EXPECT_NEAR(xr.navigator().eye().z, -0.5f, 1e-6f) << "the world was moved";
+                  ASSERT_EQ(xr.editCount(a), 1u);
+                  EXPECT_EQ(garden::test::differingVoxels(*replay.sculptures()[static_cast<std::size_t>(a)].volume,
+                                                          *xr.sculptures()[static_cast<std::size_t>(a)].volume),
+                            0);
+                  compared = true;
+              }),
+              0);
+    EXPECT_TRUE(compared);
+}
+
 TEST_F(XrGarden, SessionLossKeepsTheStrokeInTheJournal) {
     // The trigger is still held when the runtime loses the session.
     const std::string s = script(R"([
