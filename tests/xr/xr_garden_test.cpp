@@ -276,6 +276,32 @@ TEST_F(XrGarden, MenuOnTheLeftHandRecenters) {
     EXPECT_NEAR(eye.z, 0.0f, 1e-4f);
 }
 
+TEST_F(XrGarden, ThePanelOnTheLeftHandChoosesTheTool) {
+    // The right hand points at the panel's carve button (above the left
+    // hand at (-0.2, 1.0, -0.4)), pulls, then carves sculpture 'a'. With no
+    // tool chosen the trigger would only pick the (absent) morph.
+    const std::string s = script(R"([
+      {"frames": 3, "navigation": {"aim": {"position": [-0.2, 1.0, -0.4]}},
+                    "tool": {"aim": {"position": [-0.23, 1.15, -0.1], "direction": [0, 0, -1]}, "trigger": 1}},
+      {"frames": 2, "navigation": {"aim": {"position": [-0.2, 1.0, -0.4]}},
+                    "tool": {"aim": {"position": [-0.23, 1.15, -0.1], "direction": [0, 0, -1]}}},
+      {"frames": 6, "tool": {"aim": {"position": [0.3, 1.2, -1.0], "direction": [-0.35, -0.6, -1.3]}, "trigger": 1}},
+      {"frames": 2}])");
+    ::setenv("HG_MOCK_XR_SCRIPT", s.c_str(), 1);
+    XrOptions o;
+    o.script = s;
+    o.mirror = false;
+    std::size_t edits = 0;
+    bool carving = false;
+    ASSERT_EQ(runXrGarden(o, [&](garden::GardenSession& xr, const XrRunInfo&) {
+                  edits = xr.editCount(xr.findSculpture("a"));
+                  carving = xr.tool().kind == garden::ToolSettings::Kind::Carve;
+              }),
+              0);
+    EXPECT_TRUE(carving);
+    EXPECT_EQ(edits, 1u);
+}
+
 TEST_F(XrGarden, InstanceLossEndsTheRun) {
     ::setenv("HG_MOCK_XR_EVENTS", "5:instance_loss", 1);
     XrOptions o;
