@@ -19,8 +19,6 @@ namespace hg::xr::mock {
 
 namespace {
 
-using Lock = std::lock_guard<std::recursive_mutex>;
-
 const char* const kTouch = "/interaction_profiles/oculus/touch_controller";
 const char* const kSimple = "/interaction_profiles/khr/simple_controller";
 
@@ -46,7 +44,6 @@ const std::vector<std::string> kOtherProfiles = {
 
 ActionSet* asSet(XrActionSet h) { return reinterpret_cast<ActionSet*>(h); }
 Action* asAction(XrAction h) { return reinterpret_cast<Action*>(h); }
-Session* asSession(XrSession h) { return reinterpret_cast<Session*>(h); }
 
 bool validPathString(const std::string& s) {
     if (s.size() < 2 || s[0] != '/' || s.back() == '/') return false;
@@ -306,7 +303,7 @@ XRAPI_ATTR XrResult XRAPI_CALL attachActionSets(XrSession session, const XrSessi
         s.profile = profile;
         rt.log.profile = *pathString(profile);
         XrEventDataInteractionProfileChanged e{};
-    e.type = XR_TYPE_EVENT_DATA_INTERACTION_PROFILE_CHANGED;
+        e.type = XR_TYPE_EVENT_DATA_INTERACTION_PROFILE_CHANGED;
         e.session = session;
         XrEventDataBuffer b{};
         std::memcpy(&b, &e, sizeof e);

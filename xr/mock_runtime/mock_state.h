@@ -141,12 +141,31 @@ void loadScriptFromEnvironment(Runtime& rt);
 
 // Events and states (mock_runtime.cpp).
 void queueState(Session& s, XrSessionState state);
+// Down from wherever the session is to STOPPING, one state at a time.
+void queueStopping(Session& s);
+// "loss", "exit", "unfocus", "focus" or "instance_loss" now; -1 for another name.
+int raiseEvent(const std::string& event);
+// The readback (HG_MOCK_XR_READBACK): the frame log, and a view's last
+// released image as a PNG (rows top-down; needs the app's GL context
+// current, as xrDestroySwapchain has it in a real runtime).
+void writeFrameLog();
+void writeViewImage(const Swapchain& sc, const XrRect2Di& rect, const std::string& name);
+bool validOrientation(const XrQuaternionf& q);  // of unit length
 XrPosef toXr(const garden::Pose& p);
 std::int64_t nowNs();
 
 // The entry points each file implements, by name, for xrGetInstanceProcAddr.
 using FunctionTable = std::map<std::string, PFN_xrVoidFunction>;
-void addInputFunctions(FunctionTable& table);
+void addSessionFunctions(FunctionTable& table);  // mock_session.cpp
+void addSpaceFunctions(FunctionTable& table);    // mock_spaces.cpp: spaces, views, swapchains
+void addInputFunctions(FunctionTable& table);    // mock_input.cpp
+
+using Lock = std::lock_guard<std::recursive_mutex>;
+
+inline Instance* asInstance(XrInstance h) { return reinterpret_cast<Instance*>(h); }
+inline Session* asSession(XrSession h) { return reinterpret_cast<Session*>(h); }
+inline Space* asSpace(XrSpace h) { return reinterpret_cast<Space*>(h); }
+inline Swapchain* asSwapchain(XrSwapchain h) { return reinterpret_cast<Swapchain*>(h); }
 
 // Casts an entry point of any signature for the table.
 template <typename F>
