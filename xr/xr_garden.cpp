@@ -26,6 +26,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -391,13 +392,17 @@ int runXrGarden(const XrOptions& options,
             return 2;
         }
     }
-    // The runtime first: without one there is no window to open.
+    // The runtime first: without one there is no window to open. The
+    // loader's own log would repeat our message in its words; the user may
+    // still ask for it (XR_LOADER_DEBUG=error).
+    ::setenv("XR_LOADER_DEBUG", "none", 0);
     std::unique_ptr<Headset> headset;
     try {
         headset = std::make_unique<Headset>("Hypergarden");
     } catch (const NoRuntime& e) {
         std::cerr << "error: no OpenXR runtime: " << e.what()
-                  << "; run hypergarden without --xr for the desktop garden\n";
+                  << "; run hypergarden without --xr for the desktop garden"
+                  << " (XR_LOADER_DEBUG=error shows the loader's own messages)\n";
         return kExitNoRuntime;
     } catch (const XrFailure& e) {
         std::cerr << "error: OpenXR: " << e.what() << "\n";
