@@ -151,6 +151,10 @@ public:
                 info_.interactionProfile = controllers_->interactionProfile();
             }
             if (headset_.done()) break;
+            if (!headset_.running() && window_.shouldClose()) {
+                info_.endReason = "the mirror window was closed";
+                return 0;  // the session is not running: nothing to end
+            }
             if (!headset_.running()) {
                 // IDLE or READY: nothing to draw until the runtime says.
                 std::this_thread::sleep_for(std::chrono::milliseconds(5));
