@@ -16,6 +16,7 @@
 #include "xr/headset.h"
 #include "xr/stage_rig.h"
 #include "xr/tool_stick.h"
+#include "xr/turning.h"
 #include "xr/world_grab.h"
 #include "xr/xr_result.h"
 
@@ -39,8 +40,6 @@ namespace hg::xr {
 namespace {
 
 constexpr float kNearZ = 0.05f, kFarZ = 500.0f;
-constexpr float kSnapTurn = 0.5235988f;     // 30 degrees
-constexpr float kSnapThreshold = 0.7f;     // of the stick's reach
 // A seated user's eyes are about this much lower than a standing one's.
 constexpr float kSeatedRaise = 0.5f;
 constexpr int kMirrorWidth = 640, kMirrorHeight = 640;
@@ -56,23 +55,6 @@ garden::Pose poseOf(const XrPosef& p, float floorOffset) {
     g.orientation = glm::quat(p.orientation.w, p.orientation.x, p.orientation.y, p.orientation.z);
     return g;
 }
-
-// Snap turn on the navigation stick: one turn each time it is pushed past
-// the threshold; the stick's x does not strafe.
-class SnapTurn {
-public:
-    float apply(garden::Hands& h) {
-        const float x = h.navigation.thumbstick.x;
-        h.navigation.thumbstick.x = 0.0f;
-        const int side = x > kSnapThreshold ? 1 : x < -kSnapThreshold ? -1 : 0;
-        const float turn = side != 0 && side != last_ ? static_cast<float>(side) * kSnapTurn : 0.0f;
-        last_ = side;
-        return turn;
-    }
-
-private:
-    int last_ = 0;
-};
 
 // Draws into one swapchain image (and its depth image, or our own depth buffer).
 class EyeTarget {
@@ -109,7 +91,8 @@ class XrRun {
 public:
     XrRun(const XrOptions& o, garden::GardenSession& s, Headset& h, garden::GlWindow& w,
           const std::optional<garden::ReplayScript>& script)
-        : options_(o), session_(s), headset_(h), window_(w), view_(renderer_), script_(script) {
+        : options_(o), session_(s), headset_(h), window_(w), view_(renderer_), script_(script),
+          turning_(o.smoothTurn) {
         if (options_.mirror) overlay_ = std::make_unique<garden::Overlay>(window_);
         controllers_ = std::make_unique<Controllers>(headset_.instance(), options_.leftHanded);
         headset_.createSession(window_.handle());
@@ -235,7 +218,7 @@ private:
         }
         menuHeld_ = menu;
         garden::Hands world = rig().toWorld(stage);
-        world.look.x = snap_.apply(world);
+        world.look.x = turning_.apply(world, periodMs > 0.0 ? periodMs / 1000.0 : 1.0 / 90.0);
         panel_.place(world.navigation, scale_);
         if (const auto pressed = panel_.update(world.tool)) press(*pressed);
         if (panel_.pointing()) world.tool.trigger = 0.0f;  // the trigger is the panel's
@@ -363,7 +346,7 @@ private:
     std::array<EyeTarget, 2> targets_;
     WorldGrab grab_;
     HandPanel panel_;
-    SnapTurn snap_;
+    Turning turning_;
     float scale_ = 1.0f;
     glm::vec3 startEye_{0.0f};
     float startYaw_ = 0.0f;

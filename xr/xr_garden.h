@@ -26,6 +26,7 @@ struct XrOptions {
     std::string script;      // a replay script whose commands run at their frames ("" : none)
     int frames = 0;          // ask the runtime to end the session after this many frames (0: never)
     bool leftHanded = false; // the left hand holds the tool
+    bool smoothTurn = false; // turn smoothly with the left stick instead of snapping 30 degrees
     bool seated = false;     // raise the tracked heights by a seated user's shorter reach (0.5 m)
     bool mirror = true;      // show the mirror window (hidden when false)
     // Called after every focused frame with its stats and its index from

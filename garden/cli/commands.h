@@ -70,6 +70,7 @@ struct GardenOptions {
     std::string xrScript;             // with xr: a replay script's commands at their frames
     bool leftHanded = false;          // with xr: the left hand holds the tool
     bool seated = false;              // with xr: seated use, heights raised
+    bool smoothTurn = false;          // with xr: smooth turning instead of snap turns
 };
 
 struct SessionCommandOptions {

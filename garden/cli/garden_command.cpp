@@ -14,6 +14,7 @@ int runGarden(const GardenOptions& options) {
         x.frames = options.frames;
         x.leftHanded = options.leftHanded;
         x.seated = options.seated;
+        x.smoothTurn = options.smoothTurn;
         return xr::runXrGarden(x);
     }
     DesktopOptions d;
