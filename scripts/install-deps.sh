@@ -12,6 +12,7 @@ PACKAGES=(
   libimgui-dev libstb-dev libcli11-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth libgl1-mesa-dri mesa-utils admesh clang
+  openxr-layer-corevalidation
 )
 
 missing=()
