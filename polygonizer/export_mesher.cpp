@@ -237,6 +237,7 @@ struct Output {
     float* positions;
     float* normals;
     std::uint32_t* indices;
+    std::uint64_t* edges;  // gridEdgeKey per vertex, or none
 };
 
 // Phase 3a: one vertex per owned crossing edge, in the order BlockEdges
@@ -270,6 +271,7 @@ void placeVertices(const Coord& origin, std::uint32_t firstVertex, const BlockEd
                     out.positions[k + a] = static_cast<float>(pos[a]);
                     out.normals[k + a] = g[a] * scale;
                 }
+                if (out.edges) out.edges[k / 3] = gridEdgeKey(axis, origin.x() + x, origin.y() + y, origin.z() + z);
                 k += 3;
             }
         }
@@ -290,6 +292,7 @@ void meshBlock(Candidates& c, std::size_t i, Accessor& acc, const voxel::VolumeF
         h.fill(c, c.origins[i], acc);
         placeVertices(c.origins[i], s.firstVertex, *s.edges, h, frame, out);
     }
+    if (s.counts.triangles == 0) return;  // a window's neighbour: vertices only
     // The blocks that own this block's cells' edges: itself and its upper
     // neighbours (those without a crossing own no vertex).
     std::array<EdgeOwner, 8> owners{};
@@ -340,9 +343,15 @@ void allocate(std::vector<T>& v, std::size_t n) {
     v.resize(n);
 }
 
-}  // namespace
+// A block of a window's own cells, or one whose vertices those cells use
+// (the block itself and its upper neighbours: origins up to hi + 1).
+bool inWindow(const Coord& origin, const voxel::IndexBox& cells, int reach) {
+    for (int a = 0; a < 3; ++a)
+        if (origin[a] < cells.lo[a] || origin[a] > cells.hi[a] + reach) return false;
+    return true;
+}
 
-Mesh meshVolume(const voxel::Volume& volume, ExportStats* stats) {
+Mesh meshImpl(const voxel::Volume& volume, const CellWindow* window, ExportStats* stats) {
     const auto start = std::chrono::steady_clock::now();
     const Tree& tree = voxel::vdb(volume).tree();
 
@@ -363,6 +372,10 @@ Mesh meshVolume(const voxel::Volume& volume, ExportStats* stats) {
     std::vector<std::uint32_t> active;
     for (std::size_t i = 0; i < n; ++i) {
         BlockState& s = c.state[i];
+        if (window && s.edges) {
+            if (!inWindow(c.origins[i], window->cells, 0)) s.counts.triangles = s.counts.surfaceCells = 0;
+            if (!inWindow(c.origins[i], window->cells, 1)) s.counts.vertices = 0;
+        }
         s.firstVertex = vertices;
         s.firstTriangle = triangles;
         vertices += s.counts.vertices;
@@ -375,9 +388,14 @@ Mesh meshVolume(const voxel::Volume& volume, ExportStats* stats) {
     tbb::parallel_invoke([&] { allocate(mesh.positions, 3 * static_cast<std::size_t>(vertices)); },
                          [&] { allocate(mesh.normals, 3 * static_cast<std::size_t>(vertices)); },
                          [&] { allocate(mesh.indices, 3 * triangles); });
+    std::uint64_t* edgeKeys = nullptr;
+    if (window && window->vertexEdges) {
+        window->vertexEdges->assign(vertices, 0);
+        edgeKeys = window->vertexEdges->data();
+    }
 
     // Phase 3.
-    const Output out{mesh.positions.data(), mesh.normals.data(), mesh.indices.data()};
+    const Output out{mesh.positions.data(), mesh.normals.data(), mesh.indices.data(), edgeKeys};
     forEach(active.size(), tree, [&](std::size_t k, Accessor& acc) {
         if (k + 1 < active.size()) prefetchValues(c.values[active[k + 1]]);
         meshBlock(c, active[k], acc, volume.frame, out);
@@ -390,6 +408,14 @@ Mesh meshVolume(const voxel::Volume& volume, ExportStats* stats) {
     st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (stats) *stats = st;
     return mesh;
+}
+
+}  // namespace
+
+Mesh meshVolume(const voxel::Volume& volume, ExportStats* stats) { return meshImpl(volume, nullptr, stats); }
+
+Mesh meshVolume(const voxel::Volume& volume, const CellWindow& window, ExportStats* stats) {
+    return meshImpl(volume, &window, stats);
 }
 
 }  // namespace hg::poly
