@@ -86,16 +86,20 @@ struct Candidates {
 
 // The index box's faces, an 8x8 patch at a time: blocks holding an inside
 // voxel on a face, where a solid cut by the box is capped. A tile answers
-// for its whole patch, a leaf's voxels are read from its buffer.
+// for its whole patch, a leaf's voxels are read from its buffer. Only the
+// patches that reach into `clip` are read (a window's surroundings: a tile
+// of a large export need not scan the whole box's faces).
 template <class Mark>
-void markCappedFaces(const voxel::IndexBox& b, Accessor& acc, Mark mark) {
+void markCappedFaces(const voxel::IndexBox& b, const voxel::IndexBox& clip, Accessor& acc, Mark mark) {
     for (int a = 0; a < 3; ++a) {
         const int u = (a + 1) % 3, v = (a + 2) % 3;
-        for (int side = 0; side < 2; ++side)
-            for (int i0 = b.lo[u] & ~(kB - 1); i0 <= b.hi[u]; i0 += kB)
-                for (int j0 = b.lo[v] & ~(kB - 1); j0 <= b.hi[v]; j0 += kB) {
+        for (int side = 0; side < 2; ++side) {
+            const int face = side ? b.hi[a] : b.lo[a];
+            if (face < clip.lo[a] || face > clip.hi[a]) continue;
+            for (int i0 = std::max(b.lo[u], clip.lo[u]) & ~(kB - 1); i0 <= std::min(b.hi[u], clip.hi[u]); i0 += kB)
+                for (int j0 = std::max(b.lo[v], clip.lo[v]) & ~(kB - 1); j0 <= std::min(b.hi[v], clip.hi[v]); j0 += kB) {
                     Coord c;
-                    c[a] = side ? b.hi[a] : b.lo[a];
+                    c[a] = face;
                     c[u] = i0;
                     c[v] = j0;
                     const Coord block = c & ~(kB - 1);
@@ -113,6 +117,7 @@ void markCappedFaces(const voxel::IndexBox& b, Accessor& acc, Mark mark) {
                     }
                     if (inside) mark(block);
                 }
+        }
     }
 }
 
@@ -138,7 +143,7 @@ void forEach(std::size_t n, const Tree& tree, Body body) {
 
 // Phase 0: candidates numbered in a fixed order (BlockTable's), so the mesh
 // does not depend on the thread count; their values and inside bits.
-Candidates findCandidates(const voxel::Volume& volume) {
+Candidates findCandidates(const voxel::Volume& volume, const voxel::IndexBox& faceClip) {
     const Tree& tree = voxel::vdb(volume).tree();
     std::vector<const Leaf*> leaves;
     leaves.reserve(tree.leafCount());
@@ -153,7 +158,7 @@ Candidates findCandidates(const voxel::Volume& volume) {
     };
     for (const Leaf* leaf : leaves) markWithLowerNeighbours(leaf->origin());
     Accessor acc(tree);
-    markCappedFaces(volume.frame.indexBox, acc, markWithLowerNeighbours);
+    markCappedFaces(volume.frame.indexBox, faceClip, acc, markWithLowerNeighbours);
 
     c.origins.reserve(c.table.marked());
     c.table.number([&c](int x, int y, int z) { c.origins.push_back(originOf(Coord(x, y, z))); });
@@ -355,7 +360,14 @@ Mesh meshImpl(const voxel::Volume& volume, const CellWindow* window, ExportStats
     const auto start = std::chrono::steady_clock::now();
     const Tree& tree = voxel::vdb(volume).tree();
 
-    Candidates c = findCandidates(volume);
+    // A window's cells reach one block beyond it either way.
+    voxel::IndexBox faceClip = volume.frame.indexBox;
+    if (window)
+        for (int a = 0; a < 3; ++a) {
+            faceClip.lo[a] = window->cells.lo[a] - kB;
+            faceClip.hi[a] = window->cells.hi[a] + kB + 1;
+        }
+    Candidates c = findCandidates(volume, faceClip);
     const std::size_t n = c.origins.size();
 
     // Phase 1. The pool is left uninitialized: only the blocks that are not
