@@ -153,6 +153,7 @@ std::string exportMesh(const frep::Model& model, const frep::Box3& box, const Me
     report.peakTileBytes = tiled.stats.peakTileBytes;
     report.estimatedBytes = tiled.plan.estimatedBytes;
     report.limitBytes = tiled.plan.limit;
+    report.meshSeconds = tiled.stats.seconds;
     if (!tiled.error.empty()) return tiled.error;
     Mesh& mesh = tiled.mesh;
 

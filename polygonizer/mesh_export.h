@@ -52,6 +52,7 @@ struct MeshExportReport {
     double boxMax[3] = {0, 0, 0};
     double size[3] = {0, 0, 0};      // boxMax - boxMin, model units
     double seconds = 0.0;            // the whole export
+    double meshSeconds = 0.0;        // of which planning, sampling, meshing and welding the tiles
     std::size_t tiles = 0;           // tiles sampled (meshes)
     int tileSize = 0;
     std::uint64_t peakTileBytes = 0; // the largest tile's grid (VDB: the whole grid)

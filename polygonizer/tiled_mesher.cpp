@@ -10,7 +10,6 @@
 #include "voxel/memory_guard.h"
 #include "voxel/normalization.h"
 #include "voxel/sampler.h"
-#include "voxel/volume_vdb.h"
 
 namespace hg::poly {
 
@@ -26,36 +25,49 @@ constexpr int kCoarseResolution = 128;
 constexpr std::uint64_t kLeafBytes = 4400;
 constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
 
-// A tile's region is its cells plus one voxel below and two above: t + 3
-// voxels, which may straddle one more leaf than it fills.
+// A tile's region: its cells, one voxel below (gradients) and above them
+// the upper neighbours' blocks and one voxel more. The cells alone need
+// only two voxels above; with fewer than the whole neighbour blocks, the
+// background beyond the region meets the true values inside them, and
+// wherever the solid is inside there the mesher would place a face of
+// vertices that no triangle uses.
+constexpr int kReach = 1 + 8 + 1;
+
+// t + 1 + kReach voxels, which may straddle one more leaf than they fill.
 std::uint64_t tileBytes(int t) {
-    const auto leaves = static_cast<std::uint64_t>((t + 3 + 7) / 8 + 1);
+    const auto leaves = static_cast<std::uint64_t>((t + 1 + kReach + 7) / 8 + 1);
     return leaves * leaves * leaves * kLeafBytes;
 }
 
-// The cells the untiled mesher visits: its candidate blocks are the leaves
-// inside the index box and the blocks just below them.
+// The cells the untiled mesher visits (its candidate blocks are the leaves
+// inside the index box and the blocks just below them), and where tiles
+// start: on a multiple of the sampler's top box (128) where the tile is
+// that large or larger, so that tile faces fall on top box faces and no top
+// box is walked through by more than one tile, except for the one or two
+// voxels of overlap.
 struct CellRange {
     int lo[3];
     int hi[3];
+    int origin[3];
 };
 
-CellRange cellRange(const voxel::VolumeFrame& frame) {
+CellRange cellRange(const voxel::VolumeFrame& frame, int tile) {
     CellRange r{};
     for (int a = 0; a < 3; ++a) {
         r.lo[a] = voxel::floorMultiple(frame.indexBox.lo[a], 8) - 8;
         r.hi[a] = voxel::floorMultiple(frame.indexBox.hi[a], 8) + 7;
+        r.origin[a] = voxel::floorMultiple(r.lo[a], std::min(tile, 128));
     }
     return r;
 }
 
 // The vertex of this edge is shared with another tile when the edge lies
 // on a tile face: a plane across one of the other two axes at a multiple
-// of the tile size from the range's start.
+// of the tile size from the tiles' origin.
 bool onTileFace(std::uint64_t key, const CellRange& range, int tile) {
     const int axis = gridEdgeAxis(key);
     for (int b = 0; b < 3; ++b)
-        if (b != axis && (gridEdgeIndex(key, b) - range.lo[b]) % tile == 0) return true;
+        if (b != axis && (gridEdgeIndex(key, b) - range.origin[b]) % tile == 0) return true;
     return false;
 }
 
@@ -130,8 +142,8 @@ std::string planTiledMesh(const frep::Model& model, const frep::Box3& box, const
         !why.empty())
         return why;
 
-    const CellRange range = cellRange(plan.frame);
-    for (int a = 0; a < 3; ++a) plan.tileCounts[a] = (range.hi[a] - range.lo[a] + plan.tileSize) / plan.tileSize;
+    const CellRange range = cellRange(plan.frame, plan.tileSize);
+    for (int a = 0; a < 3; ++a) plan.tileCounts[a] = (range.hi[a] - range.origin[a] + plan.tileSize) / plan.tileSize;
     plan.normalization = voxel::estimateNormalization(model, plan.frame).scale;
     return "";
 }
@@ -143,7 +155,7 @@ TiledMeshResult meshModelTiled(const frep::Model& model, const frep::Box3& box, 
     if (!r.error.empty()) return r;
     const TiledMeshPlan& plan = r.plan;
     const int t = plan.tileSize;
-    const CellRange range = cellRange(plan.frame);
+    const CellRange range = cellRange(plan.frame, t);
 
     Mesh& out = r.mesh;
     // Reserved once: growing by doubling would briefly need twice the mesh.
@@ -161,25 +173,28 @@ TiledMeshResult meshModelTiled(const frep::Model& model, const frep::Box3& box, 
                 CellWindow window;
                 voxel::IndexBox region;
                 for (int a = 0; a < 3; ++a) {
-                    window.cells.lo[a] = range.lo[a] + index[a] * t;
-                    window.cells.hi[a] = std::min(window.cells.lo[a] + t - 1, range.hi[a]);
+                    window.cells.lo[a] = std::max(range.origin[a] + index[a] * t, range.lo[a]);
+                    window.cells.hi[a] = std::min(range.origin[a] + (index[a] + 1) * t - 1, range.hi[a]);
                     region.lo[a] = window.cells.lo[a] - 1;
-                    region.hi[a] = window.cells.hi[a] + 2;
+                    region.hi[a] = window.cells.hi[a] + kReach;
                 }
                 window.vertexEdges = &edges;
-                voxel::Volume volume;
-                volume.frame = plan.frame;
-                volume.normalization = plan.normalization;
-                voxel::vdb(volume).setTransform(voxel::frameTransform(plan.frame));
-                const voxel::SampleStats s = voxel::resampleRegion(volume, model, region);
+                auto t0 = Clock::now();
+                voxel::SampleStats s;
+                const voxel::Volume volume = voxel::sampleRegion(model, plan.frame, plan.normalization, region, &s);
                 r.stats.samples += s.samples;
                 r.stats.peakTileBytes = std::max<std::uint64_t>(r.stats.peakTileBytes, volume.memoryBytes());
+                auto t1 = Clock::now();
                 const Mesh tile = meshVolume(volume, window);
+                auto t2 = Clock::now();
                 ++r.stats.tiles;
                 if (!tile.empty()) {
                     ++r.stats.tilesWithSurface;
                     weldTile(tile, edges, range, t, shared, out, r.stats.sharedVertices);
                 }
+                r.stats.sampleSeconds += std::chrono::duration<double>(t1 - t0).count();
+                r.stats.meshSeconds += std::chrono::duration<double>(t2 - t1).count();
+                r.stats.weldSeconds += std::chrono::duration<double>(Clock::now() - t2).count();
                 if (out.vertexCount() >= kNone) {
                     r.error = "the mesh has more vertices than 32-bit indices can number; use a lower resolution";
                     r.mesh = Mesh{};

@@ -128,7 +128,9 @@ TEST(TiledMesher, SphereIsClosedOutwardAndHasTheAnalyticVolume) {
     o.tileSize = 32;
     TiledMeshResult tiled = meshModelTiled(sphere, cube(1), o);
     ASSERT_EQ(tiled.error, "");
-    EXPECT_EQ(tiled.plan.tileCounts[0], 5);  // 128 + 8 margin cells and one block below: 5 tiles of 32
+    // Cells -16 .. 135 (the index box -4 .. 132 and a block below), tiles
+    // from -32: 6 of 32.
+    EXPECT_EQ(tiled.plan.tileCounts[0], 6);
     EXPECT_GT(tiled.stats.tilesWithSurface, 8u);
     const MeshReport r = validateMesh(tiled.mesh);
     EXPECT_TRUE(r.ok()) << describe(r);
