@@ -397,6 +397,28 @@ TEST(MeshExport, SimplifyHalvesABlocksTrianglesAndStaysClosed) {
     EXPECT_NEAR(r.volume, plain.volume, 0.01 * plain.volume);
 }
 
+TEST(MeshExport, SimplificationThatBreaksTheSurfaceFallsBackToTheValidMesh) {
+    // A disc 1.3 voxels thick: an error of 0.3 units (10 voxels) collapses it
+    // to nothing, and so do 0.15 and 0.075 (at 0.01 already its two faces
+    // are pulled into non-manifold edges).
+    const frep::Model plate = test::modelFromSource("q(x[3], a[1]) { q = (0.0004 - x[3]^2) & (0.5 - x[1]^2 - x[2]^2); }");
+    TempDir dir;
+    MeshExportOptions o;
+    o.resolution = 64;
+    MeshExportReport plain, fallback;
+    ASSERT_EQ(exportMesh(plate, cube(1), o, dir.file("plain.obj"), plain), "");
+    SimplifyStats s;
+    const MeshReport broken = validateMesh(simplifyMesh(readObj(dir.file("plain.obj")).mesh, 0.01, &s));
+    EXPECT_FALSE(broken.ok()) << "meshoptimizer does break this one";
+    o.simplifyError = 0.3;
+    ASSERT_EQ(exportMesh(plate, cube(1), o, dir.file("simple.obj"), fallback), "");
+    EXPECT_FALSE(fallback.simplified);
+    EXPECT_NE(fallback.simplifyNote.find("unsimplified mesh was written"), std::string::npos) << fallback.simplifyNote;
+    EXPECT_NE(describe(fallback, o).find("note: "), std::string::npos);
+    EXPECT_EQ(fallback.triangles, plain.triangles);
+    EXPECT_TRUE(validateMesh(readObj(dir.file("simple.obj")).mesh).ok());
+}
+
 TEST(MeshExport, SimplifiedMeshKeepsVerticesAndNormalsOfTheOriginal) {
     const frep::Model sphere = test::modelFromSource("q(x[3], a[1]) { q = 0.64 - (x[1]^2 + x[2]^2 + x[3]^2); }");
     TiledMeshOptions o;
