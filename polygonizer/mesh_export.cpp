@@ -23,10 +23,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// Simplification tries the error asked for, then half and a quarter of it,
-// before giving up on it.
-constexpr int kSimplifyAttempts = 3;
-
 bool positiveFinite(double v) { return v > 0.0 && std::isfinite(v); }
 
 void fillGeometry(const MeshReport& r, MeshExportReport& report) {
@@ -46,28 +42,22 @@ std::string invalidMesh(const MeshReport& r) {
            "see docs/mesh-export.md):\n" + describe(r);
 }
 
-// Simplifies `mesh` in place, or leaves it and says why in the report.
+// Simplifies `mesh` in place (simplifyMesh validates every pass) and says
+// in the report what it did.
 void simplify(Mesh& mesh, double error, MeshExportReport& report) {
     report.trianglesBeforeSimplify = mesh.triangleCount();
-    for (int attempt = 0; attempt < kSimplifyAttempts; ++attempt, error /= 2) {
-        SimplifyStats s;
-        Mesh simpler = simplifyMesh(mesh, error, &s);
-        const MeshReport r = validateMesh(simpler);
-        if (r.ok()) {
-            mesh = std::move(simpler);
-            report.simplified = true;
-            report.simplifyAchievedError = s.error;
-            if (attempt > 0) {
-                std::ostringstream m;
-                m << "simplification at the error asked for broke the surface; used " << error << " model units";
-                report.simplifyNote = m.str();
-            }
-            return;
-        }
+    SimplifyStats s;
+    Mesh simpler = simplifyMesh(mesh, error, &s);
+    if (!validateMesh(simpler).ok()) {  // kept as a last word: never write a broken mesh
+        report.simplifyNote = "simplification left the mesh not fit to write; the unsimplified mesh was written";
+        return;
     }
-    report.simplifyNote =
-        "simplification left the mesh not closed or not manifold even at a quarter of the error asked for; "
-        "the unsimplified mesh was written";
+    mesh = std::move(simpler);
+    report.simplified = s.passes > 0;
+    report.simplifyAchievedError = s.error;
+    if (s.stoppedByTopology)
+        report.simplifyNote = "simplification stopped at " + std::to_string(mesh.triangleCount()) +
+                              " triangles: a further collapse would have left the mesh not closed or not manifold";
 }
 
 std::string exportVdb(const frep::Model& model, const frep::Box3& box, const MeshExportOptions& options,
@@ -147,6 +137,7 @@ std::string exportMesh(const frep::Model& model, const frep::Box3& box, const Me
     to.tileSize = options.tileSize;
     to.memoryLimit = options.memoryLimitMiB << 20;
     to.progress = progress;
+    to.bytesPerTriangle = options.simplifyError > 0.0 ? kSimplifyBytesPerTriangle : kMeshBytesPerTriangle;
     TiledMeshResult tiled = meshModelTiled(model, box, to);
     report.tiles = tiled.stats.tiles;
     report.tileSize = tiled.plan.tileSize;

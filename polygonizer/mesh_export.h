@@ -58,12 +58,12 @@ struct MeshExportReport {
     std::uint64_t peakTileBytes = 0; // the largest tile's grid (VDB: the whole grid)
     std::uint64_t estimatedBytes = 0;  // the memory guard's estimate
     std::uint64_t limitBytes = 0;
-    // --simplify: what it did. When the simplified mesh is not closed and
-    // manifold even at a quarter of the error asked for, the unsimplified
-    // mesh is written and simplifyNote says so.
+    // --simplify: what it did (mesh_simplify.h). Every pass is validated;
+    // where a further collapse would break the surface, simplification
+    // stops there and simplifyNote says so.
     bool simplified = false;
     std::size_t trianglesBeforeSimplify = 0;
-    double simplifyAchievedError = 0.0;  // model units
+    double simplifyAchievedError = 0.0;  // model units, the sum of the passes' deviations
     std::string simplifyNote;
 };
 

@@ -128,7 +128,7 @@ std::string planTiledMesh(const frep::Model& model, const frep::Box3& box, const
     const double margin = scale > 1.0 ? 1.1 : 1.0;
     plan.expectedTriangles =
         static_cast<std::uint64_t>(static_cast<double>(meshVolume(*sampled.volume).triangleCount()) * scale * scale * margin);
-    plan.meshBytes = plan.expectedTriangles * kMeshBytesPerTriangle;
+    plan.meshBytes = plan.expectedTriangles * options.bytesPerTriangle;
 
     std::vector<int> sizes(std::begin(kTileSizes), std::end(kTileSizes));
     if (options.tileSize) sizes = {options.tileSize};

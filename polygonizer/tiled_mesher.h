@@ -29,6 +29,7 @@ struct TiledMeshOptions {
     int resolution = 256;           // voxels along the model box's longest side
     int tileSize = 0;               // cells per tile side, a multiple of 8; 0: the largest of 256, 128, 64, 32 that fits
     std::uint64_t memoryLimit = 0;  // bytes; 0: voxel::memoryLimit(0), 80% of what is available
+    std::uint64_t bytesPerTriangle = 96;  // the guard's count per expected triangle: kMeshBytesPerTriangle or kSimplifyBytesPerTriangle
     // Called on the calling thread after each tile with the fraction done.
     std::function<void(double)> progress;
 };
@@ -51,10 +52,13 @@ struct TiledMeshPlan {
     }
 };
 
-// Bytes per expected triangle that the guard counts for the finished mesh
-// (positions, normals, indices) plus the larger of validation's edge
-// census and meshoptimizer's simplification working set.
+// Bytes per expected triangle that the guard counts: the finished mesh
+// (positions, normals, indices, about 24 bytes) and validation's edge census
+// or a writer's buffers; with simplification, meshoptimizer's working set
+// and the passes' index buffers too. Measured peaks (docs/benchmarks.md):
+// about 45 and 160 bytes a triangle, tile and process included.
 constexpr std::uint64_t kMeshBytesPerTriangle = 96;
+constexpr std::uint64_t kSimplifyBytesPerTriangle = 192;
 
 // The memory guard: checks the resolution, builds the frame over `box`,
 // estimates the mesh from a coarse meshing (at most 128 voxels along the

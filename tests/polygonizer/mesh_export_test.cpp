@@ -6,6 +6,7 @@
 // block's triangles and stays closed; bad requests leave no file.
 #include <gtest/gtest.h>
 #include <openvdb/openvdb.h>
+#include <meshoptimizer.h>
 #include <tiny_gltf.h>
 
 #include <algorithm>
@@ -397,26 +398,44 @@ TEST(MeshExport, SimplifyHalvesABlocksTrianglesAndStaysClosed) {
     EXPECT_NEAR(r.volume, plain.volume, 0.01 * plain.volume);
 }
 
-TEST(MeshExport, SimplificationThatBreaksTheSurfaceFallsBackToTheValidMesh) {
-    // A disc 1.3 voxels thick: an error of 0.3 units (10 voxels) collapses it
-    // to nothing, and so do 0.15 and 0.075 (at 0.01 already its two faces
-    // are pulled into non-manifold edges).
+TEST(MeshExport, SimplificationRemovesFoldsAndStopsWhereACollapseWouldBreakTheSurface) {
+    // A disc 1.3 voxels thick: meshoptimizer alone, at 0.01 units, leaves
+    // non-manifold edges, and at 0.3 (10 voxels) collapses it to nothing.
     const frep::Model plate = test::modelFromSource("q(x[3], a[1]) { q = (0.0004 - x[3]^2) & (0.5 - x[1]^2 - x[2]^2); }");
     TempDir dir;
     MeshExportOptions o;
     o.resolution = 64;
-    MeshExportReport plain, fallback;
+    MeshExportReport plain, simple;
     ASSERT_EQ(exportMesh(plate, cube(1), o, dir.file("plain.obj"), plain), "");
+    Mesh raw = readObj(dir.file("plain.obj")).mesh;
+    const float extent = meshopt_simplifyScale(raw.positions.data(), raw.vertexCount(), 12);
+    for (const double error : {0.01, 0.3}) {
+        std::vector<std::uint32_t> out(raw.indices.size());
+        out.resize(meshopt_simplify(out.data(), raw.indices.data(), raw.indices.size(), raw.positions.data(),
+                                    raw.vertexCount(), 12, 0, static_cast<float>(error) / extent, 0, nullptr));
+        Mesh m = raw;
+        m.indices = out;
+        EXPECT_FALSE(validateMesh(m).ok()) << "meshoptimizer alone breaks it at " << error;
+    }
+    // At 0.01 the breaks are folds (two triangles on the same vertices in
+    // opposite orders), which simplifyMesh removes: one pass, all the way.
     SimplifyStats s;
-    const MeshReport broken = validateMesh(simplifyMesh(readObj(dir.file("plain.obj")).mesh, 0.01, &s));
-    EXPECT_FALSE(broken.ok()) << "meshoptimizer does break this one";
+    const Mesh unfolded = simplifyMesh(raw, 0.01, &s);
+    EXPECT_TRUE(validateMesh(unfolded).ok()) << describe(validateMesh(unfolded));
+    EXPECT_FALSE(s.stoppedByTopology);
+    EXPECT_GE(s.passes, 1);
+    EXPECT_LT(s.trianglesAfter * 10, s.trianglesBefore) << s.trianglesAfter;
+    EXPECT_LE(s.error, 0.01);
+    // At 0.3 collapses that empty the disc must be stopped.
     o.simplifyError = 0.3;
-    ASSERT_EQ(exportMesh(plate, cube(1), o, dir.file("simple.obj"), fallback), "");
-    EXPECT_FALSE(fallback.simplified);
-    EXPECT_NE(fallback.simplifyNote.find("unsimplified mesh was written"), std::string::npos) << fallback.simplifyNote;
-    EXPECT_NE(describe(fallback, o).find("note: "), std::string::npos);
-    EXPECT_EQ(fallback.triangles, plain.triangles);
-    EXPECT_TRUE(validateMesh(readObj(dir.file("simple.obj")).mesh).ok());
+    ASSERT_EQ(exportMesh(plate, cube(1), o, dir.file("simple.obj"), simple), "");
+    EXPECT_TRUE(simple.simplified);
+    EXPECT_LT(simple.triangles * 4, plain.triangles) << simple.triangles << " of " << plain.triangles;
+    EXPECT_NE(simple.simplifyNote.find("stopped at"), std::string::npos) << simple.simplifyNote;
+    EXPECT_NE(describe(simple, o).find("note: "), std::string::npos);
+    const MeshReport r = validateMesh(readObj(dir.file("simple.obj")).mesh);
+    EXPECT_TRUE(r.ok()) << describe(r);
+    EXPECT_EQ(r.triangles, simple.triangles);
 }
 
 TEST(MeshExport, SimplifiedMeshKeepsVerticesAndNormalsOfTheOriginal) {
