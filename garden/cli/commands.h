@@ -85,7 +85,8 @@ struct ExportOptions {
     std::string sculpture;            // its name in the garden
     std::string output;               // .hf (.stl, .vdb, .obj, .glb: the mesh formats)
     int resolution = 0;               // mesh formats: voxels along the longest side (0: the grid's)
-    double mmPerUnit = 1.0;           // STL: millimetres per model unit
+    double mmPerUnit = 0.0;           // STL: millimetres per model unit (0: 1000 x the placement's metres per unit)
+    double simplifyError = 0.0;       // mesh formats: meshoptimizer's error bound, model units (0: none)
     bool ascii = false;               // STL: ASCII instead of binary
     std::vector<double> box;          // mesh formats: a model box instead of the sculpture's
     double memoryLimitMiB = 0.0;      // mesh formats: 0: 80% of available memory

@@ -8,10 +8,13 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include "garden/app/garden_session.h"
 #include "garden/cli/commands.h"
 #include "garden/cli/load_model.h"
+#include "garden/cli/progress_bar.h"
+#include "garden/export/export_file.h"
 #include "garden/export/hyperfun_export.h"
 #include "garden/session/journal.h"
 #include "garden/session/session_folder.h"
@@ -82,22 +85,26 @@ std::unique_ptr<GardenSession> openForExport(const std::string& input, int& stat
 }  // namespace
 
 int runExport(const ExportOptions& options) {
-    const std::string ext = lowerExtension(options.output);
-    if (ext == ".stl" || ext == ".vdb" || ext == ".obj" || ext == ".glb") {
-        std::cerr << "error: " << options.output << ": export to " << ext << " is not built yet (use .hf)\n";
-        return 2;
-    }
-    if (ext != ".hf") {
-        std::cerr << "error: " << options.output << ": unknown format '" << ext
-                  << "': the export writes .hf, .stl, .vdb, .obj or .glb\n";
+    if (!isExportExtension(options.output)) {
+        std::cerr << "error: " << options.output << ": unknown format '" << lowerExtension(options.output)
+                  << "': the export writes " << kExportExtensions << "\n";
         return 2;
     }
     if (options.resolution < 0) {
         std::cerr << "error: --res must be positive\n";
         return 2;
     }
+    if (options.mmPerUnit < 0.0 || options.simplifyError < 0.0 || options.memoryLimitMiB < 0.0) {
+        std::cerr << "error: --mm-per-unit, --simplify and --memory-limit must not be negative\n";
+        return 2;
+    }
+    ExportFileOptions fo;
+    if (!options.box.empty()) {
+        std::optional<frep::Box3> box;
+        if (!boxOption(options.box, box)) return 2;
+        fo.box = box;
+    }
     if (!outputWritable(options.output)) return 2;
-    const auto start = std::chrono::steady_clock::now();
     int status = 0;
     std::unique_ptr<GardenSession> session = openForExport(options.input, status);
     if (!session) return status;
@@ -114,20 +121,23 @@ int runExport(const ExportOptions& options) {
                   << (s.error.empty() || s.error.back() != '\n' ? "\n" : "");
         return 1;
     }
-    const HyperFunExport r = exportHyperFun(*session, index);
-    if (!r.error.empty()) {
-        std::cerr << "error: cannot export sculpture '" << s.name << "': " << r.error << "\n";
+    fo.resolution = options.resolution;
+    if (options.mmPerUnit > 0.0) fo.mmPerUnit = options.mmPerUnit;
+    fo.ascii = options.ascii;
+    fo.simplifyError = options.simplifyError;
+    fo.memoryLimitMiB = options.memoryLimitMiB;
+    ExportFileReport report;
+    std::string why;
+    {
+        ProgressBar bar("export " + s.name);
+        why = exportSculptureFile(*session, index, options.output, fo, report, [&](double f) { bar.update(f); });
+    }
+    if (!report.warning.empty()) std::cerr << "warning: " << report.warning << "\n";
+    if (!why.empty()) {
+        std::cerr << "error: " << why << (why.back() == '\n' ? "" : "\n");
         return 1;
     }
-    if (!r.warning.empty()) std::cerr << "warning: " << r.warning << "\n";
-    if (std::string why = writeHyperFunExport(r, options.output); !why.empty()) {
-        std::cerr << "error: " << why << "\n";
-        return 1;
-    }
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::cout << "wrote " << options.output << ": sculpture '" << s.name << "', " << r.edits << " edits ("
-              << r.pieces << " pieces), " << r.statements << " statements in my_model, " << r.text.size()
-              << " bytes, " << seconds << " s\n";
+    std::cout << report.summary << "\n";
     return 0;
 }
 

@@ -108,7 +108,8 @@ int main(int argc, char** argv) {
     exportCmd->add_option("--sculpture", exportOpts.sculpture, "The sculpture's name in the garden")->required();
     exportCmd->add_option("-o,--output", exportOpts.output, "Output file: .hf (.stl, .vdb, .obj, .glb: meshes)")->required();
     exportCmd->add_option("--res", exportOpts.resolution, "Meshes: voxels along the model box's longest side");
-    exportCmd->add_option("--mm-per-unit", exportOpts.mmPerUnit, "STL: millimetres per model unit (default 1)");
+    exportCmd->add_option("--mm-per-unit", exportOpts.mmPerUnit, "STL: millimetres per model unit (default: the sculpture's true size, 1000 x its metres per unit)");
+    exportCmd->add_option("--simplify", exportOpts.simplifyError, "Meshes: simplify within ERROR model units (meshoptimizer), validated again");
     exportCmd->add_flag("--ascii", exportOpts.ascii, "STL: ASCII instead of binary");
     exportCmd->add_option("--box", exportBox, "Meshes: model box x0,y0,z0,x1,y1,z1 (default: the sculpture's)");
     exportCmd->add_option("--memory-limit", exportOpts.memoryLimitMiB, "Meshes: MiB the work may use (default: 80% of available)");

@@ -7,6 +7,8 @@
 #include <sstream>
 
 #include "garden/export/hyperfun_export.h"
+#include "polygonizer/mesh_validation.h"
+#include "polygonizer/stl_io.h"
 #include "garden/session/open_session.h"
 #include "session_garden.h"
 #include "tests/cli_fixture.h"
@@ -61,8 +63,10 @@ TEST_F(ExportCliTest, BadInputGivesAClearErrorAndNoFile) {
         {g + " --sculpture nobody -o " + path("out.hf"), "no sculpture 'nobody'; its sculptures: 'a' 'b' 'c' 'lost' 'metamorphosis'"},
         {g + " --sculpture lost -o " + path("out.hf"), "sculpture 'lost' is missing"},
         {g + " --sculpture a -o " + path("out.xyz"), "unknown format '.xyz'"},
-        {g + " --sculpture a -o " + path("out.stl"), "export to .stl is not built yet"},
-        {g + " --sculpture a -o " + path("out.glb"), "export to .glb is not built yet"},
+        {g + " --sculpture a -o " + path("out.stl") + " --res 100000", "error:"},
+        {g + " --sculpture a -o " + path("out.stl") + " --res 1024 --memory-limit 1", "would fit"},
+        {g + " --sculpture a -o " + path("out.glb") + " --box 1,2,3", "error:"},
+        {g + " --sculpture a -o " + path("out.stl") + " --mm-per-unit -2", "must not be negative"},
         {g + " --sculpture a -o " + path("missing/out.hf"), "error:"},
         {path("g") + " --sculpture a -o " + path("out.hf"), "is not a session folder"},
         {path("none.json") + " --sculpture a -o " + path("out.hf"), "no such session folder or garden file"},
@@ -76,6 +80,47 @@ TEST_F(ExportCliTest, BadInputGivesAClearErrorAndNoFile) {
     }
     // Only the garden's folder is left: no temporary either.
     EXPECT_EQ(entries(), 1u);
+}
+
+
+// Meshes come from the exported FRep: an edited session's sculpture as STL
+// (at a resolution finer than its grid), OBJ, glTF and VDB; the STL is
+// closed and outward, in millimetres of the sculpture's true size, and the
+// carve shows as lost volume against the unedited sculpture's export.
+TEST_F(ExportCliTest, AnEditedSculptureIsMeshedFromItsExportedFRepInEveryFormat) {
+    const std::string gardenFile = test::writeSmallGarden(dir / "g");
+    const std::string folder = (dir / "session").string();
+    {
+        SessionSettings settings;
+        settings.maxLevel = 0;
+        OpenedSession o = openSession(folder, gardenFile, settings);
+        ASSERT_EQ(o.error, "");
+        const int a = o.session->findSculpture("a");
+        ASSERT_EQ(o.session->applyStroke(a, StrokeTool::Carve, {{-0.3, 1.0, -2.3094}, {0.3, 1.0, -2.3094}}, 0.1), "");
+    }
+    for (const char* ext : {"stl", "obj", "glb", "vdb"}) {
+        const ::hg::test::CommandRun r = ::hg::test::runHypergarden("export " + path("session") + " --sculpture a --res 64 -o " +
+                                                                    path(std::string("carved.") + ext));
+        ASSERT_EQ(r.status, 0) << ext << "\n" << r.output;
+        EXPECT_TRUE(exists(std::string("carved.") + ext)) << ext;
+    }
+    const ::hg::test::CommandRun plain =
+        ::hg::test::runHypergarden("export '" + gardenFile + "' --sculpture a --res 64 -o " + path("plain.stl"));
+    ASSERT_EQ(plain.status, 0) << plain.output;
+    const auto volumeOf = [&](const std::string& name) {
+        const poly::StlReadResult r = poly::readStl((dir / name).string());
+        EXPECT_EQ(r.error, "");
+        const poly::MeshReport m = poly::validateMesh(poly::weldByPosition(r.mesh));
+        EXPECT_TRUE(m.ok()) << name << "\n" << poly::describe(m);
+        // Millimetres at the sculpture's true size: the ball is 1 m across.
+        EXPECT_NEAR(m.boxMax[1] - m.boxMin[1], 1000.0, 40.0) << name;
+        return m.volume;
+    };
+    const double carved = volumeOf("carved.stl"), whole = volumeOf("plain.stl");
+    // A ball of radius 0.5 m; the groove (radius 0.1 m across its top) takes about 1.5%.
+    EXPECT_NEAR(whole, 4.0 / 3.0 * 3.14159265358979 * 0.125e9, 0.02 * whole);
+    EXPECT_LT(carved, whole * 0.995);
+    EXPECT_GT(carved, whole * 0.95);
 }
 
 }  // namespace

@@ -1,0 +1,90 @@
+#include "garden/export/export_file.h"
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <sstream>
+
+#include "frep/diagnostics.h"
+#include "frep/parser.h"
+#include "garden/app/garden_session.h"
+#include "garden/export/hyperfun_export.h"
+#include "garden/scene/model_file.h"
+#include "polygonizer/mesh_export.h"
+
+namespace hg::garden {
+
+namespace {
+
+std::string lowerExtension(const std::string& path) {
+    std::string e = std::filesystem::path(path).extension().string();
+    std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return e;
+}
+
+}  // namespace
+
+bool isExportExtension(const std::string& path) {
+    const std::string e = lowerExtension(path);
+    return e == ".hf" || e == ".stl" || e == ".obj" || e == ".glb" || e == ".vdb";
+}
+
+std::string exportSculptureFile(const GardenSession& session, int index, const std::string& path,
+                                const ExportFileOptions& options, ExportFileReport& report,
+                                const std::function<void(double)>& progress) {
+    report = {};
+    if (!isExportExtension(path))
+        return path + ": unknown format '" + lowerExtension(path) + "': the export writes " + kExportExtensions;
+    if (index < 0 || static_cast<std::size_t>(index) >= session.sculptures().size())
+        return "no sculpture with index " + std::to_string(index);
+    const Sculpture& s = session.sculptures()[static_cast<std::size_t>(index)];
+    if (s.missing()) return "sculpture '" + s.name + "' is missing: " + s.error;
+    if (options.resolution < 0) return "the resolution must be positive";
+    const auto start = std::chrono::steady_clock::now();
+    const HyperFunExport hf = exportHyperFun(session, index);
+    if (!hf.error.empty()) return "cannot export sculpture '" + s.name + "': " + hf.error;
+    report.warning = hf.warning;
+    std::ostringstream out;
+    if (lowerExtension(path) == ".hf") {
+        if (std::string why = writeHyperFunExport(hf, path); !why.empty()) return why;
+        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        out << "wrote " << path << ": sculpture '" << s.name << "', " << hf.edits << " edits (" << hf.pieces
+            << " pieces), " << hf.statements << " statements in my_model, " << hf.text.size() << " bytes, " << seconds
+            << " s";
+        report.summary = out.str();
+        return "";
+    }
+    // A mesh is made from the exported FRep itself, not from the grid, so it
+    // can be finer than the grid the sculpture was edited at and is the very
+    // solid the .hf file describes.
+    frep::ParseResult parsed = frep::parseProgram(hf.text, s.name + ".hf");
+    if (!parsed.ok()) {
+        std::string why = "the exported HyperFun of '" + s.name + "' does not parse (a bug):\n";
+        for (const auto& d : parsed.errors) why += frep::formatDiagnostic(d);
+        return why;
+    }
+    auto program = std::make_shared<const frep::Program>(std::move(*parsed.program));
+    std::string why;
+    const int body = findBodyOrExplain(*program, "my_model", s.name + ".hf", why);
+    if (body < 0) return why;
+    const frep::Model model(program, body, {});
+    if (!s.volume) return "sculpture '" + s.name + "' has no grid to take its model box from";
+    const frep::Box3 box = options.box ? *options.box : s.volume->frame.modelBox;
+    poly::MeshExportOptions mo;
+    mo.resolution = options.resolution > 0 ? options.resolution : s.volume->frame.resolution;
+    mo.ascii = options.ascii;
+    mo.metresPerUnit = s.scale;
+    // A sculpture's true size unless the user asks for another scale.
+    mo.mmPerUnit = options.mmPerUnit ? *options.mmPerUnit : 1000.0 * s.scale;
+    mo.simplifyError = options.simplifyError;
+    mo.memoryLimitMiB = static_cast<std::uint64_t>(std::max(0.0, options.memoryLimitMiB));
+    poly::MeshExportReport mr;
+    if (std::string e = poly::exportMesh(model, box, mo, path, mr, progress); !e.empty()) return e;
+    out << "wrote " << path << ": sculpture '" << s.name << "', " << hf.edits << " edits\n"
+        << poly::describe(mr, mo);
+    report.summary = out.str();
+    while (!report.summary.empty() && report.summary.back() == '\n') report.summary.pop_back();
+    return "";
+}
+
+}  // namespace hg::garden

@@ -1,0 +1,44 @@
+// One sculpture of a running garden written to a file in any export format
+// (DESIGN §7, docs/export.md): exact HyperFun (.hf), or a mesh meshed from
+// that exported FRep (.stl, .obj, .glb, .vdb: polygonizer/mesh_export.h), so
+// every format shows the same solid. The command line (`hypergarden
+// export`) and the desktop panel's Export button both call this.
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <string>
+
+#include "frep/box.h"
+
+namespace hg::garden {
+
+class GardenSession;
+
+struct ExportFileOptions {
+    int resolution = 0;          // mesh formats: voxels along the longest side (0: the sculpture's grid)
+    std::optional<double> mmPerUnit;  // STL: millimetres per model unit (none: the placement's, 1000 x metres per unit)
+    bool ascii = false;          // STL: ASCII instead of binary
+    std::optional<frep::Box3> box;  // mesh formats: a model box instead of the sculpture's
+    double simplifyError = 0.0;  // mesh formats but .vdb: meshoptimizer's error bound, model units (0: none)
+    double memoryLimitMiB = 0.0; // mesh formats: 0: what the machine has free
+};
+
+// What was written, in words for a terminal or the panel.
+struct ExportFileReport {
+    std::string summary;  // "wrote PATH: ...", one line
+    std::string warning;  // set when something is worth saying beside it
+};
+
+// Writes sculpture `index` of `session` to `path`, the format by its
+// extension. "" on success, else why not (nothing is left at `path`).
+// `progress` gets fractions 0..1 while a mesh is made.
+std::string exportSculptureFile(const GardenSession& session, int index, const std::string& path,
+                                const ExportFileOptions& options, ExportFileReport& report,
+                                const std::function<void(double)>& progress = {});
+
+// The formats by extension, for error messages and the panel.
+constexpr const char* kExportExtensions = ".hf, .stl, .obj, .glb or .vdb";
+bool isExportExtension(const std::string& path);
+
+}  // namespace hg::garden
