@@ -14,6 +14,7 @@
 
 #include "garden/app/garden_session.h"
 #include "garden/desktop/desktop_keys.h"
+#include "garden/desktop/export_panel.h"
 #include "garden/desktop/garden_view.h"
 #include "garden/hands/desktop_hands.h"
 #include "garden/render/gl_context.h"
@@ -131,6 +132,8 @@ int runDesktopGarden(const DesktopOptions& options) {
             for (const std::string& n : opened.notes) std::cerr << "note: " << n << "\n";
         }
         GardenSession& session = *opened.session;
+        // Exports go next to the session, or into the working folder without one.
+        ExportPanel exportPanel(options.session);
         for (const Sculpture& s : session.sculptures())
             if (s.missing()) std::cerr << "warning: sculpture '" << s.name << "' is missing: " << s.error << "\n";
 
@@ -210,6 +213,9 @@ int runDesktopGarden(const DesktopOptions& options) {
             }
             overlay.newFrame();
             gardenPanel(session, selector);
+            ImGui::Begin("Garden");  // the same window: its Export section
+            exportPanel.draw(session);
+            ImGui::End();
             drawToolPanel(session);
             drawStatsPanel(session.scheduler().history());
             overlay.render();

@@ -29,9 +29,8 @@ bool isExportExtension(const std::string& path) {
     return e == ".hf" || e == ".stl" || e == ".obj" || e == ".glb" || e == ".vdb";
 }
 
-std::string exportSculptureFile(const GardenSession& session, int index, const std::string& path,
-                                const ExportFileOptions& options, ExportFileReport& report,
-                                const std::function<void(double)>& progress) {
+std::string prepareExport(const GardenSession& session, int index, const std::string& path,
+                          const ExportFileOptions& options, ExportJob& job, ExportFileReport& report) {
     report = {};
     if (!isExportExtension(path))
         return path + ": unknown format '" + lowerExtension(path) + "': the export writes " + kExportExtensions;
@@ -40,51 +39,78 @@ std::string exportSculptureFile(const GardenSession& session, int index, const s
     const Sculpture& s = session.sculptures()[static_cast<std::size_t>(index)];
     if (s.missing()) return "sculpture '" + s.name + "' is missing: " + s.error;
     if (options.resolution < 0) return "the resolution must be positive";
-    const auto start = std::chrono::steady_clock::now();
-    const HyperFunExport hf = exportHyperFun(session, index);
+    if (!s.volume) return "sculpture '" + s.name + "' has no grid to take its model box from";
+    HyperFunExport hf = exportHyperFun(session, index);
     if (!hf.error.empty()) return "cannot export sculpture '" + s.name + "': " + hf.error;
     report.warning = hf.warning;
+    job.path = path;
+    job.sculpture = s.name;
+    job.hyperFun = std::move(hf.text);
+    job.edits = hf.edits;
+    job.pieces = hf.pieces;
+    job.statements = hf.statements;
+    job.box = options.box ? *options.box : s.volume->frame.modelBox;
+    job.gridResolution = s.volume->frame.resolution;
+    job.metresPerUnit = s.scale;
+    job.options = options;
+    return "";
+}
+
+std::string writeExport(const ExportJob& job, ExportFileReport& report, const std::function<void(double)>& progress) {
+    const auto start = std::chrono::steady_clock::now();
     std::ostringstream out;
-    if (lowerExtension(path) == ".hf") {
-        if (std::string why = writeHyperFunExport(hf, path); !why.empty()) return why;
+    if (lowerExtension(job.path) == ".hf") {
+        HyperFunExport hf;
+        hf.text = job.hyperFun;
+        if (std::string why = writeHyperFunExport(hf, job.path); !why.empty()) return why;
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        out << "wrote " << path << ": sculpture '" << s.name << "', " << hf.edits << " edits (" << hf.pieces
-            << " pieces), " << hf.statements << " statements in my_model, " << hf.text.size() << " bytes, " << seconds
-            << " s";
+        out << "wrote " << job.path << ": sculpture '" << job.sculpture << "', " << job.edits << " edits ("
+            << job.pieces << " pieces), " << job.statements << " statements in my_model, " << job.hyperFun.size()
+            << " bytes, " << seconds << " s";
         report.summary = out.str();
         return "";
     }
     // A mesh is made from the exported FRep itself, not from the grid, so it
     // can be finer than the grid the sculpture was edited at and is the very
     // solid the .hf file describes.
-    frep::ParseResult parsed = frep::parseProgram(hf.text, s.name + ".hf");
+    frep::ParseResult parsed = frep::parseProgram(job.hyperFun, job.sculpture + ".hf");
     if (!parsed.ok()) {
-        std::string why = "the exported HyperFun of '" + s.name + "' does not parse (a bug):\n";
+        std::string why = "the exported HyperFun of '" + job.sculpture + "' does not parse (a bug):\n";
         for (const auto& d : parsed.errors) why += frep::formatDiagnostic(d);
         return why;
     }
     auto program = std::make_shared<const frep::Program>(std::move(*parsed.program));
     std::string why;
-    const int body = findBodyOrExplain(*program, "my_model", s.name + ".hf", why);
+    const int body = findBodyOrExplain(*program, "my_model", job.sculpture + ".hf", why);
     if (body < 0) return why;
     const frep::Model model(program, body, {});
-    if (!s.volume) return "sculpture '" + s.name + "' has no grid to take its model box from";
-    const frep::Box3 box = options.box ? *options.box : s.volume->frame.modelBox;
+    const ExportFileOptions& o = job.options;
     poly::MeshExportOptions mo;
-    mo.resolution = options.resolution > 0 ? options.resolution : s.volume->frame.resolution;
-    mo.ascii = options.ascii;
-    mo.metresPerUnit = s.scale;
+    mo.resolution = o.resolution > 0 ? o.resolution : job.gridResolution;
+    mo.ascii = o.ascii;
+    mo.metresPerUnit = job.metresPerUnit;
     // A sculpture's true size unless the user asks for another scale.
-    mo.mmPerUnit = options.mmPerUnit ? *options.mmPerUnit : 1000.0 * s.scale;
-    mo.simplifyError = options.simplifyError;
-    mo.memoryLimitMiB = static_cast<std::uint64_t>(std::max(0.0, options.memoryLimitMiB));
+    mo.mmPerUnit = o.mmPerUnit ? *o.mmPerUnit : 1000.0 * job.metresPerUnit;
+    mo.simplifyError = o.simplifyError;
+    mo.memoryLimitMiB = static_cast<std::uint64_t>(std::max(0.0, o.memoryLimitMiB));
     poly::MeshExportReport mr;
-    if (std::string e = poly::exportMesh(model, box, mo, path, mr, progress); !e.empty()) return e;
-    out << "wrote " << path << ": sculpture '" << s.name << "', " << hf.edits << " edits\n"
+    if (std::string e = poly::exportMesh(model, job.box, mo, job.path, mr, progress); !e.empty()) return e;
+    out << "wrote " << job.path << ": sculpture '" << job.sculpture << "', " << job.edits << " edits\n"
         << poly::describe(mr, mo);
     report.summary = out.str();
     while (!report.summary.empty() && report.summary.back() == '\n') report.summary.pop_back();
     return "";
+}
+
+std::string exportSculptureFile(const GardenSession& session, int index, const std::string& path,
+                                const ExportFileOptions& options, ExportFileReport& report,
+                                const std::function<void(double)>& progress) {
+    ExportJob job;
+    if (std::string why = prepareExport(session, index, path, options, job, report); !why.empty()) return why;
+    const std::string warning = report.warning;
+    std::string why = writeExport(job, report, progress);
+    report.warning = warning;
+    return why;
 }
 
 }  // namespace hg::garden

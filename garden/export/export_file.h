@@ -5,6 +5,7 @@
 // export`) and the desktop panel's Export button both call this.
 #pragma once
 
+#include <cstddef>
 #include <functional>
 #include <optional>
 #include <string>
@@ -30,8 +31,28 @@ struct ExportFileReport {
     std::string warning;  // set when something is worth saying beside it
 };
 
+// An export taken from the session (on the thread that owns it) and
+// written later, on any thread: the desktop meshes in the background while
+// the garden goes on.
+struct ExportJob {
+    std::string path;
+    std::string sculpture;    // its name
+    std::string hyperFun;     // the exported program (exportHyperFun)
+    std::size_t edits = 0, pieces = 0, statements = 0;
+    frep::Box3 box;           // model box to mesh over
+    int gridResolution = 0;   // the sculpture's grid
+    double metresPerUnit = 1.0;
+    ExportFileOptions options;
+};
+// "" and the job, or why not (nothing is written yet).
+std::string prepareExport(const GardenSession& session, int index, const std::string& path,
+                          const ExportFileOptions& options, ExportJob& job, ExportFileReport& report);
+// Writes a prepared job. "" on success, else why not (no file is left).
+std::string writeExport(const ExportJob& job, ExportFileReport& report,
+                        const std::function<void(double)>& progress = {});
+
 // Writes sculpture `index` of `session` to `path`, the format by its
-// extension. "" on success, else why not (nothing is left at `path`).
+// extension (prepareExport then writeExport). "" on success, else why not (nothing is left at `path`).
 // `progress` gets fractions 0..1 while a mesh is made.
 std::string exportSculptureFile(const GardenSession& session, int index, const std::string& path,
                                 const ExportFileOptions& options, ExportFileReport& report,

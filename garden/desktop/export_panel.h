@@ -1,0 +1,45 @@
+// The desktop's Export panel (DESIGN §7): the selected sculpture written
+// next to the session (or the working folder without one) in the format
+// picked. HyperFun is written at once; meshes are made on a worker thread
+// from the exported FRep while the garden goes on, with a progress bar.
+#pragma once
+
+#include <atomic>
+#include <future>
+#include <memory>
+#include <string>
+
+namespace hg::garden {
+
+class GardenSession;
+
+class ExportPanel {
+public:
+    // `folder`: where exports go (an `exports/` folder is made in it).
+    explicit ExportPanel(std::string folder);
+    ~ExportPanel();  // waits for an export under way
+    ExportPanel(const ExportPanel&) = delete;
+    ExportPanel& operator=(const ExportPanel&) = delete;
+
+    // ImGui calls for one frame; the session is read only when the button is pressed.
+    void draw(const GardenSession& session);
+    // Starts exporting sculpture `index` as `extension` (".hf", ".stl", ...)
+    // at `resolution` (0: the grid's); false (and status() says why) when it
+    // cannot start. The path is exports/NAME-TIME.EXT in the folder.
+    bool start(const GardenSession& session, int index, const std::string& extension, int resolution);
+    bool busy() const;
+    // The last export's outcome ("" before any); collects a finished worker.
+    const std::string& status();
+    const std::string& lastPath() const { return lastPath_; }
+
+private:
+    struct Work;
+    std::string folder_;
+    std::string status_;
+    std::string lastPath_;
+    int format_ = 0;
+    int resolution_ = 0;
+    std::unique_ptr<Work> work_;
+};
+
+}  // namespace hg::garden

@@ -1,0 +1,78 @@
+// The desktop's Export panel: the selected sculpture written next to the
+// session, HyperFun at once and a mesh on a worker thread while the garden
+// goes on; refusals say why and write nothing.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+#include "garden/app/garden_session.h"
+#include "garden/desktop/export_panel.h"
+#include "garden/export/hyperfun_export.h"
+#include "polygonizer/mesh_validation.h"
+#include "polygonizer/stl_io.h"
+#include "tests/garden/session_garden.h"
+
+namespace hg::garden {
+namespace {
+
+class ExportPanelTest : public test::SmallGarden {
+protected:
+    std::unique_ptr<GardenSession> open() {
+        SessionSettings settings;
+        settings.maxLevel = 0;
+        return std::make_unique<GardenSession>(loadGarden(writeGarden()), settings);
+    }
+    static void finish(ExportPanel& panel) {
+        const auto giveUp = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+        while (panel.busy() && std::chrono::steady_clock::now() < giveUp)
+            std::this_thread::sleep_for(std::chrono::milliseconds(5));
+        ASSERT_FALSE(panel.busy());
+    }
+    static std::string read(const std::string& path) {
+        std::ifstream in(path, std::ios::binary);
+        std::stringstream s;
+        s << in.rdbuf();
+        return s.str();
+    }
+};
+
+TEST_F(ExportPanelTest, TheSelectedSculptureIsWrittenNextToTheSessionInThePickedFormat) {
+    auto session = open();
+    const int c = session->findSculpture("c");
+    ASSERT_EQ(session->applyStroke(c, StrokeTool::Carve, {{1.7, 0.9, 1.5}, {2.3, 0.9, 1.5}}, 0.1), "");
+    ExportPanel panel((dir / "session").string());
+
+    ASSERT_TRUE(panel.start(*session, c, ".hf", 0)) << panel.status();
+    finish(panel);
+    EXPECT_EQ(panel.status().rfind("wrote ", 0), 0u) << panel.status();
+    const std::filesystem::path hf = panel.lastPath();
+    EXPECT_EQ(hf.parent_path(), dir / "session" / "exports");
+    EXPECT_EQ(read(hf.string()), exportHyperFun(*session, c).text);
+
+    ASSERT_TRUE(panel.start(*session, c, ".stl", 48)) << panel.status();
+    // The garden goes on while the mesh is made: the session is not read again.
+    ASSERT_EQ(session->applyStroke(c, StrokeTool::Add, {{1.7, 0.3, 1.5}, {2.3, 0.3, 1.5}}, 0.1), "");
+    finish(panel);
+    EXPECT_EQ(panel.status().rfind("wrote ", 0), 0u) << panel.status();
+    const poly::StlReadResult stl = poly::readStl(panel.lastPath());
+    ASSERT_EQ(stl.error, "");
+    EXPECT_TRUE(poly::validateMesh(poly::weldByPosition(stl.mesh)).ok());
+}
+
+TEST_F(ExportPanelTest, WithoutASelectionOrWithAMissingSculptureNothingIsWritten) {
+    auto session = open();
+    ExportPanel panel((dir / "session").string());
+    EXPECT_FALSE(panel.start(*session, -1, ".stl", 0));
+    EXPECT_NE(panel.status().find("select a sculpture"), std::string::npos) << panel.status();
+    EXPECT_FALSE(panel.start(*session, session->findSculpture("lost"), ".hf", 0));
+    EXPECT_NE(panel.status().find("missing"), std::string::npos) << panel.status();
+    const std::filesystem::path exports = dir / "session" / "exports";
+    EXPECT_TRUE(!std::filesystem::exists(exports) || std::filesystem::is_empty(exports));
+}
+
+}  // namespace
+}  // namespace hg::garden
