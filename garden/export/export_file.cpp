@@ -40,6 +40,7 @@ std::string prepareExport(const GardenSession& session, int index, const std::st
     if (s.missing()) return "sculpture '" + s.name + "' is missing: " + s.error;
     if (options.resolution < 0) return "the resolution must be positive";
     if (!s.volume) return "sculpture '" + s.name + "' has no grid to take its model box from";
+    const auto start = std::chrono::steady_clock::now();
     HyperFunExport hf = exportHyperFun(session, index);
     if (!hf.error.empty()) return "cannot export sculpture '" + s.name + "': " + hf.error;
     report.warning = hf.warning;
@@ -53,6 +54,7 @@ std::string prepareExport(const GardenSession& session, int index, const std::st
     job.gridResolution = s.volume->frame.resolution;
     job.metresPerUnit = s.scale;
     job.options = options;
+    job.prepareSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return "";
 }
 
@@ -63,7 +65,8 @@ std::string writeExport(const ExportJob& job, ExportFileReport& report, const st
         HyperFunExport hf;
         hf.text = job.hyperFun;
         if (std::string why = writeHyperFunExport(hf, job.path); !why.empty()) return why;
-        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        const double seconds =
+            job.prepareSeconds + std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         out << "wrote " << job.path << ": sculpture '" << job.sculpture << "', " << job.edits << " edits ("
             << job.pieces << " pieces), " << job.statements << " statements in my_model, " << job.hyperFun.size()
             << " bytes, " << seconds << " s";

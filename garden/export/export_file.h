@@ -43,6 +43,7 @@ struct ExportJob {
     int gridResolution = 0;   // the sculpture's grid
     double metresPerUnit = 1.0;
     ExportFileOptions options;
+    double prepareSeconds = 0.0;  // taking the HyperFun text from the session
 };
 // "" and the job, or why not (nothing is written yet).
 std::string prepareExport(const GardenSession& session, int index, const std::string& path,
