@@ -80,7 +80,7 @@ std::string exportVdb(const frep::Model& model, const frep::Box3& box, const Mes
     const MeshReport r = validateMesh(mesh);
     fillGeometry(r, report);
     report.triangles = report.vertices = 0;
-    if (std::string why = voxel::writeLevelSet(*v.volume, path); !why.empty()) return why;
+    if (std::string why = voxel::writeLevelSet(*v.volume, path, options.metresPerUnit); !why.empty()) return why;
     if (progress) progress(1.0);
     return "";
 }

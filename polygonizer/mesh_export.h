@@ -6,7 +6,7 @@
 //   .obj  Wavefront OBJ with vertex normals, metres: times metresPerUnit
 //   .glb  glTF 2.0 binary with normals, metres: times metresPerUnit
 //   .vdb  the narrow-band level set in OpenVDB's convention (negative inside,
-//         signed distance in model units, class level set) with our
+//         signed distance in metres: times metresPerUnit, class level set) with our
 //         metadata (voxel/vdb_io.h's writeLevelSet)
 //
 // Meshes come from the tiled export mesher (tiled_mesher.h) at any

@@ -101,7 +101,7 @@ std::string writeVolume(const Volume& volume, const std::string& path) {
     return writeGrid(grid, path);
 }
 
-std::string writeLevelSet(const Volume& volume, const std::string& path) {
+std::string writeLevelSet(const Volume& volume, const std::string& path, double metresPerUnit) {
     // Our values are f scaled to about one unit per voxel, not distances;
     // other tools expect a signed distance field. Flip the sign and scale
     // to model units, then turn it into true distances.
@@ -123,7 +123,15 @@ std::string writeLevelSet(const Volume& volume, const std::string& path) {
     }
     grid->setName(flipped->getName());
     addMetadata(*grid, volume);
-    grid->insertMeta(meta::kSign, openvdb::StringMetadata("negative inside (OpenVDB level set); signed distance in model units"));
+    if (metresPerUnit > 0.0) {
+        const float m = static_cast<float>(metresPerUnit);
+        for (auto it = grid->tree().beginValueAll(); it; ++it) it.setValue(*it * m);
+        grid->tree().root().setBackground(grid->background() * m, false);
+        grid->transform().postScale(metresPerUnit);
+        grid->insertMeta(meta::kSign, openvdb::StringMetadata("negative inside (OpenVDB level set); signed distance in metres"));
+    } else {
+        grid->insertMeta(meta::kSign, openvdb::StringMetadata("negative inside (OpenVDB level set); signed distance in model units"));
+    }
     grid->setGridClass(openvdb::GRID_LEVEL_SET);
     return writeGrid(grid, path);
 }

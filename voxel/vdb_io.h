@@ -33,7 +33,10 @@ constexpr const char* kIndexMax = "hypergarden.index_max";
 
 // "" on success, otherwise what went wrong (with the path).
 std::string writeVolume(const Volume& volume, const std::string& path);
-std::string writeLevelSet(const Volume& volume, const std::string& path);
+// The level set for other tools: negative inside, signed distances; in
+// model units, or in metres with the sculpture's metres per model unit
+// (values and transform scaled alike).
+std::string writeLevelSet(const Volume& volume, const std::string& path, double metresPerUnit = 0.0);
 
 // Reads the grid named `gridName` ("" : the first Hypergarden grid in the
 // file). "" on success.

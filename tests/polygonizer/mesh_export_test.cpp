@@ -376,6 +376,19 @@ TEST(MeshExport, VdbIsALevelSetNegativeInsideWithOurMetadata) {
     EXPECT_NEAR(grid->tree().getValue(centreOffSurface), -0.05, 0.02);
     const openvdb::Coord outside = grid->transform().worldToIndexNodeCentered(openvdb::Vec3d(0.85, 0, 0));
     EXPECT_NEAR(grid->tree().getValue(outside), 0.05, 0.02);
+
+    // In metres: a sculpture placed at 2 m per model unit is twice as large
+    // in the file, its distances too.
+    o.metresPerUnit = 2.0;
+    ASSERT_EQ(exportMesh(sphere, cube(1), o, dir.file("m.vdb"), report), "");
+    openvdb::io::File metres(dir.file("m.vdb"));
+    metres.open();
+    auto big = openvdb::gridPtrCast<openvdb::FloatGrid>((*metres.getGrids())[0]);
+    metres.close();
+    ASSERT_TRUE(big);
+    EXPECT_NE(big->metaValue<std::string>("hypergarden.sign").find("metres"), std::string::npos);
+    EXPECT_NEAR(big->tree().getValue(big->transform().worldToIndexNodeCentered(openvdb::Vec3d(1.5, 0, 0))), -0.1, 0.04);
+    EXPECT_NEAR(big->tree().getValue(big->transform().worldToIndexNodeCentered(openvdb::Vec3d(1.7, 0, 0))), 0.1, 0.04);
 }
 
 TEST(MeshExport, SimplifyHalvesABlocksTrianglesAndStaysClosed) {
