@@ -13,6 +13,7 @@
 #include "garden/session/open_session.h"
 #include "xr/controllers.h"
 #include "xr/hand_panel.h"
+#include "xr/hand_panel_ui.h"
 #include "xr/headset.h"
 #include "xr/stage_rig.h"
 #include "xr/tool_stick.h"
@@ -220,8 +221,11 @@ private:
         garden::Hands world = rig().toWorld(stage);
         world.look.x = turning_.apply(world, periodMs > 0.0 ? periodMs / 1000.0 : 1.0 / 90.0);
         panel_.place(world.navigation, scale_);
-        if (const auto pressed = panel_.update(world.tool)) press(*pressed);
-        if (panel_.pointing()) world.tool.trigger = 0.0f;  // the trigger is the panel's
+        panel_.update(world.tool);
+        // Every frame, shown or not, so ImGui knows the panel's window
+        // before the first pull on it.
+        panelUi_.update(session_, panel_, info_.interactionProfile, static_cast<float>(periodMs / 1000.0));
+        if (panel_.ownsTrigger()) world.tool.trigger = 0.0f;  // the trigger is the panel's
         // The tool stick reshapes the tool; the navigator must not fly with it.
         adjustTool(session_.tool(), world.tool.thumbstick, periodMs > 0.0 ? periodMs / 1000.0 : 1.0 / 90.0);
         world.tool.thumbstick = glm::vec2(0.0f);
@@ -246,7 +250,7 @@ private:
                 const garden::Pose eyePose = poseOf(v.pose, heightOffset());
                 view_.render(session_, glm::ivec2(images.width, images.height), r.viewOf(eyePose), projectionOf(v.fov),
                              r.toWorld(eyePose.position));
-                drawPanel(world.tool);
+                drawPanel(world.tool, projectionOf(v.fov) * r.viewOf(eyePose));
                 if (eye == 0 && options_.mirror) mirror(target, images);
                 glBindFramebuffer(GL_FRAMEBUFFER, 0);
                 headset_.releaseEye(eye);
@@ -264,48 +268,13 @@ private:
         if (options_.mirror) window_.swapBuffers();
     }
 
-    void press(PanelButton b) {
-        using Kind = garden::ToolSettings::Kind;
-        Kind& kind = session_.tool().kind;
-        switch (b) {
-            case PanelButton::ToolNone: kind = Kind::None; break;
-            case PanelButton::Carve: kind = Kind::Carve; break;
-            case PanelButton::Add: kind = Kind::Add; break;
-            case PanelButton::Melt: kind = Kind::Melt; break;
-            case PanelButton::Perturb: kind = Kind::Perturb; break;
-            case PanelButton::Impacts: kind = Kind::Impacts; break;
-            case PanelButton::Undo: session_.undo(); break;
-            case PanelButton::Redo: session_.redo(); break;
-            case PanelButton::Count: break;
-        }
-    }
-
-    PanelButton selectedTool() const {
-        switch (session_.tool().kind) {
-            case garden::ToolSettings::Kind::None: return PanelButton::ToolNone;
-            case garden::ToolSettings::Kind::Carve: return PanelButton::Carve;
-            case garden::ToolSettings::Kind::Add: return PanelButton::Add;
-            case garden::ToolSettings::Kind::Melt: return PanelButton::Melt;
-            case garden::ToolSettings::Kind::Perturb: return PanelButton::Perturb;
-            case garden::ToolSettings::Kind::Impacts: return PanelButton::Impacts;
-        }
-        return PanelButton::ToolNone;
-    }
-
-    // The panel's buttons (the chosen tool crossed, the pointed one cyan)
-    // and the tool hand's ray onto it, over the scene.
-    void drawPanel(const garden::HandState& tool) {
+    // The panel's board and the tool hand's ray onto it, over the scene.
+    void drawPanel(const garden::HandState& tool, const glm::mat4& viewProjection) {
         if (!panel_.shown()) return;
-        for (int i = 0; i < kPanelButtons; ++i) {
-            const auto b = static_cast<PanelButton>(i);
-            const std::vector<glm::vec3> o = panel_.outline(b);
-            const glm::vec4 c = panel_.hovered() == b ? glm::vec4(0.2f, 1.0f, 1.0f, 1.0f) : HandPanel::colorOf(b);
-            renderer_.drawLines(o, c, garden::LineMode::Loop, false);
-            if (b == selectedTool()) renderer_.drawLines({o[0], o[2], o[1], o[3]}, c, garden::LineMode::Segments, false);
-        }
-        if (panel_.pointing() && tool.tracked)
-            renderer_.drawLines({tool.aim.position, tool.aim.position + tool.aim.forward() * 0.5f * scale_},
-                                glm::vec4(1.0f), garden::LineMode::Segments, true);
+        panelUi_.draw(panel_, viewProjection);
+        if (panel_.hovered() && tool.tracked)
+            renderer_.drawLines({tool.aim.position, panel_.at(*panel_.hovered())}, glm::vec4(1.0f),
+                                garden::LineMode::Segments, false);
     }
 
     // Over the mirror: what the headset runs, and the frame statistics.
@@ -346,6 +315,7 @@ private:
     std::array<EyeTarget, 2> targets_;
     WorldGrab grab_;
     HandPanel panel_;
+    HandPanelUi panelUi_;
     Turning turning_;
     float scale_ = 1.0f;
     glm::vec3 startEye_{0.0f};
