@@ -33,6 +33,8 @@ constexpr float kMorphX = 300.0f, kMorphSide = 120.0f;
 // triangle's labels take a line above and below it.
 constexpr float kFontLine = 13.0f;
 constexpr float kFieldWidth = 150.0f;
+constexpr float kTogglesY = kPanelPixelsY - 62.0f, kToggleStep = 130.0f;
+constexpr float kCheckBox = kFontLine + 6.0f;  // the font and ImGui's frame padding (3) above and below
 
 constexpr const char* kLabels[] = {"morph", "carve", "add", "melt", "perturb", "impacts", "undo", "redo"};
 
@@ -115,6 +117,11 @@ glm::vec2 panelMorphPoint(const glm::vec3& weights) {
     return garden::triangleToScreen(l, garden::trianglePoint(weights)) / glm::vec2(kPanelPixelsX, kPanelPixelsY);
 }
 
+glm::vec2 panelToggleCenter(PanelToggle t) {
+    const glm::vec2 c(kButtonInset + static_cast<float>(t) * kToggleStep + 0.5f * kCheckBox, kTogglesY + 0.5f * kCheckBox);
+    return c / glm::vec2(kPanelPixelsX, kPanelPixelsY);
+}
+
 struct HandPanelUi::Gl {
     garden::gl::Texture texture = garden::gl::Texture::create();
     garden::gl::Framebuffer fbo = garden::gl::Framebuffer::create();
@@ -146,7 +153,9 @@ private:
 HandPanelUi::HandPanelUi() : gl_(std::make_unique<Gl>()) {
     glBindTexture(GL_TEXTURE_2D, gl_->texture.get());
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, kPanelPixelsX, kPanelPixelsY, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glGenerateMipmap(GL_TEXTURE_2D);
+    // Mipmapped: seen from arm's length the text is smaller than its pixels.
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
@@ -193,7 +202,8 @@ HandPanelUi::~HandPanelUi() {
     ImGui::SetCurrentContext(before == context_ ? nullptr : before);
 }
 
-void HandPanelUi::update(garden::GardenSession& session, const HandPanel& panel, const std::string& profile, float dt) {
+bool HandPanelUi::update(garden::GardenSession& session, const HandPanel& panel, const std::string& profile,
+                         XrUserSettings& user, float dt) {
     ContextScope scope(context_);
     ImGuiIO& io = ImGui::GetIO();
     io.DeltaTime = dt > 0.0f ? dt : 1.0f / 90.0f;
@@ -245,6 +255,12 @@ void HandPanelUi::update(garden::GardenSession& session, const HandPanel& panel,
         ImGui::TextDisabled("no morph in this garden");
     }
 
+    bool changed = false;
+    ImGui::SetCursorPos(ImVec2(kButtonInset, kTogglesY));
+    changed |= ImGui::Checkbox("left-handed", &user.leftHanded);
+    ImGui::SetCursorPos(ImVec2(kButtonInset + kToggleStep, kTogglesY));
+    changed |= ImGui::Checkbox("seated", &user.seated);
+
     ImGui::SetCursorPos(ImVec2(kButtonInset, kPanelPixelsY - kFontLine - 8.0f));
     ImGui::TextDisabled("%s", profile.empty() ? "no interaction profile yet" : profile.c_str());
     ImGui::End();
@@ -258,6 +274,10 @@ void HandPanelUi::update(garden::GardenSession& session, const HandPanel& panel,
     glClear(GL_COLOR_BUFFER_BIT);
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
     glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(framebufferBefore));
+    glBindTexture(GL_TEXTURE_2D, gl_->texture.get());
+    glGenerateMipmap(GL_TEXTURE_2D);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    return changed;
 }
 
 void HandPanelUi::draw(const HandPanel& panel, const glm::mat4& viewProjection) const {

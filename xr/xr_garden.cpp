@@ -20,6 +20,7 @@
 #include "xr/turning.h"
 #include "xr/world_grab.h"
 #include "xr/xr_result.h"
+#include "xr/xr_settings.h"
 
 #include <epoxy/gl.h>
 #define GLFW_INCLUDE_NONE
@@ -94,8 +95,14 @@ public:
           const std::optional<garden::ReplayScript>& script)
         : options_(o), session_(s), headset_(h), window_(w), view_(renderer_), script_(script),
           turning_(o.smoothTurn) {
+        settingsPath_ = options_.settingsFile.empty() ? xrSettingsPath() : options_.settingsFile;
+        std::string warning;
+        user_ = loadXrSettings(settingsPath_, warning);
+        if (!warning.empty()) std::cerr << "warning: " << warning << "\n";
+        if (options_.leftHanded) user_.leftHanded = *options_.leftHanded;
+        if (options_.seated) user_.seated = *options_.seated;
         if (options_.mirror) overlay_ = std::make_unique<garden::Overlay>(window_);
-        controllers_ = std::make_unique<Controllers>(headset_.instance(), options_.leftHanded);
+        controllers_ = std::make_unique<Controllers>(headset_.instance(), user_.leftHanded);
         headset_.createSession(window_.handle());
         controllers_->attach(headset_.session());
         info_.space = headset_.spaceName();
@@ -163,7 +170,7 @@ public:
 
 private:
     // Added to tracked heights: the floor at 0, raised for a seated user.
-    float heightOffset() const { return headset_.floorOffset() + (options_.seated ? kSeatedRaise : 0.0f); }
+    float heightOffset() const { return headset_.floorOffset() + (user_.seated ? kSeatedRaise : 0.0f); }
 
     // The navigator holds where the stage stands in the world and its turn;
     // the scale is ours.
@@ -224,7 +231,8 @@ private:
         panel_.update(world.tool);
         // Every frame, shown or not, so ImGui knows the panel's window
         // before the first pull on it.
-        panelUi_.update(session_, panel_, info_.interactionProfile, static_cast<float>(periodMs / 1000.0));
+        if (panelUi_.update(session_, panel_, info_.interactionProfile, user_, static_cast<float>(periodMs / 1000.0)))
+            keepSettings();
         if (panel_.ownsTrigger()) world.tool.trigger = 0.0f;  // the trigger is the panel's
         // The tool stick reshapes the tool; the navigator must not fly with it.
         adjustTool(session_.tool(), world.tool.thumbstick, periodMs > 0.0 ? periodMs / 1000.0 : 1.0 / 90.0);
@@ -277,6 +285,14 @@ private:
                                 garden::LineMode::Segments, false);
     }
 
+    // The panel changed left-handed or seated: in effect from the next
+    // frame, and kept for the next run (the flags given this run included).
+    void keepSettings() {
+        controllers_->setLeftHanded(user_.leftHanded);
+        const std::string why = saveXrSettings(settingsPath_, user_);
+        if (!why.empty()) std::cerr << "warning: the headset settings are not kept: " << why << "\n";
+    }
+
     // Over the mirror: what the headset runs, and the frame statistics.
     void drawPanels() {
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -316,6 +332,8 @@ private:
     WorldGrab grab_;
     HandPanel panel_;
     HandPanelUi panelUi_;
+    std::string settingsPath_;
+    XrUserSettings user_;
     Turning turning_;
     float scale_ = 1.0f;
     glm::vec3 startEye_{0.0f};

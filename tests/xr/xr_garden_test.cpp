@@ -19,6 +19,7 @@
 #include "xr/hand_panel.h"
 #include "xr/hand_panel_ui.h"
 #include "xr/xr_garden.h"
+#include "xr/xr_settings.h"
 
 namespace hg::xr::test {
 namespace {
@@ -353,6 +354,38 @@ TEST_F(XrGarden, ThePanelsMorphTriangleSetsTheWeights) {
     ASSERT_EQ(runXrGarden(o, [&](garden::GardenSession& xr, const XrRunInfo&) { w = xr.morphWeights(); }), 0);
     ASSERT_TRUE(w.has_value());
     for (int i = 0; i < 3; ++i) EXPECT_NEAR(w->barycentric[static_cast<std::size_t>(i)], want[i], 0.02) << "corner " << i;
+}
+
+TEST_F(XrGarden, LeftHandedSwitchedOnThePanelIsKeptForTheNextRun) {
+    const std::string settings = (dir / "config" / "xr.json").string();
+    // Run 1: the right hand ticks left-handed on the panel over the left hand.
+    std::string s = script("[" + pressPanel(kPanelHand, panelToggleCenter(PanelToggle::LeftHanded)) + R"(, {"frames": 2}])");
+    ::setenv("HG_MOCK_XR_SCRIPT", s.c_str(), 1);
+    XrOptions o;
+    o.script = s;
+    o.mirror = false;
+    o.settingsFile = settings;
+    ASSERT_EQ(runXrGarden(o), 0);
+    std::string warning;
+    EXPECT_TRUE(loadXrSettings(settings, warning).leftHanded);
+    EXPECT_EQ(warning, "");
+    // Run 2, no flag: the left controller (the script's navigation hand) carves.
+    s = script(R"([
+      {"frames": 2, "commands": [{"sculpt_tool": {"kind": "carve", "radius": 0.12}}]},
+      {"frames": 6, "navigation": {"aim": {"position": [0.3, 1.2, -1.0], "direction": [-0.35, -0.6, -1.3]}, "trigger": 1},
+                    "tool": {"aim": {"position": [0.3, 1.2, -1.0], "direction": [0.35, -0.6, -1.3]}}},
+      {"frames": 2}])");
+    ::setenv("HG_MOCK_XR_SCRIPT", s.c_str(), 1);
+    o.script = s;
+    std::size_t edits = 0;
+    ASSERT_EQ(runXrGarden(o, [&](garden::GardenSession& xr, const XrRunInfo&) { edits = xr.editCount(xr.findSculpture("a")); }), 0);
+    EXPECT_EQ(edits, 1u) << "left-handed from the settings";
+    // The flag wins for its run, and the file is left as it was.
+    o.leftHanded = false;
+    ::setenv("HG_MOCK_XR_SCRIPT", s.c_str(), 1);
+    ASSERT_EQ(runXrGarden(o, [&](garden::GardenSession& xr, const XrRunInfo&) { edits = xr.editCount(xr.findSculpture("a")); }), 0);
+    EXPECT_EQ(edits, 0u) << "right-handed for this run: the left hand only points";
+    EXPECT_TRUE(loadXrSettings(settings, warning).leftHanded);
 }
 
 // Pixels of the panel's background colour in the left eye's last image.
