@@ -18,6 +18,7 @@
 #include "xr/stage_rig.h"
 #include "xr/tool_stick.h"
 #include "xr/turning.h"
+#include "xr/walking.h"
 #include "xr/world_grab.h"
 #include "xr/xr_result.h"
 #include "xr/xr_settings.h"
@@ -227,6 +228,9 @@ private:
         menuHeld_ = menu;
         garden::Hands world = rig().toWorld(stage);
         world.look.x = turning_.apply(world, periodMs > 0.0 ? periodMs / 1000.0 : 1.0 / 90.0);
+        // The stick walks where the head looks (orbiting keeps its own axes).
+        if (f.viewsValid && session_.navigator().mode() != garden::NavigationMode::Orbit)
+            world.navigation.thumbstick = headRelativeStick(world.navigation.thumbstick, poseOf(f.views[0].pose, 0.0f));
         panel_.place(world.navigation, scale_);
         panel_.update(world.tool);
         // Every frame, shown or not, so ImGui knows the panel's window

@@ -388,6 +388,22 @@ TEST_F(XrGarden, LeftHandedSwitchedOnThePanelIsKeptForTheNextRun) {
     EXPECT_TRUE(loadXrSettings(settings, warning).leftHanded);
 }
 
+TEST_F(XrGarden, TheStickWalksWhereTheHeadLooks) {
+    // The head turned 90 degrees right (+x); the navigation stick pushed
+    // forward: the rig goes along +x, not the rig's own forward (-z).
+    ::setenv("HG_MOCK_XR_HEAD_YAW", "90", 1);
+    const std::string s = script(R"([{"frames": 20, "navigation": {"aim": {"position": [-0.2, 1.0, -0.4]}, "thumbstick": [0, 1]}}])");
+    ::setenv("HG_MOCK_XR_SCRIPT", s.c_str(), 1);
+    XrOptions o;
+    o.script = s;
+    o.mirror = false;
+    glm::vec3 eye(0.0f);
+    ASSERT_EQ(runXrGarden(o, [&](garden::GardenSession& xr, const XrRunInfo&) { eye = xr.navigator().eye(); }), 0);
+    EXPECT_GT(eye.x, 0.1f) << "walked to the head's right of the start";
+    EXPECT_NEAR(eye.z, 0.0f, 1e-3f);
+    EXPECT_NEAR(eye.y, 1.7f, 1e-3f) << "on the ground's level";
+}
+
 // Pixels of the panel's background colour in the left eye's last image.
 int panelPixels(const std::filesystem::path& png) {
     int w = 0, h = 0, n = 0;
