@@ -211,3 +211,13 @@ void Controllers::pulseToolHand() {
 }
 
 }  // namespace hg::xr
+
+namespace hg::xr {
+
+void Controllers::setLeftHanded(bool leftHanded) {
+    if (leftHanded == leftHanded_) return;
+    leftHanded_ = leftHanded;
+    if (session_ != XR_NULL_HANDLE) refreshProfile();  // the profile shown is the tool hand's
+}
+
+}  // namespace hg::xr

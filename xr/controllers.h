@@ -34,6 +34,8 @@ public:
     // `time`, heights raised by `floorOffset`. Untracked hands when the
     // session is not focused.
     garden::Hands read(XrSpace space, XrTime time, float floorOffset, bool focused);
+    // Which hand holds the tool, from the next read on (the hand panel's switch).
+    void setLeftHanded(bool leftHanded);
     // A short pulse on the tool hand (a tool starting to touch material).
     void pulseToolHand();
     // The interaction profile the runtime picked ("" : none yet), for the panel.

@@ -1,23 +1,18 @@
 #include "xr/hand_panel.h"
 
-#include <cmath>
-
 #include <glm/geometric.hpp>
 
 namespace hg::xr {
 
 namespace {
-
 constexpr float kTriggerDown = 0.5f;
-constexpr int kRows = (kPanelButtons + HandPanel::kColumns - 1) / HandPanel::kColumns;
-constexpr float kGap = 0.08f;  // of a cell, around each button
-
-}  // namespace
+}
 
 void HandPanel::place(const garden::HandState& navigation, float scale) {
     shown_ = navigation.tracked;
     if (!shown_) {
         hovered_.reset();
+        held_ = false;
         return;
     }
     const garden::Pose& g = navigation.grip;
@@ -29,11 +24,15 @@ void HandPanel::place(const garden::HandState& navigation, float scale) {
     center_ = g.position + up_ * (kAboveHand * scale);
 }
 
-glm::vec3 HandPanel::corner(float u, float v) const {
-    return center_ + right_ * ((u - 0.5f) * width_) + up_ * ((v - 0.5f) * height_);
+glm::vec3 HandPanel::at(const glm::vec2& uv) const {
+    return center_ + right_ * ((uv.x - 0.5f) * width_) + up_ * ((0.5f - uv.y) * height_);
 }
 
-std::optional<PanelButton> HandPanel::pointedAt(const garden::Pose& aim) const {
+std::array<glm::vec3, 4> HandPanel::corners() const {
+    return {at({0.0f, 0.0f}), at({1.0f, 0.0f}), at({1.0f, 1.0f}), at({0.0f, 1.0f})};
+}
+
+std::optional<glm::vec2> HandPanel::pointedAt(const garden::Pose& aim) const {
     if (!shown_) return std::nullopt;
     const glm::vec3 d = aim.forward();
     const float facing = glm::dot(d, normal_);
@@ -41,42 +40,18 @@ std::optional<PanelButton> HandPanel::pointedAt(const garden::Pose& aim) const {
     const float t = glm::dot(center_ - aim.position, normal_) / facing;
     if (t <= 0.0f) return std::nullopt;
     const glm::vec3 p = aim.position + d * t - center_;
-    const float u = glm::dot(p, right_) / width_ + 0.5f, v = glm::dot(p, up_) / height_ + 0.5f;
-    if (u < 0.0f || u >= 1.0f || v < 0.0f || v >= 1.0f) return std::nullopt;
-    const int column = static_cast<int>(u * kColumns), row = kRows - 1 - static_cast<int>(v * kRows);  // row 0 on top
-    const int index = row * kColumns + column;
-    if (index >= kPanelButtons) return std::nullopt;
-    return static_cast<PanelButton>(index);
+    const glm::vec2 uv(glm::dot(p, right_) / width_ + 0.5f, 0.5f - glm::dot(p, up_) / height_);
+    if (uv.x < 0.0f || uv.x >= 1.0f || uv.y < 0.0f || uv.y >= 1.0f) return std::nullopt;
+    return uv;
 }
 
-std::optional<PanelButton> HandPanel::update(const garden::HandState& tool) {
+void HandPanel::update(const garden::HandState& tool) {
     hovered_ = tool.tracked ? pointedAt(tool.aim) : std::nullopt;
     const bool down = tool.tracked && tool.trigger > kTriggerDown;
-    const bool pressed = down && !triggerWasDown_;
+    if (!down) held_ = false;
+    else if (!triggerWasDown_ && hovered_) held_ = true;  // only a pull that starts on the board
+    if (!shown_) held_ = false;
     triggerWasDown_ = down;
-    return pressed ? hovered_ : std::nullopt;
-}
-
-std::vector<glm::vec3> HandPanel::outline(PanelButton b) const {
-    const int index = static_cast<int>(b), column = index % kColumns, row = index / kColumns;
-    const float u0 = (static_cast<float>(column) + kGap) / kColumns, u1 = (static_cast<float>(column) + 1.0f - kGap) / kColumns;
-    const float v1 = 1.0f - (static_cast<float>(row) + kGap) / kRows, v0 = 1.0f - (static_cast<float>(row) + 1.0f - kGap) / kRows;
-    return {corner(u0, v0), corner(u1, v0), corner(u1, v1), corner(u0, v1)};
-}
-
-glm::vec4 HandPanel::colorOf(PanelButton b) {
-    switch (b) {
-        case PanelButton::ToolNone: return {0.9f, 0.85f, 0.2f, 1.0f};  // the morph selector's yellow
-        case PanelButton::Carve: return {0.9f, 0.25f, 0.2f, 1.0f};
-        case PanelButton::Add: return {0.25f, 0.8f, 0.3f, 1.0f};
-        case PanelButton::Melt: return {0.95f, 0.55f, 0.15f, 1.0f};
-        case PanelButton::Perturb: return {0.3f, 0.5f, 0.95f, 1.0f};
-        case PanelButton::Impacts: return {0.7f, 0.35f, 0.9f, 1.0f};
-        case PanelButton::Undo: return {0.85f, 0.85f, 0.85f, 1.0f};
-        case PanelButton::Redo: return {0.55f, 0.55f, 0.55f, 1.0f};
-        case PanelButton::Count: break;
-    }
-    return {1.0f, 1.0f, 1.0f, 1.0f};
 }
 
 }  // namespace hg::xr

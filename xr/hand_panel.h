@@ -1,56 +1,55 @@
-// The panel on the navigation hand (DESIGN §8, issue 13): a small board
-// above the hand with the tools (none, carve, add, melt, perturb, impacts)
-// and undo / redo, pointed at with the tool hand's aim ray and pressed with
-// its trigger. While the ray is on the panel the trigger works the panel,
-// not the tool. Geometry and hits are pure math; the app draws the
-// outlines (no labels yet: each tool has its colour).
+// The panel on the navigation hand (DESIGN §8, issue 13): a board above the
+// hand, pointed at with the tool hand's aim ray and worked with its
+// trigger. What is on it (labelled buttons, the tool's parameters, the
+// morph triangle) is xr/hand_panel_ui.h's; this is the board's place and
+// where the ray meets it, pure math. While the ray is on the board, or the
+// trigger went down there and is still held, the trigger works the panel,
+// not the tool.
 #pragma once
 
 #include <array>
 #include <optional>
-#include <vector>
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
-#include <glm/vec4.hpp>
 
 #include "garden/hands/hand_state.h"
 
 namespace hg::xr {
 
-enum class PanelButton { ToolNone, Carve, Add, Melt, Perturb, Impacts, Undo, Redo, Count };
-constexpr int kPanelButtons = static_cast<int>(PanelButton::Count);
-
 class HandPanel {
 public:
-    static constexpr float kWidth = 0.24f, kHeight = 0.12f;  // metres (stage)
-    static constexpr float kAboveHand = 0.12f;               // the board's centre above the grip
-    static constexpr int kColumns = 4;
+    static constexpr float kWidth = 0.32f, kHeight = 0.20f;  // metres (stage)
+    static constexpr float kAboveHand = 0.14f;               // the board's centre above the grip
 
     // Follows the navigation hand (world pose of its grip; `scale`: world
     // metres per stage metre); hidden while it is untracked.
     void place(const garden::HandState& navigation, float scale);
     bool shown() const { return shown_; }
-    // The button under the aim ray, if the ray meets the board in front.
-    std::optional<PanelButton> pointedAt(const garden::Pose& aim) const;
-    // One frame of the tool hand: the button pressed this frame (trigger
-    // going down on it), if any. `pointing()` then says whether the trigger
-    // belongs to the panel this frame.
-    std::optional<PanelButton> update(const garden::HandState& tool);
-    bool pointing() const { return hovered_.has_value(); }
-    std::optional<PanelButton> hovered() const { return hovered_; }
+    // Where the aim ray meets the board in front: (0, 0) its top left,
+    // (1, 1) its bottom right (image order, as the panel is drawn).
+    std::optional<glm::vec2> pointedAt(const garden::Pose& aim) const;
+    // One frame of the tool hand.
+    void update(const garden::HandState& tool);
+    std::optional<glm::vec2> hovered() const { return hovered_; }
+    // The trigger is the panel's this frame (on the board, or held since it
+    // went down there).
+    bool ownsTrigger() const { return hovered_.has_value() || held_; }
+    // The trigger went down on the board and is still down: the panel's
+    // mouse button.
+    bool pressing() const { return held_; }
 
-    // A button's outline (four corners, world) and colour, for drawing.
-    std::vector<glm::vec3> outline(PanelButton b) const;
-    static glm::vec4 colorOf(PanelButton b);
+    // The world point of board point `uv` (tests aim at it; drawing).
+    glm::vec3 at(const glm::vec2& uv) const;
+    // The corners, world: top left, top right, bottom right, bottom left.
+    std::array<glm::vec3, 4> corners() const;
 
 private:
-    glm::vec3 corner(float u, float v) const;  // u, v in [0, 1] across the board
-
     bool shown_ = false;
     glm::vec3 center_{0.0f}, right_{1.0f, 0.0f, 0.0f}, up_{0.0f, 1.0f, 0.0f}, normal_{0.0f, 0.0f, 1.0f};
     float width_ = kWidth, height_ = kHeight;
-    std::optional<PanelButton> hovered_;
-    bool triggerWasDown_ = false;
+    std::optional<glm::vec2> hovered_;
+    bool triggerWasDown_ = false, held_ = false;
 };
 
 }  // namespace hg::xr

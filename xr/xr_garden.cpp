@@ -13,12 +13,15 @@
 #include "garden/session/open_session.h"
 #include "xr/controllers.h"
 #include "xr/hand_panel.h"
+#include "xr/hand_panel_ui.h"
 #include "xr/headset.h"
 #include "xr/stage_rig.h"
 #include "xr/tool_stick.h"
 #include "xr/turning.h"
+#include "xr/walking.h"
 #include "xr/world_grab.h"
 #include "xr/xr_result.h"
+#include "xr/xr_settings.h"
 
 #include <epoxy/gl.h>
 #define GLFW_INCLUDE_NONE
@@ -93,8 +96,14 @@ public:
           const std::optional<garden::ReplayScript>& script)
         : options_(o), session_(s), headset_(h), window_(w), view_(renderer_), script_(script),
           turning_(o.smoothTurn) {
+        settingsPath_ = options_.settingsFile.empty() ? xrSettingsPath() : options_.settingsFile;
+        std::string warning;
+        user_ = loadXrSettings(settingsPath_, warning);
+        if (!warning.empty()) std::cerr << "warning: " << warning << "\n";
+        if (options_.leftHanded) user_.leftHanded = *options_.leftHanded;
+        if (options_.seated) user_.seated = *options_.seated;
         if (options_.mirror) overlay_ = std::make_unique<garden::Overlay>(window_);
-        controllers_ = std::make_unique<Controllers>(headset_.instance(), options_.leftHanded);
+        controllers_ = std::make_unique<Controllers>(headset_.instance(), user_.leftHanded);
         headset_.createSession(window_.handle());
         controllers_->attach(headset_.session());
         info_.space = headset_.spaceName();
@@ -162,7 +171,7 @@ public:
 
 private:
     // Added to tracked heights: the floor at 0, raised for a seated user.
-    float heightOffset() const { return headset_.floorOffset() + (options_.seated ? kSeatedRaise : 0.0f); }
+    float heightOffset() const { return headset_.floorOffset() + (user_.seated ? kSeatedRaise : 0.0f); }
 
     // The navigator holds where the stage stands in the world and its turn;
     // the scale is ours.
@@ -219,9 +228,16 @@ private:
         menuHeld_ = menu;
         garden::Hands world = rig().toWorld(stage);
         world.look.x = turning_.apply(world, periodMs > 0.0 ? periodMs / 1000.0 : 1.0 / 90.0);
+        // The stick walks where the head looks (orbiting keeps its own axes).
+        if (f.viewsValid && session_.navigator().mode() != garden::NavigationMode::Orbit)
+            world.navigation.thumbstick = headRelativeStick(world.navigation.thumbstick, poseOf(f.views[0].pose, 0.0f));
         panel_.place(world.navigation, scale_);
-        if (const auto pressed = panel_.update(world.tool)) press(*pressed);
-        if (panel_.pointing()) world.tool.trigger = 0.0f;  // the trigger is the panel's
+        panel_.update(world.tool);
+        // Every frame, shown or not, so ImGui knows the panel's window
+        // before the first pull on it.
+        if (panelUi_.update(session_, panel_, info_.interactionProfile, user_, static_cast<float>(periodMs / 1000.0)))
+            keepSettings();
+        if (panel_.ownsTrigger()) world.tool.trigger = 0.0f;  // the trigger is the panel's
         // The tool stick reshapes the tool; the navigator must not fly with it.
         adjustTool(session_.tool(), world.tool.thumbstick, periodMs > 0.0 ? periodMs / 1000.0 : 1.0 / 90.0);
         world.tool.thumbstick = glm::vec2(0.0f);
@@ -246,7 +262,7 @@ private:
                 const garden::Pose eyePose = poseOf(v.pose, heightOffset());
                 view_.render(session_, glm::ivec2(images.width, images.height), r.viewOf(eyePose), projectionOf(v.fov),
                              r.toWorld(eyePose.position));
-                drawPanel(world.tool);
+                drawPanel(world.tool, projectionOf(v.fov) * r.viewOf(eyePose));
                 if (eye == 0 && options_.mirror) mirror(target, images);
                 glBindFramebuffer(GL_FRAMEBUFFER, 0);
                 headset_.releaseEye(eye);
@@ -264,49 +280,21 @@ private:
         if (options_.mirror) window_.swapBuffers();
     }
 
-    void press(PanelButton b) {
-        using Kind = garden::ToolSettings::Kind;
-        Kind& kind = session_.tool().kind;
-        switch (b) {
-            case PanelButton::ToolNone: kind = Kind::None; break;
-            case PanelButton::Carve: kind = Kind::Carve; break;
-            case PanelButton::Add: kind = Kind::Add; break;
-            case PanelButton::Melt: kind = Kind::Melt; break;
-            case PanelButton::Perturb: kind = Kind::Perturb; break;
-            case PanelButton::Impacts: kind = Kind::Impacts; break;
-            case PanelButton::Undo: session_.undo(); break;
-            case PanelButton::Redo: session_.redo(); break;
-            case PanelButton::Count: break;
-        }
-    }
-
-    PanelButton selectedTool() const {
-        switch (session_.tool().kind) {
-            case garden::ToolSettings::Kind::None: return PanelButton::ToolNone;
-            case garden::ToolSettings::Kind::Carve: return PanelButton::Carve;
-            case garden::ToolSettings::Kind::Add: return PanelButton::Add;
-            case garden::ToolSettings::Kind::Melt: return PanelButton::Melt;
-            case garden::ToolSettings::Kind::Perturb: return PanelButton::Perturb;
-            case garden::ToolSettings::Kind::Impacts: return PanelButton::Impacts;
-            case garden::ToolSettings::Kind::Move: return PanelButton::ToolNone;  // the desktop's tool: no button here
-        }
-        return PanelButton::ToolNone;
-    }
-
-    // The panel's buttons (the chosen tool crossed, the pointed one cyan)
-    // and the tool hand's ray onto it, over the scene.
-    void drawPanel(const garden::HandState& tool) {
+    // The panel's board and the tool hand's ray onto it, over the scene.
+    void drawPanel(const garden::HandState& tool, const glm::mat4& viewProjection) {
         if (!panel_.shown()) return;
-        for (int i = 0; i < kPanelButtons; ++i) {
-            const auto b = static_cast<PanelButton>(i);
-            const std::vector<glm::vec3> o = panel_.outline(b);
-            const glm::vec4 c = panel_.hovered() == b ? glm::vec4(0.2f, 1.0f, 1.0f, 1.0f) : HandPanel::colorOf(b);
-            renderer_.drawLines(o, c, garden::LineMode::Loop, false);
-            if (b == selectedTool()) renderer_.drawLines({o[0], o[2], o[1], o[3]}, c, garden::LineMode::Segments, false);
-        }
-        if (panel_.pointing() && tool.tracked)
-            renderer_.drawLines({tool.aim.position, tool.aim.position + tool.aim.forward() * 0.5f * scale_},
-                                glm::vec4(1.0f), garden::LineMode::Segments, true);
+        panelUi_.draw(panel_, viewProjection);
+        if (panel_.hovered() && tool.tracked)
+            renderer_.drawLines({tool.aim.position, panel_.at(*panel_.hovered())}, glm::vec4(1.0f),
+                                garden::LineMode::Segments, false);
+    }
+
+    // The panel changed left-handed or seated: in effect from the next
+    // frame, and kept for the next run (the flags given this run included).
+    void keepSettings() {
+        controllers_->setLeftHanded(user_.leftHanded);
+        const std::string why = saveXrSettings(settingsPath_, user_);
+        if (!why.empty()) std::cerr << "warning: the headset settings are not kept: " << why << "\n";
     }
 
     // Over the mirror: what the headset runs, and the frame statistics.
@@ -347,6 +335,9 @@ private:
     std::array<EyeTarget, 2> targets_;
     WorldGrab grab_;
     HandPanel panel_;
+    HandPanelUi panelUi_;
+    std::string settingsPath_;
+    XrUserSettings user_;
     Turning turning_;
     float scale_ = 1.0f;
     glm::vec3 startEye_{0.0f};

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
 
 namespace hg::garden {
@@ -25,9 +26,13 @@ struct XrOptions {
     std::string session;     // a session folder ("" : none)
     std::string script;      // a replay script whose commands run at their frames ("" : none)
     int frames = 0;          // ask the runtime to end the session after this many frames (0: never)
-    bool leftHanded = false; // the left hand holds the tool
+    // The left hand holds the tool; seated: raise the tracked heights by a
+    // seated user's shorter reach (0.5 m). Unset: the user's settings
+    // (xr/xr_settings.h), which the hand panel changes and keeps.
+    std::optional<bool> leftHanded;
+    std::optional<bool> seated;
+    std::string settingsFile;  // the user's settings ("" : xrSettingsPath())
     bool smoothTurn = false; // turn smoothly with the left stick instead of snapping 30 degrees
-    bool seated = false;     // raise the tracked heights by a seated user's shorter reach (0.5 m)
     bool mirror = true;      // show the mirror window (hidden when false)
     // Called after every focused frame with its stats and its index from
     // the first focused frame (benchmarks).

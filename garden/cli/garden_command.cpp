@@ -12,8 +12,9 @@ int runGarden(const GardenOptions& options) {
         x.session = options.session;
         x.script = options.xrScript;
         x.frames = options.frames;
-        x.leftHanded = options.leftHanded;
-        x.seated = options.seated;
+        // The flags only switch on; without them the user's settings hold.
+        if (options.leftHanded) x.leftHanded = true;
+        if (options.seated) x.seated = true;
         x.smoothTurn = options.smoothTurn;
         return xr::runXrGarden(x);
     }

@@ -1,9 +1,11 @@
-// The panel on the navigation hand (xr/hand_panel.h): which button the
-// tool's ray points at, a press on the trigger's way down only, nothing
-// from behind or while the hand is untracked.
+// The panel on the navigation hand (xr/hand_panel.h): where the tool's ray
+// meets the board (image order: top left (0, 0)), the trigger the panel's
+// only for a pull that starts on the board, nothing from behind or while
+// the navigation hand is untracked.
 #include <gtest/gtest.h>
 
 #include "xr/hand_panel.h"
+#include "xr/hand_panel_ui.h"
 
 namespace hg::xr {
 namespace {
@@ -16,49 +18,66 @@ garden::HandState handAt(const glm::vec3& p) {
     return h;
 }
 
-// A ray along -z through the board point (u, v) of a panel over a hand at
-// the origin (the board spans x in [-0.12, 0.12], y in [0.06, 0.18]).
-garden::HandState rayAt(float u, float v, float fromZ = 0.3f) {
-    garden::HandState t = handAt(glm::vec3((u - 0.5f) * HandPanel::kWidth,
-                                           HandPanel::kAboveHand + (v - 0.5f) * HandPanel::kHeight, fromZ));
-    return t;
+// A ray along -z from in front of board point `uv` (the hand at `hand`).
+garden::HandState rayAt(const HandPanel& p, const glm::vec2& uv, float fromZ = 0.3f) {
+    return handAt(p.at(uv) + glm::vec3(0.0f, 0.0f, fromZ));
 }
 
-TEST(HandPanel, PointsAtTheButtonUnderTheRay) {
+void expectNear(const std::optional<glm::vec2>& got, const glm::vec2& want) {
+    ASSERT_TRUE(got.has_value());
+    EXPECT_NEAR(got->x, want.x, 1e-4f);
+    EXPECT_NEAR(got->y, want.y, 1e-4f);
+}
+
+TEST(HandPanel, FindsTheBoardPointUnderTheRay) {
     HandPanel p;
     p.place(handAt(glm::vec3(0.0f)), 1.0f);
     ASSERT_TRUE(p.shown());
-    EXPECT_EQ(p.pointedAt(rayAt(0.1f, 0.75f).aim), PanelButton::ToolNone);
-    EXPECT_EQ(p.pointedAt(rayAt(0.375f, 0.75f).aim), PanelButton::Carve);
-    EXPECT_EQ(p.pointedAt(rayAt(0.9f, 0.75f).aim), PanelButton::Melt);
-    EXPECT_EQ(p.pointedAt(rayAt(0.1f, 0.25f).aim), PanelButton::Perturb);
-    EXPECT_EQ(p.pointedAt(rayAt(0.9f, 0.25f).aim), PanelButton::Redo);
-    EXPECT_EQ(p.pointedAt(rayAt(1.2f, 0.5f).aim), std::nullopt) << "beside the board";
-    EXPECT_EQ(p.pointedAt(rayAt(0.5f, 0.5f, -0.3f).aim), std::nullopt) << "from behind";
+    // The board above the hand: its top left corner up and to the left.
+    const glm::vec3 topLeft = p.at({0.0f, 0.0f});
+    EXPECT_NEAR(topLeft.x, -0.5f * HandPanel::kWidth, 1e-6f);
+    EXPECT_NEAR(topLeft.y, HandPanel::kAboveHand + 0.5f * HandPanel::kHeight, 1e-6f);
+    expectNear(p.pointedAt(rayAt(p, {0.1f, 0.75f}).aim), {0.1f, 0.75f});
+    expectNear(p.pointedAt(rayAt(p, panelButtonCenter(PanelButton::Carve)).aim), panelButtonCenter(PanelButton::Carve));
+    EXPECT_EQ(p.pointedAt(rayAt(p, {1.2f, 0.5f}).aim), std::nullopt) << "beside the board";
+    EXPECT_EQ(p.pointedAt(rayAt(p, {0.5f, 0.5f}, -0.3f).aim), std::nullopt) << "from behind";
 }
 
 TEST(HandPanel, ScalesWithTheWorld) {
     HandPanel p;
     p.place(handAt(glm::vec3(0.0f)), 2.0f);
-    garden::HandState t = handAt(glm::vec3(-0.9f * HandPanel::kWidth, 2.0f * HandPanel::kAboveHand + 0.25f * HandPanel::kHeight, 0.5f));
-    EXPECT_EQ(p.pointedAt(t.aim), PanelButton::ToolNone) << "twice as big, twice as high";
+    garden::HandState t = handAt(glm::vec3(-0.8f * HandPanel::kWidth, 2.0f * HandPanel::kAboveHand + 0.5f * HandPanel::kHeight, 0.5f));
+    expectNear(p.pointedAt(t.aim), {0.1f, 0.25f});
 }
 
-TEST(HandPanel, PressesOnTheTriggersWayDownOnly) {
+TEST(HandPanel, TheTriggerIsThePanelsOnlyForAPullStartedOnIt) {
     HandPanel p;
     p.place(handAt(glm::vec3(0.0f)), 1.0f);
-    garden::HandState t = rayAt(0.375f, 0.75f);
-    EXPECT_EQ(p.update(t), std::nullopt);
-    EXPECT_TRUE(p.pointing());
+    garden::HandState t = rayAt(p, {0.5f, 0.5f});
+    p.update(t);
+    EXPECT_TRUE(p.ownsTrigger());
+    EXPECT_FALSE(p.pressing());
     t.trigger = 1.0f;
-    EXPECT_EQ(p.update(t), PanelButton::Carve);
-    EXPECT_EQ(p.update(t), std::nullopt) << "held: one press";
+    p.update(t);
+    EXPECT_TRUE(p.pressing());
+    // Dragged off the board while held: still the panel's (a slider).
+    t.aim.position.x += 1.0f;
+    p.update(t);
+    EXPECT_TRUE(p.pressing());
+    EXPECT_TRUE(p.ownsTrigger());
     t.trigger = 0.0f;
     p.update(t);
-    p.place(garden::HandState{}, 1.0f);  // the navigation hand is lost
+    EXPECT_FALSE(p.ownsTrigger());
+    // A pull that starts off the board (a stroke) and sweeps onto it does not press.
     t.trigger = 1.0f;
-    EXPECT_EQ(p.update(t), std::nullopt);
-    EXPECT_FALSE(p.pointing());
+    p.update(t);
+    t = rayAt(p, {0.5f, 0.5f});
+    t.trigger = 1.0f;
+    p.update(t);
+    EXPECT_FALSE(p.pressing());
+    p.place(garden::HandState{}, 1.0f);  // the navigation hand is lost
+    p.update(t);
+    EXPECT_FALSE(p.ownsTrigger());
 }
 
 }  // namespace

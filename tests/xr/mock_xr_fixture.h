@@ -9,8 +9,11 @@
 
 #include <dlfcn.h>
 
+#include <unistd.h>
+
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <memory>
 #include <string>
 
@@ -39,9 +42,14 @@ namespace hg::xr::test {
 inline void useMockRuntime() {
     ::setenv("XR_RUNTIME_JSON", HG_MOCK_XR_MANIFEST, 1);
     for (const char* v : {"HG_MOCK_XR_SCRIPT", "HG_MOCK_XR_EVENTS", "HG_MOCK_XR_CONTROL", "HG_MOCK_XR_READBACK",
-                          "HG_MOCK_XR_NO_STAGE", "XR_ENABLE_API_LAYERS"})
+                          "HG_MOCK_XR_NO_STAGE", "HG_MOCK_XR_HEAD_YAW", "XR_ENABLE_API_LAYERS"})
         ::unsetenv(v);
     ::setenv("HG_MOCK_XR_NO_THROTTLE", "1", 1);
+    // The user's own headset settings are not the tests' (a fresh file each test).
+    const std::filesystem::path settings =
+        std::filesystem::temp_directory_path() / ("hg_xr_test_settings_" + std::to_string(::getpid()) + ".json");
+    std::filesystem::remove(settings);
+    ::setenv("HG_XR_SETTINGS", settings.c_str(), 1);
 }
 
 // A function of the mock library the loader opened.

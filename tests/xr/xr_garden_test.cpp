@@ -16,7 +16,10 @@
 #include "garden/replay/replay_runner.h"
 #include "garden/session/open_session.h"
 #include "voxel/volume.h"
+#include "xr/hand_panel.h"
+#include "xr/hand_panel_ui.h"
 #include "xr/xr_garden.h"
+#include "xr/xr_settings.h"
 
 namespace hg::xr::test {
 namespace {
@@ -289,30 +292,145 @@ TEST_F(XrGarden, MenuOnTheLeftHandRecenters) {
     EXPECT_NEAR(eye.z, 0.0f, 1e-4f);
 }
 
-TEST_F(XrGarden, ThePanelOnTheLeftHandChoosesTheTool) {
-    // The right hand points at the panel's carve button (above the left
-    // hand at (-0.2, 1.0, -0.4)), pulls, then carves sculpture 'a'. With no
-    // tool chosen the trigger would only pick the (absent) morph.
-    const std::string s = script(R"([
-      {"frames": 3, "navigation": {"aim": {"position": [-0.2, 1.0, -0.4]}},
-                    "tool": {"aim": {"position": [-0.23, 1.15, -0.1], "direction": [0, 0, -1]}, "trigger": 1}},
-      {"frames": 2, "navigation": {"aim": {"position": [-0.2, 1.0, -0.4]}},
-                    "tool": {"aim": {"position": [-0.23, 1.15, -0.1], "direction": [0, 0, -1]}}},
+// A script step's hands (JSON): the left hand at `hand` (no turn), the
+// right hand's ray straight at the panel's board point `uv` from 0.3 m in
+// front of it.
+std::string atPanel(const glm::vec3& hand, const glm::vec2& uv, bool trigger, int frames) {
+    HandPanel p;
+    garden::HandState h;
+    h.tracked = true;
+    h.grip.position = hand;
+    p.place(h, 1.0f);
+    const glm::vec3 at = p.at(uv) + glm::vec3(0.0f, 0.0f, 0.3f);
+    const auto vec = [](const glm::vec3& v) { return nlohmann::json::array({v.x, v.y, v.z}).dump(); };
+    return R"({"frames": )" + std::to_string(frames) + R"(, "navigation": {"aim": {"position": )" + vec(hand) +
+           R"(}}, "tool": {"aim": {"position": )" + vec(at) + R"(, "direction": [0, 0, -1]}, "trigger": )" +
+           (trigger ? "1" : "0") + "}}";
+}
+
+// Points at a button, pulls and lets go (ImGui's buttons press on release).
+std::string pressPanel(const glm::vec3& hand, const glm::vec2& uv) {
+    return atPanel(hand, uv, false, 2) + ", " + atPanel(hand, uv, true, 3) + ", " + atPanel(hand, uv, false, 2);
+}
+
+const glm::vec3 kPanelHand(-0.2f, 1.0f, -0.4f);
+
+TEST_F(XrGarden, ThePanelsLabelledButtonsChooseTheToolAndUndo) {
+    // The right hand presses the panel's carve button (above the left
+    // hand), carves sculpture 'a', then presses undo. With no tool chosen
+    // the trigger would only pick the (absent) morph.
+    const std::string s = script("[" + pressPanel(kPanelHand, panelButtonCenter(PanelButton::Carve)) + R"(,
       {"frames": 6, "tool": {"aim": {"position": [0.3, 1.2, -1.0], "direction": [-0.35, -0.6, -1.3]}, "trigger": 1}},
-      {"frames": 2}])");
+      {"frames": 2}, )" + pressPanel(kPanelHand, panelButtonCenter(PanelButton::Undo)) + R"(, {"frames": 2}])");
     ::setenv("HG_MOCK_XR_SCRIPT", s.c_str(), 1);
     XrOptions o;
     o.script = s;
     o.mirror = false;
-    std::size_t edits = 0;
+    std::size_t edits = 1, redone = 0;
     bool carving = false;
     ASSERT_EQ(runXrGarden(o, [&](garden::GardenSession& xr, const XrRunInfo&) {
-                  edits = xr.editCount(xr.findSculpture("a"));
+                  const int a = xr.findSculpture("a");
+                  edits = xr.editCount(a);
                   carving = xr.tool().kind == garden::ToolSettings::Kind::Carve;
+                  xr.redo();
+                  redone = xr.editCount(a);
               }),
               0);
     EXPECT_TRUE(carving);
-    EXPECT_EQ(edits, 1u);
+    EXPECT_EQ(edits, 0u) << "undone from the panel";
+    EXPECT_EQ(redone, 1u) << "the stroke the panel undid";
+}
+
+TEST_F(XrGarden, ThePanelsMorphTriangleSetsTheWeights) {
+    gardenFile = writeGarden(nlohmann::json::parse(R"({"start": {"position": [0, 1.7, 0], "look_at": [0, 1.7, -1]}})"));
+    const glm::vec3 want(0.6f, 0.25f, 0.15f);
+    const std::string s = script("[" + atPanel(kPanelHand, panelMorphPoint(want), false, 2) + ", " +
+                                 atPanel(kPanelHand, panelMorphPoint(want), true, 3) + R"(, {"frames": 2}])");
+    ::setenv("HG_MOCK_XR_SCRIPT", s.c_str(), 1);
+    XrOptions o;
+    o.script = s;
+    o.mirror = false;
+    std::optional<garden::MorphWeights> w;
+    ASSERT_EQ(runXrGarden(o, [&](garden::GardenSession& xr, const XrRunInfo&) { w = xr.morphWeights(); }), 0);
+    ASSERT_TRUE(w.has_value());
+    for (int i = 0; i < 3; ++i) EXPECT_NEAR(w->barycentric[static_cast<std::size_t>(i)], want[i], 0.02) << "corner " << i;
+}
+
+TEST_F(XrGarden, LeftHandedSwitchedOnThePanelIsKeptForTheNextRun) {
+    const std::string settings = (dir / "config" / "xr.json").string();
+    // Run 1: the right hand ticks left-handed on the panel over the left hand.
+    std::string s = script("[" + pressPanel(kPanelHand, panelToggleCenter(PanelToggle::LeftHanded)) + R"(, {"frames": 2}])");
+    ::setenv("HG_MOCK_XR_SCRIPT", s.c_str(), 1);
+    XrOptions o;
+    o.script = s;
+    o.mirror = false;
+    o.settingsFile = settings;
+    ASSERT_EQ(runXrGarden(o), 0);
+    std::string warning;
+    EXPECT_TRUE(loadXrSettings(settings, warning).leftHanded);
+    EXPECT_EQ(warning, "");
+    // Run 2, no flag: the left controller (the script's navigation hand) carves.
+    s = script(R"([
+      {"frames": 2, "commands": [{"sculpt_tool": {"kind": "carve", "radius": 0.12}}]},
+      {"frames": 6, "navigation": {"aim": {"position": [0.3, 1.2, -1.0], "direction": [-0.35, -0.6, -1.3]}, "trigger": 1},
+                    "tool": {"aim": {"position": [0.3, 1.2, -1.0], "direction": [0.35, -0.6, -1.3]}}},
+      {"frames": 2}])");
+    ::setenv("HG_MOCK_XR_SCRIPT", s.c_str(), 1);
+    o.script = s;
+    std::size_t edits = 0;
+    ASSERT_EQ(runXrGarden(o, [&](garden::GardenSession& xr, const XrRunInfo&) { edits = xr.editCount(xr.findSculpture("a")); }), 0);
+    EXPECT_EQ(edits, 1u) << "left-handed from the settings";
+    // The flag wins for its run, and the file is left as it was.
+    o.leftHanded = false;
+    ::setenv("HG_MOCK_XR_SCRIPT", s.c_str(), 1);
+    ASSERT_EQ(runXrGarden(o, [&](garden::GardenSession& xr, const XrRunInfo&) { edits = xr.editCount(xr.findSculpture("a")); }), 0);
+    EXPECT_EQ(edits, 0u) << "right-handed for this run: the left hand only points";
+    EXPECT_TRUE(loadXrSettings(settings, warning).leftHanded);
+}
+
+TEST_F(XrGarden, TheStickWalksWhereTheHeadLooks) {
+    // The head turned 90 degrees right (+x); the navigation stick pushed
+    // forward: the rig goes along +x, not the rig's own forward (-z).
+    ::setenv("HG_MOCK_XR_HEAD_YAW", "90", 1);
+    const std::string s = script(R"([{"frames": 20, "navigation": {"aim": {"position": [-0.2, 1.0, -0.4]}, "thumbstick": [0, 1]}}])");
+    ::setenv("HG_MOCK_XR_SCRIPT", s.c_str(), 1);
+    XrOptions o;
+    o.script = s;
+    o.mirror = false;
+    glm::vec3 eye(0.0f);
+    ASSERT_EQ(runXrGarden(o, [&](garden::GardenSession& xr, const XrRunInfo&) { eye = xr.navigator().eye(); }), 0);
+    EXPECT_GT(eye.x, 0.1f) << "walked to the head's right of the start";
+    EXPECT_NEAR(eye.z, 0.0f, 1e-3f);
+    EXPECT_NEAR(eye.y, 1.7f, 1e-3f) << "on the ground's level";
+}
+
+// Pixels of the panel's background colour in the left eye's last image.
+int panelPixels(const std::filesystem::path& png) {
+    int w = 0, h = 0, n = 0;
+    unsigned char* px = stbi_load(png.c_str(), &w, &h, &n, 4);
+    if (!px) return -1;
+    int count = 0;
+    for (int i = 0; i < w * h; ++i)
+        if (std::abs(px[i * 4] - 31) <= 2 && std::abs(px[i * 4 + 1] - 26) <= 2 && std::abs(px[i * 4 + 2] - 51) <= 2) ++count;
+    stbi_image_free(px);
+    return count;
+}
+
+TEST_F(XrGarden, ThePanelIsInTheEyesImage) {
+    // The left hand held up in front of the head: the board fills part of
+    // the view; without the hand, no panel.
+    for (const bool held : {true, false}) {
+        const std::string s = script(held ? R"([{"frames": 4, "navigation": {"aim": {"position": [0, 1.45, -0.6]}}}])"
+                                          : R"([{"frames": 4}])");
+        ::setenv("HG_MOCK_XR_SCRIPT", s.c_str(), 1);
+        XrOptions o;
+        o.script = s;
+        o.mirror = false;
+        ASSERT_EQ(runXrGarden(o), 0);
+        const int pixels = panelPixels(dir / "readback" / "left.png");
+        if (held) EXPECT_GT(pixels, 2000) << "the board's background";
+        else EXPECT_EQ(pixels, 0);
+    }
 }
 
 TEST_F(XrGarden, InstanceLossEndsTheRun) {

@@ -1,5 +1,6 @@
 // The mock runtime's spaces, views and swapchains (docs/xr.md): a head
-// 1.7 m above the stage floor that does not move, two eyes 64 mm apart,
+// 1.7 m above the stage floor that does not move (turned HG_MOCK_XR_HEAD_YAW
+// degrees to the right, if set), two eyes 64 mm apart,
 // controllers where the script puts them (mock_input.cpp); swapchain images
 // are GL textures made in the app's current context.
 #include <algorithm>
@@ -7,6 +8,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
+
+#include <glm/gtc/quaternion.hpp>
 
 #include "xr/mock_runtime/mock_state.h"
 
@@ -24,6 +27,8 @@ bool stageOffered() { return std::getenv("HG_MOCK_XR_NO_STAGE") == nullptr; }
 garden::Pose headPose() {
     garden::Pose p;
     p.position = glm::vec3(0.0f, kEyeHeight, 0.0f);
+    if (const char* yaw = std::getenv("HG_MOCK_XR_HEAD_YAW"))
+        p.orientation = glm::angleAxis(-glm::radians(static_cast<float>(std::atof(yaw))), glm::vec3(0.0f, 1.0f, 0.0f));
     return p;
 }
 
@@ -172,7 +177,7 @@ XRAPI_ATTR XrResult XRAPI_CALL locateViews(XrSession session, const XrViewLocate
     for (int i = 0; i < 2; ++i) {
         if (views[i].type != XR_TYPE_VIEW) return XR_ERROR_VALIDATION_FAILURE;
         garden::Pose eye = headPose();
-        eye.position.x += i == 0 ? -kHalfIpd : kHalfIpd;
+        eye.position += eye.orientation * glm::vec3(i == 0 ? -kHalfIpd : kHalfIpd, 0.0f, 0.0f);
         views[i].pose = base ? toXr(compose(inverse(*base), eye)) : XrPosef{{0, 0, 0, 1}, {0, 0, 0}};
         // A little wider towards the outside, as headsets are.
         views[i].fov = i == 0 ? XrFovf{-0.85f, 0.75f, 0.8f, -0.8f} : XrFovf{-0.75f, 0.85f, 0.8f, -0.8f};

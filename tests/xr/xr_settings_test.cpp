@@ -1,0 +1,79 @@
+// The headset's user settings file (xr/xr_settings.h): written and read
+// back, the defaults without a file, a bad file named with its place and
+// the defaults kept, the path from the environment.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include "xr/xr_settings.h"
+
+namespace hg::xr {
+namespace {
+
+class XrSettings : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir = std::filesystem::temp_directory_path() /
+              ("hg_xr_settings_" + std::to_string(::getpid()) + "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        std::filesystem::remove_all(dir);
+    }
+    void TearDown() override { std::filesystem::remove_all(dir); }
+    std::filesystem::path dir;
+};
+
+TEST_F(XrSettings, SavedSettingsReadBackAndTheFolderIsMade) {
+    const std::string path = (dir / "hypergarden" / "xr.json").string();
+    std::string warning = "x";
+    const XrUserSettings none = loadXrSettings(path, warning);
+    EXPECT_FALSE(none.leftHanded);
+    EXPECT_FALSE(none.seated);
+    EXPECT_EQ(warning, "") << "no file yet: the defaults, quietly";
+    XrUserSettings s;
+    s.leftHanded = true;
+    ASSERT_EQ(saveXrSettings(path, s), "");
+    XrUserSettings back = loadXrSettings(path, warning);
+    EXPECT_TRUE(back.leftHanded);
+    EXPECT_FALSE(back.seated);
+    s.leftHanded = false;
+    s.seated = true;
+    ASSERT_EQ(saveXrSettings(path, s), "");
+    back = loadXrSettings(path, warning);
+    EXPECT_FALSE(back.leftHanded);
+    EXPECT_TRUE(back.seated);
+    for (const auto& e : std::filesystem::directory_iterator(dir / "hypergarden"))
+        EXPECT_EQ(e.path().filename(), "xr.json") << "no temporary file left behind";
+}
+
+TEST_F(XrSettings, ABadFileSaysWhereAndKeepsTheDefaults) {
+    std::filesystem::create_directories(dir);
+    const std::string path = (dir / "xr.json").string();
+    std::ofstream(path) << R"({"left_handed": true, "seated": "yes"})";
+    std::string warning;
+    const XrUserSettings s = loadXrSettings(path, warning);
+    EXPECT_FALSE(s.leftHanded) << "nothing half-read";
+    EXPECT_NE(warning.find(path), std::string::npos) << warning;
+    EXPECT_NE(warning.find("$.seated"), std::string::npos) << warning;
+    std::ofstream(path) << "{\n  \"seated\": tru\n}";
+    loadXrSettings(path, warning);
+    EXPECT_NE(warning.find("line 2"), std::string::npos) << warning;
+}
+
+TEST_F(XrSettings, ThePathFollowsTheEnvironment) {
+    ::setenv("HG_XR_SETTINGS", "/somewhere/xr.json", 1);
+    EXPECT_EQ(xrSettingsPath(), "/somewhere/xr.json");
+    ::unsetenv("HG_XR_SETTINGS");
+    ::setenv("XDG_CONFIG_HOME", "/config", 1);
+    EXPECT_EQ(xrSettingsPath(), "/config/hypergarden/xr.json");
+    ::unsetenv("XDG_CONFIG_HOME");
+    const char* home = std::getenv("HOME");
+    if (home) {
+        EXPECT_EQ(xrSettingsPath(), std::string(home) + "/.config/hypergarden/xr.json");
+    }
+}
+
+}  // namespace
+}  // namespace hg::xr
