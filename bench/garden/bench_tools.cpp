@@ -8,13 +8,15 @@
 // interval-culled), what a box update costs without the unedited grid.
 // Seed 002's impact table form: 10, 100 and 1,000 impacts in one pull, cast,
 // applied and remeshed. A whole carving frame in the running garden.
-// Reopening a session of 10,000 journalled actions.
+// Reopening a session of 10,000 journalled actions. Exporting a sculpture
+// of 1,000 edits as HyperFun.
 // Prints a Markdown table; --json FILE writes the rows too.
 //
 //   ./build/release/bench/bench_tools [--json out.json] [--filter NAME] [--repeat N]
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <random>
 #include <string>
@@ -25,7 +27,9 @@
 
 #include "../bench_common.h"
 
+#include "frep/parser.h"
 #include "garden/app/garden_session.h"
+#include "garden/export/hyperfun_export.h"
 #include "garden/sculpt/impacts.h"
 #include "garden/sculpt/sculpture_edits.h"
 #include "garden/sculpt/stroke_segments.h"
@@ -301,6 +305,51 @@ int main(int argc, char** argv) {
         if (!why.empty()) std::fprintf(stderr, "reopen: %s\n", why.c_str());
         std::printf("| default | %zu | %.2f | %.2f | %.2f | %.2f |\n", records.size(), openS, playS, openS + playS, playS / openS);
         rows.push_back({{"name", "reopen/10000"}, {"open_s", openS}, {"play_s", playS}});
+    }
+    // Exporting a sculpture of 1,000 edits as HyperFun (docs/export.md):
+    // the text made, written atomically, and read back by our parser.
+    if (args.matches("export")) {
+        std::printf("\n| sculpture | edits | pieces | statements | bytes | export (ms) | write (ms) | parse back (ms) |\n");
+        std::printf("|---|---:|---:|---:|---:|---:|---:|---:|\n");
+        const std::string gardenPath = std::string(HG_SOURCE_DIR) + "/content/gardens/default.json";
+        garden::SessionSettings settings;
+        settings.maxLevel = 0;
+        garden::GardenSession session(garden::loadGarden(gardenPath), settings);
+        const int d = session.findSculpture("dryad");
+        const garden::Sculpture& dryad = session.sculptures()[static_cast<std::size_t>(d)];
+        const frep::Box3& b = dryad.volume->frame.modelBox;
+        const double v = dryad.volume->frame.voxelSize;
+        std::mt19937 rng(17);
+        std::uniform_real_distribution<double> ux(b.lo[0], b.hi[0]), uy(b.lo[1], b.hi[1]), uz(b.lo[2], b.hi[2]);
+        std::vector<garden::JournalRecord> records;
+        for (int i = 0; i < 1000; ++i) {
+            const garden::ModelPoint a{ux(rng), uy(rng), uz(rng)};
+            if (i % 4 == 3) {
+                garden::Perturbation p;
+                p.center = a;
+                p.radii = {6 * v, 5 * v, 6 * v};
+                p.strength = 2.0;
+                records.push_back(garden::PerturbRecord{dryad.name, p});
+            } else {
+                records.push_back(garden::StrokeRecord{dryad.name, i % 2 ? garden::StrokeTool::Carve : garden::StrokeTool::Add,
+                                                       4 * v, 2.0, {a, {a[0] + 10 * v, a[1] + 4 * v, a[2]}}, std::nullopt});
+            }
+        }
+        if (const std::string why = session.restore(records); !why.empty()) std::fprintf(stderr, "export: %s\n", why.c_str());
+        garden::HyperFunExport e;
+        const double exportS = bench::bestOf(args.repeat, [&] { e = garden::exportHyperFun(session, d); });
+        if (!e.error.empty()) std::fprintf(stderr, "export: %s\n", e.error.c_str());
+        const std::string out = (std::filesystem::temp_directory_path() / "bench_tools_export.hf").string();
+        const double writeS = bench::bestOf(args.repeat, [&] { garden::writeHyperFunExport(e, out); });
+        std::filesystem::remove(out);
+        bool parsed = false;
+        const double parseS = bench::bestOf(args.repeat, [&] { parsed = frep::parseProgram(e.text, "export.hf").ok(); });
+        if (!parsed) std::fprintf(stderr, "export: the exported text does not parse\n");
+        std::printf("| key_dryad 192^3 | %zu | %zu | %zu | %zu | %.1f | %.1f | %.1f |\n", e.edits, e.pieces, e.statements,
+                    e.text.size(), exportS * 1e3, writeS * 1e3, parseS * 1e3);
+        rows.push_back({{"name", "export/hf/1000"}, {"edits", e.edits}, {"pieces", e.pieces}, {"statements", e.statements},
+                        {"bytes", e.text.size()}, {"export_ms", exportS * 1e3}, {"write_ms", writeS * 1e3},
+                        {"parse_ms", parseS * 1e3}});
     }
     if (!args.jsonPath.empty()) std::ofstream(args.jsonPath) << rows.dump(2) << "\n";
     return 0;

@@ -196,6 +196,9 @@ public:
     // weights (what the result must equal once idle).
     const voxel::Volume* morphResult() const;
     std::unique_ptr<voxel::Volume> blendFromScratch() const;
+    // The morph's source caches (none: no morph); the export reads their
+    // normalizations.
+    const MorphSources* morphSources() const { return sources_.get(); }
 
     glm::mat4 view() const { return navigator_.view(); }
 

@@ -75,6 +75,18 @@ struct SessionCommandOptions {
 };
 int runSessionCommand(const SessionCommandOptions& options);
 
+struct ExportOptions {
+    std::string input;                // a session folder or a garden file (.json)
+    std::string sculpture;            // its name in the garden
+    std::string output;               // .hf (.stl, .vdb, .obj, .glb: the mesh formats)
+    int resolution = 0;               // mesh formats: voxels along the longest side (0: the grid's)
+    double mmPerUnit = 1.0;           // STL: millimetres per model unit
+    bool ascii = false;               // STL: ASCII instead of binary
+    std::vector<double> box;          // mesh formats: a model box instead of the sculpture's
+    double memoryLimitMiB = 0.0;      // mesh formats: 0: 80% of available memory
+};
+int runExport(const ExportOptions& options);
+
 // "0.5,1,-2" -> {0.5, 1, -2}; false when an item is not a number.
 bool parseNumberList(const std::string& text, std::vector<double>& out);
 

@@ -1,8 +1,8 @@
 // hypergarden: the command line. With no subcommand it opens the desktop
 // garden; subcommands check and evaluate HyperFun files, voxelize them, mesh
-// them to STL and replay scripted sessions. Built twice: `hypergarden-full`
-// runs everything, `hypergarden` (HG_CLI_KERNEL_ONLY) runs check and eval
-// and hands the rest to hypergarden-full.
+// them to STL, replay scripted sessions and export sculptures. Built twice:
+// `hypergarden-full` runs everything, `hypergarden` (HG_CLI_KERNEL_ONLY)
+// runs check and eval and hands the rest to hypergarden-full.
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
@@ -96,6 +96,18 @@ int main(int argc, char** argv) {
                          "Rebuild every grid from the journal and compare it with the snapshots (exit 1 where they differ)");
     sessionCmd->add_flag("--json", sessionOpts.json, "Print JSON instead of text");
 
+    ExportOptions exportOpts;
+    std::string exportBox;
+    auto* exportCmd = app.add_subcommand("export", "Write a sculpture of a session or garden as HyperFun (.hf) or a mesh");
+    exportCmd->add_option("input", exportOpts.input, "Session folder, or garden file (.json)")->required();
+    exportCmd->add_option("--sculpture", exportOpts.sculpture, "The sculpture's name in the garden")->required();
+    exportCmd->add_option("-o,--output", exportOpts.output, "Output file: .hf (.stl, .vdb, .obj, .glb: meshes)")->required();
+    exportCmd->add_option("--res", exportOpts.resolution, "Meshes: voxels along the model box's longest side");
+    exportCmd->add_option("--mm-per-unit", exportOpts.mmPerUnit, "STL: millimetres per model unit (default 1)");
+    exportCmd->add_flag("--ascii", exportOpts.ascii, "STL: ASCII instead of binary");
+    exportCmd->add_option("--box", exportBox, "Meshes: model box x0,y0,z0,x1,y1,z1 (default: the sculpture's)");
+    exportCmd->add_option("--memory-limit", exportOpts.memoryLimitMiB, "Meshes: MiB the work may use (default: 80% of available)");
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -136,6 +148,13 @@ int main(int argc, char** argv) {
             return 2;
         }
         return runVoxelize(voxOpts);
+    }
+    if (*exportCmd) {
+        if (!parseNumberList(exportBox, exportOpts.box) || (!exportOpts.box.empty() && exportOpts.box.size() != 6)) {
+            std::cerr << "error: --box expects six numbers separated by commas: x0,y0,z0,x1,y1,z1\n";
+            return 2;
+        }
+        return runExport(exportOpts);
     }
     if (*meshCmd) {
         if (!parseNumberList(meshBox, meshOpts.box)) {

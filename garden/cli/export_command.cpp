@@ -1,0 +1,134 @@
+// `hypergarden export (SESSION_DIR | GARDEN.json) --sculpture NAME -o OUT`:
+// one sculpture as it stands in a session (the journal played, read only:
+// the folder is not changed) or as a garden file gives it, written as exact
+// HyperFun (docs/export.md). Every check that needs no work comes first;
+// the file is written atomically, so a failure leaves none.
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+
+#include "garden/app/garden_session.h"
+#include "garden/cli/commands.h"
+#include "garden/cli/load_model.h"
+#include "garden/export/hyperfun_export.h"
+#include "garden/session/journal.h"
+#include "garden/session/session_folder.h"
+
+namespace hg::garden::cli {
+
+namespace {
+
+std::string lowerExtension(const std::string& path) {
+    std::string e = std::filesystem::path(path).extension().string();
+    for (char& c : e) c = static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
+    return e;
+}
+
+// The garden of `input` with its session's journal played (none for a
+// garden file). Prints why not and sets `status` when it cannot be opened.
+std::unique_ptr<GardenSession> openForExport(const std::string& input, int& status) {
+    status = 2;
+    std::string gardenFile = input;
+    JournalRead journal;
+    const bool folder = std::filesystem::is_directory(input);
+    if (folder) {
+        const SessionPaths paths(input);
+        if (!std::filesystem::exists(paths.manifest)) {
+            std::cerr << "error: " << input << " is not a session folder (no session.json)\n";
+            return nullptr;
+        }
+        if (std::string why = checkSessionManifest(paths); !why.empty()) {
+            std::cerr << "error: " << why << "\n";
+            return nullptr;
+        }
+        gardenFile = paths.garden;
+        if (std::filesystem::exists(paths.journal)) {
+            journal = readJournal(paths.journal);
+            if (!journal.ok()) {
+                std::cerr << "error: " << journal.error << "\n";
+                return nullptr;
+            }
+            if (journal.damaged())
+                std::cerr << "warning: " << paths.journal << ": damaged from record " << journal.damagedRecord << " ("
+                          << journal.damage << "); exporting the " << journal.records.size()
+                          << " actions before it\n";
+        }
+    } else if (!std::filesystem::exists(input)) {
+        std::cerr << "error: " << input << ": no such session folder or garden file\n";
+        return nullptr;
+    } else if (lowerExtension(input) != ".json") {
+        std::cerr << "error: " << input << ": expected a session folder or a garden file (.json)\n";
+        return nullptr;
+    }
+    GardenLoad load = loadGarden(gardenFile);
+    if (!load.ok()) {
+        std::cerr << "error: " << load.error << "\n";
+        return nullptr;
+    }
+    SessionSettings settings;
+    settings.maxLevel = 0;  // no window: the coarsest meshes are not wanted
+    auto session = std::make_unique<GardenSession>(std::move(load), settings);
+    if (std::string why = session->restore(journal.records); !why.empty()) {
+        std::cerr << "error: " << input << ": the journal cannot be played: " << why << "\n";
+        status = 1;
+        return nullptr;
+    }
+    status = 0;
+    return session;
+}
+
+}  // namespace
+
+int runExport(const ExportOptions& options) {
+    const std::string ext = lowerExtension(options.output);
+    if (ext == ".stl" || ext == ".vdb" || ext == ".obj" || ext == ".glb") {
+        std::cerr << "error: " << options.output << ": export to " << ext << " is not built yet (use .hf)\n";
+        return 2;
+    }
+    if (ext != ".hf") {
+        std::cerr << "error: " << options.output << ": unknown format '" << ext
+                  << "': the export writes .hf, .stl, .vdb, .obj or .glb\n";
+        return 2;
+    }
+    if (options.resolution < 0) {
+        std::cerr << "error: --res must be positive\n";
+        return 2;
+    }
+    if (!outputWritable(options.output)) return 2;
+    const auto start = std::chrono::steady_clock::now();
+    int status = 0;
+    std::unique_ptr<GardenSession> session = openForExport(options.input, status);
+    if (!session) return status;
+    const int index = session->findSculpture(options.sculpture);
+    if (index < 0) {
+        std::cerr << "error: " << options.input << " has no sculpture '" << options.sculpture << "'; its sculptures:";
+        for (const Sculpture& s : session->sculptures()) std::cerr << " '" << s.name << "'";
+        std::cerr << "\n";
+        return 2;
+    }
+    const Sculpture& s = session->sculptures()[static_cast<std::size_t>(index)];
+    if (s.missing()) {
+        std::cerr << "error: sculpture '" << s.name << "' is missing: " << s.error
+                  << (s.error.empty() || s.error.back() != '\n' ? "\n" : "");
+        return 1;
+    }
+    const HyperFunExport r = exportHyperFun(*session, index);
+    if (!r.error.empty()) {
+        std::cerr << "error: cannot export sculpture '" << s.name << "': " << r.error << "\n";
+        return 1;
+    }
+    if (!r.warning.empty()) std::cerr << "warning: " << r.warning << "\n";
+    if (std::string why = writeHyperFunExport(r, options.output); !why.empty()) {
+        std::cerr << "error: " << why << "\n";
+        return 1;
+    }
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::cout << "wrote " << options.output << ": sculpture '" << s.name << "', " << r.edits << " edits ("
+              << r.pieces << " pieces), " << r.statements << " statements in my_model, " << r.text.size()
+              << " bytes, " << seconds << " s\n";
+    return 0;
+}
+
+}  // namespace hg::garden::cli
