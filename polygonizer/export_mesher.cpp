@@ -86,16 +86,20 @@ struct Candidates {
 
 // The index box's faces, an 8x8 patch at a time: blocks holding an inside
 // voxel on a face, where a solid cut by the box is capped. A tile answers
-// for its whole patch, a leaf's voxels are read from its buffer.
+// for its whole patch, a leaf's voxels are read from its buffer. Only the
+// patches that reach into `clip` are read (a window's surroundings: a tile
+// of a large export need not scan the whole box's faces).
 template <class Mark>
-void markCappedFaces(const voxel::IndexBox& b, Accessor& acc, Mark mark) {
+void markCappedFaces(const voxel::IndexBox& b, const voxel::IndexBox& clip, Accessor& acc, Mark mark) {
     for (int a = 0; a < 3; ++a) {
         const int u = (a + 1) % 3, v = (a + 2) % 3;
-        for (int side = 0; side < 2; ++side)
-            for (int i0 = b.lo[u] & ~(kB - 1); i0 <= b.hi[u]; i0 += kB)
-                for (int j0 = b.lo[v] & ~(kB - 1); j0 <= b.hi[v]; j0 += kB) {
+        for (int side = 0; side < 2; ++side) {
+            const int face = side ? b.hi[a] : b.lo[a];
+            if (face < clip.lo[a] || face > clip.hi[a]) continue;
+            for (int i0 = std::max(b.lo[u], clip.lo[u]) & ~(kB - 1); i0 <= std::min(b.hi[u], clip.hi[u]); i0 += kB)
+                for (int j0 = std::max(b.lo[v], clip.lo[v]) & ~(kB - 1); j0 <= std::min(b.hi[v], clip.hi[v]); j0 += kB) {
                     Coord c;
-                    c[a] = side ? b.hi[a] : b.lo[a];
+                    c[a] = face;
                     c[u] = i0;
                     c[v] = j0;
                     const Coord block = c & ~(kB - 1);
@@ -113,6 +117,7 @@ void markCappedFaces(const voxel::IndexBox& b, Accessor& acc, Mark mark) {
                     }
                     if (inside) mark(block);
                 }
+        }
     }
 }
 
@@ -138,7 +143,7 @@ void forEach(std::size_t n, const Tree& tree, Body body) {
 
 // Phase 0: candidates numbered in a fixed order (BlockTable's), so the mesh
 // does not depend on the thread count; their values and inside bits.
-Candidates findCandidates(const voxel::Volume& volume) {
+Candidates findCandidates(const voxel::Volume& volume, const voxel::IndexBox& faceClip) {
     const Tree& tree = voxel::vdb(volume).tree();
     std::vector<const Leaf*> leaves;
     leaves.reserve(tree.leafCount());
@@ -153,7 +158,7 @@ Candidates findCandidates(const voxel::Volume& volume) {
     };
     for (const Leaf* leaf : leaves) markWithLowerNeighbours(leaf->origin());
     Accessor acc(tree);
-    markCappedFaces(volume.frame.indexBox, acc, markWithLowerNeighbours);
+    markCappedFaces(volume.frame.indexBox, faceClip, acc, markWithLowerNeighbours);
 
     c.origins.reserve(c.table.marked());
     c.table.number([&c](int x, int y, int z) { c.origins.push_back(originOf(Coord(x, y, z))); });
@@ -237,6 +242,7 @@ struct Output {
     float* positions;
     float* normals;
     std::uint32_t* indices;
+    std::uint64_t* edges;  // gridEdgeKey per vertex, or none
 };
 
 // Phase 3a: one vertex per owned crossing edge, in the order BlockEdges
@@ -270,6 +276,7 @@ void placeVertices(const Coord& origin, std::uint32_t firstVertex, const BlockEd
                     out.positions[k + a] = static_cast<float>(pos[a]);
                     out.normals[k + a] = g[a] * scale;
                 }
+                if (out.edges) out.edges[k / 3] = gridEdgeKey(axis, origin.x() + x, origin.y() + y, origin.z() + z);
                 k += 3;
             }
         }
@@ -290,6 +297,7 @@ void meshBlock(Candidates& c, std::size_t i, Accessor& acc, const voxel::VolumeF
         h.fill(c, c.origins[i], acc);
         placeVertices(c.origins[i], s.firstVertex, *s.edges, h, frame, out);
     }
+    if (s.counts.triangles == 0) return;  // a window's neighbour: vertices only
     // The blocks that own this block's cells' edges: itself and its upper
     // neighbours (those without a crossing own no vertex).
     std::array<EdgeOwner, 8> owners{};
@@ -340,13 +348,26 @@ void allocate(std::vector<T>& v, std::size_t n) {
     v.resize(n);
 }
 
-}  // namespace
+// A block of a window's own cells, or one whose vertices those cells use
+// (the block itself and its upper neighbours: origins up to hi + 1).
+bool inWindow(const Coord& origin, const voxel::IndexBox& cells, int reach) {
+    for (int a = 0; a < 3; ++a)
+        if (origin[a] < cells.lo[a] || origin[a] > cells.hi[a] + reach) return false;
+    return true;
+}
 
-Mesh meshVolume(const voxel::Volume& volume, ExportStats* stats) {
+Mesh meshImpl(const voxel::Volume& volume, const CellWindow* window, ExportStats* stats) {
     const auto start = std::chrono::steady_clock::now();
     const Tree& tree = voxel::vdb(volume).tree();
 
-    Candidates c = findCandidates(volume);
+    // A window's cells reach one block beyond it either way.
+    voxel::IndexBox faceClip = volume.frame.indexBox;
+    if (window)
+        for (int a = 0; a < 3; ++a) {
+            faceClip.lo[a] = window->cells.lo[a] - kB;
+            faceClip.hi[a] = window->cells.hi[a] + kB + 1;
+        }
+    Candidates c = findCandidates(volume, faceClip);
     const std::size_t n = c.origins.size();
 
     // Phase 1. The pool is left uninitialized: only the blocks that are not
@@ -363,6 +384,10 @@ Mesh meshVolume(const voxel::Volume& volume, ExportStats* stats) {
     std::vector<std::uint32_t> active;
     for (std::size_t i = 0; i < n; ++i) {
         BlockState& s = c.state[i];
+        if (window && s.edges) {
+            if (!inWindow(c.origins[i], window->cells, 0)) s.counts.triangles = s.counts.surfaceCells = 0;
+            if (!inWindow(c.origins[i], window->cells, 1)) s.counts.vertices = 0;
+        }
         s.firstVertex = vertices;
         s.firstTriangle = triangles;
         vertices += s.counts.vertices;
@@ -375,9 +400,14 @@ Mesh meshVolume(const voxel::Volume& volume, ExportStats* stats) {
     tbb::parallel_invoke([&] { allocate(mesh.positions, 3 * static_cast<std::size_t>(vertices)); },
                          [&] { allocate(mesh.normals, 3 * static_cast<std::size_t>(vertices)); },
                          [&] { allocate(mesh.indices, 3 * triangles); });
+    std::uint64_t* edgeKeys = nullptr;
+    if (window && window->vertexEdges) {
+        window->vertexEdges->assign(vertices, 0);
+        edgeKeys = window->vertexEdges->data();
+    }
 
     // Phase 3.
-    const Output out{mesh.positions.data(), mesh.normals.data(), mesh.indices.data()};
+    const Output out{mesh.positions.data(), mesh.normals.data(), mesh.indices.data(), edgeKeys};
     forEach(active.size(), tree, [&](std::size_t k, Accessor& acc) {
         if (k + 1 < active.size()) prefetchValues(c.values[active[k + 1]]);
         meshBlock(c, active[k], acc, volume.frame, out);
@@ -390,6 +420,14 @@ Mesh meshVolume(const voxel::Volume& volume, ExportStats* stats) {
     st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (stats) *stats = st;
     return mesh;
+}
+
+}  // namespace
+
+Mesh meshVolume(const voxel::Volume& volume, ExportStats* stats) { return meshImpl(volume, nullptr, stats); }
+
+Mesh meshVolume(const voxel::Volume& volume, const CellWindow& window, ExportStats* stats) {
+    return meshImpl(volume, &window, stats);
 }
 
 }  // namespace hg::poly

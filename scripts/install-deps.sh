@@ -11,7 +11,9 @@ PACKAGES=(
   libopenxr-dev libopenxr-loader1
   libimgui-dev libstb-dev libcli11-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  libtinygltf-dev libmeshoptimizer-dev
   xvfb xauth libgl1-mesa-dri mesa-utils admesh clang
+  openxr-layer-corevalidation
 )
 
 missing=()

@@ -83,6 +83,52 @@ std::unique_ptr<FloatLeaf> makeLeaf(const LeafSamples& s, float background, floa
     return leaf;
 }
 
+// The walk over `clip` and the tree it gives (fills, then the leaves built
+// on the workers, pruned): what voxelize() stores there. False, with
+// `error`, when the memory guard refuses the walk's task boxes.
+bool sampleTree(const frep::Model& model, const VolumeFrame& frame, double scale, const IndexBox& clip,
+                const SampleOptions& options, SampleStats& stats, std::string& error, openvdb::FloatTree& tree) {
+    const std::uint64_t limit = memoryLimit(options.memoryLimit);
+    std::atomic<std::size_t> done{0};
+    std::size_t total = 0;
+    std::vector<std::vector<std::unique_ptr<FloatLeaf>>> built;
+    const float band = frame.band;
+    Walk walk;
+    bool ran = runWalk(
+        model, frame, scale, clip, walk,
+        [&](std::size_t tasks) {
+            // Every task box could at worst fill all its leaves.
+            stats.estimatedBytes = tasks * kLeavesPerTask * kLeafBytes;
+            error = refuseIfTooBig("the narrow-band grid", frame.resolution, stats.estimatedBytes, limit, 2.0);
+            total = tasks;
+            built.resize(tasks);
+            return error.empty();
+        },
+        [&](std::size_t i, WalkOutput& out) {
+            // Leaves are built on the workers; the samples are freed at once.
+            for (const LeafSamples& s : out.leaves) built[i].push_back(makeLeaf(s, -band, band));
+            out.leaves.clear();
+            out.leaves.shrink_to_fit();
+            std::size_t d = ++done;
+            if (options.progress && (d % std::max<std::size_t>(1, total / 200) == 0 || d == total))
+                options.progress(static_cast<double>(d) / static_cast<double>(total));
+        });
+    if (!ran) return false;
+    copyStats(walk, stats);
+
+    // Top boxes stop at task boxes, so only task outputs hold leaves, and
+    // those were built on the workers.
+    const std::size_t tops = walk.outputs.size() - built.size();
+    for (std::size_t i = 0; i < walk.outputs.size(); ++i) {
+        for (const BoxFill& f : walk.outputs[i].fills)
+            if (f.value != -band) tree.fill(toCoordBBox(f.box), f.value, false);
+        if (i >= tops)
+            for (auto& leaf : built[i - tops]) tree.addLeaf(leaf.release());
+    }
+    tree.prune();
+    return true;
+}
+
 }  // namespace
 
 VoxelizeResult voxelize(const frep::Model& model, const VolumeRequest& request, const SampleOptions& options) {
@@ -108,58 +154,43 @@ VoxelizeResult voxelize(const frep::Model& model, const VolumeRequest& request, 
     SampleStats& stats = result.stats;
     stats.voxels = frame.indexBox.volume();
 
-    const std::uint64_t limit = memoryLimit(options.memoryLimit);
-    std::atomic<std::size_t> done{0};
-    std::size_t total = 0;
-    std::vector<std::vector<std::unique_ptr<FloatLeaf>>> built;
-    std::vector<std::unique_ptr<FloatLeaf>> topLeaves;
-    const float band = frame.band;
-    Walk walk;
-    bool ran = runWalk(
-        model, frame, scale, frame.indexBox, walk,
-        [&](std::size_t tasks) {
-            // Every task box could at worst fill all its leaves.
-            stats.estimatedBytes = tasks * kLeavesPerTask * kLeafBytes;
-            result.error = refuseIfTooBig("the narrow-band grid", frame.resolution, stats.estimatedBytes, limit, 2.0);
-            total = tasks;
-            built.resize(tasks);
-            return result.error.empty();
-        },
-        [&](std::size_t i, WalkOutput& out) {
-            // Leaves are built on the workers; the samples are freed at once.
-            for (const LeafSamples& s : out.leaves) built[i].push_back(makeLeaf(s, -band, band));
-            out.leaves.clear();
-            out.leaves.shrink_to_fit();
-            std::size_t d = ++done;
-            if (options.progress && (d % std::max<std::size_t>(1, total / 200) == 0 || d == total))
-                options.progress(static_cast<double>(d) / static_cast<double>(total));
-        });
-    if (!ran) return result;
-    copyStats(walk, stats);
+    openvdb::FloatGrid::Ptr grid = openvdb::FloatGrid::create(-frame.band);
+    grid->setTransform(frameTransform(frame));
+    grid->setName(request.source.body);
+    if (!sampleTree(model, frame, scale, frame.indexBox, options, stats, result.error, grid->tree())) return result;
 
     Volume volume;
     volume.frame = frame;
     volume.normalization = scale;
     volume.boxOrigin = result.modelBox.origin;
     volume.source = request.source;
-    openvdb::FloatGrid::Ptr grid = openvdb::FloatGrid::create(-band);
-    grid->setTransform(frameTransform(frame));
-    grid->setName(request.source.body);
-    openvdb::FloatTree& tree = grid->tree();
-    // Top boxes stop at task boxes, so only task outputs hold leaves, and
-    // those were built on the workers.
-    const std::size_t tops = walk.outputs.size() - built.size();
-    for (std::size_t i = 0; i < walk.outputs.size(); ++i) {
-        for (const BoxFill& f : walk.outputs[i].fills)
-            if (f.value != -band) tree.fill(toCoordBBox(f.box), f.value, false);
-        if (i >= tops)
-            for (auto& leaf : built[i - tops]) tree.addLeaf(leaf.release());
-    }
-    tree.prune();
     volume.grid().grid = grid;
     stats.seconds = std::chrono::duration<double>(Clock::now() - start).count();
     result.volume = std::move(volume);
     return result;
+}
+
+Volume sampleRegion(const frep::Model& model, const VolumeFrame& frame, double scale, const IndexBox& region,
+                    SampleStats* stats) {
+    auto start = Clock::now();
+    Volume volume;
+    volume.frame = frame;
+    volume.normalization = scale;
+    openvdb::FloatGrid::Ptr grid = openvdb::FloatGrid::create(-frame.band);
+    grid->setTransform(frameTransform(frame));
+    SampleStats st;
+    const IndexBox clip = intersect(region, frame.indexBox);
+    st.voxels = clip.volume();
+    if (!clip.empty()) {
+        SampleOptions unlimited;
+        unlimited.memoryLimit = ~std::uint64_t{0};
+        std::string error;
+        sampleTree(model, frame, scale, clip, unlimited, st, error, grid->tree());
+    }
+    volume.grid().grid = grid;
+    st.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    if (stats) *stats = st;
+    return volume;
 }
 
 SampleStats resampleRegion(Volume& volume, const frep::Model& model, const IndexBox& region) {

@@ -56,6 +56,14 @@ struct VoxelizeResult {
 
 VoxelizeResult voxelize(const frep::Model& model, const VolumeRequest& request, const SampleOptions& options = {});
 
+// A fresh volume in `frame` that holds only `region` (index space, clipped
+// to the frame) of what voxelize() stores with normalization `scale`; every
+// other voxel reads the background (outside). Built as voxelize() builds
+// its grid (leaves on the workers, pruned), without its memory guard: the
+// caller bounds the region (polygonizer/tiled_mesher.h).
+Volume sampleRegion(const frep::Model& model, const VolumeFrame& frame, double scale, const IndexBox& region,
+                    SampleStats* stats = nullptr);
+
 // Recomputes the voxels of `region` (index space, clipped to the frame) from
 // `model` with the volume's normalization, touching nothing else. Bit-identical
 // to what a full sampling of `model` stores there.

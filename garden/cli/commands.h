@@ -66,6 +66,11 @@ struct GardenOptions {
     std::string exitScreenshot;       // with frames: a PNG of the last frame
     std::string screenshotDir = ".";
     std::string session;              // open (or create) this session folder ("" : none)
+    bool xr = false;                  // in a headset through OpenXR (docs/xr.md)
+    std::string xrScript;             // with xr: a replay script's commands at their frames
+    bool leftHanded = false;          // with xr: the left hand holds the tool
+    bool seated = false;              // with xr: seated use, heights raised
+    bool smoothTurn = false;          // with xr: smooth turning instead of snap turns
 };
 
 struct SessionCommandOptions {

@@ -1,10 +1,22 @@
 // No subcommand: the desktop garden.
 #include "garden/cli/commands.h"
 #include "garden/desktop/desktop_app.h"
+#include "xr/xr_garden.h"
 
 namespace hg::garden::cli {
 
 int runGarden(const GardenOptions& options) {
+    if (options.xr) {
+        xr::XrOptions x;
+        x.garden = options.garden;
+        x.session = options.session;
+        x.script = options.xrScript;
+        x.frames = options.frames;
+        x.leftHanded = options.leftHanded;
+        x.seated = options.seated;
+        x.smoothTurn = options.smoothTurn;
+        return xr::runXrGarden(x);
+    }
     DesktopOptions d;
     d.garden = options.garden;
     d.width = options.width;

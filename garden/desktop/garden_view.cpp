@@ -114,12 +114,18 @@ std::size_t GardenView::upload(GardenSession& session, double allowanceMs, std::
 }
 
 void GardenView::render(const GardenSession& session, glm::ivec2 viewport, float fovY) {
+    render(session, viewport, session.navigator().view(),
+           glm::perspective(fovY, static_cast<float>(viewport.x) / static_cast<float>(std::max(viewport.y, 1)), 0.05f, 500.0f),
+           session.navigator().eye());
+}
+
+void GardenView::render(const GardenSession& session, glm::ivec2 viewport, const glm::mat4& view,
+                        const glm::mat4& projection, const glm::vec3& eye) {
     const Garden& g = session.garden();
     View v;
-    v.view = session.navigator().view();
-    v.projection = glm::perspective(fovY, static_cast<float>(viewport.x) / static_cast<float>(std::max(viewport.y, 1)),
-                                    0.05f, 500.0f);
-    v.eye = session.navigator().eye();
+    v.view = view;
+    v.projection = projection;
+    v.eye = eye;
     v.viewport = viewport;
     addGardenLights(g, v);
     renderer_.beginFrame(v);

@@ -29,6 +29,10 @@ public:
     // Draws into the bound framebuffer of `viewport` pixels; chunks outside
     // the view frustum are not drawn.
     void render(const GardenSession& session, glm::ivec2 viewport, float fovY);
+    // The same through a given camera (an XR eye: its own view and
+    // off-centre projection, `eye` its world position).
+    void render(const GardenSession& session, glm::ivec2 viewport, const glm::mat4& view, const glm::mat4& projection,
+                const glm::vec3& eye);
 
     static ChunkId chunkId(std::size_t sculpture, std::size_t chunk) {
         return (static_cast<ChunkId>(sculpture) << 32) | static_cast<ChunkId>(chunk);

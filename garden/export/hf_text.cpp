@@ -79,10 +79,11 @@ std::shared_ptr<const std::string> HfStatements::temporary() {
         n = ++next_;
     }
     std::weak_ptr<std::vector<std::size_t>> pool = free_;
-    return std::shared_ptr<const std::string>(new std::string(prefix_ + std::to_string(n)), [pool, n](const std::string* s) {
+    auto release = [pool, n](const std::string* s) {
         if (auto p = pool.lock()) p->push_back(n);
         delete s;
-    });
+    };
+    return std::shared_ptr<const std::string>(new std::string(prefix_ + std::to_string(n)), release);
 }
 
 HfText HfText::named(HfStatements& body, const std::string& name) {

@@ -112,6 +112,10 @@ std::string renamedBodies(const frep::Model& model, const std::string& prefix, c
             if (names.count(v.name))
                 throw std::runtime_error("the source " + label + ": variable '" + v.spelling + "' of body '" +
                                          b.spelling + "' has the name a body is renamed to");
+        for (const auto& v : b.arrays)
+            if (names.count(v.name))
+                throw std::runtime_error("the source " + label + ": array '" + v.spelling + "' of body '" +
+                                         b.spelling + "' has the name a body is renamed to");
         out += "-- from " + label + (i == last ? "" : " (called by the body below)") + "\n";
         out += frep::writeBody(b, p);
         out += "\n";
@@ -124,8 +128,15 @@ struct BodyWriter {
     HfStatements st;
     std::vector<std::string> arrays;  // "name[size]"
 
-    // A call of a source body with the garden's a[] and a fresh s[] (a
-    // Model starts every evaluation with s[] at 0), arrays `aName`, `sName`.
+    bool declaresS = false;  // the body resets its own s[1] between calls
+    int calls = 0;
+
+    // A call of a source body with the garden's a[] (array `aName`) and
+    // s[] at 0, as a Model evaluates it: a body that declares s[] gets a
+    // fresh array `sName`, as the conformance suite's sarray.hf passes it;
+    // one that does not gets the caller's s[1] (it can change it only
+    // through bodies it calls), set back to 0 before every call but the
+    // body's first.
     HfText callSource(const frep::Model& m, const std::string& callee, const std::string& aName,
                       const std::string& sName) {
         const frep::Body& b = m.body();
@@ -133,14 +144,22 @@ struct BodyWriter {
         std::vector<double> a(static_cast<std::size_t>(b.aSize()), 0.0);
         for (std::size_t i = 0; i < a.size() && i < m.parameters().size(); ++i) a[i] = m.parameters()[i];
         arrays.push_back(aName + "[" + std::to_string(a.size()) + "]");
-        arrays.push_back(sName + "[" + std::to_string(b.sSize()) + "]");
         hfexport::fillArray(st, aName, a);
-        hfexport::fillArray(st, sName, std::vector<double>(static_cast<std::size_t>(b.sSize()), 0.0));
-        return HfText::assign(st, callee + "(x, " + aName + ", " + sName + ")");
+        std::string args = "x, " + aName;
+        if (b.declaresS) {
+            arrays.push_back(sName + "[" + std::to_string(b.sSize()) + "]");
+            hfexport::fillArray(st, sName, std::vector<double>(static_cast<std::size_t>(b.sSize()), 0.0));
+            args += ", " + sName;
+        } else if (calls > 0) {
+            declaresS = true;
+            st.statement("s = [0]");
+        }
+        ++calls;
+        return HfText::assign(st, callee + "(" + args + ")");
     }
 
     std::string finish(const std::string& name, const HfText& result) const {
-        std::string out = name + "(x[3], a[1])\n{\n";
+        std::string out = name + (declaresS ? "(x[3], a[1], s[1])\n{\n" : "(x[3], a[1])\n{\n");
         std::vector<std::string> all = arrays;
         if (st.usesSegmentArrays()) {
             all.push_back(std::string(hfexport::kSegmentBegin) + "[3]");
@@ -160,7 +179,8 @@ struct BodyWriter {
 
 const frep::Model& modelOf(const GardenSession& session, std::size_t index) {
     const SculptureLoad& l = session.load().sculptures.at(index);
-    if (!l.model) throw std::runtime_error("sculpture '" + session.garden().sculptures[index].name + "' has no program");
+    if (!l.model)
+        throw std::runtime_error("sculpture '" + session.garden().sculptures[index].name + "' has no program");
     return *l.model;
 }
 
@@ -169,8 +189,9 @@ std::string sourceLabel(const SculptureSpec& spec, const frep::Model& m) {
            " (sculpture '" + spec.name + "')";
 }
 
-// The morph blend as a body named `name`, after its sources' bodies.
-std::string morphBodies(const GardenSession& session, const std::string& name) {
+// The morph blend as a body named `name`, after its sources' bodies;
+// `statements` receives the blend body's count.
+std::string morphBodies(const GardenSession& session, const std::string& name, std::size_t& statements) {
     const MorphSpec& spec = *session.garden().morph;
     const MorphSources* sources = session.morphSources();
     const auto& weights = session.morphWeights();
@@ -199,6 +220,7 @@ std::string morphBodies(const GardenSession& session, const std::string& name) {
            "'\n";
     out += w.finish(name, blend);
     out += "\n";
+    statements = w.st.statementCount();
     return out;
 }
 
@@ -214,26 +236,29 @@ HyperFunExport exportOrThrow(const GardenSession& session, int index) {
 
     std::ostringstream head;
     head << "-- Hypergarden export of sculpture '" << s.name << "' of garden '" << session.garden().name << "'\n"
-         << "-- my_model is the sculpture in its model frame. Its placement in the garden: position "
-         << vec(s.placement.position) << " m, turned " << num(s.placement.yawDegrees) << " degrees about +y, "
-         << num(s.placement.scale) << " m per model unit.\n"
+         << "-- my_model is the sculpture in its model frame. Its placement in the garden:\n"
+         << "--   position " << vec(s.placement.position) << " m, turned " << num(s.placement.yawDegrees)
+         << " degrees about +y, " << num(s.placement.scale) << " m per model unit.\n"
          << "-- Model box " << vec({frame.modelBox.lo[0], frame.modelBox.lo[1], frame.modelBox.lo[2]}) << " to "
-         << vec({frame.modelBox.hi[0], frame.modelBox.hi[1], frame.modelBox.hi[2]}) << ", grid of "
-         << frame.resolution << " voxels along its longest side (voxel size " << num(frame.voxelSize) << ").\n";
-    if (s.mirror) head << "-- Mirror plane for new edits" << mirrorText(s.mirror).substr(1) << ".\n";
+         << vec({frame.modelBox.hi[0], frame.modelBox.hi[1], frame.modelBox.hi[2]}) << ",\n"
+         << "--   grid of " << frame.resolution << " voxels along its longest side (voxel size "
+         << num(frame.voxelSize) << ").\n";
+    if (s.mirror)
+        head << "-- Mirror plane for new edits: through " << vec(s.mirror->point) << ", normal "
+             << vec(s.mirror->normal) << ".\n";
     if (!edited)
         head << "-- Unedited: my_model " << (s.morphResult() ? "is the morph's blend" : "evaluates as the source body")
              << ".\n";
     else
         head << "-- Edited: my_model is the grid's field in voxels, clamped to +-" << num(s.edits->units().band)
-             << ", after " << s.edits->list().size() << " edits, in order.\n";
+             << ",\n--   after " << s.edits->list().size() << " edits, in order.\n";
     std::string out = head.str() + "\n";
 
     std::string base;  // the body the edits start from
     BodyWriter w;
     HfText f;
     if (s.morphResult()) {
-        out += morphBodies(session, edited ? "hg_morph" : "my_model");
+        out += morphBodies(session, edited ? "hg_morph" : "my_model", r.statements);
         if (!edited) {
             r.text = out;
             return r;

@@ -29,7 +29,7 @@ struct HyperFunExport {
     std::string error;            // why there is none
     std::size_t edits = 0;        // edits written
     std::size_t pieces = 0;       // their pieces (segments, quadrics, impacts)
-    std::size_t statements = 0;   // statements of my_model
+    std::size_t statements = 0;   // statements written in my_model (0: it is the source body itself)
     // Set when the file is likely too large for our own parser (about four
     // syntax nodes a statement against frep::ParseLimits::kMaxNodes); the
     // file is written all the same.

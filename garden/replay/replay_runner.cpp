@@ -22,6 +22,21 @@ std::string screenshotPath(const ReplayOptions& o, const std::string& name) {
 // "" or why the command cannot run.
 std::string apply(const ReplayCommand& c, GardenSession& s, FrameRenderer* renderer, const ReplayOptions& o,
                   ReplayResult& result, std::vector<std::string>& shotsThisFrame) {
+    if (c.kind == ReplayCommand::Kind::Screenshot) {
+        if (!renderer) {
+            result.notes.push_back("frame " + std::to_string(result.frames) + ": screenshot '" + c.text +
+                                   "' skipped (headless)");
+            return "";
+        }
+        shotsThisFrame.push_back(screenshotPath(o, c.text));
+        return "";
+    }
+    return runReplayCommand(c, s);
+}
+
+}  // namespace
+
+std::string runReplayCommand(const ReplayCommand& c, GardenSession& s) {
     switch (c.kind) {
         case ReplayCommand::Kind::Morph:
             if (!s.hasMorph()) return "the garden has no metamorphosis to select";
@@ -31,14 +46,7 @@ std::string apply(const ReplayCommand& c, GardenSession& s, FrameRenderer* rende
             if (!s.hasMorph()) return "the garden has no metamorphosis to weigh";
             s.setMorphWeights(c.vec);
             return "";
-        case ReplayCommand::Kind::Screenshot:
-            if (!renderer) {
-                result.notes.push_back("frame " + std::to_string(result.frames) + ": screenshot '" + c.text +
-                                       "' skipped (headless)");
-                return "";
-            }
-            shotsThisFrame.push_back(screenshotPath(o, c.text));
-            return "";
+        case ReplayCommand::Kind::Screenshot: return "";  // the caller's (apply above)
         case ReplayCommand::Kind::Detail:
             if (c.number <= 0.0) s.setDetail(std::nullopt);
             else s.setDetail(poly::Sphere{c.vec, c.number});
@@ -69,8 +77,6 @@ std::string apply(const ReplayCommand& c, GardenSession& s, FrameRenderer* rende
     }
     return "";
 }
-
-}  // namespace
 
 std::string runSculptCommand(const SculptCommand& command, GardenSession& session) {
     const auto find = [&](const std::string& name, int& index) -> std::string {

@@ -37,6 +37,11 @@ struct ReplayResult {
     bool ok() const { return error.empty(); }
 };
 
+// One command on the session, as a replay runs it at its step's first
+// frame; a screenshot is the caller's to take (nothing is done here). ""
+// or why it was refused.
+std::string runReplayCommand(const ReplayCommand& c, GardenSession& session);
+
 ReplayResult runReplay(const ReplayScript& script, GardenSession& session, FrameRenderer* renderer,
                        const ReplayOptions& options);
 

@@ -223,15 +223,6 @@ double editedValue(const EditList& list, double base, double x, double y, double
     return f;
 }
 
-const char* impactShapeName(ImpactShape s) {
-    switch (s) {
-        case ImpactShape::Sphere: return "sphere";
-        case ImpactShape::Chisel: return "chisel";
-        case ImpactShape::Square: return "square";
-    }
-    return "?";
-}
-
 std::string describe(const Edit& e) {
     if (const auto* m = std::get_if<ImpactSeries>(&e.op))
         return std::to_string(m->impacts.size()) + " impacts" +
@@ -242,15 +233,6 @@ std::string describe(const Edit& e) {
     const auto& p = std::get<Perturbation>(e.op);
     return std::string(p.shape == QuadricShape::Ellipsoid ? "ellipsoid" : "torus") + " perturbation, strength " +
            std::to_string(p.strength);
-}
-
-const char* strokeToolName(StrokeTool t) {
-    switch (t) {
-        case StrokeTool::Carve: return "carve";
-        case StrokeTool::Add: return "add";
-        case StrokeTool::Melt: return "melt";
-    }
-    return "?";
 }
 
 }  // namespace hg::garden

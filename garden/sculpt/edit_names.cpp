@@ -22,6 +22,24 @@ E readEnum(const nlohmann::json& v, const std::string& path, int count, Name nam
 
 }  // namespace
 
+const char* strokeToolName(StrokeTool t) {
+    switch (t) {
+        case StrokeTool::Carve: return "carve";
+        case StrokeTool::Add: return "add";
+        case StrokeTool::Melt: return "melt";
+    }
+    return "?";
+}
+
+const char* impactShapeName(ImpactShape s) {
+    switch (s) {
+        case ImpactShape::Sphere: return "sphere";
+        case ImpactShape::Chisel: return "chisel";
+        case ImpactShape::Square: return "square";
+    }
+    return "?";
+}
+
 const char* quadricShapeName(QuadricShape s) { return s == QuadricShape::Ellipsoid ? "ellipsoid" : "torus"; }
 
 const char* impactSpreadName(ImpactSpread s) {

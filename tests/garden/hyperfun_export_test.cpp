@@ -7,6 +7,7 @@
 // the same sculpture.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <memory>
@@ -160,13 +161,40 @@ void expectExact(const GardenSession& s, int index, int n, unsigned seed = 1) {
     EXPECT_GT(outside, n / 50) << sc.name;
 }
 
+// The largest difference between the exported field and the session's grid
+// (float: the sampler and the edit tape run in float) over `n` random voxel
+// centres, in voxels.
+double gridDifference(const GardenSession& s, int index, int n) {
+    const Parsed p = parseExport(exportOf(s, index).text);
+    if (!p.program || p.body < 0) return 1e30;
+    frep::Interpreter exported(*p.program, p.body);
+    const voxel::Volume& v = *s.sculptures()[static_cast<std::size_t>(index)].volume;
+    const voxel::IndexBox& box = v.frame.indexBox;
+    std::mt19937 rng(21);
+    double worst = 0.0;
+    for (int m = 0; m < n; ++m) {
+        int ijk[3];
+        for (int a = 0; a < 3; ++a) ijk[a] = std::uniform_int_distribution<int>(box.lo[a], box.hi[a])(rng);
+        const auto q = v.frame.position(ijk[0], ijk[1], ijk[2]);
+        const double e = exported.evaluate(q[0], q[1], q[2]).value;
+        worst = std::max(worst, std::fabs(e - static_cast<double>(v.value(ijk[0], ijk[1], ijk[2]))));
+    }
+    return worst;
+}
+
 TEST_F(HyperFunExportTest, AnUneditedSculptureEvaluatesLikeItsSourceFile) {
     // A source of two bodies, the second calling the first, without a[].
     write("plain.hf",
           "inner(x[3], a[1]) { inner = 0.36 - (x[1]^2 + (x[2]-0.5)^2 + x[3]^2); }\n"
           "my_model(x[3], a[1]) { array c[3]; c = [0.2, 0.5, 0]; my_model = inner(x, a) | hfSphere(x, c, 0.3); }\n");
+    // A source that declares s[] and whose body's value depends on it.
+    write("withs.hf",
+          "helper(x[3], a[1], s[2]) { s[1] = x[1] * 2; s[2] = a[1] + 1; helper = x[2]; }\n"
+          "my_model(x[3], a[1], s[2]) { s = [0.5, -2]; before = s[1] + s[2]; v = helper(x, a, s);\n"
+          "   my_model = 0.3 - (x[1]^2 + (x[2]-0.5)^2 + x[3]^2) + 0.01 * (v + s[1] + s[2] + before); }\n");
     GardenSession s(loadGarden(writeGarden(nlohmann::json::parse(R"({"sculptures": [
         {"name": "plain", "file": "plain.hf", "resolution": 32, "box": {"min": [-0.7, -0.2, -0.7], "max": [0.7, 1.2, 0.7]}},
+        {"name": "withs", "file": "withs.hf", "a": [0.2], "resolution": 32, "box": {"min": [-0.7, -0.2, -0.7], "max": [0.7, 1.2, 0.7]}},
         {"name": "a", "file": "ball.hf", "a": [0.25], "resolution": 32,
          "box": {"min": [-0.6, -0.1, -0.6], "max": [0.6, 1.1, 0.6]}}], "morph": null})"))),
                     smallSettings());
@@ -181,6 +209,13 @@ TEST_F(HyperFunExportTest, AnUneditedSculptureEvaluatesLikeItsSourceFile) {
     // With a[] my_model calls it with the garden's values.
     EXPECT_NE(exportOf(s, a).text.find("sa = [0.25]"), std::string::npos);
     expectExact(s, a, 2000);
+    // A body with s[] gets a fresh s[] of its size, unedited and edited.
+    const int withs = s.findSculpture("withs");
+    EXPECT_NE(exportOf(s, withs).text.find("src_my_model(x, sa, ss)"), std::string::npos);
+    expectExact(s, withs, 2000);
+    const glm::vec3 c = s.sculptures()[static_cast<std::size_t>(withs)].worldCentre();
+    ASSERT_EQ(s.applyPerturbation(withs, QuadricShape::Ellipsoid, {c.x, c.y + 0.5, c.z}, {0.2, 0.1, 0.2}, 3.0), "");
+    expectExact(s, withs, 2000);
 }
 
 TEST_F(HyperFunExportTest, EveryToolMirrorAndMoveExportExactly) {
@@ -221,6 +256,8 @@ TEST_F(HyperFunExportTest, EveryToolMirrorAndMoveExportExactly) {
                              "mirrored across", "turned 30 degrees", "1.5 m per model unit", "hfConvLine(x, segb, sege, segs, 0)"})
         EXPECT_NE(e.text.find(what), std::string::npos) << what;
     expectExact(s, c, 4000);
+    // And the grid the session shows, to float rounding (a few 1e-6 voxels).
+    EXPECT_LT(gridDifference(s, c, 4000), 1e-4);
 }
 
 TEST_F(HyperFunExportTest, TheMorphResultExportsItsBlendAndItsEditsExactly) {
@@ -233,13 +270,18 @@ TEST_F(HyperFunExportTest, TheMorphResultExportsItsBlendAndItsEditsExactly) {
     EXPECT_NE(plain.text.find("m1_ball(x[3], a[1])"), std::string::npos);
     EXPECT_NE(plain.text.find("m3_ball(x[3], a[1])"), std::string::npos);
     expectExact(s, m, 2000);
+    EXPECT_LT(gridDifference(s, m, 4000), 1e-4);
     const glm::vec3 c = s.sculptures()[static_cast<std::size_t>(m)].worldCentre();
     ASSERT_EQ(s.applyStroke(m, StrokeTool::Carve, {{c.x - 0.4, c.y + 0.1, c.z}, {c.x + 0.4, c.y + 0.1, c.z}}, 0.12), "");
     ASSERT_EQ(s.applyPerturbation(m, QuadricShape::Ellipsoid, {c.x, c.y + 0.5, c.z}, {0.2, 0.1, 0.2}, 3.0), "");
     const HyperFunExport edited = exportOf(s, m);
-    EXPECT_NE(edited.text.find("hg_morph(x[3], a[1])"), std::string::npos);
+    // The sources do not declare s[]: the blend sets its own back to 0
+    // between their calls, as a Model starts each with s[] at 0.
+    EXPECT_NE(edited.text.find("hg_morph(x[3], a[1], s[1])"), std::string::npos);
+    EXPECT_NE(edited.text.find("s = [0];"), std::string::npos);
     EXPECT_NE(edited.text.find("= hg_morph(x, a);"), std::string::npos);
     expectExact(s, m, 3000);
+    EXPECT_LT(gridDifference(s, m, 4000), 1e-4);
 }
 
 // Edits in the model frame of ball c (radius 0.6 about (0, 0.5, 0)): short
@@ -373,6 +415,45 @@ TEST_F(HyperFunExportTest, OpeningTheExportInAGardenGivesTheSameSculpture) {
     EXPECT_GT(compared, 10000);
     EXPECT_EQ(wrongSign, 0);
     EXPECT_NEAR(b.volume->normalization, 1.0, 0.2);
+}
+
+TEST_F(HyperFunExportTest, TheEditedMorphResultOpensInAGardenWithTheSameSurface) {
+    GardenSession s(loadGarden(writeGarden()), smallSettings());
+    finishMorph(s);
+    const int m = s.findSculpture("metamorphosis");
+    const glm::vec3 c = s.sculptures()[static_cast<std::size_t>(m)].worldCentre();
+    ASSERT_EQ(s.applyStroke(m, StrokeTool::Carve, {{c.x - 0.4, c.y + 0.1, c.z}, {c.x + 0.4, c.y + 0.1, c.z}}, 0.12), "");
+    ASSERT_EQ(s.applyStroke(m, StrokeTool::Add, {{c.x, c.y + 0.3, c.z + 0.5}, {c.x, c.y + 0.5, c.z + 0.6}}, 0.1), "");
+    ASSERT_EQ(exportSculptureHyperFun(s, m, (dir / "m.hf").string()), "");
+    const voxel::Volume& original = *s.sculptures()[static_cast<std::size_t>(m)].volume;
+    const frep::Box3& b = original.frame.modelBox;
+    nlohmann::json g = {{"version", 1},
+                        {"name", "roundtrip"},
+                        {"sculptures", {{{"name", "back"},
+                                         {"file", "m.hf"},
+                                         {"resolution", original.frame.resolution},
+                                         {"box", {{"min", {b.lo[0], b.lo[1], b.lo[2]}}, {"max", {b.hi[0], b.hi[1], b.hi[2]}}}}}}}};
+    std::ofstream(dir / "m.json") << g.dump();
+    GardenSession back(loadGarden((dir / "m.json").string()), smallSettings());
+    const Sculpture& r = back.sculptures()[0];
+    ASSERT_FALSE(r.missing()) << r.error;
+    for (int a = 0; a < 3; ++a) {  // the same frame
+        ASSERT_EQ(r.volume->frame.indexBox.lo[a], original.frame.indexBox.lo[a]);
+        ASSERT_EQ(r.volume->frame.indexBox.hi[a], original.frame.indexBox.hi[a]);
+    }
+    ASSERT_EQ(r.volume->frame.voxelSize, original.frame.voxelSize);
+    const voxel::IndexBox& box = original.frame.indexBox;
+    int compared = 0, wrongSign = 0;
+    for (int k = box.lo[2]; k <= box.hi[2]; ++k)
+        for (int j = box.lo[1]; j <= box.hi[1]; ++j)
+            for (int i = box.lo[0]; i <= box.hi[0]; ++i) {
+                const float v = original.value(i, j, k);
+                if (std::fabs(v) <= 0.5f) continue;
+                ++compared;
+                wrongSign += (v > 0) != (r.volume->value(i, j, k) > 0);
+            }
+    EXPECT_GT(compared, 10000);
+    EXPECT_EQ(wrongSign, 0);
 }
 
 TEST_F(HyperFunExportTest, AFailedWriteLeavesNoFileAndBadIndicesAreRefused) {

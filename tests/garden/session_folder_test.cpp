@@ -116,6 +116,14 @@ TEST_F(SessionFolderTest, AnUnknownJournalVersionIsRefusedAndLeftAlone) {
 }
 
 #ifdef HG_HYPERGARDEN_EXE
+// Complete lines (records) in a journal being written; 0 while it is missing.
+std::size_t recordsIn(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::size_t lines = 0;
+    for (char c; in.get(c);) lines += c == '\n' ? 1 : 0;
+    return lines;
+}
+
 TEST_F(SessionFolderTest, AProcessKilledAtAnyMomentReopensWithEveryFinishedAction) {
     const std::string garden = writeGarden();
     // Forty strokes across the three balls, ten frames apart, at 96^3: the
@@ -150,10 +158,28 @@ TEST_F(SessionFolderTest, AProcessKilledAtAnyMomentReopensWithEveryFinishedActio
                     "1", "--res", "96", "--session", folder.c_str(), static_cast<char*>(nullptr));
             ::_exit(127);
         }
-        std::this_thread::sleep_for(std::chrono::milliseconds(std::uniform_int_distribution<int>(60, 700)(rng)));
-        ::kill(pid, SIGKILL);
+        // The moment is chosen by the child's progress, not the clock (a
+        // loaded machine may not finish a stroke in a fixed time): once the
+        // journal holds a random number of records, a random few
+        // milliseconds later, mid-stroke, mid-write or mid-snapshot.
+        const std::size_t target = std::uniform_int_distribution<std::size_t>(0, 30)(rng);
+        const std::string journal = SessionPaths(folder).journal;
         int status = 0;
-        ::waitpid(pid, &status, 0);
+        bool exited = false;
+        const auto giveUp = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+        while (std::chrono::steady_clock::now() < giveUp) {
+            if (::waitpid(pid, &status, WNOHANG) == pid) {
+                exited = true;
+                break;
+            }
+            if (recordsIn(journal) >= target) break;
+            std::this_thread::sleep_for(std::chrono::milliseconds(2));
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(std::uniform_int_distribution<int>(0, 40)(rng)));
+        if (!exited) {
+            ::kill(pid, SIGKILL);
+            ::waitpid(pid, &status, 0);
+        }
         interrupted += WIFSIGNALED(status) ? 1 : 0;
         if (!std::filesystem::exists(SessionPaths(folder).manifest)) continue;  // killed before the folder was made
         const JournalRead r = std::filesystem::exists(SessionPaths(folder).journal) ? readJournal(SessionPaths(folder).journal)

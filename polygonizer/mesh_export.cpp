@@ -1,0 +1,190 @@
+#include "polygonizer/mesh_export.h"
+
+#include <algorithm>
+#include <cctype>
+#include <chrono>
+#include <cmath>
+#include <sstream>
+
+#include "polygonizer/export_mesher.h"
+#include "polygonizer/gltf_io.h"
+#include "polygonizer/mesh_simplify.h"
+#include "polygonizer/mesh_validation.h"
+#include "polygonizer/obj_io.h"
+#include "polygonizer/stl_io.h"
+#include "polygonizer/tiled_mesher.h"
+#include "voxel/memory_guard.h"
+#include "voxel/sampler.h"
+#include "voxel/vdb_io.h"
+
+namespace hg::poly {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+bool positiveFinite(double v) { return v > 0.0 && std::isfinite(v); }
+
+void fillGeometry(const MeshReport& r, MeshExportReport& report) {
+    report.triangles = r.triangles;
+    report.vertices = r.vertices;
+    report.volume = r.volume;
+    for (int a = 0; a < 3; ++a) {
+        report.boxMin[a] = r.boxMin[a];
+        report.boxMax[a] = r.boxMax[a];
+        report.size[a] = static_cast<double>(r.boxMax[a]) - static_cast<double>(r.boxMin[a]);
+    }
+}
+
+std::string invalidMesh(const MeshReport& r) {
+    return "the mesh is not fit to write (" + std::string(r.closed() ? "" : "not closed; ") +
+           (r.manifold() ? "" : "not manifold; ") + (r.outwardFacing() ? "" : "not facing outward; ") +
+           "see docs/mesh-export.md):\n" + describe(r);
+}
+
+// Simplifies `mesh` in place (simplifyMesh validates every pass) and says
+// in the report what it did.
+void simplify(Mesh& mesh, double error, MeshExportReport& report) {
+    report.trianglesBeforeSimplify = mesh.triangleCount();
+    SimplifyStats s;
+    Mesh simpler = simplifyMesh(mesh, error, &s);
+    if (!validateMesh(simpler).ok()) {  // kept as a last word: never write a broken mesh
+        report.simplifyNote = "simplification left the mesh not fit to write; the unsimplified mesh was written";
+        return;
+    }
+    mesh = std::move(simpler);
+    report.simplified = s.passes > 0;
+    report.simplifyAchievedError = s.error;
+    if (s.stoppedByTopology)
+        report.simplifyNote = "simplification stopped at " + std::to_string(mesh.triangleCount()) +
+                              " triangles: a further collapse would have left the mesh not closed or not manifold";
+}
+
+std::string exportVdb(const frep::Model& model, const frep::Box3& box, const MeshExportOptions& options,
+                      const std::string& path, MeshExportReport& report, const ExportProgress& progress) {
+    voxel::VolumeRequest req;
+    req.box = box;
+    req.resolution = options.resolution;
+    req.source.body = model.body().spelling;
+    voxel::SampleOptions so;
+    so.memoryLimit = options.memoryLimitMiB << 20;
+    // Sampled on TBB workers: the callback must come on this thread only.
+    voxel::VoxelizeResult v = voxel::voxelize(model, req, so);
+    if (!v.volume) return v.error;
+    report.estimatedBytes = v.stats.estimatedBytes;
+    report.limitBytes = voxel::memoryLimit(so.memoryLimit);
+    report.peakTileBytes = v.volume->memoryBytes();
+    if (progress) progress(0.5);
+    const Mesh mesh = meshVolume(*v.volume);
+    if (mesh.empty()) return "the model has no surface inside the box";
+    const MeshReport r = validateMesh(mesh);
+    fillGeometry(r, report);
+    report.triangles = report.vertices = 0;
+    if (std::string why = voxel::writeLevelSet(*v.volume, path); !why.empty()) return why;
+    if (progress) progress(1.0);
+    return "";
+}
+
+}  // namespace
+
+std::string meshFormatOf(const std::string& path, MeshFormat& format) {
+    const std::size_t dot = path.find_last_of('.');
+    const std::size_t slash = path.find_last_of('/');
+    std::string ext = dot == std::string::npos || (slash != std::string::npos && dot < slash) ? "" : path.substr(dot + 1);
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (ext == "stl") format = MeshFormat::Stl;
+    else if (ext == "obj") format = MeshFormat::Obj;
+    else if (ext == "glb") format = MeshFormat::Glb;
+    else if (ext == "vdb") format = MeshFormat::Vdb;
+    else return path + ": unknown extension" + (ext.empty() ? "" : " ." + ext) + " (use .stl, .obj, .glb or .vdb)";
+    return "";
+}
+
+const char* meshFormatName(MeshFormat format) {
+    switch (format) {
+        case MeshFormat::Stl: return "STL";
+        case MeshFormat::Obj: return "OBJ";
+        case MeshFormat::Glb: return "glTF binary";
+        case MeshFormat::Vdb: return "VDB level set";
+    }
+    return "STL";
+}
+
+std::string exportMesh(const frep::Model& model, const frep::Box3& box, const MeshExportOptions& options,
+                       const std::string& path, MeshExportReport& report, const ExportProgress& progress) {
+    const auto start = Clock::now();
+    report = MeshExportReport{};
+    if (std::string why = meshFormatOf(path, report.format); !why.empty()) return why;
+    const MeshFormat format = report.format;
+    if (format == MeshFormat::Stl && !positiveFinite(options.mmPerUnit))
+        return "millimetres per model unit must be finite and positive";
+    if ((format == MeshFormat::Obj || format == MeshFormat::Glb) && !positiveFinite(options.metresPerUnit))
+        return "metres per model unit must be finite and positive";
+    if (!(options.simplifyError >= 0.0) || !std::isfinite(options.simplifyError))
+        return "the simplification error must be a finite number of model units, 0 or more";
+    if (options.simplifyError > 0.0 && format == MeshFormat::Vdb) return "simplification applies to meshes, not to .vdb";
+    if (options.ascii && format != MeshFormat::Stl) return "ASCII applies to STL only";
+    if (std::string why = voxel::checkWritable(path); !why.empty()) return why;
+
+    if (format == MeshFormat::Vdb) {
+        std::string why = exportVdb(model, box, options, path, report, progress);
+        report.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+        return why;
+    }
+
+    TiledMeshOptions to;
+    to.resolution = options.resolution;
+    to.tileSize = options.tileSize;
+    to.memoryLimit = options.memoryLimitMiB << 20;
+    to.progress = progress;
+    to.bytesPerTriangle = options.simplifyError > 0.0 ? kSimplifyBytesPerTriangle : kMeshBytesPerTriangle;
+    TiledMeshResult tiled = meshModelTiled(model, box, to);
+    report.tiles = tiled.stats.tiles;
+    report.tileSize = tiled.plan.tileSize;
+    report.peakTileBytes = tiled.stats.peakTileBytes;
+    report.estimatedBytes = tiled.plan.estimatedBytes;
+    report.limitBytes = tiled.plan.limit;
+    report.meshSeconds = tiled.stats.seconds;
+    if (!tiled.error.empty()) return tiled.error;
+    Mesh& mesh = tiled.mesh;
+
+    MeshReport checked = validateMesh(mesh);
+    if (!checked.ok()) return invalidMesh(checked);
+    if (options.simplifyError > 0.0) {
+        simplify(mesh, options.simplifyError, report);
+        if (report.simplified) checked = validateMesh(mesh);
+    }
+    fillGeometry(checked, report);
+
+    std::string why;
+    switch (format) {
+        case MeshFormat::Stl: why = writeStl(mesh, path, options.ascii, options.mmPerUnit); break;
+        case MeshFormat::Obj: why = writeObj(mesh, path, options.metresPerUnit); break;
+        case MeshFormat::Glb: why = writeGlb(mesh, path, options.metresPerUnit); break;
+        case MeshFormat::Vdb: break;
+    }
+    report.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    return why;
+}
+
+std::string describe(const MeshExportReport& r, const MeshExportOptions& o) {
+    const bool metres = r.format == MeshFormat::Obj || r.format == MeshFormat::Glb;
+    const double unit = r.format == MeshFormat::Stl ? o.mmPerUnit : metres ? o.metresPerUnit : 1.0;
+    const char* name = r.format == MeshFormat::Stl ? "mm" : metres ? "m" : "model units";
+    std::ostringstream m;
+    m.precision(6);
+    m << meshFormatName(r.format);
+    if (r.format != MeshFormat::Vdb) m << ", " << r.triangles << " triangles, " << r.vertices << " vertices";
+    m << "\nvolume " << r.volume * unit * unit * unit << " " << name << "^3, size " << r.size[0] * unit << " x "
+      << r.size[1] * unit << " x " << r.size[2] * unit << " " << name << "\n";
+    if (r.simplified)
+        m << "simplified from " << r.trianglesBeforeSimplify << " triangles, deviation up to " << r.simplifyAchievedError
+          << " model units\n";
+    if (!r.simplifyNote.empty()) m << "note: " << r.simplifyNote << "\n";
+    if (r.tiles) m << r.tiles << " tiles of " << r.tileSize << "^3 cells, largest tile grid " << voxel::formatBytes(r.peakTileBytes) << "; ";
+    m << "estimated " << voxel::formatBytes(r.estimatedBytes) << " of " << voxel::formatBytes(r.limitBytes)
+      << "; " << r.seconds << " s\n";
+    return m.str();
+}
+
+}  // namespace hg::poly

@@ -1,0 +1,112 @@
+#include "polygonizer/obj_io.h"
+
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <memory>
+
+#include "voxel/atomic_write.h"
+
+namespace hg::poly {
+
+namespace {
+
+// Lines are gathered in a buffer and written a few MiB at a time.
+class LineBuffer {
+public:
+    explicit LineBuffer(std::FILE* f) : file_(f), data_(new char[kSize]) {}
+    bool failed() const { return failed_; }
+
+    void text(const char* s) {
+        const std::size_t n = std::strlen(s);
+        reserve(n);
+        std::memcpy(data_.get() + used_, s, n);
+        used_ += n;
+    }
+    void number(float v) {
+        reserve(32);
+        char* p = data_.get() + used_;
+        used_ = static_cast<std::size_t>(std::to_chars(p, p + 32, v).ptr - data_.get());
+    }
+    void number(std::uint32_t v) {
+        reserve(16);
+        char* p = data_.get() + used_;
+        used_ = static_cast<std::size_t>(std::to_chars(p, p + 16, v).ptr - data_.get());
+    }
+    void put(char c) {
+        reserve(1);
+        data_[used_++] = c;
+    }
+    bool flush() {
+        if (used_ && !failed_ && std::fwrite(data_.get(), 1, used_, file_) != used_) failed_ = true;
+        used_ = 0;
+        return !failed_;
+    }
+
+private:
+    static constexpr std::size_t kSize = std::size_t{4} << 20;
+    void reserve(std::size_t n) {
+        if (used_ + n > kSize) flush();
+    }
+    std::FILE* file_;
+    std::unique_ptr<char[]> data_;
+    std::size_t used_ = 0;
+    bool failed_ = false;
+};
+
+std::string writeTo(const Mesh& mesh, const std::string& tmp, const std::string& path, float scale,
+                    const std::string& objectName) {
+    std::FILE* f = std::fopen(tmp.c_str(), "wb");
+    if (!f) return "cannot write " + path + ": " + std::strerror(errno);
+    LineBuffer out(f);
+    out.text("# Hypergarden mesh export: metres, counter-clockwise faces seen from outside\no ");
+    out.text(objectName.c_str());
+    out.put('\n');
+    const std::size_t n = mesh.vertexCount();
+    for (std::size_t v = 0; v < n; ++v) {
+        out.put('v');
+        for (std::size_t a = 0; a < 3; ++a) {
+            out.put(' ');
+            out.number(mesh.positions[3 * v + a] * scale);
+        }
+        out.put('\n');
+    }
+    for (std::size_t v = 0; v < n; ++v) {
+        out.text("vn");
+        for (std::size_t a = 0; a < 3; ++a) {
+            out.put(' ');
+            out.number(mesh.normals[3 * v + a]);
+        }
+        out.put('\n');
+    }
+    for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
+        out.put('f');
+        for (std::size_t k = 0; k < 3; ++k) {
+            const std::uint32_t i = mesh.indices[3 * t + k] + 1;
+            out.put(' ');
+            out.number(i);
+            out.text("//");
+            out.number(i);
+        }
+        out.put('\n');
+    }
+    const int writeErrno = out.flush() ? 0 : errno;
+    const bool closed = std::fclose(f) == 0;
+    if (writeErrno || !closed)
+        return "cannot write " + path + ": " + std::strerror(writeErrno ? writeErrno : errno);
+    return "";
+}
+
+}  // namespace
+
+std::string writeObj(const Mesh& mesh, const std::string& path, double scale, const std::string& objectName) {
+    if (!(scale > 0.0) || !std::isfinite(scale)) return "cannot write " + path + ": the scale must be finite and positive";
+    if (mesh.normals.size() != mesh.positions.size())
+        return "cannot write " + path + ": the mesh has no normal for every vertex";
+    const auto s = static_cast<float>(scale);
+    return voxel::writeAtomically(path, [&](const std::string& tmp) { return writeTo(mesh, tmp, path, s, objectName); });
+}
+
+}  // namespace hg::poly

@@ -1,0 +1,376 @@
+// The garden in a headset (xr/xr_garden.h) against the mock runtime, in
+// this process: the session reaches FOCUSED and both views are submitted
+// into sRGB swapchains with depth; a scripted right hand carves the same
+// grid as the replay of the same script; a lost or ended session keeps its
+// finished stroke in the journal; LOCAL stands in for a missing STAGE.
+#include "mock_xr_fixture.h"
+
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+#include <stb/stb_image.h>
+
+#include "../garden/session_garden.h"
+#include "garden/app/garden_session.h"
+#include "garden/render/renderer.h"
+#include "garden/replay/replay_runner.h"
+#include "garden/session/open_session.h"
+#include "voxel/volume.h"
+#include "xr/xr_garden.h"
+
+namespace hg::xr::test {
+namespace {
+
+// The right hand aims at sculpture 'a' (a ball of radius 0.5 at (0, 0.5,
+// -2.31)) from the viewer at the origin, pulls the trigger and sweeps.
+constexpr const char* kCarveSteps = R"([
+  {"frames": 2, "commands": [{"sculpt_tool": {"kind": "carve", "radius": 0.12}}]},
+  {"frames": 5, "tool": {"aim": {"position": [0.3, 1.2, -1.0], "direction": [-0.35, -0.6, -1.3]}, "trigger": 1}},
+  {"frames": 5, "tool": {"aim": {"position": [0.2, 1.2, -1.0], "direction": [-0.15, -0.6, -1.3]}, "trigger": 1}},
+  {"frames": 5, "tool": {"aim": {"position": [0.1, 1.2, -1.0], "direction": [0.05, -0.65, -1.3]}, "trigger": 1}},
+  {"frames": 4, "tool": {"aim": {"position": [0.1, 1.2, -1.0], "direction": [0.05, -0.65, -1.3]}, "trigger": 0}}
+])";
+
+class XrGarden : public garden::test::SmallGarden {
+protected:
+    void SetUp() override {
+        garden::test::SmallGarden::SetUp();
+        HG_REQUIRE_DISPLAY();
+        useMockRuntime();
+        ::setenv("HG_MOCK_XR_READBACK", (dir / "readback").c_str(), 1);
+        // The viewer at the origin looking along -z: the stage is the world.
+        // No morph, so nothing depends on how far a time-budgeted blend got.
+        gardenFile = writeGarden(nlohmann::json::parse(
+            R"({"start": {"position": [0, 1.7, 0], "look_at": [0, 1.7, -1]}, "morph": null})"));
+    }
+    std::string script(const std::string& steps) {
+        const std::string path = (dir / "carve.json").string();
+        std::ofstream(path) << R"({"garden": "garden.json", "steps": )" << steps << "}";
+        return path;
+    }
+    nlohmann::json readback() {
+        std::ifstream in(dir / "readback" / "frames.json");
+        return nlohmann::json::parse(in);
+    }
+    std::string gardenFile;
+};
+
+TEST_F(XrGarden, ReachesFocusedAndSubmitsBothViews) {
+    XrOptions o;
+    o.garden = gardenFile;
+    o.frames = 12;
+    o.mirror = false;
+    XrRunInfo info;
+    ASSERT_EQ(runXrGarden(o, [&](garden::GardenSession&, const XrRunInfo& i) { info = i; }), 0);
+    EXPECT_EQ(info.framesSubmitted, 12);
+    EXPECT_GE(info.focusedFrames, 10) << "focused from the second frame on";
+    EXPECT_EQ(info.framesRendered, 11) << "every frame once visible";
+    EXPECT_EQ(info.space, "STAGE");
+    EXPECT_EQ(info.interactionProfile, "/interaction_profiles/oculus/touch_controller");
+    EXPECT_TRUE(info.depthSubmitted);
+    EXPECT_FALSE(info.lost);
+    const nlohmann::json j = readback();
+    EXPECT_EQ(j["frames_ended"], 12);
+    EXPECT_EQ(j["frames_with_two_views"], 11);
+    EXPECT_EQ(j["last_frame"]["views"], 2);
+    EXPECT_EQ(j["last_frame"]["depth_views"], 2) << "XR_KHR_composition_layer_depth";
+    EXPECT_EQ(j["last_frame"]["layers"], nlohmann::json::array({"projection"}));
+    EXPECT_EQ(j["last_frame"]["image_size"], nlohmann::json::array({512, 512}));
+    // The left eye: the sky above is the renderer's sRGB clear colour byte
+    // for byte (the sRGB swapchain holds what the desktop's framebuffer
+    // would: no second encoding), the ground below is not.
+    EXPECT_TRUE(std::filesystem::exists(dir / "readback" / "right.png"));
+    int w = 0, h = 0, n = 0;
+    unsigned char* px = stbi_load((dir / "readback" / "left.png").c_str(), &w, &h, &n, 4);
+    ASSERT_NE(px, nullptr);
+    ASSERT_EQ(w, 512);
+    const auto at = [&](int x, int y, int c) { return static_cast<int>(px[(y * w + x) * 4 + c]); };
+    const garden::View sky;
+    for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(at(w / 2, 4, c), sky.clearColor[c] * 255.0f, 1.0) << "channel " << c;
+    EXPECT_GT(std::abs(at(w / 2, h - 4, 2) - at(w / 2, 4, 2)), 40) << "the ground is not sky";
+    stbi_image_free(px);
+}
+
+TEST_F(XrGarden, ScriptedRightHandCarvesTheGridTheReplayCarves) {
+    const std::string s = script(kCarveSteps);
+    // The replay path: the same script's hands, headless.
+    garden::GardenLoad load = garden::loadGarden(gardenFile);
+    ASSERT_TRUE(load.ok()) << load.error;
+    garden::GardenSession replay(std::move(load));
+    const garden::ReplayScript parsed = garden::loadReplayScript(s);
+    const garden::ReplayResult r = garden::runReplay(parsed, replay, nullptr, {});
+    ASSERT_TRUE(r.ok()) << r.error;
+    const int a = replay.findSculpture("a");
+    ASSERT_EQ(replay.editCount(a), 1u) << "the replay carved one stroke";
+
+    ::setenv("HG_MOCK_XR_SCRIPT", s.c_str(), 1);
+    XrOptions o;
+    o.script = s;
+    o.mirror = false;
+    bool compared = false;
+    const int status = runXrGarden(o, [&](garden::GardenSession& xr, const XrRunInfo& info) {
+        EXPECT_GE(info.focusedFrames, parsed.totalFrames());
+        ASSERT_EQ(xr.editCount(a), 1u) << "the headset's right hand carved one stroke";
+        EXPECT_EQ(garden::test::differingVoxels(*replay.sculptures()[static_cast<std::size_t>(a)].volume,
+                                                *xr.sculptures()[static_cast<std::size_t>(a)].volume),
+                  0);
+        compared = true;
+    });
+    ASSERT_EQ(status, 0);
+    EXPECT_TRUE(compared);
+    EXPECT_GE(readback()["haptic_pulses"].get<int>(), 1) << "a pulse when the tool starts touching material";
+}
+
+TEST_F(XrGarden, CarvingWhileTheLeftHandHoldsTheWorldMovedEqualsTheReplay) {
+    // The left hand grabs the world and pulls it half a metre nearer, then
+    // holds it there while the right hand carves. In the world, the right
+    // hand is then half a metre further along -z than in the stage: the
+    // replay of the same strokes gets those world positions. (The numbers
+    // are exact in floats, so the grids must match voxel for voxel.)
+    const char* carve = R"([-0.35, -0.6, -1.3], [-0.15, -0.6, -1.3], [0.05, -0.65, -1.3])";
+    const nlohmann::json directions = nlohmann::json::parse(std::string("[") + carve + "]");
+    const auto steps = [&](double toolZ, bool withNavigation) {
+        nlohmann::json j = nlohmann::json::array();
+        j.push_back({{"frames", 2}, {"commands", {{{"sculpt_tool", {{"kind", "carve"}, {"radius", 0.12}}}}}}});
+        const auto nav = [](double z) {
+            return nlohmann::json{{"aim", {{"position", {-0.3, 1.0, z}}}}, {"squeeze", 1}};
+        };
+        nlohmann::json grab1 = {{"frames", 3}}, grab2 = {{"frames", 3}};
+        if (withNavigation) {
+            grab1["navigation"] = nav(-1.0);
+            grab2["navigation"] = nav(-0.5);
+        }
+        j.push_back(grab1);
+        j.push_back(grab2);
+        for (const auto& d : directions) {
+            nlohmann::json st = {{"frames", 5},
+                                 {"tool", {{"aim", {{"position", {0.3, 1.2, toolZ}}, {"direction", d}}}, {"trigger", 1}}}};
+            if (withNavigation) st["navigation"] = nav(-0.5);
+            j.push_back(st);
+        }
+        j.push_back({{"frames", 3}});
+        return j.dump();
+    };
+    // The replay: world positions.
+    const std::string replayScript = script(steps(-1.0, false));
+    garden::GardenLoad load = garden::loadGarden(gardenFile);
+    ASSERT_TRUE(load.ok()) << load.error;
+    garden::GardenSession replay(std::move(load));
+    const garden::ReplayResult r = garden::runReplay(garden::loadReplayScript(replayScript), replay, nullptr, {});
+    ASSERT_TRUE(r.ok()) << r.error;
+    const int a = replay.findSculpture("a");
+    ASSERT_EQ(replay.editCount(a), 1u);
+    // The headset: stage positions, the world moved by the left hand.
+    const std::string xrScript = (dir / "xr.json").string();
+    std::ofstream(xrScript) << R"({"garden": "garden.json", "steps": )" << steps(-0.5, true) << "}";
+    ::setenv("HG_MOCK_XR_SCRIPT", xrScript.c_str(), 1);
+    XrOptions o;
+    o.script = xrScript;
+    o.mirror = false;
+    bool compared = false;
+    ASSERT_EQ(runXrGarden(o, [&](garden::GardenSession& xr, const XrRunInfo&) {
+                  EXPECT_NEAR(xr.navigator().eye().z, -0.5f, 1e-6f) << "the world was moved";
+                  ASSERT_EQ(xr.editCount(a), 1u);
+                  EXPECT_EQ(garden::test::differingVoxels(*replay.sculptures()[static_cast<std::size_t>(a)].volume,
+                                                          *xr.sculptures()[static_cast<std::size_t>(a)].volume),
+                            0);
+                  compared = true;
+              }),
+              0);
+    EXPECT_TRUE(compared);
+}
+
+TEST_F(XrGarden, SessionLossKeepsTheStrokeInTheJournal) {
+    // The trigger is still held when the runtime loses the session.
+    const std::string s = script(R"([
+      {"frames": 1, "commands": [{"sculpt_tool": {"kind": "carve", "radius": 0.12}}]},
+      {"frames": 200, "tool": {"aim": {"position": [0.3, 1.2, -1.0], "direction": [-0.35, -0.6, -1.3]}, "trigger": 1}}])");
+    ::setenv("HG_MOCK_XR_SCRIPT", s.c_str(), 1);
+    ::setenv("HG_MOCK_XR_EVENTS", "12:loss", 1);
+    XrOptions o;
+    o.script = s;
+    o.session = (dir / "session").string();
+    o.mirror = false;
+    std::unique_ptr<voxel::Volume> carved;
+    XrRunInfo info;
+    ASSERT_EQ(runXrGarden(o, [&](garden::GardenSession& xr, const XrRunInfo& i) {
+                  info = i;
+                  carved = std::make_unique<voxel::Volume>(
+                      xr.sculptures()[static_cast<std::size_t>(xr.findSculpture("a"))].volume->clone());
+              }),
+              0);
+    EXPECT_TRUE(info.lost);
+    EXPECT_LT(info.framesSubmitted, 20) << "the run ended at the loss, not at the script's end";
+    ASSERT_TRUE(carved);
+    // Reopened, the session has the stroke and the same grid.
+    garden::OpenedSession reopened = garden::openSession(o.session, gardenFile, {});
+    ASSERT_TRUE(reopened.error.empty()) << reopened.error;
+    const int a = reopened.session->findSculpture("a");
+    EXPECT_EQ(reopened.session->editCount(a), 1u);
+    EXPECT_EQ(garden::test::differingVoxels(*carved, *reopened.session->sculptures()[static_cast<std::size_t>(a)].volume), 0);
+}
+
+TEST_F(XrGarden, ExitRaisedByTheRuntimeEndsTheRunWithTheStrokeJournalled) {
+    // The carve, then a long wait the runtime's exit cuts short.
+    nlohmann::json steps = nlohmann::json::parse(kCarveSteps);
+    steps.push_back({{"frames", 400}});
+    const std::string s = script(steps.dump());
+    ::setenv("HG_MOCK_XR_SCRIPT", s.c_str(), 1);
+    ::setenv("HG_MOCK_XR_EVENTS", "30:exit", 1);
+    XrOptions o;
+    o.session = (dir / "session").string();
+    o.garden = gardenFile;
+    o.mirror = false;
+    o.script = s;  // the app runs its commands (the carve tool), the runtime plays its hands
+    XrRunInfo info;
+    ASSERT_EQ(runXrGarden(o, [&](garden::GardenSession&, const XrRunInfo& i) { info = i; }), 0);
+    EXPECT_FALSE(info.lost);
+    EXPECT_EQ(info.endReason, "the session ended");
+    EXPECT_LE(info.framesSubmitted, 30);
+    garden::OpenedSession reopened = garden::openSession(o.session, gardenFile, {});
+    ASSERT_TRUE(reopened.error.empty()) << reopened.error;
+    EXPECT_EQ(reopened.session->editCount(reopened.session->findSculpture("a")), 1u);
+}
+
+TEST_F(XrGarden, LeftHandMovesTheWorldAndBothHandsScaleIt) {
+    // The left hand squeezes and pulls half a metre towards the user: the
+    // world comes with it, so the rig (the user) moves half a metre along
+    // -z in the world. Then both hands squeeze
+    // and spread from 0.4 m to 0.8 m apart: the world seems twice as big.
+    const std::string s = script(R"([
+      {"frames": 3, "navigation": {"aim": {"position": [-0.3, 1.0, -0.8]}, "squeeze": 1}},
+      {"frames": 3, "navigation": {"aim": {"position": [-0.3, 1.0, -0.3]}, "squeeze": 1}},
+      {"frames": 2},
+      {"frames": 3, "navigation": {"aim": {"position": [-0.2, 1.0, -0.5]}, "squeeze": 1},
+                    "tool": {"aim": {"position": [0.2, 1.0, -0.5]}, "squeeze": 1}},
+      {"frames": 3, "navigation": {"aim": {"position": [-0.4, 1.0, -0.5]}, "squeeze": 1},
+                    "tool": {"aim": {"position": [0.4, 1.0, -0.5]}, "squeeze": 1}}])");
+    ::setenv("HG_MOCK_XR_SCRIPT", s.c_str(), 1);
+    XrOptions o;
+    o.script = s;
+    o.mirror = false;
+    glm::vec3 eye(0.0f);
+    XrRunInfo info;
+    ASSERT_EQ(runXrGarden(o, [&](garden::GardenSession& xr, const XrRunInfo& i) {
+                  eye = xr.navigator().eye();
+                  info = i;
+              }),
+              0);
+    EXPECT_NEAR(info.worldScale, 0.5f, 1e-5f);
+    // The one-hand grab moved the rig by -0.5 in z; the scaling about the
+    // hands' midpoint (0, 1, -0.5) keeps that point: the rig's origin goes
+    // to midpoint - 0.5 * (midpoint - origin).
+    const glm::vec3 origin1(0.0f, 0.0f, -0.5f), middle = origin1 + glm::vec3(0.0f, 1.0f, -0.5f);
+    const glm::vec3 origin2 = middle - 0.5f * glm::vec3(0.0f, 1.0f, -0.5f);
+    EXPECT_NEAR(eye.x, origin2.x, 1e-4f);
+    EXPECT_NEAR(eye.y - 1.7f, origin2.y, 1e-4f);
+    EXPECT_NEAR(eye.z, origin2.z, 1e-4f);
+}
+
+TEST_F(XrGarden, MenuOnTheLeftHandRecenters) {
+    // A grab moves the user half a metre; the menu button brings the head
+    // back to the garden's start.
+    const std::string s = script(R"([
+      {"frames": 3, "navigation": {"aim": {"position": [-0.3, 1.0, -0.8]}, "squeeze": 1}},
+      {"frames": 3, "navigation": {"aim": {"position": [-0.3, 1.0, -0.3]}, "squeeze": 1}},
+      {"frames": 2, "navigation": {"aim": {"position": [-0.3, 1.0, -0.3]}}},
+      {"frames": 2, "navigation": {"aim": {"position": [-0.3, 1.0, -0.3]}, "buttons": ["menu"]}},
+      {"frames": 2}])");
+    ::setenv("HG_MOCK_XR_SCRIPT", s.c_str(), 1);
+    XrOptions o;
+    o.script = s;
+    o.mirror = false;
+    glm::vec3 eye(1e9f);
+    ASSERT_EQ(runXrGarden(o, [&](garden::GardenSession& xr, const XrRunInfo&) { eye = xr.navigator().eye(); }), 0);
+    // The mock's head stands at the stage's origin: the rig is back where it began.
+    EXPECT_NEAR(eye.x, 0.0f, 1e-4f);
+    EXPECT_NEAR(eye.y, 1.7f, 1e-4f);
+    EXPECT_NEAR(eye.z, 0.0f, 1e-4f);
+}
+
+TEST_F(XrGarden, ThePanelOnTheLeftHandChoosesTheTool) {
+    // The right hand points at the panel's carve button (above the left
+    // hand at (-0.2, 1.0, -0.4)), pulls, then carves sculpture 'a'. With no
+    // tool chosen the trigger would only pick the (absent) morph.
+    const std::string s = script(R"([
+      {"frames": 3, "navigation": {"aim": {"position": [-0.2, 1.0, -0.4]}},
+                    "tool": {"aim": {"position": [-0.23, 1.15, -0.1], "direction": [0, 0, -1]}, "trigger": 1}},
+      {"frames": 2, "navigation": {"aim": {"position": [-0.2, 1.0, -0.4]}},
+                    "tool": {"aim": {"position": [-0.23, 1.15, -0.1], "direction": [0, 0, -1]}}},
+      {"frames": 6, "tool": {"aim": {"position": [0.3, 1.2, -1.0], "direction": [-0.35, -0.6, -1.3]}, "trigger": 1}},
+      {"frames": 2}])");
+    ::setenv("HG_MOCK_XR_SCRIPT", s.c_str(), 1);
+    XrOptions o;
+    o.script = s;
+    o.mirror = false;
+    std::size_t edits = 0;
+    bool carving = false;
+    ASSERT_EQ(runXrGarden(o, [&](garden::GardenSession& xr, const XrRunInfo&) {
+                  edits = xr.editCount(xr.findSculpture("a"));
+                  carving = xr.tool().kind == garden::ToolSettings::Kind::Carve;
+              }),
+              0);
+    EXPECT_TRUE(carving);
+    EXPECT_EQ(edits, 1u);
+}
+
+TEST_F(XrGarden, InstanceLossEndsTheRun) {
+    ::setenv("HG_MOCK_XR_EVENTS", "5:instance_loss", 1);
+    XrOptions o;
+    o.garden = gardenFile;
+    o.frames = 300;  // a guard
+    o.mirror = false;
+    XrRunInfo info;
+    ASSERT_EQ(runXrGarden(o, [&](garden::GardenSession&, const XrRunInfo& i) { info = i; }), 0);
+    EXPECT_TRUE(info.lost);
+    EXPECT_NE(info.endReason.find("instance loss"), std::string::npos) << info.endReason;
+    EXPECT_LE(info.framesSubmitted, 6);
+}
+
+TEST_F(XrGarden, UnfocusedFramesRenderWithoutInput) {
+    // The runtime takes focus away for frames 6 to 15 (a system menu, say).
+    ::setenv("HG_MOCK_XR_EVENTS", "6:unfocus,16:focus", 1);
+    XrOptions o;
+    o.garden = gardenFile;
+    o.frames = 24;
+    o.mirror = false;
+    XrRunInfo info;
+    ASSERT_EQ(runXrGarden(o, [&](garden::GardenSession&, const XrRunInfo& i) { info = i; }), 0);
+    EXPECT_EQ(info.framesRendered, 23) << "visible all along";
+    EXPECT_EQ(info.focusedFrames, 13) << "input read only while focused";
+}
+
+TEST_F(XrGarden, LeftHandedTheLeftControllerCarves) {
+    // The script's navigation hand is the left controller: left-handed, it
+    // holds the tool and carves; the right one (the script's tool hand)
+    // only points.
+    const std::string s = script(R"([
+      {"frames": 2, "commands": [{"sculpt_tool": {"kind": "carve", "radius": 0.12}}]},
+      {"frames": 6, "navigation": {"aim": {"position": [0.3, 1.2, -1.0], "direction": [-0.35, -0.6, -1.3]}, "trigger": 1},
+                    "tool": {"aim": {"position": [0.3, 1.2, -1.0], "direction": [0.35, -0.6, -1.3]}}},
+      {"frames": 2}])");
+    ::setenv("HG_MOCK_XR_SCRIPT", s.c_str(), 1);
+    XrOptions o;
+    o.script = s;
+    o.leftHanded = true;
+    o.mirror = false;
+    std::size_t edits = 0;
+    ASSERT_EQ(runXrGarden(o, [&](garden::GardenSession& xr, const XrRunInfo&) { edits = xr.editCount(xr.findSculpture("a")); }), 0);
+    EXPECT_EQ(edits, 1u);
+}
+
+TEST_F(XrGarden, LocalSpaceStandsInForAMissingStage) {
+    ::setenv("HG_MOCK_XR_NO_STAGE", "1", 1);
+    XrOptions o;
+    o.garden = gardenFile;
+    o.frames = 4;
+    o.mirror = false;
+    XrRunInfo info;
+    ASSERT_EQ(runXrGarden(o, [&](garden::GardenSession&, const XrRunInfo& i) { info = i; }), 0);
+    EXPECT_EQ(info.space, "LOCAL");
+    EXPECT_EQ(info.framesRendered, 3);
+}
+
+}  // namespace
+}  // namespace hg::xr::test

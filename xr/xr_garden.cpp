@@ -1,0 +1,452 @@
+#include "xr/xr_garden.h"
+
+// The garden's headers before the XR and X11 ones (xr/headset.h keeps X11 out).
+#include "garden/app/garden_session.h"
+#include "garden/desktop/garden_view.h"
+#include "garden/render/gl_context.h"
+#include "garden/render/gl_objects.h"
+#include "garden/render/overlay.h"
+#include "garden/render/panels.h"
+#include "garden/replay/replay_runner.h"
+#include "garden/replay/replay_script.h"
+#include "garden/scene/json_reader.h"
+#include "garden/session/open_session.h"
+#include "xr/controllers.h"
+#include "xr/hand_panel.h"
+#include "xr/headset.h"
+#include "xr/stage_rig.h"
+#include "xr/tool_stick.h"
+#include "xr/turning.h"
+#include "xr/world_grab.h"
+#include "xr/xr_result.h"
+
+#include <epoxy/gl.h>
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <thread>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace hg::xr {
+
+namespace {
+
+constexpr float kNearZ = 0.05f, kFarZ = 500.0f;
+// A seated user's eyes are about this much lower than a standing one's.
+constexpr float kSeatedRaise = 0.5f;
+constexpr int kMirrorWidth = 640, kMirrorHeight = 640;
+
+glm::mat4 projectionOf(const XrFovf& f) {
+    return glm::frustum(std::tan(f.angleLeft) * kNearZ, std::tan(f.angleRight) * kNearZ, std::tan(f.angleDown) * kNearZ,
+                        std::tan(f.angleUp) * kNearZ, kNearZ, kFarZ);
+}
+
+garden::Pose poseOf(const XrPosef& p, float floorOffset) {
+    garden::Pose g;
+    g.position = glm::vec3(p.position.x, p.position.y + floorOffset, p.position.z);
+    g.orientation = glm::quat(p.orientation.w, p.orientation.x, p.orientation.y, p.orientation.z);
+    return g;
+}
+
+// Draws into one swapchain image (and its depth image, or our own depth buffer).
+class EyeTarget {
+public:
+    EyeTarget() : fbo_(garden::gl::Framebuffer::create()) {}
+    void bind(const EyeImages& e) {
+        glBindFramebuffer(GL_FRAMEBUFFER, fbo_.get());
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, e.color, 0);
+        if (e.depth != 0) {
+            glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, 0);
+            glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, e.depth, 0);
+        } else {
+            if (!depth_ || size_ != glm::ivec2(e.width, e.height)) {
+                depth_ = garden::gl::Renderbuffer::create();
+                glBindRenderbuffer(GL_RENDERBUFFER, depth_.get());
+                glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, e.width, e.height);
+                size_ = glm::ivec2(e.width, e.height);
+            }
+            glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_.get());
+        }
+        if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+            throw garden::GlError("the swapchain image cannot be drawn into (incomplete framebuffer)");
+    }
+    GLuint fbo() const { return fbo_.get(); }
+
+private:
+    garden::gl::Framebuffer fbo_;
+    garden::gl::Renderbuffer depth_;
+    glm::ivec2 size_{0};
+};
+
+// One run: everything that lives from the first frame to the last.
+class XrRun {
+public:
+    XrRun(const XrOptions& o, garden::GardenSession& s, Headset& h, garden::GlWindow& w,
+          const std::optional<garden::ReplayScript>& script)
+        : options_(o), session_(s), headset_(h), window_(w), view_(renderer_), script_(script),
+          turning_(o.smoothTurn) {
+        if (options_.mirror) overlay_ = std::make_unique<garden::Overlay>(window_);
+        controllers_ = std::make_unique<Controllers>(headset_.instance(), options_.leftHanded);
+        headset_.createSession(window_.handle());
+        controllers_->attach(headset_.session());
+        info_.space = headset_.spaceName();
+        runtimeName_ = headset_.runtimeName();
+        info_.depthSubmitted = headset_.depthSubmitted();
+        // The headset's height is the user's: the navigator flies, so a
+        // grab may lift or lower the world.
+        startEye_ = session_.navigator().eye();
+        startYaw_ = session_.navigator().yaw();
+        session_.navigator().setPose(startEye_, startYaw_, 0.0f);
+        session_.navigator().setMode(garden::NavigationMode::Fly);
+        if (script_) {
+            int start = 0;
+            for (const garden::ReplayStep& st : script_->steps) {
+                stepStarts_.push_back(start);
+                start += st.frames;
+            }
+        }
+    }
+
+    // Controllers go before the session they were attached to.
+    ~XrRun() { controllers_.reset(); }
+
+    int loop() {
+        bool exitAsked = false;
+        const auto askExit = [&] {
+            if (!exitAsked && headset_.running()) {
+                headset_.requestExit();
+                exitAsked = true;
+            }
+        };
+        while (!headset_.done()) {
+            garden::pollEvents();
+            if (window_.shouldClose()) askExit();
+            if (headset_.pollEvents()) {
+                controllers_->refreshProfile();
+                info_.interactionProfile = controllers_->interactionProfile();
+            }
+            if (headset_.done()) break;
+            if (!headset_.running() && window_.shouldClose()) {
+                info_.endReason = "the mirror window was closed";
+                return 0;  // the session is not running: nothing to end
+            }
+            if (!headset_.running()) {
+                // IDLE or READY: nothing to draw until the runtime says.
+                std::this_thread::sleep_for(std::chrono::milliseconds(5));
+                continue;
+            }
+            frame();
+            if (options_.frames > 0 && info_.framesSubmitted >= options_.frames) askExit();
+            if (script_ && scriptFrame_ >= script_->totalFrames()) askExit();
+            if (!error_.empty()) return 1;
+        }
+        info_.lost = headset_.lost();
+        info_.endReason = headset_.doneReason();
+        return 0;
+    }
+
+    XrRunInfo info() const {
+        XrRunInfo i = info_;
+        i.worldScale = scale_;
+        return i;
+    }
+    const std::string& error() const { return error_; }
+
+private:
+    // Added to tracked heights: the floor at 0, raised for a seated user.
+    float heightOffset() const { return headset_.floorOffset() + (options_.seated ? kSeatedRaise : 0.0f); }
+
+    // The navigator holds where the stage stands in the world and its turn;
+    // the scale is ours.
+    StageRig rig() const {
+        const garden::Navigator& n = session_.navigator();
+        StageRig r;
+        r.origin = n.eye() - glm::vec3(0.0f, garden::NavigationSettings{}.eyeHeight, 0.0f);
+        r.yaw = n.yaw();
+        r.scale = scale_;
+        return r;
+    }
+    void setRig(const StageRig& r) {
+        session_.navigator().setPose(r.origin + glm::vec3(0.0f, garden::NavigationSettings{}.eyeHeight, 0.0f), r.yaw, 0.0f);
+        scale_ = r.scale;
+    }
+
+    void runScriptCommands() {
+        for (std::size_t i = 0; i < stepStarts_.size(); ++i) {
+            if (stepStarts_[i] != scriptFrame_) continue;
+            for (std::size_t c = 0; c < script_->steps[i].commands.size(); ++c) {
+                // Screenshots are skipped: the headset's frames are the runtime's to show.
+                const std::string why = garden::runReplayCommand(script_->steps[i].commands[c], session_);
+                if (!why.empty() && error_.empty())
+                    error_ = script_->file + ": $.steps[" + std::to_string(i) + "].commands[" + std::to_string(c) + "]: " + why;
+            }
+        }
+    }
+
+    void frame() {
+        const HeadsetFrame f = headset_.beginFrame();
+        const double periodMs = static_cast<double>(f.state.predictedDisplayPeriod) / 1e6;
+        if (periodMs > 0.0) session_.scheduler().setBudgetMs(periodMs);
+        session_.beginFrame();
+        const bool focused = headset_.focused();
+        garden::Hands stage = controllers_->read(headset_.space(), f.state.predictedDisplayTime, heightOffset(), focused);
+        if (focused) {
+            ++info_.focusedFrames;
+            if (script_) runScriptCommands();
+            ++scriptFrame_;
+        }
+        // The world grab moves the rig; then the hands go into the world.
+        const auto squeezing = [](const garden::HandState& h) {
+            return h.tracked && h.squeeze > 0.5f ? std::optional<glm::vec3>(h.grip.position) : std::nullopt;
+        };
+        setRig(grab_.update(rig(), squeezing(stage.navigation), squeezing(stage.tool)));
+        // The navigation hand's menu button recenters: where the head is
+        // now becomes the garden's start, looking its way.
+        const bool menu = stage.navigation.pressed(garden::kButtonMenu);
+        if (menu && !menuHeld_ && f.viewsValid) {
+            garden::Pose head = poseOf(f.views[0].pose, heightOffset());
+            head.position = 0.5f * (head.position + poseOf(f.views[1].pose, heightOffset()).position);
+            setRig(rig().recentered(head, startEye_, garden::NavigationSettings{}.eyeHeight, startYaw_));
+        }
+        menuHeld_ = menu;
+        garden::Hands world = rig().toWorld(stage);
+        world.look.x = turning_.apply(world, periodMs > 0.0 ? periodMs / 1000.0 : 1.0 / 90.0);
+        panel_.place(world.navigation, scale_);
+        if (const auto pressed = panel_.update(world.tool)) press(*pressed);
+        if (panel_.pointing()) world.tool.trigger = 0.0f;  // the trigger is the panel's
+        // The tool stick reshapes the tool; the navigator must not fly with it.
+        adjustTool(session_.tool(), world.tool.thumbstick, periodMs > 0.0 ? periodMs / 1000.0 : 1.0 / 90.0);
+        world.tool.thumbstick = glm::vec2(0.0f);
+        const bool wasStroking = session_.stroking();
+        session_.update(world, periodMs > 0.0 ? periodMs / 1000.0 : 1.0 / 90.0);
+        if (!wasStroking && session_.stroking() && focused) controllers_->pulseToolHand();
+
+        garden::FrameScheduler& sch = session_.scheduler();
+        sch.beginStage(garden::Stage::Upload);
+        std::size_t pending = 0;
+        session_.stats().uploadBytes += view_.upload(session_, sch.allowanceMs(garden::Stage::Upload), pending);
+        session_.stats().uploadsPending = pending;
+        sch.beginStage(garden::Stage::Render);
+        const bool render = f.state.shouldRender && f.viewsValid;
+        if (render) {
+            const StageRig r = rig();
+            for (int eye = 0; eye < 2; ++eye) {
+                const EyeImages images = headset_.acquireEye(eye);
+                EyeTarget& target = targets_[static_cast<std::size_t>(eye)];
+                target.bind(images);
+                const XrView& v = f.views[static_cast<std::size_t>(eye)];
+                const garden::Pose eyePose = poseOf(v.pose, heightOffset());
+                view_.render(session_, glm::ivec2(images.width, images.height), r.viewOf(eyePose), projectionOf(v.fov),
+                             r.toWorld(eyePose.position));
+                drawPanel(world.tool);
+                if (eye == 0 && options_.mirror) mirror(target, images);
+                glBindFramebuffer(GL_FRAMEBUFFER, 0);
+                headset_.releaseEye(eye);
+            }
+            if (overlay_) drawPanels();
+            const garden::RenderStats rs = renderer_.endFrame();
+            session_.stats().trianglesDrawn = rs.trianglesDrawn;
+            session_.stats().drawCalls = rs.drawCalls;
+            ++info_.framesRendered;
+        }
+        headset_.endFrame(f, render, kNearZ, kFarZ);
+        const garden::FrameStats& stats = session_.endFrame();
+        if (focused && options_.onFrame) options_.onFrame(stats, scriptFrame_ - 1);
+        ++info_.framesSubmitted;
+        if (options_.mirror) window_.swapBuffers();
+    }
+
+    void press(PanelButton b) {
+        using Kind = garden::ToolSettings::Kind;
+        Kind& kind = session_.tool().kind;
+        switch (b) {
+            case PanelButton::ToolNone: kind = Kind::None; break;
+            case PanelButton::Carve: kind = Kind::Carve; break;
+            case PanelButton::Add: kind = Kind::Add; break;
+            case PanelButton::Melt: kind = Kind::Melt; break;
+            case PanelButton::Perturb: kind = Kind::Perturb; break;
+            case PanelButton::Impacts: kind = Kind::Impacts; break;
+            case PanelButton::Undo: session_.undo(); break;
+            case PanelButton::Redo: session_.redo(); break;
+            case PanelButton::Count: break;
+        }
+    }
+
+    PanelButton selectedTool() const {
+        switch (session_.tool().kind) {
+            case garden::ToolSettings::Kind::None: return PanelButton::ToolNone;
+            case garden::ToolSettings::Kind::Carve: return PanelButton::Carve;
+            case garden::ToolSettings::Kind::Add: return PanelButton::Add;
+            case garden::ToolSettings::Kind::Melt: return PanelButton::Melt;
+            case garden::ToolSettings::Kind::Perturb: return PanelButton::Perturb;
+            case garden::ToolSettings::Kind::Impacts: return PanelButton::Impacts;
+        }
+        return PanelButton::ToolNone;
+    }
+
+    // The panel's buttons (the chosen tool crossed, the pointed one cyan)
+    // and the tool hand's ray onto it, over the scene.
+    void drawPanel(const garden::HandState& tool) {
+        if (!panel_.shown()) return;
+        for (int i = 0; i < kPanelButtons; ++i) {
+            const auto b = static_cast<PanelButton>(i);
+            const std::vector<glm::vec3> o = panel_.outline(b);
+            const glm::vec4 c = panel_.hovered() == b ? glm::vec4(0.2f, 1.0f, 1.0f, 1.0f) : HandPanel::colorOf(b);
+            renderer_.drawLines(o, c, garden::LineMode::Loop, false);
+            if (b == selectedTool()) renderer_.drawLines({o[0], o[2], o[1], o[3]}, c, garden::LineMode::Segments, false);
+        }
+        if (panel_.pointing() && tool.tracked)
+            renderer_.drawLines({tool.aim.position, tool.aim.position + tool.aim.forward() * 0.5f * scale_},
+                                glm::vec4(1.0f), garden::LineMode::Segments, true);
+    }
+
+    // Over the mirror: what the headset runs, and the frame statistics.
+    void drawPanels() {
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        overlay_->newFrame();
+        ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x - 10.0f, 10.0f), ImGuiCond_FirstUseEver,
+                                ImVec2(1.0f, 0.0f));
+        ImGui::Begin("Headset", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+        ImGui::Text("%s", runtimeName_.c_str());
+        ImGui::Text("space %s, world x%.2f", info_.space.c_str(), 1.0 / static_cast<double>(scale_));
+        ImGui::Text("%s", info_.interactionProfile.empty() ? "no interaction profile yet" : info_.interactionProfile.c_str());
+        ImGui::Text("tool radius %.3f m", session_.tool().radius);
+        ImGui::End();
+        garden::drawStatsPanel(session_.scheduler().history());
+        overlay_->render();
+    }
+
+    // The left eye, scaled into the mirror window.
+    void mirror(const EyeTarget& target, const EyeImages& images) {
+        const glm::ivec2 fb = window_.framebufferSize();
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, target.fbo());
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+        glBlitFramebuffer(0, 0, images.width, images.height, 0, 0, fb.x, fb.y, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+    }
+
+    const XrOptions& options_;
+    garden::GardenSession& session_;
+    Headset& headset_;
+    garden::GlWindow& window_;
+    garden::Renderer renderer_;
+    garden::GardenView view_;
+    const std::optional<garden::ReplayScript>& script_;
+    std::vector<int> stepStarts_;
+    int scriptFrame_ = 0;
+    std::unique_ptr<Controllers> controllers_;
+    std::unique_ptr<garden::Overlay> overlay_;  // the mirror's panels
+    std::array<EyeTarget, 2> targets_;
+    WorldGrab grab_;
+    HandPanel panel_;
+    Turning turning_;
+    float scale_ = 1.0f;
+    glm::vec3 startEye_{0.0f};
+    float startYaw_ = 0.0f;
+    bool menuHeld_ = false;
+    XrRunInfo info_;
+    std::string runtimeName_;
+    std::string error_;
+};
+
+}  // namespace
+
+int runXrGarden(const XrOptions& options,
+                const std::function<void(garden::GardenSession&, const XrRunInfo&)>& atEnd) {
+    std::optional<garden::ReplayScript> script;
+    std::string gardenFile = options.garden;
+    if (!options.script.empty()) {
+        try {
+            script = garden::loadReplayScript(options.script);
+        } catch (const garden::JsonError& e) {
+            std::cerr << "error: " << options.script << ": " << e.what() << "\n";
+            return 2;
+        }
+        if (gardenFile.empty()) gardenFile = script->garden;
+    }
+    std::optional<garden::GardenLoad> load;
+    if (options.session.empty()) {
+        load = garden::loadGarden(gardenFile);
+        if (!load->ok()) {
+            std::cerr << "error: " << load->error << "\n";
+            return 2;
+        }
+    }
+    // The runtime first: without one there is no window to open. The
+    // loader's own log would repeat our message in its words; the user may
+    // still ask for it (XR_LOADER_DEBUG=error).
+    ::setenv("XR_LOADER_DEBUG", "none", 0);
+    std::unique_ptr<Headset> headset;
+    try {
+        headset = std::make_unique<Headset>("Hypergarden");
+    } catch (const NoRuntime& e) {
+        std::cerr << "error: no OpenXR runtime: " << e.what()
+                  << "; run hypergarden without --xr for the desktop garden"
+                  << " (XR_LOADER_DEBUG=error shows the loader's own messages)\n";
+        return kExitNoRuntime;
+    } catch (const XrFailure& e) {
+        std::cerr << "error: OpenXR: " << e.what() << "\n";
+        return 1;
+    }
+    std::cerr << "OpenXR runtime: " << headset->runtimeName() << "\n";
+    try {
+        garden::WindowOptions wo;
+        wo.width = kMirrorWidth;
+        wo.height = kMirrorHeight;
+        wo.visible = options.mirror;
+        wo.vsync = false;  // xrWaitFrame paces the frames
+        wo.title = "Hypergarden - headset mirror (left eye)";
+        garden::GlWindow window(wo);
+        garden::SessionSettings settings;
+        settings.viewportHeight = 1024;  // level selection: about a headset's pixels per eye
+        garden::OpenedSession opened;
+        if (load) {
+            opened.session = std::make_unique<garden::GardenSession>(std::move(*load), settings);
+        } else {
+            opened = garden::openSession(options.session, gardenFile, settings);
+            if (!opened.error.empty()) {
+                std::cerr << "error: " << opened.error << "\n";
+                return opened.exitStatus;
+            }
+            for (const std::string& n : opened.notes) std::cerr << "note: " << n << "\n";
+        }
+        garden::GardenSession& session = *opened.session;
+        for (const garden::Sculpture& s : session.sculptures())
+            if (s.missing()) std::cerr << "warning: sculpture '" << s.name << "' is missing: " << s.error << "\n";
+        int status = 0;
+        XrRunInfo info;
+        try {
+            XrRun run(options, session, *headset, window, script);
+            status = run.loop();
+            info = run.info();
+            if (!run.error().empty()) std::cerr << "error: " << run.error() << "\n";
+        } catch (const XrFailure& e) {
+            std::cerr << "error: OpenXR: " << e.what() << "\n";
+            status = 1;
+        }
+        // A stroke still held is finished, so the journal has it.
+        if (session.stroking()) session.endStroke();
+        // The swapchains' textures belong to the window's context: the
+        // session goes while it is current.
+        window.makeCurrent();
+        headset.reset();
+        std::cerr << "xr: " << info.framesSubmitted << " frames (" << info.framesRendered << " drawn, "
+                  << info.focusedFrames << " focused), space " << info.space
+                  << (info.interactionProfile.empty() ? "" : ", " + info.interactionProfile)
+                  << (info.endReason.empty() ? "" : "; " + info.endReason) << "\n";
+        if (atEnd) atEnd(session, info);
+        return status;
+    } catch (const garden::GlError& e) {
+        std::cerr << "error: " << e.what() << "\n";
+        return 1;
+    }
+}
+
+}  // namespace hg::xr

@@ -1,0 +1,55 @@
+// `hypergarden --xr`: the garden in a headset (DESIGN §8, docs/xr.md). The
+// same GardenSession, tools and renderer as the desktop window; the
+// controllers become the Hands (xr/controllers.h), both eyes are drawn into
+// the runtime's sRGB swapchains, and the frame follows xrWaitFrame with the
+// predicted display period as the frame budget. A small window mirrors the
+// left eye.
+#pragma once
+
+#include <functional>
+#include <string>
+
+namespace hg::garden {
+class GardenSession;
+struct FrameStats;
+}
+
+namespace hg::xr {
+
+// Exit statuses besides 0 (done), 1 (the runtime or GL failed) and 2 (a
+// garden, session or script that cannot be read).
+constexpr int kExitNoRuntime = 3;
+
+struct XrOptions {
+    std::string garden;      // the garden file ("" with a script: the script's)
+    std::string session;     // a session folder ("" : none)
+    std::string script;      // a replay script whose commands run at their frames ("" : none)
+    int frames = 0;          // ask the runtime to end the session after this many frames (0: never)
+    bool leftHanded = false; // the left hand holds the tool
+    bool smoothTurn = false; // turn smoothly with the left stick instead of snapping 30 degrees
+    bool seated = false;     // raise the tracked heights by a seated user's shorter reach (0.5 m)
+    bool mirror = true;      // show the mirror window (hidden when false)
+    // Called after every focused frame with its stats and its index from
+    // the first focused frame (benchmarks).
+    std::function<void(const garden::FrameStats&, int)> onFrame;
+};
+
+// What a run did, for the caller (tests) at its end.
+struct XrRunInfo {
+    int framesSubmitted = 0;   // xrEndFrame calls
+    int framesRendered = 0;    // ... with both views drawn
+    int focusedFrames = 0;
+    bool lost = false;         // the runtime lost the session or the instance
+    std::string endReason;
+    std::string interactionProfile;
+    std::string space;         // STAGE or LOCAL
+    bool depthSubmitted = false;
+    float worldScale = 1.0f;   // the stage rig's scale at the end (world metres per stage metre)
+};
+
+// Runs until the session ends. `atEnd` (if set) sees the garden session
+// after the last frame, its finished strokes journalled.
+int runXrGarden(const XrOptions& options,
+                const std::function<void(garden::GardenSession&, const XrRunInfo&)>& atEnd = {});
+
+}  // namespace hg::xr
