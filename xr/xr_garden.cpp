@@ -288,6 +288,7 @@ private:
             case garden::ToolSettings::Kind::Melt: return PanelButton::Melt;
             case garden::ToolSettings::Kind::Perturb: return PanelButton::Perturb;
             case garden::ToolSettings::Kind::Impacts: return PanelButton::Impacts;
+            case garden::ToolSettings::Kind::Move: return PanelButton::Count;  // no button of its own: none crossed
         }
         return PanelButton::ToolNone;
     }
