@@ -229,7 +229,9 @@ private:
     void sculptWithHands(const Hands& hands);
     void record(const JournalRecord& r);
     bool stepHistory(std::vector<UndoEntry>& from, std::vector<UndoEntry>& to, bool undoing);
-    void placeSculpture(int sculpture, const Placement& placement);
+    // `followOrbit`: an orbit of the sculpture follows it (not during a live
+    // move: the camera would carry the hand's ray, and the sculpture, along).
+    void placeSculpture(int sculpture, const Placement& placement, bool followOrbit = true);
     std::string checkPlacement(int sculpture, const Placement& placement) const;
     void moveWithHands(const HandState& h);
     void recordMorph();

@@ -63,7 +63,7 @@ std::string GardenSession::moveSculptureLive(int sculpture, const Placement& pla
         liveMove_ = sculpture;
         liveMoveFrom_ = sculptures_[static_cast<std::size_t>(sculpture)].placement;
     }
-    placeSculpture(sculpture, placement);
+    placeSculpture(sculpture, placement, false);
     return "";
 }
 
@@ -71,6 +71,7 @@ void GardenSession::endLiveMove() {
     if (liveMove_ < 0) return;
     const int sculpture = liveMove_;
     liveMove_ = -1;
+    if (selected_ == sculpture) select(sculpture);  // the orbit follows, now the hand let go
     const Sculpture& s = sculptures_[static_cast<std::size_t>(sculpture)];
     const Placement& to = s.placement;
     const Placement& from = liveMoveFrom_;

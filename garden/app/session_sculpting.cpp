@@ -427,12 +427,12 @@ std::string GardenSession::moveSculpture(int sculpture, const Placement& placeme
     return "";
 }
 
-void GardenSession::placeSculpture(int sculpture, const Placement& placement) {
+void GardenSession::placeSculpture(int sculpture, const Placement& placement, bool followOrbit) {
     Sculpture& s = sculptures_[static_cast<std::size_t>(sculpture)];
     s.placement = placement;
     s.modelToWorld = placementMatrix(placement);
     s.scale = placement.scale;
-    if (selected_ == sculpture) select(sculpture);  // the orbit follows
+    if (followOrbit && selected_ == sculpture) select(sculpture);  // the orbit follows
 }
 
 void GardenSession::setMirror(int sculpture, std::optional<MirrorPlane> plane) {

@@ -1,6 +1,8 @@
 // The desktop garden: a window onto the garden, walked with the keys and
 // mouse (garden/hands/desktop_hands.h), the morph selected in an on-screen
-// triangle or on the ground, frame stats in an overlay, F12 screenshots.
+// triangle or on the ground, the tool picked and shaped in the tool panel
+// and with keys (desktop_keys.h) and drawn where the mouse points
+// (render/tool_gizmo.h), frame stats in an overlay, F12 screenshots.
 #pragma once
 
 #include <string>

@@ -223,5 +223,28 @@ TEST_F(DesktopKeysSession, AMoveDragWithTheMouseIsOneUndo) {
     EXPECT_FALSE(session->undo());
 }
 
+TEST_F(DesktopKeysSession, DraggingTheOrbitedSculptureDoesNotCarryTheCameraAlong) {
+    // Orbiting the ball: were the camera to follow it during the drag, the
+    // mouse ray would move with it, and the ball with the ray, frame after
+    // frame, with the mouse held still.
+    session->select(c);
+    frame(press(GLFW_KEY_O));
+    ASSERT_EQ(session->navigator().mode(), NavigationMode::Orbit);
+    frame(press(GLFW_KEY_6));
+    const glm::vec3 eye = session->navigator().eye();
+    const Placement start = ball().placement;
+    frame({}, kCentre, true);
+    for (int f = 1; f <= 5; ++f) frame({}, kCentre + glm::vec2(10.0f * static_cast<float>(f), 0.0f), true);
+    const Placement moved = ball().placement;
+    EXPECT_GT(moved.position[0], start.position[0] + 0.1) << "dragged right";
+    for (int f = 0; f < 10; ++f) frame({}, kCentre + glm::vec2(50.0f, 0.0f), true);
+    EXPECT_EQ(ball().placement.position, moved.position) << "held still, it stays";
+    EXPECT_EQ(session->navigator().eye(), eye);
+    frame({}, kCentre + glm::vec2(50.0f, 0.0f), false);
+    // Let go, the orbit takes the new place as its centre.
+    frame({});
+    EXPECT_NE(session->navigator().eye(), eye);
+}
+
 }  // namespace
 }  // namespace hg::garden
