@@ -230,6 +230,10 @@ int runDesktopGarden(const DesktopOptions& options) {
             }
             window.swapBuffers();
         }
+        // Closing the window ends what the hands were doing: a stroke or a
+        // drag under way becomes a finished action, journalled like any.
+        session.endStroke();
+        session.endLiveMove();
     } catch (const GlError& e) {
         std::cerr << "error: " << e.what() << "\n";
         return 1;
