@@ -31,7 +31,7 @@ struct ParseLimits {
     static constexpr int kMaxTreeDepth = 2000;      // height of one expression tree
     static constexpr int kMaxArraySize = 1 << 20;   // items of one array
     static constexpr long long kMaxBodyArrayItems = 1 << 22;  // all arrays of a body
-    static constexpr size_t kMaxNodes = size_t{1} << 21;      // AST nodes of a program
+    static constexpr size_t kMaxNodes = size_t{1} << 23;      // AST nodes of a program (an export of ~60,000 edits)
 };
 
 ParseResult parseProgram(std::string_view source, const std::string& fileName);
