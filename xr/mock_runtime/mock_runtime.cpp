@@ -340,13 +340,19 @@ XRAPI_ATTR XrResult XRAPI_CALL enumerateViewConfigurations(XrInstance instance, 
     return XR_SUCCESS;
 }
 
+// The checks every call about the stereo view configuration makes first.
+XrResult checkStereo(XrInstance instance, XrSystemId id, XrViewConfigurationType type) {
+    if (!isLive(runtime().instances, instance)) return XR_ERROR_HANDLE_INVALID;
+    if (id != kSystemId) return XR_ERROR_SYSTEM_INVALID;
+    if (type != XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO) return XR_ERROR_VIEW_CONFIGURATION_TYPE_UNSUPPORTED;
+    return XR_SUCCESS;
+}
+
 XRAPI_ATTR XrResult XRAPI_CALL getViewConfigurationProperties(XrInstance instance, XrSystemId id,
                                                               XrViewConfigurationType type,
                                                               XrViewConfigurationProperties* p) {
     Lock lock(runtime().mutex);
-    if (!isLive(runtime().instances, instance)) return XR_ERROR_HANDLE_INVALID;
-    if (id != kSystemId) return XR_ERROR_SYSTEM_INVALID;
-    if (type != XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO) return XR_ERROR_VIEW_CONFIGURATION_TYPE_UNSUPPORTED;
+    if (const XrResult r = checkStereo(instance, id, type); r != XR_SUCCESS) return r;
     if (!p || p->type != XR_TYPE_VIEW_CONFIGURATION_PROPERTIES) return XR_ERROR_VALIDATION_FAILURE;
     p->viewConfigurationType = type;
     p->fovMutable = XR_FALSE;
@@ -357,9 +363,7 @@ XRAPI_ATTR XrResult XRAPI_CALL enumerateViewConfigurationViews(XrInstance instan
                                                                XrViewConfigurationType type, uint32_t capacity,
                                                                uint32_t* count, XrViewConfigurationView* views) {
     Lock lock(runtime().mutex);
-    if (!isLive(runtime().instances, instance)) return XR_ERROR_HANDLE_INVALID;
-    if (id != kSystemId) return XR_ERROR_SYSTEM_INVALID;
-    if (type != XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO) return XR_ERROR_VIEW_CONFIGURATION_TYPE_UNSUPPORTED;
+    if (const XrResult r = checkStereo(instance, id, type); r != XR_SUCCESS) return r;
     if (!count) return XR_ERROR_VALIDATION_FAILURE;
     *count = 2;
     if (capacity == 0) return XR_SUCCESS;
@@ -380,9 +384,7 @@ XRAPI_ATTR XrResult XRAPI_CALL enumerateEnvironmentBlendModes(XrInstance instanc
                                                               XrViewConfigurationType type, uint32_t capacity,
                                                               uint32_t* count, XrEnvironmentBlendMode* modes) {
     Lock lock(runtime().mutex);
-    if (!isLive(runtime().instances, instance)) return XR_ERROR_HANDLE_INVALID;
-    if (id != kSystemId) return XR_ERROR_SYSTEM_INVALID;
-    if (type != XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO) return XR_ERROR_VIEW_CONFIGURATION_TYPE_UNSUPPORTED;
+    if (const XrResult r = checkStereo(instance, id, type); r != XR_SUCCESS) return r;
     if (!count) return XR_ERROR_VALIDATION_FAILURE;
     *count = 1;
     if (capacity == 0) return XR_SUCCESS;
