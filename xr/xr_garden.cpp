@@ -3,6 +3,7 @@
 // The garden's headers before the XR and X11 ones (xr/headset.h keeps X11 out).
 #include "garden/app/garden_session.h"
 #include "garden/desktop/garden_view.h"
+#include "garden/desktop/garden_window.h"
 #include "garden/render/gl_context.h"
 #include "garden/render/gl_objects.h"
 #include "garden/render/overlay.h"
@@ -46,6 +47,7 @@ constexpr float kNearZ = 0.05f, kFarZ = 500.0f;
 // A seated user's eyes are about this much lower than a standing one's.
 constexpr float kSeatedRaise = 0.5f;
 constexpr int kMirrorWidth = 640, kMirrorHeight = 640;
+constexpr const char* kMirrorTitle = "Hypergarden - headset mirror (left eye)";
 
 glm::mat4 projectionOf(const XrFovf& f) {
     return glm::frustum(std::tan(f.angleLeft) * kNearZ, std::tan(f.angleRight) * kNearZ, std::tan(f.angleDown) * kNearZ,
@@ -92,17 +94,18 @@ private:
 // One run: everything that lives from the first frame to the last.
 class XrRun {
 public:
-    XrRun(const XrOptions& o, garden::GardenSession& s, Headset& h, garden::GlWindow& w,
-          const std::optional<garden::ReplayScript>& script)
-        : options_(o), session_(s), headset_(h), window_(w), view_(renderer_), script_(script),
-          turning_(o.smoothTurn) {
+    XrRun(const XrOptions& o, garden::GardenSession& s, Headset& h, garden::GardenWindow& w,
+          const std::optional<garden::ReplayScript>& script, bool desktopButton)
+        : options_(o), session_(s), headset_(h), gardenWindow_(w), window_(w.window()), renderer_(w.renderer()),
+          view_(w.view()), script_(script), desktopButton_(desktopButton), turning_(o.smoothTurn) {
         settingsPath_ = options_.settingsFile.empty() ? xrSettingsPath() : options_.settingsFile;
         std::string warning;
         user_ = loadXrSettings(settingsPath_, warning);
         if (!warning.empty()) std::cerr << "warning: " << warning << "\n";
         if (options_.leftHanded) user_.leftHanded = *options_.leftHanded;
         if (options_.seated) user_.seated = *options_.seated;
-        if (options_.mirror) overlay_ = std::make_unique<garden::Overlay>(window_);
+        if (options_.mirror) overlay_ = w.overlay();
+        gardenWindow_.events() = garden::WindowEvents{};
         controllers_ = std::make_unique<Controllers>(headset_.instance(), user_.leftHanded);
         headset_.createSession(window_.handle());
         controllers_->attach(headset_.session());
@@ -138,13 +141,17 @@ public:
         while (!headset_.done()) {
             garden::pollEvents();
             if (window_.shouldClose()) askExit();
+            // F9 in the mirror: the headset session ends, the desktop follows.
+            if (desktopButton_ && gardenWindow_.events().keys.headset) desktopAsked_ = true;
+            gardenWindow_.events() = garden::WindowEvents{};
+            if (desktopAsked_) askExit();
             if (headset_.pollEvents()) {
                 controllers_->refreshProfile();
                 info_.interactionProfile = controllers_->interactionProfile();
             }
             if (headset_.done()) break;
-            if (!headset_.running() && window_.shouldClose()) {
-                info_.endReason = "the mirror window was closed";
+            if (!headset_.running() && (window_.shouldClose() || desktopAsked_)) {
+                info_.endReason = desktopAsked_ ? "the desktop was asked for" : "the mirror window was closed";
                 return 0;  // the session is not running: nothing to end
             }
             if (!headset_.running()) {
@@ -154,6 +161,7 @@ public:
             }
             frame();
             if (options_.frames > 0 && info_.framesSubmitted >= options_.frames) askExit();
+            if (desktopButton_ && options_.askDesktop && options_.askDesktop(info_.framesSubmitted)) desktopAsked_ = true;
             if (script_ && scriptFrame_ >= script_->totalFrames()) askExit();
             if (!error_.empty()) return 1;
         }
@@ -168,6 +176,8 @@ public:
         return i;
     }
     const std::string& error() const { return error_; }
+    // The user asked for the desktop (F9, the mirror's button).
+    bool desktopAsked() const { return desktopAsked_; }
 
 private:
     // Added to tracked heights: the floor at 0, raised for a seated user.
@@ -308,30 +318,43 @@ private:
         ImGui::Text("space %s, world x%.2f", info_.space.c_str(), 1.0 / static_cast<double>(scale_));
         ImGui::Text("%s", info_.interactionProfile.empty() ? "no interaction profile yet" : info_.interactionProfile.c_str());
         ImGui::Text("tool radius %.3f m", session_.tool().radius);
+        if (desktopButton_ && ImGui::Button("Desktop (F9)")) desktopAsked_ = true;
         ImGui::End();
         garden::drawStatsPanel(session_.scheduler().history());
         overlay_->render();
     }
 
-    // The left eye, scaled into the mirror window.
+    // The left eye, scaled into the mirror window with its own aspect
+    // (a desktop window is wider than an eye), on black.
     void mirror(const EyeTarget& target, const EyeImages& images) {
         const glm::ivec2 fb = window_.framebufferSize();
-        glBindFramebuffer(GL_READ_FRAMEBUFFER, target.fbo());
         glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
-        glBlitFramebuffer(0, 0, images.width, images.height, 0, 0, fb.x, fb.y, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+        glViewport(0, 0, fb.x, fb.y);
+        glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT);
+        const float fit = std::min(static_cast<float>(fb.x) / static_cast<float>(images.width),
+                                   static_cast<float>(fb.y) / static_cast<float>(images.height));
+        const glm::ivec2 size(glm::vec2(images.width, images.height) * fit);
+        const glm::ivec2 at = (fb - size) / 2;
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, target.fbo());
+        glBlitFramebuffer(0, 0, images.width, images.height, at.x, at.y, at.x + size.x, at.y + size.y,
+                          GL_COLOR_BUFFER_BIT, GL_LINEAR);
     }
 
     const XrOptions& options_;
     garden::GardenSession& session_;
     Headset& headset_;
+    garden::GardenWindow& gardenWindow_;
     garden::GlWindow& window_;
-    garden::Renderer renderer_;
-    garden::GardenView view_;
+    garden::Renderer& renderer_;
+    garden::GardenView& view_;
     const std::optional<garden::ReplayScript>& script_;
+    const bool desktopButton_;  // F9 and the mirror's button go to the desktop
+    bool desktopAsked_ = false;
     std::vector<int> stepStarts_;
     int scriptFrame_ = 0;
     std::unique_ptr<Controllers> controllers_;
-    std::unique_ptr<garden::Overlay> overlay_;  // the mirror's panels
+    garden::Overlay* overlay_ = nullptr;  // the mirror's panels (none when hidden)
     std::array<EyeTarget, 2> targets_;
     WorldGrab grab_;
     HandPanel panel_;
@@ -347,6 +370,62 @@ private:
     std::string runtimeName_;
     std::string error_;
 };
+
+}  // namespace
+
+namespace {
+
+// Why no headset: the runtime is missing or failed (the message says which).
+struct HeadsetUnavailable {
+    int status;
+    std::string message;
+};
+
+// The loader's own log would repeat our message in its words; the user may
+// still ask for it (XR_LOADER_DEBUG=error).
+std::unique_ptr<Headset> openHeadset(const std::string& desktopHint) {
+    ::setenv("XR_LOADER_DEBUG", "none", 0);
+    try {
+        auto headset = std::make_unique<Headset>("Hypergarden");
+        std::cerr << "OpenXR runtime: " << headset->runtimeName() << "\n";
+        return headset;
+    } catch (const NoRuntime& e) {
+        throw HeadsetUnavailable{kExitNoRuntime, "error: no OpenXR runtime: " + std::string(e.what()) + "; " + desktopHint +
+                                                     " (XR_LOADER_DEBUG=error shows the loader's own messages)"};
+    } catch (const XrFailure& e) {
+        throw HeadsetUnavailable{1, "error: OpenXR: " + std::string(e.what())};
+    }
+}
+
+// One headset session on an open garden and window; the headset is closed
+// (its swapchains with the window's context current) before returning.
+int runHeadsetOn(const XrOptions& options, std::unique_ptr<Headset> headset, garden::GardenSession& session,
+                 garden::GardenWindow& window, const std::optional<garden::ReplayScript>& script, bool desktopButton,
+                 XrRunInfo& info, bool& desktopAsked, std::string& error) {
+    int status = 0;
+    session.settings().viewportHeight = 1024;  // level selection: about a headset's pixels per eye
+    try {
+        XrRun run(options, session, *headset, window, script, desktopButton);
+        status = run.loop();
+        info = run.info();
+        desktopAsked = run.desktopAsked();
+        if (!run.error().empty()) error = "error: " + run.error();
+    } catch (const XrFailure& e) {
+        error = "error: OpenXR: " + std::string(e.what());
+        status = 1;
+    }
+    // A stroke still held is finished, so the journal has it.
+    if (session.stroking()) session.endStroke();
+    // The swapchains' textures belong to the window's context: the
+    // session goes while it is current.
+    window.window().makeCurrent();
+    headset.reset();
+    std::cerr << "xr: " << info.framesSubmitted << " frames (" << info.framesRendered << " drawn, " << info.focusedFrames
+              << " focused), space " << info.space
+              << (info.interactionProfile.empty() ? "" : ", " + info.interactionProfile)
+              << (info.endReason.empty() ? "" : "; " + info.endReason) << "\n";
+    return status;
+}
 
 }  // namespace
 
@@ -371,33 +450,23 @@ int runXrGarden(const XrOptions& options,
             return 2;
         }
     }
-    // The runtime first: without one there is no window to open. The
-    // loader's own log would repeat our message in its words; the user may
-    // still ask for it (XR_LOADER_DEBUG=error).
-    ::setenv("XR_LOADER_DEBUG", "none", 0);
+    // The runtime first: without one there is no window to open.
     std::unique_ptr<Headset> headset;
     try {
-        headset = std::make_unique<Headset>("Hypergarden");
-    } catch (const NoRuntime& e) {
-        std::cerr << "error: no OpenXR runtime: " << e.what()
-                  << "; run hypergarden without --xr for the desktop garden"
-                  << " (XR_LOADER_DEBUG=error shows the loader's own messages)\n";
-        return kExitNoRuntime;
-    } catch (const XrFailure& e) {
-        std::cerr << "error: OpenXR: " << e.what() << "\n";
-        return 1;
+        headset = openHeadset("run hypergarden without --xr for the desktop garden");
+    } catch (const HeadsetUnavailable& e) {
+        std::cerr << e.message << "\n";
+        return e.status;
     }
-    std::cerr << "OpenXR runtime: " << headset->runtimeName() << "\n";
     try {
         garden::WindowOptions wo;
         wo.width = kMirrorWidth;
         wo.height = kMirrorHeight;
         wo.visible = options.mirror;
         wo.vsync = false;  // xrWaitFrame paces the frames
-        wo.title = "Hypergarden - headset mirror (left eye)";
-        garden::GlWindow window(wo);
+        wo.title = kMirrorTitle;
+        garden::GardenWindow window(wo, options.mirror || options.desktop.has_value());
         garden::SessionSettings settings;
-        settings.viewportHeight = 1024;  // level selection: about a headset's pixels per eye
         garden::OpenedSession opened;
         if (load) {
             opened.session = std::make_unique<garden::GardenSession>(std::move(*load), settings);
@@ -412,33 +481,53 @@ int runXrGarden(const XrOptions& options,
         garden::GardenSession& session = *opened.session;
         for (const garden::Sculpture& s : session.sculptures())
             if (s.missing()) std::cerr << "warning: sculpture '" << s.name << "' is missing: " << s.error << "\n";
-        int status = 0;
         XrRunInfo info;
-        try {
-            XrRun run(options, session, *headset, window, script);
-            status = run.loop();
-            info = run.info();
-            if (!run.error().empty()) std::cerr << "error: " << run.error() << "\n";
-        } catch (const XrFailure& e) {
-            std::cerr << "error: OpenXR: " << e.what() << "\n";
-            status = 1;
+        bool desktopAsked = false;
+        std::string error;
+        int status = runHeadsetOn(options, std::move(headset), session, window, script, options.desktop.has_value(), info,
+                                  desktopAsked, error);
+        if (!error.empty()) std::cerr << error << "\n";
+        if (status == 0 && desktopAsked && options.desktop && !window.window().shouldClose()) {
+            // The user goes on at the desktop; its F9 comes back here.
+            garden::DesktopOptions desktop = *options.desktop;
+            XrOptions again = options;
+            again.desktop.reset();
+            again.script.clear();
+            again.frames = 0;
+            again.askDesktop = nullptr;
+            desktop.headset = headsetFromDesktop(again);
+            garden::showAsDesktop(window, desktop);
+            // Where the headset stood, walking (the headset flies).
+            session.navigator().setMode(garden::NavigationMode::Walk);
+            status = garden::runDesktopOn(session, window, desktop);
         }
-        // A stroke still held is finished, so the journal has it.
-        if (session.stroking()) session.endStroke();
-        // The swapchains' textures belong to the window's context: the
-        // session goes while it is current.
-        window.makeCurrent();
-        headset.reset();
-        std::cerr << "xr: " << info.framesSubmitted << " frames (" << info.framesRendered << " drawn, "
-                  << info.focusedFrames << " focused), space " << info.space
-                  << (info.interactionProfile.empty() ? "" : ", " + info.interactionProfile)
-                  << (info.endReason.empty() ? "" : "; " + info.endReason) << "\n";
         if (atEnd) atEnd(session, info);
         return status;
     } catch (const garden::GlError& e) {
         std::cerr << "error: " << e.what() << "\n";
         return 1;
     }
+}
+
+garden::HeadsetEntry headsetFromDesktop(XrOptions options, std::function<void(const XrRunInfo&)> ran) {
+    return [options, ran](garden::GardenSession& session, garden::GardenWindow& window, std::string& message) {
+        std::unique_ptr<Headset> headset;
+        try {
+            headset = openHeadset("the desktop goes on");
+        } catch (const HeadsetUnavailable& e) {
+            message = e.message;
+            return garden::HeadsetReturn::Desktop;
+        }
+        window.window().setTitle(kMirrorTitle);
+        window.window().setVsync(false);  // xrWaitFrame paces the frames
+        XrRunInfo info;
+        bool desktopAsked = false;
+        const int status =
+            runHeadsetOn(options, std::move(headset), session, window, std::nullopt, true, info, desktopAsked, message);
+        if (status != 0 && message.empty()) message = "error: the headset session failed";
+        if (ran) ran(info);
+        return window.window().shouldClose() ? garden::HeadsetReturn::Quit : garden::HeadsetReturn::Desktop;
+    };
 }
 
 }  // namespace hg::xr

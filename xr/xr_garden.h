@@ -3,12 +3,16 @@
 // controllers become the Hands (xr/controllers.h), both eyes are drawn into
 // the runtime's sRGB swapchains, and the frame follows xrWaitFrame with the
 // predicted display period as the frame budget. A small window mirrors the
-// left eye.
+// left eye. The desktop and the headset switch without a restart: F9 (or
+// the mirror's button) goes to the desktop on the same open garden, and the
+// desktop's F9 comes back (headsetFromDesktop).
 #pragma once
 
 #include <functional>
 #include <optional>
 #include <string>
+
+#include "garden/desktop/desktop_app.h"
 
 namespace hg::garden {
 class GardenSession;
@@ -37,6 +41,13 @@ struct XrOptions {
     // Called after every focused frame with its stats and its index from
     // the first focused frame (benchmarks).
     std::function<void(const garden::FrameStats&, int)> onFrame;
+    // The desktop that F9 and the mirror's "Desktop" button open on the same
+    // garden and window (the headset session ends first); unset: no desktop,
+    // the run ends with the headset session.
+    std::optional<garden::DesktopOptions> desktop;
+    // Called after every submitted frame with their count; true asks for
+    // the desktop as F9 does (tests).
+    std::function<bool(int)> askDesktop;
 };
 
 // What a run did, for the caller (tests) at its end.
@@ -56,5 +67,12 @@ struct XrRunInfo {
 // after the last frame, its finished strokes journalled.
 int runXrGarden(const XrOptions& options,
                 const std::function<void(garden::GardenSession&, const XrRunInfo&)>& atEnd = {});
+
+// The desktop's way into the headset (DesktopOptions::headset): a headset
+// session with `options` (its garden, session and script are the desktop's,
+// ignored here) on the garden open in the desktop's window, until the
+// runtime ends it or the user asks for the desktop. No runtime or a failure:
+// back at once, the message says why. `ran` (if set) sees each run's info.
+garden::HeadsetEntry headsetFromDesktop(XrOptions options, std::function<void(const XrRunInfo&)> ran = {});
 
 }  // namespace hg::xr

@@ -6,28 +6,32 @@
 namespace hg::garden::cli {
 
 int runGarden(const GardenOptions& options) {
-    if (options.xr) {
-        xr::XrOptions x;
-        x.garden = options.garden;
-        x.session = options.session;
-        x.script = options.xrScript;
-        x.frames = options.frames;
-        // The flags only switch on; without them the user's settings hold.
-        if (options.leftHanded) x.leftHanded = true;
-        if (options.seated) x.seated = true;
-        x.smoothTurn = options.smoothTurn;
-        return xr::runXrGarden(x);
-    }
+    xr::XrOptions x;
+    x.garden = options.garden;
+    x.session = options.session;
+    // The flags only switch on; without them the user's settings hold.
+    if (options.leftHanded) x.leftHanded = true;
+    if (options.seated) x.seated = true;
+    x.smoothTurn = options.smoothTurn;
+
     DesktopOptions d;
     d.garden = options.garden;
     d.width = options.width;
     d.height = options.height;
     d.vsync = !options.noVsync;
     d.budgetMs = options.budgetMs;
-    d.frames = options.frames;
     d.screenshotDir = options.screenshotDir;
-    d.exitScreenshot = options.exitScreenshot;
     d.session = options.session;
+    // F9 takes the open garden into the headset and back.
+    d.headset = xr::headsetFromDesktop(x);
+    if (options.xr) {
+        x.script = options.xrScript;
+        x.frames = options.frames;
+        x.desktop = d;
+        return xr::runXrGarden(x);
+    }
+    d.frames = options.frames;
+    d.exitScreenshot = options.exitScreenshot;
     return runDesktopGarden(d);
 }
 

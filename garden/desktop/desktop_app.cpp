@@ -16,6 +16,7 @@
 #include "garden/desktop/desktop_keys.h"
 #include "garden/desktop/export_panel.h"
 #include "garden/desktop/garden_view.h"
+#include "garden/desktop/garden_window.h"
 #include "garden/hands/desktop_hands.h"
 #include "garden/render/gl_context.h"
 #include "garden/render/morph_triangle.h"
@@ -29,21 +30,6 @@ namespace hg::garden {
 
 namespace {
 
-// Key presses and the wheel arrive as events between frames; the frame
-// reads and clears them.
-struct Events {
-    float wheel = 0.0f;
-    DesktopKeys keys;
-};
-
-Events* eventsOf(GLFWwindow* w) { return static_cast<Events*>(glfwGetWindowUserPointer(w)); }
-
-void onScroll(GLFWwindow* w, double, double dy) { eventsOf(w)->wheel += static_cast<float>(dy); }
-
-void onKey(GLFWwindow* w, int key, int, int action, int mods) {
-    if (action == GLFW_PRESS) addKeyPress(eventsOf(w)->keys, key, mods);
-}
-
 std::string timestampedName(const std::string& dir) {
     const std::time_t t = std::time(nullptr);
     char name[64];
@@ -52,7 +38,9 @@ std::string timestampedName(const std::string& dir) {
 }
 
 // The side panel: the garden, what is missing, the morph selector.
-void gardenPanel(GardenSession& session, glm::vec2& selector) {
+// `headset`: the Headset button is shown (true when pressed), with the
+// last headset message under it.
+bool gardenPanel(GardenSession& session, glm::vec2& selector, bool headset, const std::string& headsetMessage) {
     // Top right: the stats panel takes the top left.
     ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x - 10.0f, 10.0f), ImGuiCond_FirstUseEver, ImVec2(1.0f, 0.0f));
     ImGui::Begin("Garden", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
@@ -88,7 +76,36 @@ void gardenPanel(GardenSession& session, glm::vec2& selector) {
     }
     bool lod = session.settings().lod;
     if (ImGui::Checkbox("level of detail", &lod)) session.settings().lod = lod;
+    bool enter = false;
+    if (headset) {
+        enter = ImGui::Button("Headset (F9)");
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("this garden in the OpenXR headset; back here when its session ends");
+        if (!headsetMessage.empty()) ImGui::TextWrapped("%s", headsetMessage.c_str());
+    }
     ImGui::End();
+    return enter;
+}
+
+std::string desktopTitle(const DesktopOptions& options) { return "Hypergarden - " + options.garden; }
+
+// The headset takes the garden as it stands: what the hands were doing is
+// finished first (journalled), and the desktop gets back its own view,
+// frame budget and window when the headset session ends.
+void enterHeadset(GardenSession& session, GardenWindow& window, const DesktopOptions& options, std::string& message) {
+    session.endStroke();
+    session.endLiveMove();
+    const Navigator desktopView = session.navigator();
+    const double budgetMs = session.scheduler().settings().budgetMs;
+    message.clear();
+    const HeadsetReturn r = options.headset(session, window, message);
+    if (!message.empty()) std::cerr << message << "\n";
+    session.navigator() = desktopView;
+    session.scheduler().setBudgetMs(budgetMs);
+    window.window().makeCurrent();
+    window.window().setTitle(desktopTitle(options));
+    window.window().setVsync(options.vsync);
+    window.events() = WindowEvents{};
+    if (r == HeadsetReturn::Quit) window.window().setShouldClose(true);
 }
 
 }  // namespace
@@ -107,19 +124,12 @@ int runDesktopGarden(const DesktopOptions& options) {
         wo.width = options.width;
         wo.height = options.height;
         wo.vsync = options.vsync;
-        wo.title = "Hypergarden - " + options.garden;
-        GlWindow window(wo);
-        Events events;
-        glfwSetWindowUserPointer(window.handle(), &events);
-        glfwSetScrollCallback(window.handle(), onScroll);
-        glfwSetKeyCallback(window.handle(), onKey);
-        Overlay overlay(window);  // after our callbacks: ImGui chains to them
-        Renderer renderer;
-        GardenView view(renderer);
+        wo.title = desktopTitle(options);
+        GardenWindow window(wo);
 
         SessionSettings settings;
         settings.scheduler.budgetMs = options.budgetMs;
-        settings.viewportHeight = window.framebufferSize().y;
+        settings.viewportHeight = window.window().framebufferSize().y;
         OpenedSession opened;
         if (load) {
             opened.session = std::make_unique<GardenSession>(std::move(*load), settings);
@@ -131,113 +141,135 @@ int runDesktopGarden(const DesktopOptions& options) {
             }
             for (const std::string& n : opened.notes) std::cerr << "note: " << n << "\n";
         }
-        GardenSession& session = *opened.session;
-        // Exports go next to the session, or into the working folder without one.
-        ExportPanel exportPanel(options.session);
-        for (const Sculpture& s : session.sculptures())
+        for (const Sculpture& s : opened.session->sculptures())
             if (s.missing()) std::cerr << "warning: sculpture '" << s.name << "' is missing: " << s.error << "\n";
-
-        glm::vec2 selector = trianglePoint(glm::vec3(1.0f / 3.0f));
-        if (const auto& w = session.morphWeights())
-            selector = trianglePoint(glm::vec3(static_cast<float>(w->barycentric[0]), static_cast<float>(w->barycentric[1]),
-                                               static_cast<float>(w->barycentric[2])));
-        float speed = 1.0f;
-        glm::dvec2 lastMouse(0.0);
-        glfwGetCursorPos(window.handle(), &lastMouse.x, &lastMouse.y);
-        auto last = std::chrono::steady_clock::now();
-        for (int frame = 0; !window.shouldClose() && (options.frames == 0 || frame < options.frames); ++frame) {
-            pollEvents();
-            const auto now = std::chrono::steady_clock::now();
-            const double dt = std::min(0.1, std::chrono::duration<double>(now - last).count());
-            last = now;
-            const glm::ivec2 fb = window.framebufferSize();
-            session.settings().viewportHeight = std::max(fb.y, 1);
-
-            session.beginFrame();
-            DesktopInput in;
-            GLFWwindow* w = window.handle();
-            const bool keys = !overlay.wantsKeyboard(), mouse = !overlay.wantsMouse();
-            in.forward = keys && glfwGetKey(w, GLFW_KEY_W) == GLFW_PRESS;
-            in.back = keys && glfwGetKey(w, GLFW_KEY_S) == GLFW_PRESS;
-            in.left = keys && glfwGetKey(w, GLFW_KEY_A) == GLFW_PRESS;
-            in.right = keys && glfwGetKey(w, GLFW_KEY_D) == GLFW_PRESS;
-            in.up = keys && glfwGetKey(w, GLFW_KEY_E) == GLFW_PRESS;
-            in.down = keys && glfwGetKey(w, GLFW_KEY_Q) == GLFW_PRESS;
-            in.lookButton = mouse && glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS;
-            in.toolButton = mouse && glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
-            glm::dvec2 cursor;
-            glfwGetCursorPos(w, &cursor.x, &cursor.y);
-            const glm::ivec2 ws = window.size();
-            // Mouse in framebuffer pixels (HiDPI: window and framebuffer differ).
-            const glm::vec2 toFb(static_cast<float>(fb.x) / static_cast<float>(std::max(ws.x, 1)),
-                                 static_cast<float>(fb.y) / static_cast<float>(std::max(ws.y, 1)));
-            in.mouse = glm::vec2(cursor) * toFb;
-            in.mouseDelta = glm::vec2(cursor - lastMouse);
-            lastMouse = cursor;
-            // Keys ImGui wants (typing in a field) are not the garden's.
-            const DesktopKeys pressed = keys ? events.keys : DesktopKeys{};
-            in.wheel = mouse ? events.wheel : 0.0f;
-            in.turn = keys && (glfwGetKey(w, GLFW_KEY_LEFT_SHIFT) == GLFW_PRESS || glfwGetKey(w, GLFW_KEY_RIGHT_SHIFT) == GLFW_PRESS);
-            in.viewport = glm::vec2(fb);
-            const float fovY = static_cast<float>(session.settings().fovY);
-            const glm::mat4 projection =
-                glm::perspective(fovY, static_cast<float>(fb.x) / static_cast<float>(std::max(fb.y, 1)), 0.05f, 500.0f);
-            const Hands hands = desktopHands(in, pressed, session, projection, speed);
-            if (pressed.quit) window.setShouldClose(true);
-            if (pressed.detail) {
-                // Where the mouse ray meets the ground, a metre up; again: removed.
-                if (session.detail()) session.setDetail(std::nullopt);
-                else if (const auto hit = hands.tool.aim.groundHit(session.garden().ground.height))
-                    session.setDetail(poly::Sphere{{hit->x, hit->y + 1.0, hit->z}, 1.0});
-            }
-            const bool shoot = pressed.screenshot;
-            events = Events{};
-
-            session.update(hands, dt);
-            FrameScheduler& f = session.scheduler();
-            f.beginStage(Stage::Upload);
-            std::size_t pending = 0;
-            session.stats().uploadBytes += view.upload(session, f.allowanceMs(Stage::Upload), pending);
-            session.stats().uploadsPending = pending;
-            f.beginStage(Stage::Render);
-            view.render(session, fb, fovY);
-            // The tool where the mouse points, unless it points at a panel.
-            drawToolGizmos(renderer, session, mouse ? std::optional<Pose>(hands.tool.aim) : std::nullopt);
-            const RenderStats r = renderer.endFrame();
-            session.stats().trianglesDrawn = r.trianglesDrawn;
-            session.stats().drawCalls = r.drawCalls;
-            if (shoot) {
-                const std::string path = timestampedName(options.screenshotDir);
-                const std::string why = writeFramebufferPng(path, fb.x, fb.y);
-                std::cerr << (why.empty() ? "screenshot: " + path : "error: " + why) << "\n";
-            }
-            overlay.newFrame();
-            gardenPanel(session, selector);
-            ImGui::Begin("Garden");  // the same window: its Export section
-            exportPanel.draw(session);
-            ImGui::End();
-            drawToolPanel(session);
-            drawStatsPanel(session.scheduler().history());
-            overlay.render();
-            session.endFrame();
-            const bool lastFrame = options.frames > 0 && frame + 1 == options.frames;
-            if (lastFrame && !options.exitScreenshot.empty()) {
-                const std::string why = writeFramebufferPng(options.exitScreenshot, fb.x, fb.y);
-                if (!why.empty()) {
-                    std::cerr << "error: " << why << "\n";
-                    return 1;
-                }
-            }
-            window.swapBuffers();
-        }
-        // Closing the window ends what the hands were doing: a stroke or a
-        // drag under way becomes a finished action, journalled like any.
-        session.endStroke();
-        session.endLiveMove();
+        return runDesktopOn(*opened.session, window, options);
     } catch (const GlError& e) {
         std::cerr << "error: " << e.what() << "\n";
         return 1;
     }
+}
+
+void showAsDesktop(GardenWindow& window, const DesktopOptions& options) {
+    window.window().setTitle(desktopTitle(options));
+    window.window().setSize(glm::ivec2(options.width, options.height));
+    window.window().setVsync(options.vsync);
+}
+
+int runDesktopOn(GardenSession& session, GardenWindow& gardenWindow, const DesktopOptions& options) {
+    GlWindow& window = gardenWindow.window();
+    Overlay& overlay = *gardenWindow.overlay();
+    Renderer& renderer = gardenWindow.renderer();
+    GardenView& view = gardenWindow.view();
+    WindowEvents& events = gardenWindow.events();
+    events = WindowEvents{};
+    // Exports go next to the session, or into the working folder without one.
+    ExportPanel exportPanel(options.session);
+    std::string headsetMessage;
+
+    glm::vec2 selector = trianglePoint(glm::vec3(1.0f / 3.0f));
+    if (const auto& w = session.morphWeights())
+        selector = trianglePoint(glm::vec3(static_cast<float>(w->barycentric[0]), static_cast<float>(w->barycentric[1]),
+                                           static_cast<float>(w->barycentric[2])));
+    float speed = 1.0f;
+    glm::dvec2 lastMouse(0.0);
+    glfwGetCursorPos(window.handle(), &lastMouse.x, &lastMouse.y);
+    auto last = std::chrono::steady_clock::now();
+    for (int frame = 0; !window.shouldClose() && (options.frames == 0 || frame < options.frames); ++frame) {
+        pollEvents();
+        const auto now = std::chrono::steady_clock::now();
+        const double dt = std::min(0.1, std::chrono::duration<double>(now - last).count());
+        last = now;
+        const glm::ivec2 fb = window.framebufferSize();
+        session.settings().viewportHeight = std::max(fb.y, 1);
+
+        session.beginFrame();
+        DesktopInput in;
+        GLFWwindow* w = window.handle();
+        const bool keys = !overlay.wantsKeyboard(), mouse = !overlay.wantsMouse();
+        in.forward = keys && glfwGetKey(w, GLFW_KEY_W) == GLFW_PRESS;
+        in.back = keys && glfwGetKey(w, GLFW_KEY_S) == GLFW_PRESS;
+        in.left = keys && glfwGetKey(w, GLFW_KEY_A) == GLFW_PRESS;
+        in.right = keys && glfwGetKey(w, GLFW_KEY_D) == GLFW_PRESS;
+        in.up = keys && glfwGetKey(w, GLFW_KEY_E) == GLFW_PRESS;
+        in.down = keys && glfwGetKey(w, GLFW_KEY_Q) == GLFW_PRESS;
+        in.lookButton = mouse && glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS;
+        in.toolButton = mouse && glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
+        glm::dvec2 cursor;
+        glfwGetCursorPos(w, &cursor.x, &cursor.y);
+        const glm::ivec2 ws = window.size();
+        // Mouse in framebuffer pixels (HiDPI: window and framebuffer differ).
+        const glm::vec2 toFb(static_cast<float>(fb.x) / static_cast<float>(std::max(ws.x, 1)),
+                             static_cast<float>(fb.y) / static_cast<float>(std::max(ws.y, 1)));
+        in.mouse = glm::vec2(cursor) * toFb;
+        in.mouseDelta = glm::vec2(cursor - lastMouse);
+        lastMouse = cursor;
+        // Keys ImGui wants (typing in a field) are not the garden's.
+        const DesktopKeys pressed = keys ? events.keys : DesktopKeys{};
+        in.wheel = mouse ? events.wheel : 0.0f;
+        in.turn = keys && (glfwGetKey(w, GLFW_KEY_LEFT_SHIFT) == GLFW_PRESS || glfwGetKey(w, GLFW_KEY_RIGHT_SHIFT) == GLFW_PRESS);
+        in.viewport = glm::vec2(fb);
+        const float fovY = static_cast<float>(session.settings().fovY);
+        const glm::mat4 projection =
+            glm::perspective(fovY, static_cast<float>(fb.x) / static_cast<float>(std::max(fb.y, 1)), 0.05f, 500.0f);
+        const Hands hands = desktopHands(in, pressed, session, projection, speed);
+        if (pressed.quit) window.setShouldClose(true);
+        if (pressed.detail) {
+            // Where the mouse ray meets the ground, a metre up; again: removed.
+            if (session.detail()) session.setDetail(std::nullopt);
+            else if (const auto hit = hands.tool.aim.groundHit(session.garden().ground.height))
+                session.setDetail(poly::Sphere{{hit->x, hit->y + 1.0, hit->z}, 1.0});
+        }
+        const bool shoot = pressed.screenshot;
+        events = WindowEvents{};
+
+        session.update(hands, dt);
+        FrameScheduler& f = session.scheduler();
+        f.beginStage(Stage::Upload);
+        std::size_t pending = 0;
+        session.stats().uploadBytes += view.upload(session, f.allowanceMs(Stage::Upload), pending);
+        session.stats().uploadsPending = pending;
+        f.beginStage(Stage::Render);
+        view.render(session, fb, fovY);
+        // The tool where the mouse points, unless it points at a panel.
+        drawToolGizmos(renderer, session, mouse ? std::optional<Pose>(hands.tool.aim) : std::nullopt);
+        const RenderStats r = renderer.endFrame();
+        session.stats().trianglesDrawn = r.trianglesDrawn;
+        session.stats().drawCalls = r.drawCalls;
+        if (shoot) {
+            const std::string path = timestampedName(options.screenshotDir);
+            const std::string why = writeFramebufferPng(path, fb.x, fb.y);
+            std::cerr << (why.empty() ? "screenshot: " + path : "error: " + why) << "\n";
+        }
+        overlay.newFrame();
+        const bool headsetButton = gardenPanel(session, selector, static_cast<bool>(options.headset), headsetMessage);
+        ImGui::Begin("Garden");  // the same window: its Export section
+        exportPanel.draw(session);
+        ImGui::End();
+        drawToolPanel(session);
+        drawStatsPanel(session.scheduler().history());
+        overlay.render();
+        session.endFrame();
+        const bool lastFrame = options.frames > 0 && frame + 1 == options.frames;
+        if (lastFrame && !options.exitScreenshot.empty()) {
+            const std::string why = writeFramebufferPng(options.exitScreenshot, fb.x, fb.y);
+            if (!why.empty()) {
+                std::cerr << "error: " << why << "\n";
+                return 1;
+            }
+        }
+        window.swapBuffers();
+        const bool toHeadset = headsetButton || pressed.headset || (options.onFrame && options.onFrame(session, frame));
+        if (toHeadset && options.headset) {
+            enterHeadset(session, gardenWindow, options, headsetMessage);
+            glfwGetCursorPos(window.handle(), &lastMouse.x, &lastMouse.y);
+            last = std::chrono::steady_clock::now();
+        }
+    }
+    // Closing the window ends what the hands were doing: a stroke or a
+    // drag under way becomes a finished action, journalled like any.
+    session.endStroke();
+    session.endLiveMove();
     return 0;
 }
 

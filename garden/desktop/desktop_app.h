@@ -2,12 +2,28 @@
 // mouse (garden/hands/desktop_hands.h), the morph selected in an on-screen
 // triangle or on the ground, the tool picked and shaped in the tool panel
 // and with keys (desktop_keys.h) and drawn where the mouse points
-// (render/tool_gizmo.h), frame stats in an overlay, F12 screenshots.
+// (render/tool_gizmo.h), frame stats in an overlay, F12 screenshots. F9 (or
+// the Garden panel's Headset button) puts the same open garden into a
+// headset and comes back when the headset session ends.
 #pragma once
 
+#include <functional>
 #include <string>
 
 namespace hg::garden {
+
+class GardenSession;
+class GardenWindow;
+
+// How a headset run that the desktop started came back.
+enum class HeadsetReturn {
+    Desktop,  // the headset session ended (or could not start: `message` says why): the desktop goes on
+    Quit,     // the window was closed meanwhile: the program ends
+};
+
+// Runs the headset on the garden open in the window; the desktop loop
+// waits meanwhile. `message` is for the user (no runtime, a failure).
+using HeadsetEntry = std::function<HeadsetReturn(GardenSession&, GardenWindow&, std::string& message)>;
 
 struct DesktopOptions {
     std::string garden;         // the garden file
@@ -18,10 +34,23 @@ struct DesktopOptions {
     int frames = 0;             // stop after this many frames (0: until closed); smoke tests
     std::string exitScreenshot; // a PNG of the last frame, overlay included ("" : none)
     std::string session;        // a session folder (made from `garden` when new); "" : none
+    HeadsetEntry headset;       // F9 and the Headset button (empty: the desktop only)
+    // Called at the end of every desktop frame with its index; true asks
+    // for the headset as F9 does (tests, scripts).
+    std::function<bool(GardenSession&, int)> onFrame;
 };
 
 // Runs until the window closes. 0 on a normal close, 1 when the window or
 // GL cannot be had, 2 when the garden file is refused.
 int runDesktopGarden(const DesktopOptions& options);
+
+// The desktop loop on a garden and window already open (a headset run's
+// "back to the desktop"): until the window closes or `options.frames`
+// desktop frames. 0, or 1 when a screenshot cannot be written.
+int runDesktopOn(GardenSession& session, GardenWindow& window, const DesktopOptions& options);
+
+// The desktop window's size and title for `options` (a window the headset
+// opened as its mirror takes them when the user goes to the desktop).
+void showAsDesktop(GardenWindow& window, const DesktopOptions& options);
 
 }  // namespace hg::garden

@@ -46,6 +46,7 @@ bool addKeyPress(DesktopKeys& keys, int key, int mods) {
         case GLFW_KEY_SPACE: keys.fly = true; return true;
         case GLFW_KEY_O: keys.orbit = true; return true;
         case GLFW_KEY_G: keys.detail = true; return true;
+        case GLFW_KEY_F9: keys.headset = true; return true;
         case GLFW_KEY_F12: keys.screenshot = true; return true;
         case GLFW_KEY_ESCAPE: keys.quit = true; return true;
         default: return false;

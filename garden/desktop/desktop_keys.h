@@ -25,6 +25,7 @@ struct DesktopKeys {
     bool undo = false;                       // Ctrl+Z
     bool redo = false;                       // Ctrl+Shift+Z, Ctrl+Y
     bool fly = false, orbit = false, detail = false, screenshot = false, quit = false;  // space, O, G, F12, Esc
+    bool headset = false;                    // F9: into the headset, and back
 };
 
 // Adds one press of a GLFW key with its modifier bits; false when the key

@@ -19,8 +19,8 @@
 // (garden/desktop/desktop_keys.h): 0 none (the morph selector), 1 carve,
 // 2 add, 3 melt, 4 perturb, 5 impacts, 6 move; [ and ] the tool's size
 // (x1.25 a press); R reverse; M the selected sculpture's mirror plane; and
-// G the detail sphere, F12 a screenshot, Esc quits. Keys and clicks that
-// ImGui wants are not taken.
+// G the detail sphere, F9 the headset (and back), F12 a screenshot, Esc
+// quits. Keys and clicks that ImGui wants are not taken.
 #pragma once
 
 #include <glm/mat4x4.hpp>

@@ -100,6 +100,10 @@ void GlWindow::setVsync(bool on) {
     glfwSwapInterval(on ? 1 : 0);
 }
 
+void GlWindow::setTitle(const std::string& title) { glfwSetWindowTitle(window_, title.c_str()); }
+
+void GlWindow::setSize(glm::ivec2 size) { glfwSetWindowSize(window_, size.x, size.y); }
+
 bool GlWindow::shouldClose() const { return glfwWindowShouldClose(window_) == GLFW_TRUE; }
 
 void GlWindow::setShouldClose(bool close) { glfwSetWindowShouldClose(window_, close ? GLFW_TRUE : GLFW_FALSE); }

@@ -41,6 +41,8 @@ public:
     void makeCurrent();
     void swapBuffers();
     void setVsync(bool on);
+    void setTitle(const std::string& title);
+    void setSize(glm::ivec2 size);  // screen coordinates
     bool shouldClose() const;
     void setShouldClose(bool close);
 

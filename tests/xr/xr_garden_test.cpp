@@ -3,14 +3,14 @@
 // into sRGB swapchains with depth; a scripted right hand carves the same
 // grid as the replay of the same script; a lost or ended session keeps its
 // finished stroke in the journal; LOCAL stands in for a missing STAGE.
-#include "mock_xr_fixture.h"
+#include "xr_carve_script.h"
+#include "xr_garden_fixture.h"
 
 #include <fstream>
 
 #include <nlohmann/json.hpp>
 #include <stb/stb_image.h>
 
-#include "../garden/session_garden.h"
 #include "garden/app/garden_session.h"
 #include "garden/render/renderer.h"
 #include "garden/replay/replay_runner.h"
@@ -23,40 +23,6 @@
 
 namespace hg::xr::test {
 namespace {
-
-// The right hand aims at sculpture 'a' (a ball of radius 0.5 at (0, 0.5,
-// -2.31)) from the viewer at the origin, pulls the trigger and sweeps.
-constexpr const char* kCarveSteps = R"([
-  {"frames": 2, "commands": [{"sculpt_tool": {"kind": "carve", "radius": 0.12}}]},
-  {"frames": 5, "tool": {"aim": {"position": [0.3, 1.2, -1.0], "direction": [-0.35, -0.6, -1.3]}, "trigger": 1}},
-  {"frames": 5, "tool": {"aim": {"position": [0.2, 1.2, -1.0], "direction": [-0.15, -0.6, -1.3]}, "trigger": 1}},
-  {"frames": 5, "tool": {"aim": {"position": [0.1, 1.2, -1.0], "direction": [0.05, -0.65, -1.3]}, "trigger": 1}},
-  {"frames": 4, "tool": {"aim": {"position": [0.1, 1.2, -1.0], "direction": [0.05, -0.65, -1.3]}, "trigger": 0}}
-])";
-
-class XrGarden : public garden::test::SmallGarden {
-protected:
-    void SetUp() override {
-        garden::test::SmallGarden::SetUp();
-        HG_REQUIRE_DISPLAY();
-        useMockRuntime();
-        ::setenv("HG_MOCK_XR_READBACK", (dir / "readback").c_str(), 1);
-        // The viewer at the origin looking along -z: the stage is the world.
-        // No morph, so nothing depends on how far a time-budgeted blend got.
-        gardenFile = writeGarden(nlohmann::json::parse(
-            R"({"start": {"position": [0, 1.7, 0], "look_at": [0, 1.7, -1]}, "morph": null})"));
-    }
-    std::string script(const std::string& steps) {
-        const std::string path = (dir / "carve.json").string();
-        std::ofstream(path) << R"({"garden": "garden.json", "steps": )" << steps << "}";
-        return path;
-    }
-    nlohmann::json readback() {
-        std::ifstream in(dir / "readback" / "frames.json");
-        return nlohmann::json::parse(in);
-    }
-    std::string gardenFile;
-};
 
 TEST_F(XrGarden, ReachesFocusedAndSubmitsBothViews) {
     XrOptions o;
