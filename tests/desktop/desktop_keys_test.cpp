@@ -63,17 +63,10 @@ TEST(DesktopKeys, KeysMapToTheDocumentedCommands) {
     EXPECT_EQ(k.sizeSteps, 1);
 }
 
-class DesktopKeysSession : public test::SmallGarden {
+class DesktopKeysSession : public test::SmallGardenSession {
 protected:
     void SetUp() override {
-        test::SmallGarden::SetUp();
-        SessionSettings settings;
-        settings.chunkSize = 16;
-        settings.maxLevel = 1;
-        settings.remeshChunksPerFrame = 4;
-        settings.morphSamplesPerFrame = 2000;
-        session = std::make_unique<GardenSession>(loadGarden(writeGarden()), settings);
-        c = session->findSculpture("c");  // a ball of radius 0.6 about (2, 0.5, 1.1547)
+        test::SmallGardenSession::SetUp();
         // Flying 3 m in front of ball c at its centre's height, looking along -z.
         session->navigator().setMode(NavigationMode::Fly);
         session->navigator().setPose({2.0f, 0.5f, 4.1547f}, 0.0f, 0.0f);
@@ -98,10 +91,8 @@ protected:
 
     static constexpr glm::vec2 kViewport{1280.0f, 720.0f};
     static constexpr glm::vec2 kCentre{640.0f, 360.0f};
-    std::unique_ptr<GardenSession> session;
     glm::mat4 projection{1.0f};
     float speed = 1.0f, lastSpeed = 1.0f;
-    int c = -1;
 };
 
 TEST_F(DesktopKeysSession, ToolKeysPickToolsAndScaleTheirSizes) {

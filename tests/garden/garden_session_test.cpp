@@ -19,16 +19,6 @@ namespace {
 
 class GardenSessionTest : public test::SmallGarden {};
 
-SessionSettings smallSettings() {
-    SessionSettings s;
-    s.morphSamplesPerFrame = 2000;  // a 32^3 blend over a dozen frames
-    s.remeshChunksPerFrame = 3;
-    s.chunkSize = 16;
-    s.maxLevel = 1;
-    s.viewportHeight = 200;
-    return s;
-}
-
 ReplayScript walkAndMorph(const std::string& garden) {
     return parseReplayScript(R"({
       "garden": ")" + garden + R"(",
@@ -55,7 +45,7 @@ void expectSameGrid(const voxel::Volume& a, const voxel::Volume& b) {
 TEST_F(GardenSessionTest, ABrokenSculptureShowsAsMissingAndTheRestOpens) {
     GardenLoad load = loadGarden(writeGarden());
     ASSERT_TRUE(load.ok()) << load.error;
-    GardenSession s(std::move(load), smallSettings());
+    GardenSession s(std::move(load), test::smallSessionSettings());
     ASSERT_EQ(s.sculptures().size(), 5u) << "four sculptures and the morph result";
     const Sculpture& lost = s.sculptures()[static_cast<std::size_t>(s.findSculpture("lost"))];
     EXPECT_TRUE(lost.missing());
@@ -71,7 +61,7 @@ TEST_F(GardenSessionTest, ABrokenSculptureShowsAsMissingAndTheRestOpens) {
 }
 
 TEST_F(GardenSessionTest, WalkAndMorphReplayDrainsToTheFromScratchBlendAndItsMeshes) {
-    GardenSession s(loadGarden(writeGarden()), smallSettings());
+    GardenSession s(loadGarden(writeGarden()), test::smallSessionSettings());
     const ReplayScript script = walkAndMorph(dir.string() + "/garden.json");
     ReplayResult r = runReplay(script, s, nullptr, ReplayOptions{});
     ASSERT_TRUE(r.ok()) << r.error;
@@ -112,7 +102,7 @@ TEST_F(GardenSessionTest, ReplaysAreDeterministicAndStatsHaveEveryStage) {
     std::vector<std::vector<std::size_t>> runs;
     std::vector<std::vector<float>> meshes;
     for (int run = 0; run < 2; ++run) {
-        GardenSession s(loadGarden(writeGarden()), smallSettings());
+        GardenSession s(loadGarden(writeGarden()), test::smallSessionSettings());
         ReplayResult r = runReplay(script, s, nullptr, ReplayOptions{});
         ASSERT_TRUE(r.ok()) << r.error;
         std::vector<std::size_t> trace;
@@ -144,7 +134,7 @@ TEST_F(GardenSessionTest, ReplaysAreDeterministicAndStatsHaveEveryStage) {
 }
 
 TEST_F(GardenSessionTest, TheToolRayOnTheGroundTrianglePicksTheBlend) {
-    GardenSession s(loadGarden(writeGarden()), smallSettings());
+    GardenSession s(loadGarden(writeGarden()), test::smallSessionSettings());
     Hands h;
     h.tool.tracked = true;
     h.tool.trigger = 1.0f;
@@ -169,7 +159,7 @@ TEST_F(GardenSessionTest, TheToolRayOnTheGroundTrianglePicksTheBlend) {
 }
 
 TEST_F(GardenSessionTest, LevelsFollowTheViewerDuringALongReBlend) {
-    GardenSession s(loadGarden(writeGarden()), smallSettings());
+    GardenSession s(loadGarden(writeGarden()), test::smallSessionSettings());
     auto frame = [&s] {
         s.beginFrame();
         s.update(Hands{}, 1.0 / 90.0);
@@ -196,7 +186,7 @@ TEST_F(GardenSessionTest, LevelsFollowTheViewerDuringALongReBlend) {
 }
 
 TEST_F(GardenSessionTest, ReplayCommandsThatCannotRunStopWithTheirPath) {
-    GardenSession s(loadGarden(writeGarden()), smallSettings());
+    GardenSession s(loadGarden(writeGarden()), test::smallSessionSettings());
     ReplayScript script = parseReplayScript(R"({"garden": "g.json", "steps": [
         {"frames": 2}, {"commands": [{"select": "a"}, {"select": "nobody"}]}]})", "bad.json", "");
     ReplayResult r = runReplay(script, s, nullptr, ReplayOptions{});

@@ -30,13 +30,12 @@ namespace {
 
 class HyperFunExportTest : public test::SmallGarden {};
 
+// Every sample of a blend in one frame, every chunk remeshed, one level.
 SessionSettings smallSettings() {
-    SessionSettings s;
+    SessionSettings s = test::smallSessionSettings();
     s.morphSamplesPerFrame = 200000;
     s.remeshChunksPerFrame = 64;
-    s.chunkSize = 16;
     s.maxLevel = 0;
-    s.viewportHeight = 200;
     return s;
 }
 

@@ -4,8 +4,11 @@
 // opens in a fraction of a second.
 #pragma once
 
+#include <memory>
+
 #include <nlohmann/json.hpp>
 
+#include "garden/app/garden_session.h"
 #include "garden_test_util.h"
 
 namespace hg::garden::test {
@@ -38,6 +41,31 @@ inline std::string writeSmallGarden(const std::filesystem::path& dir, nlohmann::
 class SmallGarden : public ScratchDir {
 protected:
     std::string writeGarden(nlohmann::json patch = nlohmann::json::object()) { return writeSmallGarden(dir, patch); }
+};
+
+// A session on the small garden that settles in a few frames: 16^3 chunks,
+// two levels, a 32^3 blend over a dozen frames.
+inline SessionSettings smallSessionSettings() {
+    SessionSettings s;
+    s.morphSamplesPerFrame = 2000;
+    s.remeshChunksPerFrame = 3;
+    s.chunkSize = 16;
+    s.maxLevel = 1;
+    s.viewportHeight = 200;
+    return s;
+}
+
+// The small garden open in a session; `c` is ball c, of radius 0.6 about
+// (2, 0.5, 1.1547), its pivot (2, 0, 1.1547).
+class SmallGardenSession : public SmallGarden {
+protected:
+    void SetUp() override {
+        SmallGarden::SetUp();
+        session = std::make_unique<GardenSession>(loadGarden(writeGarden()), smallSessionSettings());
+        c = session->findSculpture("c");
+    }
+    std::unique_ptr<GardenSession> session;
+    int c = -1;
 };
 
 }  // namespace hg::garden::test

@@ -16,16 +16,11 @@
 namespace hg::garden {
 namespace {
 
-class SessionMovingTest : public test::SmallGarden {
+class SessionMovingTest : public test::SmallGardenSession {
 protected:
     void SetUp() override {
-        test::SmallGarden::SetUp();
-        SessionSettings settings;
-        settings.chunkSize = 16;
-        settings.maxLevel = 1;
-        session = std::make_unique<GardenSession>(loadGarden(writeGarden()), settings);
+        test::SmallGardenSession::SetUp();
         session->setJournal([this](const JournalRecord& r) { journal.push_back(r); });
-        c = session->findSculpture("c");  // a ball of radius 0.6 about (2, 0.5, 1.1547), pivot (2, 0, 1.1547)
     }
     const Placement& placementOf(int i) const { return session->sculptures()[static_cast<std::size_t>(i)].placement; }
     int moves() const {
@@ -49,9 +44,7 @@ protected:
         if (secondary) h.tool.buttons |= kButtonSecondary;
         return h;
     }
-    std::unique_ptr<GardenSession> session;
     std::vector<JournalRecord> journal;
-    int c = -1;
 };
 
 TEST_F(SessionMovingTest, ALiveMoveIsOneUndoableJournalledMove) {

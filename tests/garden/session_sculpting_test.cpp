@@ -22,16 +22,6 @@ namespace {
 
 class SessionSculptingTest : public test::SmallGarden {};
 
-SessionSettings smallSettings() {
-    SessionSettings s;
-    s.morphSamplesPerFrame = 2000;
-    s.remeshChunksPerFrame = 3;
-    s.chunkSize = 16;
-    s.maxLevel = 1;
-    s.viewportHeight = 200;
-    return s;
-}
-
 
 void frame(GardenSession& s, const Hands& h) {
     s.beginFrame();
@@ -40,7 +30,7 @@ void frame(GardenSession& s, const Hands& h) {
 }
 
 TEST_F(SessionSculptingTest, TheToolHandCarvesAndItsButtonsUndoAndRedoExactly) {
-    GardenSession s(loadGarden(writeGarden()), smallSettings());
+    GardenSession s(loadGarden(writeGarden()), test::smallSessionSettings());
     const int c = s.findSculpture("c");  // a ball of radius 0.6 about (2, 0.5, 1.1547)
     const voxel::Volume original = s.sculptures()[static_cast<std::size_t>(c)].volume->clone();
     s.tool().kind = ToolSettings::Kind::Carve;
@@ -101,7 +91,7 @@ TEST_F(SessionSculptingTest, ReplayCommandsSculptUndoAndRedo) {
         {"commands": [{"redo": 1}]},
         {"until_idle": true, "frames": 2000}
       ]})", "sculpt.json", "");
-    GardenSession s(loadGarden(garden), smallSettings());
+    GardenSession s(loadGarden(garden), test::smallSessionSettings());
     const ReplayResult r = runReplay(script, s, nullptr, {});
     ASSERT_EQ(r.error, "");
     EXPECT_EQ(s.editCount(s.findSculpture("a")), 2u);
@@ -114,7 +104,7 @@ TEST_F(SessionSculptingTest, ReplayCommandsSculptUndoAndRedo) {
 }
 
 TEST_F(SessionSculptingTest, EditsOnTheMorphResultPersistWhenTheWeightsChangeAndCanBeDiscarded) {
-    GardenSession s(loadGarden(writeGarden()), smallSettings());
+    GardenSession s(loadGarden(writeGarden()), test::smallSessionSettings());
     const int m = s.findSculpture("metamorphosis");
     for (int f = 0; f < 2000 && !s.idle(); ++f) frame(s, Hands{});
     const glm::vec3 c = s.sculptures()[static_cast<std::size_t>(m)].worldCentre();
@@ -137,7 +127,7 @@ TEST_F(SessionSculptingTest, EditsOnTheMorphResultPersistWhenTheWeightsChangeAnd
 }
 
 TEST_F(SessionSculptingTest, AMirrorPlaneAppliesEachStrokeOnBothSides) {
-    GardenSession s(loadGarden(writeGarden()), smallSettings());
+    GardenSession s(loadGarden(writeGarden()), test::smallSessionSettings());
     const int c = s.findSculpture("c");  // a ball about the model's x = 0 plane, on a lattice symmetric about it
     s.setMirror(c, MirrorPlane{{0.0, 0.0, 0.0}, {2.0, 0.0, 0.0}});  // normalized on the way in
     ASSERT_EQ(s.applyStroke(c, StrokeTool::Carve, {{2.45, 0.9, 1.3}, {2.5, 0.6, 1.4}}, 0.1), "");
@@ -163,7 +153,7 @@ TEST_F(SessionSculptingTest, AMirrorPlaneAppliesEachStrokeOnBothSides) {
 }
 
 TEST_F(SessionSculptingTest, MovesAreUndoneAndRedoneAndTheirScaleIsChecked) {
-    GardenSession s(loadGarden(writeGarden()), smallSettings());
+    GardenSession s(loadGarden(writeGarden()), test::smallSessionSettings());
     const int a = s.findSculpture("a");
     const Placement before = s.sculptures()[static_cast<std::size_t>(a)].placement;
     Placement p = before;
@@ -208,7 +198,7 @@ TEST_F(SessionSculptingTest, ImpactsRemoveTheirCompactionVolumeAndFireAgainAtAno
                             {"name": "c", "file": "ball.hf", "a": [0.36], "resolution": 96,
                               "box": {"min": [-0.6, -0.1, -0.6], "max": [0.6, 1.1, 0.6]}, "placement": {"position": [2, 0, 1.1547]}}],
                             "morph": null})"))),
-                    smallSettings());
+                    test::smallSessionSettings());
     const int c = s.findSculpture("c");
     const Sculpture& sc = s.sculptures()[static_cast<std::size_t>(c)];
     const double before = solidVolume(*sc.volume);
@@ -244,7 +234,7 @@ TEST_F(SessionSculptingTest, ImpactsRemoveTheirCompactionVolumeAndFireAgainAtAno
 
 TEST_F(SessionSculptingTest, APickedPerturbationIsReplacedNotStacked) {
     const std::string garden = writeGarden();
-    GardenSession s(loadGarden(garden), smallSettings());
+    GardenSession s(loadGarden(garden), test::smallSessionSettings());
     const int c = s.findSculpture("c");
     ASSERT_EQ(s.applyPerturbation(c, QuadricShape::Ellipsoid, {2.0, 1.1, 1.15}, {0.15, 0.1, 0.15}, 2.0), "");
     ASSERT_EQ(s.applyStroke(c, StrokeTool::Carve, {{2.5, 0.5, 1.5}, {2.5, 0.7, 1.5}}, 0.08), "");
@@ -258,7 +248,7 @@ TEST_F(SessionSculptingTest, APickedPerturbationIsReplacedNotStacked) {
     EXPECT_EQ(s.editCount(c), 2u);
     EXPECT_EQ(test::differingVoxels(*sc.volume, *sc.edits->rebuild()), 0);
     // The same as a session that made the changed bump in the first place.
-    GardenSession other(loadGarden(garden), smallSettings());
+    GardenSession other(loadGarden(garden), test::smallSessionSettings());
     ASSERT_EQ(other.applyPerturbation(c, QuadricShape::Ellipsoid, {2.0, 1.1, 1.15}, {0.2, 0.12, 0.2}, -3.0), "");
     ASSERT_EQ(other.applyStroke(c, StrokeTool::Carve, {{2.5, 0.5, 1.5}, {2.5, 0.7, 1.5}}, 0.08), "");
     EXPECT_EQ(test::differingVoxels(*sc.volume, *other.sculptures()[static_cast<std::size_t>(c)].volume), 0);
@@ -270,7 +260,7 @@ TEST_F(SessionSculptingTest, APickedPerturbationIsReplacedNotStacked) {
 }
 
 TEST_F(SessionSculptingTest, BadInputIsRefusedAndChangesNothing) {
-    GardenSession s(loadGarden(writeGarden()), smallSettings());
+    GardenSession s(loadGarden(writeGarden()), test::smallSessionSettings());
     const int a = s.findSculpture("a");
     const voxel::Volume original = s.sculptures()[static_cast<std::size_t>(a)].volume->clone();
     const double nan = std::numeric_limits<double>::quiet_NaN();
@@ -298,7 +288,7 @@ TEST_F(SessionSculptingTest, BadInputIsRefusedAndChangesNothing) {
     const ReplayScript script = parseReplayScript(R"({"garden": ")" + garden + R"(", "steps": [{"commands": [
         {"stroke": {"sculpture": "nobody", "tool": "carve", "radius": 0.1, "path": [[0, 0, 0]]}}]}]})",
                                                   "bad.json", "");
-    GardenSession s2(loadGarden(garden), smallSettings());
+    GardenSession s2(loadGarden(garden), test::smallSessionSettings());
     const ReplayResult r = runReplay(script, s2, nullptr, {});
     EXPECT_NE(r.error.find("$.steps[0].commands[0]: no sculpture named 'nobody'"), std::string::npos) << r.error;
 }

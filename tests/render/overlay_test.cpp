@@ -13,6 +13,7 @@
 #include "garden/render/overlay.h"
 #include "garden/render/shapes.h"
 #include "gl_fixture.h"
+#include "headless_imgui.h"
 
 namespace hg::garden::test {
 namespace {
@@ -97,16 +98,7 @@ TEST(MorphTriangle, ScreenMappingPutsTheApexOnTopAndRoundTrips) {
 // draw lists.
 class HeadlessImGui : public ::testing::Test {
 protected:
-    void SetUp() override {
-        ImGui::CreateContext();
-        ImGuiIO& io = ImGui::GetIO();
-        io.IniFilename = nullptr;
-        io.DisplaySize = ImVec2(800, 600);
-        io.DeltaTime = 1.0f / 60.0f;
-        unsigned char* pixels = nullptr;
-        int w = 0, h = 0;
-        io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
-    }
+    void SetUp() override { createHeadlessImGui(ImVec2(800, 600)); }
     void TearDown() override { ImGui::DestroyContext(); }
 
     // One frame with the mouse at `mouse`, button down or up; returns what

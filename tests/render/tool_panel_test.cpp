@@ -10,6 +10,7 @@
 #include <optional>
 
 #include "../garden/session_garden.h"
+#include "headless_imgui.h"
 #include "garden/app/garden_session.h"
 #include "garden/app/sculpture_gizmos.h"
 #include "garden/render/panels.h"
@@ -17,28 +18,17 @@
 namespace hg::garden {
 namespace {
 
-class ToolPanelTest : public test::SmallGarden {
+class ToolPanelTest : public test::SmallGardenSession {
 protected:
     void SetUp() override {
-        test::SmallGarden::SetUp();
-        SessionSettings settings;
-        settings.chunkSize = 16;
-        settings.maxLevel = 1;
-        session = std::make_unique<GardenSession>(loadGarden(writeGarden()), settings);
-        ImGui::CreateContext();
-        ImGuiIO& io = ImGui::GetIO();
-        io.IniFilename = nullptr;
-        io.DisplaySize = ImVec2(1280, 720);
-        io.DeltaTime = 1.0f / 60.0f;
-        unsigned char* pixels = nullptr;
-        int w = 0, h = 0;
-        io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
+        test::SmallGardenSession::SetUp();
+        createHeadlessImGui(ImVec2(1280, 720));
         frame({0, 0}, false);
         frame({0, 0}, false);  // an auto-sized window shows from its second frame
     }
     void TearDown() override {
         ImGui::DestroyContext();
-        test::SmallGarden::TearDown();
+        test::SmallGardenSession::TearDown();
     }
     // One frame of the panel; the item hovered in it.
     ImGuiID frame(ImVec2 mouse, bool down) {
@@ -76,7 +66,6 @@ protected:
         frame({0, 0}, false);  // the panel's layout follows what the click changed
         return true;
     }
-    std::unique_ptr<GardenSession> session;
 };
 
 TEST_F(ToolPanelTest, TheRadioButtonsPickTheTool) {
