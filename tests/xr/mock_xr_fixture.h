@@ -20,21 +20,8 @@
 #include "../render/gl_fixture.h"
 #include "garden/render/gl_context.h"
 
-#include <epoxy/glx.h>
-#define XR_USE_PLATFORM_XLIB
-#define XR_USE_GRAPHICS_API_OPENGL
-#include <openxr/openxr.h>
-#include <openxr/openxr_platform.h>
-#undef None
-#undef Status
-
 #include "xr/mock_runtime/mock_control.h"
-
-extern "C" {
-Display* glfwGetX11Display(void);
-GLXContext glfwGetGLXContext(GLFWwindow* window);
-GLXWindow glfwGetGLXWindow(GLFWwindow* window);
-}
+#include "xr/xr_platform.h"
 
 namespace hg::xr::test {
 
