@@ -134,7 +134,8 @@ glm::vec2 panelToggleCenter(PanelToggle t) {
 glm::vec2 panelChoiceCenter(PanelChoice c, int option) {
     // The rows of the parameters before the choice (tool_panel.cpp's order).
     const int row = c == PanelChoice::ImpactSpread ? 3 : c == PanelChoice::SnapAngle ? 2 : 0;
-    return frameCenter(kButtonInset + static_cast<float>(option) * (kLook.choiceWidth + kSpacingX), rowTop(row), kLook.choiceWidth);
+    const float x = kButtonInset + static_cast<float>(option) * (kLook.choiceWidth + kSpacingX);
+    return frameCenter(x, rowTop(row), kLook.choiceWidth);
 }
 
 glm::vec2 panelActionCenter(PanelAction a) {
@@ -314,7 +315,8 @@ void HandPanelUi::toolPage(garden::GardenSession& session) {
     if (session.hasMorph()) {
         if (!gl_->selectorSet) {
             if (const auto& w = session.morphWeights())
-                gl_->selector = garden::trianglePoint(glm::vec3(static_cast<float>(w->barycentric[0]), static_cast<float>(w->barycentric[1]),
+                gl_->selector = garden::trianglePoint(glm::vec3(static_cast<float>(w->barycentric[0]),
+                                                                static_cast<float>(w->barycentric[1]),
                                                                 static_cast<float>(w->barycentric[2])));
             gl_->selectorSet = true;
         }

@@ -170,7 +170,9 @@ public:
 
 private:
     // Added to tracked heights: the floor at 0, raised for a seated user.
-    float heightOffset() const { return headset_.floorOffset() + (user_.seated ? static_cast<float>(user_.seatedHeightOffset) : 0.0f); }
+    float heightOffset() const {
+        return headset_.floorOffset() + (user_.seated ? static_cast<float>(user_.seatedHeightOffset) : 0.0f);
+    }
 
     // The navigator holds where the stage stands in the world and its turn;
     // the scale is ours.

@@ -64,8 +64,8 @@ XrUserSettings loadXrSettings(const std::string& path, std::string& warning) {
             read.seatedHeightOffset = it->get<double>();
         }
         if (const auto it = j.find("snap_degrees"); it != j.end()) {
-            const bool offered = it->is_number_integer() &&
-                                 std::find(std::begin(kSnapAngles), std::end(kSnapAngles), it->get<int>()) != std::end(kSnapAngles);
+            const auto* end = std::end(kSnapAngles);
+            const bool offered = it->is_number_integer() && std::find(std::begin(kSnapAngles), end, it->get<int>()) != end;
             if (!offered) throw garden::JsonError("$.snap_degrees", "must be 15, 30, 45 or 90");
             read.snapDegrees = it->get<int>();
         }

@@ -77,7 +77,9 @@ void impactParameters(ToolSettings& t, const ToolWidgetLook& look) {
     sliderDouble("compaction (cm3)", t.compactionCm3, 0.01, 100.0, "%.2f", look, true);
     chooseEnum("spread", t.spread, spreads, look);
     if (t.spread == ImpactSpread::Cone) sliderDouble("half-angle (deg)", t.spreadSize, 0.5, 60.0, "%.1f", look);
-    else sliderDouble(t.spread == ImpactSpread::Gaussian ? "sigma (m)" : "disc radius (m)", t.spreadSize, 0.001, 2.0, "%.3f", look, true);
+    else
+        sliderDouble(t.spread == ImpactSpread::Gaussian ? "sigma (m)" : "disc radius (m)", t.spreadSize, 0.001, 2.0, "%.3f",
+                     look, true);
     ImGui::SetNextItemWidth(look.fieldWidth);
     ImGui::SliderInt("count", &t.impactCount, 1, 500, "%d", ImGuiSliderFlags_Logarithmic);
     // Without a keyboard the seed is stepped; InputScalar draws - and +.
@@ -129,8 +131,9 @@ void toolParameters(ToolSettings& t, const ToolWidgetLook& look) {
 void selectionSection(GardenSession& session, const ToolWidgetLook& look) {
     const int selected = session.selected();
     if (selected < 0) {
-        ImGui::TextDisabled(look.keyHints ? "no sculpture selected:\nclick one with the move tool,\nor pick it in the Garden panel"
-                                          : "no sculpture selected");
+        ImGui::TextDisabled(look.keyHints
+                                ? "no sculpture selected:\nclick one with the move tool,\nor pick it in the Garden panel"
+                                : "no sculpture selected");
         return;
     }
     const Sculpture& s = session.sculptures()[static_cast<std::size_t>(selected)];

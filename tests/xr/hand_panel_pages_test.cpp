@@ -93,8 +93,9 @@ TEST_F(HandPanelPages, TheSculpturePageMirrorsAndDiscardsTheSelectedSculpturesEd
     bool mirrored = false;
     run("[" + press(panelButtonCenter(PanelButton::Carve)) + R"(,
       {"frames": 6, "tool": {"aim": {"position": [0.3, 1.2, -1.0], "direction": [-0.35, -0.6, -1.3]}, "trigger": 1}},
-      {"frames": 2}, )" + press(panelPageCenter(PanelPage::Sculpture)) + ", " + press(panelActionCenter(PanelAction::NextSculpture)) +
-            ", " + press(panelToggleCenter(PanelToggle::Mirror)) + R"(, {"frames": 2}])",
+      {"frames": 2}, )" + press(panelPageCenter(PanelPage::Sculpture)) + ", " +
+            press(panelActionCenter(PanelAction::NextSculpture)) + ", " + press(panelToggleCenter(PanelToggle::Mirror)) +
+            R"(, {"frames": 2}])",
         [&](garden::GardenSession& xr) {
             selected = xr.selected();
             const int a = xr.findSculpture("a");
