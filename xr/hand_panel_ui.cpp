@@ -6,12 +6,14 @@
 #include "garden/render/morph_triangle.h"
 #include "garden/render/panels.h"
 #include "garden/render/shader_program.h"
+#include "garden/render/tool_panel.h"
 #include "xr/hand_panel.h"
 
 #include <epoxy/gl.h>
 #include <backends/imgui_impl_opengl3.h>
 #include <imgui.h>
 
+#include <algorithm>
 #include <cfloat>
 #include <iterator>
 
@@ -23,26 +25,49 @@ namespace {
 
 using Kind = garden::ToolSettings::Kind;
 
-// Two rows of four buttons across the top; the tool's parameters below on
-// the left, the morph triangle on the right, the profile along the bottom.
+// Two rows of four buttons across the top (the tools, undo, redo), a row
+// of three page buttons, then the page.
 constexpr float kCellX = kPanelPixelsX / 4.0f, kCellY = 40.0f, kButtonInset = 4.0f;
 constexpr float kTop = 4.0f;
-constexpr float kBodyY = 2.0f * kCellY + 12.0f;
+constexpr float kPageCellX = kPanelPixelsX / 3.0f, kPageCellY = 30.0f;
+constexpr float kPagesY = kTop + 2.0f * kCellY;
+constexpr float kBodyY = kPagesY + kPageCellY + 4.0f;
 constexpr float kMorphX = 300.0f, kMorphSide = 120.0f;
 // ImGui's built-in font (ProggyClean) is 13 pixels high: the morph
-// triangle's labels take a line above and below it.
+// triangle's labels take a line above and below it. Frames are padded to
+// 21 pixels, a row of them is 25: taller targets for a ray than the
+// desktop's.
 constexpr float kFontLine = 13.0f;
-constexpr float kFieldWidth = 150.0f;
-constexpr float kTogglesY = kPanelPixelsY - 62.0f, kToggleStep = 130.0f;
-constexpr float kCheckBox = kFontLine + 6.0f;  // the font and ImGui's frame padding (3) above and below
+constexpr float kFramePadX = 6.0f, kFramePadY = 4.0f, kSpacingX = 8.0f, kSpacingY = 4.0f, kGrabMin = 12.0f;
+constexpr float kFrame = kFontLine + 2.0f * kFramePadY;
+constexpr float kRow = kFrame + kSpacingY;
+constexpr float kTextRow = kFontLine + kSpacingY;
+constexpr float kToggleStep = 130.0f;
+constexpr garden::ToolWidgetLook kLook{220.0f, false, 104.0f};
 
 constexpr const char* kLabels[] = {"morph", "carve", "add", "melt", "perturb", "impacts", "undo", "redo"};
+constexpr const char* kPageLabels[] = {"tool", "sculpture", "settings"};
+constexpr const char* kSnapLabels[] = {"15 deg", "30 deg", "45 deg", "90 deg"};
+static_assert(std::size(kSnapLabels) == std::size(kSnapAngles));
 
 glm::vec2 buttonTopLeft(PanelButton b) {
     const int i = static_cast<int>(b);
     return glm::vec2(static_cast<float>(i % 4) * kCellX + kButtonInset, kTop + static_cast<float>(i / 4) * kCellY);
 }
 const glm::vec2 kButtonSize(kCellX - 2.0f * kButtonInset, kCellY - 2.0f * kButtonInset);
+const glm::vec2 kPageButtonSize(kPageCellX - 2.0f * kButtonInset, kPageCellY - 2.0f * kButtonInset);
+
+// The top of a page's row of frames.
+float rowTop(int row) { return kBodyY + static_cast<float>(row) * kRow; }
+
+// Board pixels to board point.
+glm::vec2 board(const glm::vec2& pixels) { return pixels / glm::vec2(kPanelPixelsX, kPanelPixelsY); }
+
+// The centre of a frame `width` wide at `x` in a row whose top is `top`.
+glm::vec2 frameCenter(float x, float top, float width) { return board(glm::vec2(x + 0.5f * width, top + 0.5f * kFrame)); }
+
+// The seated height slider's place: the settings page's fourth row.
+constexpr int kSeatedOffsetRow = 3;
 
 Kind toolOf(PanelButton b) {
     switch (b) {
@@ -55,35 +80,12 @@ Kind toolOf(PanelButton b) {
     }
 }
 
-bool slider(const char* label, double& value, double lo, double hi, const char* format) {
-    ImGui::SetNextItemWidth(kFieldWidth);
-    return ImGui::SliderScalar(label, ImGuiDataType_Double, &value, &lo, &hi, format,
-                               ImGuiSliderFlags_AlwaysClamp | ImGuiSliderFlags_Logarithmic);
-}
-
-void parameters(garden::ToolSettings& t) {
-    switch (t.kind) {
-        case Kind::Carve:
-        case Kind::Add:
-        case Kind::Melt:
-            slider("radius (m)", t.radius, garden::kMinToolRadius, 1.0, "%.3f");
-            if (t.kind == Kind::Melt) slider("softness (vox)", t.softness, 0.25, 16.0, "%.2f");
-            break;
-        case Kind::Perturb:
-            slider("strength (vox)", t.strength, 0.1, 50.0, "%.2f");
-            slider("scale", t.perturbScale, garden::kMinPerturbScale, garden::kMaxPerturbScale, "%.2f");
-            break;
-        case Kind::Impacts:
-            slider("size (m)", t.impactSize, garden::kMinImpactSize, garden::kMaxImpactSize, "%.3f");
-            slider("compaction (cm3)", t.compactionCm3, 0.01, 100.0, "%.2f");
-            ImGui::SetNextItemWidth(kFieldWidth);
-            ImGui::SliderInt("count", &t.impactCount, 1, 500, "%d", ImGuiSliderFlags_Logarithmic);
-            break;
-        case Kind::None: ImGui::TextDisabled("the trigger picks the blend\non the ground triangle"); break;
-        case Kind::Move: ImGui::TextDisabled("move: on the desktop only"); break;
-    }
-    if (t.kind == Kind::Carve || t.kind == Kind::Add || t.kind == Kind::Perturb) ImGui::Checkbox("reverse", &t.reverse);
-    ImGui::TextDisabled("tool stick: size");
+// A button lit while `chosen`.
+bool litButton(const char* label, const glm::vec2& size, bool chosen) {
+    if (chosen) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyle().Colors[ImGuiCol_ButtonActive]);
+    const bool pressed = ImGui::Button(label, ImVec2(size.x, size.y));
+    if (chosen) ImGui::PopStyleColor();
+    return pressed;
 }
 
 const char* kVertex = R"(#version 330 core
@@ -102,10 +104,7 @@ void main() { color = texture(panel, vUv); }
 
 }  // namespace
 
-glm::vec2 panelButtonCenter(PanelButton b) {
-    const glm::vec2 c = buttonTopLeft(b) + 0.5f * kButtonSize;
-    return c / glm::vec2(kPanelPixelsX, kPanelPixelsY);
-}
+glm::vec2 panelButtonCenter(PanelButton b) { return board(buttonTopLeft(b) + 0.5f * kButtonSize); }
 
 const char* panelButtonLabel(PanelButton b) {
     const int i = static_cast<int>(b);
@@ -114,12 +113,49 @@ const char* panelButtonLabel(PanelButton b) {
 
 glm::vec2 panelMorphPoint(const glm::vec3& weights) {
     const garden::MorphTriangleLayout l = garden::morphTriangleLayout(glm::vec2(kMorphX, kBodyY), kMorphSide, kFontLine);
-    return garden::triangleToScreen(l, garden::trianglePoint(weights)) / glm::vec2(kPanelPixelsX, kPanelPixelsY);
+    return board(garden::triangleToScreen(l, garden::trianglePoint(weights)));
+}
+
+glm::vec2 panelPageCenter(PanelPage p) {
+    return board(glm::vec2(static_cast<float>(p) * kPageCellX + 0.5f * kPageCellX, kPagesY + 0.5f * kPageCellY));
 }
 
 glm::vec2 panelToggleCenter(PanelToggle t) {
-    const glm::vec2 c(kButtonInset + static_cast<float>(t) * kToggleStep + 0.5f * kCheckBox, kTogglesY + 0.5f * kCheckBox);
-    return c / glm::vec2(kPanelPixelsX, kPanelPixelsY);
+    switch (t) {
+        case PanelToggle::LeftHanded: return frameCenter(kButtonInset, rowTop(0), kFrame);
+        case PanelToggle::Seated: return frameCenter(kButtonInset + kToggleStep, rowTop(0), kFrame);
+        case PanelToggle::SmoothTurn: return frameCenter(kButtonInset, rowTop(1), kFrame);
+        // Below the sculpture buttons and the selection's name.
+        case PanelToggle::Mirror: return frameCenter(kButtonInset, rowTop(1) + kTextRow, kFrame);
+    }
+    return {};
+}
+
+glm::vec2 panelChoiceCenter(PanelChoice c, int option) {
+    // The rows of the parameters before the choice (tool_panel.cpp's order).
+    const int row = c == PanelChoice::ImpactSpread ? 3 : c == PanelChoice::SnapAngle ? 2 : 0;
+    const float x = kButtonInset + static_cast<float>(option) * (kLook.choiceWidth + kSpacingX);
+    return frameCenter(x, rowTop(row), kLook.choiceWidth);
+}
+
+glm::vec2 panelActionCenter(PanelAction a) {
+    switch (a) {
+        case PanelAction::PreviousSculpture: return frameCenter(kButtonInset, rowTop(0), kLook.choiceWidth);
+        case PanelAction::NextSculpture:
+            return frameCenter(kButtonInset + kLook.choiceWidth + kSpacingX, rowTop(0), kLook.choiceWidth);
+        // Below the name and the mirror plane.
+        case PanelAction::DiscardEdits: return frameCenter(kButtonInset, rowTop(2) + kTextRow, kLook.choiceWidth);
+    }
+    return {};
+}
+
+glm::vec2 panelSeatedOffsetPoint(double metres) {
+    // ImGui's slider: the grab's centre runs from half a grab (and its
+    // 2-pixel padding) inside one end to the same inside the other.
+    const float grabPadding = 2.0f, t = static_cast<float>(metres / kMaxSeatedHeightOffset);
+    const float from = kButtonInset + grabPadding + 0.5f * kGrabMin;
+    const float span = kLook.fieldWidth - 2.0f * grabPadding - kGrabMin;
+    return board(glm::vec2(from + t * span, rowTop(kSeatedOffsetRow) + 0.5f * kFrame));
 }
 
 struct HandPanelUi::Gl {
@@ -185,7 +221,11 @@ HandPanelUi::HandPanelUi() : gl_(std::make_unique<Gl>()) {
     io.IniFilename = nullptr;
     io.DisplaySize = ImVec2(static_cast<float>(kPanelPixelsX), static_cast<float>(kPanelPixelsY));
     ImGui::StyleColorsDark();
-    ImGui::GetStyle().Colors[ImGuiCol_WindowBg] = ImVec4(0.12f, 0.10f, 0.20f, 1.0f);  // opaque: read on any sky
+    ImGuiStyle& style = ImGui::GetStyle();
+    style.Colors[ImGuiCol_WindowBg] = ImVec4(0.12f, 0.10f, 0.20f, 1.0f);  // opaque: read on any sky
+    style.FramePadding = ImVec2(kFramePadX, kFramePadY);
+    style.ItemSpacing = ImVec2(kSpacingX, kSpacingY);
+    style.GrabMinSize = kGrabMin;
     const bool ok = ImGui_ImplOpenGL3_Init("#version 330 core");
     ImGui::SetCurrentContext(before);
     if (!ok) {
@@ -222,47 +262,27 @@ bool HandPanelUi::update(garden::GardenSession& session, const HandPanel& panel,
         const auto b = static_cast<PanelButton>(i);
         const glm::vec2 p = buttonTopLeft(b);
         ImGui::SetCursorPos(ImVec2(p.x, p.y));
-        const bool chosen = b < PanelButton::Undo && t.kind == toolOf(b);
-        if (chosen) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyle().Colors[ImGuiCol_ButtonActive]);
-        const bool pressed = ImGui::Button(kLabels[i], ImVec2(kButtonSize.x, kButtonSize.y));
-        if (chosen) ImGui::PopStyleColor();
-        if (!pressed) continue;
+        if (!litButton(kLabels[i], kButtonSize, b < PanelButton::Undo && t.kind == toolOf(b))) continue;
         if (b == PanelButton::Undo) session.undo();
         else if (b == PanelButton::Redo) session.redo();
-        else t.kind = toolOf(b);
+        else {
+            t.kind = toolOf(b);
+            page_ = PanelPage::Tool;  // the tool's parameters
+        }
     }
-
-    ImGui::SetCursorPos(ImVec2(kButtonInset, kBodyY));
-    ImGui::BeginGroup();
-    parameters(t);
-    ImGui::EndGroup();
-
-    ImGui::SetCursorPos(ImVec2(kMorphX, kBodyY));
-    if (session.hasMorph()) {
-        if (!gl_->selectorSet) {
-            if (const auto& w = session.morphWeights())
-                gl_->selector = garden::trianglePoint(glm::vec3(static_cast<float>(w->barycentric[0]), static_cast<float>(w->barycentric[1]),
-                                                                static_cast<float>(w->barycentric[2])));
-            gl_->selectorSet = true;
-        }
-        const garden::MorphSpec& m = *session.garden().morph;
-        const char* labels[3] = {m.sources[0].c_str(), m.sources[1].c_str(), m.sources[2].c_str()};
-        if (garden::morphTriangleWidget(labels, gl_->selector, kMorphSide)) {
-            const glm::vec3 b = garden::triangleWeights(gl_->selector);
-            session.setMorphBarycentric({b.x, b.y, b.z});
-        }
-    } else {
-        ImGui::TextDisabled("no morph in this garden");
+    for (int i = 0; i < static_cast<int>(PanelPage::Count); ++i) {
+        const auto page = static_cast<PanelPage>(i);
+        ImGui::SetCursorPos(ImVec2(static_cast<float>(i) * kPageCellX + kButtonInset, kPagesY + kButtonInset));
+        if (litButton(kPageLabels[i], kPageButtonSize, page == page_)) page_ = page;
     }
 
     bool changed = false;
-    ImGui::SetCursorPos(ImVec2(kButtonInset, kTogglesY));
-    changed |= ImGui::Checkbox("left-handed", &user.leftHanded);
-    ImGui::SetCursorPos(ImVec2(kButtonInset + kToggleStep, kTogglesY));
-    changed |= ImGui::Checkbox("seated", &user.seated);
-
-    ImGui::SetCursorPos(ImVec2(kButtonInset, kPanelPixelsY - kFontLine - 8.0f));
-    ImGui::TextDisabled("%s", profile.empty() ? "no interaction profile yet" : profile.c_str());
+    switch (page_) {
+        case PanelPage::Tool: toolPage(session); break;
+        case PanelPage::Sculpture: sculpturePage(session); break;
+        case PanelPage::Settings: changed = settingsPage(profile, user); break;
+        case PanelPage::Count: break;
+    }
     ImGui::End();
     ImGui::Render();
 
@@ -277,6 +297,84 @@ bool HandPanelUi::update(garden::GardenSession& session, const HandPanel& panel,
     glBindTexture(GL_TEXTURE_2D, gl_->texture.get());
     glGenerateMipmap(GL_TEXTURE_2D);
     glBindTexture(GL_TEXTURE_2D, 0);
+    return changed;
+}
+
+void HandPanelUi::toolPage(garden::GardenSession& session) {
+    garden::ToolSettings& t = session.tool();
+    ImGui::SetCursorPos(ImVec2(kButtonInset, kBodyY));
+    ImGui::BeginGroup();
+    garden::toolParameters(t, kLook);
+    if (t.kind == Kind::None) ImGui::TextDisabled("the trigger picks the blend\non the ground triangle,\nor here");
+    else if (t.kind == Kind::Move) ImGui::TextDisabled("move: on the desktop only");
+    else ImGui::TextDisabled("tool stick: size, strength");
+    ImGui::EndGroup();
+    if (t.kind != Kind::None) return;
+
+    ImGui::SetCursorPos(ImVec2(kMorphX, kBodyY));
+    if (session.hasMorph()) {
+        if (!gl_->selectorSet) {
+            if (const auto& w = session.morphWeights())
+                gl_->selector = garden::trianglePoint(glm::vec3(static_cast<float>(w->barycentric[0]),
+                                                                static_cast<float>(w->barycentric[1]),
+                                                                static_cast<float>(w->barycentric[2])));
+            gl_->selectorSet = true;
+        }
+        const garden::MorphSpec& m = *session.garden().morph;
+        const char* labels[3] = {m.sources[0].c_str(), m.sources[1].c_str(), m.sources[2].c_str()};
+        if (garden::morphTriangleWidget(labels, gl_->selector, kMorphSide)) {
+            const glm::vec3 b = garden::triangleWeights(gl_->selector);
+            session.setMorphBarycentric({b.x, b.y, b.z});
+        }
+    } else {
+        ImGui::TextDisabled("no morph in this garden");
+    }
+}
+
+void HandPanelUi::sculpturePage(garden::GardenSession& session) {
+    // No pointing at sculptures to select them in the headset (the move
+    // tool is the desktop's): the buttons step through the garden's.
+    const int count = static_cast<int>(session.sculptures().size());
+    const glm::vec2 size(kLook.choiceWidth, kFrame);
+    ImGui::SetCursorPos(ImVec2(kButtonInset, rowTop(0)));
+    ImGui::BeginGroup();
+    if (ImGui::Button("< previous", ImVec2(size.x, size.y)) && count > 0)
+        session.select(session.selected() <= 0 ? count - 1 : session.selected() - 1);
+    ImGui::SameLine();
+    if (ImGui::Button("next >", ImVec2(size.x, size.y)) && count > 0) session.select((session.selected() + 1) % count);
+    garden::selectionSection(session, kLook);
+    ImGui::EndGroup();
+}
+
+bool HandPanelUi::settingsPage(const std::string& profile, XrUserSettings& user) {
+    bool changed = false;
+    ImGui::SetCursorPos(ImVec2(kButtonInset, rowTop(0)));
+    changed |= ImGui::Checkbox("left-handed", &user.leftHanded);
+    ImGui::SetCursorPos(ImVec2(kButtonInset + kToggleStep, rowTop(0)));
+    changed |= ImGui::Checkbox("seated", &user.seated);
+    ImGui::SetCursorPos(ImVec2(kButtonInset, rowTop(1)));
+    changed |= ImGui::Checkbox("smooth turning", &user.smoothTurn);
+
+    ImGui::SetCursorPos(ImVec2(kButtonInset, rowTop(2)));
+    const auto snap = std::find(std::begin(kSnapAngles), std::end(kSnapAngles), user.snapDegrees);
+    int chosen = static_cast<int>(snap - std::begin(kSnapAngles));
+    ImGui::BeginDisabled(user.smoothTurn);
+    if (garden::chooseOne("snap", chosen, kSnapLabels, static_cast<int>(std::size(kSnapLabels)), kLook)) {
+        user.snapDegrees = kSnapAngles[chosen];
+        changed = true;
+    }
+    ImGui::EndDisabled();
+
+    ImGui::SetCursorPos(ImVec2(kButtonInset, rowTop(kSeatedOffsetRow)));
+    ImGui::SetNextItemWidth(kLook.fieldWidth);
+    const double lo = 0.0, hi = kMaxSeatedHeightOffset;
+    // Written when let go, not at every step of a drag.
+    ImGui::SliderScalar("seated raise (m)", ImGuiDataType_Double, &user.seatedHeightOffset, &lo, &hi, "%.2f",
+                        ImGuiSliderFlags_AlwaysClamp);
+    changed |= ImGui::IsItemDeactivatedAfterEdit();
+
+    ImGui::SetCursorPos(ImVec2(kButtonInset, rowTop(kSeatedOffsetRow + 1)));
+    ImGui::TextDisabled("%s", profile.empty() ? "no interaction profile yet" : profile.c_str());
     return changed;
 }
 

@@ -1,10 +1,16 @@
 // What the hand panel (xr/hand_panel.h) shows, drawn with Dear ImGui into a
-// texture of its own and put on the board as a quad: the tools as labelled
-// buttons, the tool's parameters (the session's ToolSettings, as the
-// desktop's tool panel edits them), the morph triangle, undo and redo, the
-// left-handed and seated switches, and the interaction profile's name. The tool hand's ray on the board is
-// ImGui's mouse, its trigger the left button. The layout is fixed so that
-// tests (and users' muscle memory) find things in the same place.
+// texture of its own and put on the board as a quad. Always on top: the
+// tools and undo, redo as labelled buttons, and three page buttons below
+// them; under those the page: "tool" (the tool's parameters, the widgets
+// the desktop's tool panel draws (garden/render/tool_panel.h), in their
+// pointer-only look; for the morph tool the morph triangle), "sculpture"
+// (previous and next sculpture, and the desktop's selection section: mirror
+// plane, edit count and "discard edits", placement), "settings" (the
+// user's settings: left-handed, seated and its height offset, smooth
+// turning, the snap angle; the interaction profile's name). The tool hand's
+// ray on the board is ImGui's mouse, its trigger the left button. The
+// layout is fixed so that tests (and users' muscle memory) find things in
+// the same place.
 #pragma once
 
 #include <memory>
@@ -35,9 +41,28 @@ glm::vec2 panelButtonCenter(PanelButton b);
 const char* panelButtonLabel(PanelButton b);
 // The board point of the morph triangle where the blend has these weights.
 glm::vec2 panelMorphPoint(const glm::vec3& weights);
-// The board point of the left-handed or the seated check box.
-enum class PanelToggle { LeftHanded, Seated };
+// The pages under the buttons, and the board point of a page's button.
+enum class PanelPage { Tool, Sculpture, Settings, Count };
+glm::vec2 panelPageCenter(PanelPage p);
+// The board point of a check box: on the settings page (left-handed,
+// seated, smooth turning) or the sculpture page (the selection's mirror
+// plane, with a sculpture selected).
+enum class PanelToggle { LeftHanded, Seated, SmoothTurn, Mirror };
 glm::vec2 panelToggleCenter(PanelToggle t);
+// The board point of a choice's option (a row of buttons): the perturb
+// tool's shape (ellipsoid, torus) and the impact tool's shape (sphere, V
+// chisel, square punch) and spread (uniform disc, gaussian, cone) on the
+// tool page with that tool in hand; the snap angle (kSnapAngles, in order)
+// on the settings page.
+enum class PanelChoice { PerturbShape, ImpactShape, ImpactSpread, SnapAngle };
+glm::vec2 panelChoiceCenter(PanelChoice c, int option);
+// The board point of a button on the sculpture page ("discard edits" with
+// a sculpture selected).
+enum class PanelAction { PreviousSculpture, NextSculpture, DiscardEdits };
+glm::vec2 panelActionCenter(PanelAction a);
+// The board point on the settings page's seated height slider that sets
+// it to `metres` (0 to kMaxSeatedHeightOffset).
+glm::vec2 panelSeatedOffsetPoint(double metres);
 
 class HandPanelUi {
 public:
@@ -50,8 +75,7 @@ public:
 
     // One frame of the panel into its texture: `panel` gives the mouse
     // (its hovered point) and the button (pressing); the controls act on
-    // the session at once. True when the user changed `user` (left-handed,
-    // seated) on the panel.
+    // the session at once. True when the user changed `user` on the panel.
     bool update(garden::GardenSession& session, const HandPanel& panel, const std::string& profile,
                 XrUserSettings& user, float dt);
     // The texture on the board, over whatever is bound (the eye's
@@ -62,6 +86,11 @@ private:
     struct Gl;
     std::unique_ptr<Gl> gl_;
     void* context_ = nullptr;  // ImGuiContext
+    PanelPage page_ = PanelPage::Tool;
+
+    void toolPage(garden::GardenSession& session);
+    void sculpturePage(garden::GardenSession& session);
+    bool settingsPage(const std::string& profile, XrUserSettings& user);
 };
 
 }  // namespace hg::xr

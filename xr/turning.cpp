@@ -13,7 +13,7 @@ float Turning::apply(garden::Hands& h, double dt) {
         return std::copysign((a - kTurnDeadZone) / (1.0f - kTurnDeadZone), x) * kSmoothTurnRate * static_cast<float>(dt);
     }
     const int side = x > kSnapThreshold ? 1 : x < -kSnapThreshold ? -1 : 0;
-    const float turn = side != 0 && side != lastSide_ ? static_cast<float>(side) * kSnapTurn : 0.0f;
+    const float turn = side != 0 && side != lastSide_ ? static_cast<float>(side) * snap_ : 0.0f;
     lastSide_ = side;
     return turn;
 }

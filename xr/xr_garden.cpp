@@ -44,8 +44,6 @@ namespace hg::xr {
 namespace {
 
 constexpr float kNearZ = 0.05f, kFarZ = 500.0f;
-// A seated user's eyes are about this much lower than a standing one's.
-constexpr float kSeatedRaise = 0.5f;
 constexpr int kMirrorWidth = 640, kMirrorHeight = 640;
 constexpr const char* kMirrorTitle = "Hypergarden - headset mirror (left eye)";
 
@@ -97,13 +95,15 @@ public:
     XrRun(const XrOptions& o, garden::GardenSession& s, Headset& h, garden::GardenWindow& w,
           const std::optional<garden::ReplayScript>& script, bool desktopButton)
         : options_(o), session_(s), headset_(h), gardenWindow_(w), window_(w.window()), renderer_(w.renderer()),
-          view_(w.view()), script_(script), desktopButton_(desktopButton), turning_(o.smoothTurn) {
+          view_(w.view()), script_(script), desktopButton_(desktopButton) {
         settingsPath_ = options_.settingsFile.empty() ? xrSettingsPath() : options_.settingsFile;
         std::string warning;
         user_ = loadXrSettings(settingsPath_, warning);
         if (!warning.empty()) std::cerr << "warning: " << warning << "\n";
         if (options_.leftHanded) user_.leftHanded = *options_.leftHanded;
         if (options_.seated) user_.seated = *options_.seated;
+        if (options_.smoothTurn) user_.smoothTurn = *options_.smoothTurn;
+        applyTurning();
         if (options_.mirror) overlay_ = w.overlay();
         gardenWindow_.events() = garden::WindowEvents{};
         controllers_ = std::make_unique<Controllers>(headset_.instance(), user_.leftHanded);
@@ -181,7 +181,9 @@ public:
 
 private:
     // Added to tracked heights: the floor at 0, raised for a seated user.
-    float heightOffset() const { return headset_.floorOffset() + (user_.seated ? kSeatedRaise : 0.0f); }
+    float heightOffset() const {
+        return headset_.floorOffset() + (user_.seated ? static_cast<float>(user_.seatedHeightOffset) : 0.0f);
+    }
 
     // The navigator holds where the stage stands in the world and its turn;
     // the scale is ours.
@@ -299,13 +301,16 @@ private:
                                 garden::LineMode::Segments, false);
     }
 
-    // The panel changed left-handed or seated: in effect from the next
+    // The panel changed a setting (hand, seated, turning): in effect from the next
     // frame, and kept for the next run (the flags given this run included).
     void keepSettings() {
         controllers_->setLeftHanded(user_.leftHanded);
+        applyTurning();
         const std::string why = saveXrSettings(settingsPath_, user_);
         if (!why.empty()) std::cerr << "warning: the headset settings are not kept: " << why << "\n";
     }
+
+    void applyTurning() { turning_.set(user_.smoothTurn, glm::radians(static_cast<float>(user_.snapDegrees))); }
 
     // Over the mirror: what the headset runs, and the frame statistics.
     void drawPanels() {

@@ -31,12 +31,14 @@ struct XrOptions {
     std::string script;      // a replay script whose commands run at their frames ("" : none)
     int frames = 0;          // ask the runtime to end the session after this many frames (0: never)
     // The left hand holds the tool; seated: raise the tracked heights by a
-    // seated user's shorter reach (0.5 m). Unset: the user's settings
-    // (xr/xr_settings.h), which the hand panel changes and keeps.
+    // seated user's shorter reach (the settings' offset, 0.5 m unless
+    // changed); smooth turn: the left stick turns smoothly instead of in
+    // snaps. Unset: the user's settings (xr/xr_settings.h), which the hand
+    // panel changes and keeps.
     std::optional<bool> leftHanded;
     std::optional<bool> seated;
+    std::optional<bool> smoothTurn;
     std::string settingsFile;  // the user's settings ("" : xrSettingsPath())
-    bool smoothTurn = false; // turn smoothly with the left stick instead of snapping 30 degrees
     bool mirror = true;      // show the mirror window (hidden when false)
     // Called after every focused frame with its stats and its index from
     // the first focused frame (benchmarks).

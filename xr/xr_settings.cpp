@@ -1,10 +1,12 @@
 #include "xr/xr_settings.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <system_error>
 
@@ -49,11 +51,23 @@ XrUserSettings loadXrSettings(const std::string& path, std::string& warning) {
         if (!j.is_object()) throw garden::JsonError("$", "must be an object");
         XrUserSettings read;
         for (const auto& [key, target] : {std::pair<const char*, bool*>{"left_handed", &read.leftHanded},
-                                          std::pair<const char*, bool*>{"seated", &read.seated}}) {
+                                          std::pair<const char*, bool*>{"seated", &read.seated},
+                                          std::pair<const char*, bool*>{"smooth_turn", &read.smoothTurn}}) {
             const auto it = j.find(key);
             if (it == j.end()) continue;
             if (!it->is_boolean()) throw garden::JsonError(std::string("$.") + key, "must be true or false");
             *target = it->get<bool>();
+        }
+        if (const auto it = j.find("seated_height_offset"); it != j.end()) {
+            if (!it->is_number() || it->get<double>() < 0.0 || it->get<double>() > kMaxSeatedHeightOffset)
+                throw garden::JsonError("$.seated_height_offset", "must be a number of metres from 0 to 1");
+            read.seatedHeightOffset = it->get<double>();
+        }
+        if (const auto it = j.find("snap_degrees"); it != j.end()) {
+            const auto* end = std::end(kSnapAngles);
+            const bool offered = it->is_number_integer() && std::find(std::begin(kSnapAngles), end, it->get<int>()) != end;
+            if (!offered) throw garden::JsonError("$.snap_degrees", "must be 15, 30, 45 or 90");
+            read.snapDegrees = it->get<int>();
         }
         return read;
     } catch (const garden::JsonError& e) {
@@ -68,7 +82,11 @@ std::string saveXrSettings(const std::string& path, const XrUserSettings& s) {
     const std::filesystem::path folder = std::filesystem::path(path).parent_path();
     if (!folder.empty()) std::filesystem::create_directories(folder, ec);
     if (ec) return "cannot write " + path + ": cannot make its folder: " + ec.message();
-    const nlohmann::json j = {{"left_handed", s.leftHanded}, {"seated", s.seated}};
+    const nlohmann::json j = {{"left_handed", s.leftHanded},
+                              {"seated", s.seated},
+                              {"seated_height_offset", s.seatedHeightOffset},
+                              {"smooth_turn", s.smoothTurn},
+                              {"snap_degrees", s.snapDegrees}};
     return voxel::writeAtomically(path, [&](const std::string& tmp) -> std::string {
         std::ofstream out(tmp, std::ios::trunc);
         if (!out) return "cannot write " + path + ": " + std::strerror(errno);

@@ -12,7 +12,7 @@ int runGarden(const GardenOptions& options) {
     // The flags only switch on; without them the user's settings hold.
     if (options.leftHanded) x.leftHanded = true;
     if (options.seated) x.seated = true;
-    x.smoothTurn = options.smoothTurn;
+    if (options.smoothTurn) x.smoothTurn = true;
 
     DesktopOptions d;
     d.garden = options.garden;

@@ -33,8 +33,9 @@ int main(int argc, char** argv) {
     app.add_flag("--xr", gardenOpts.xr, "Open the garden in a headset through OpenXR (docs/xr.md)");
     app.add_option("--script", gardenOpts.xrScript, "With --xr: run a replay script's commands at their frames");
     app.add_flag("--left-handed", gardenOpts.leftHanded, "With --xr: the left controller holds the tool");
-    app.add_flag("--seated", gardenOpts.seated, "With --xr: seated use (heights raised 0.5 m)");
-    app.add_flag("--smooth-turn", gardenOpts.smoothTurn, "With --xr: turn smoothly instead of in 30-degree snaps");
+    app.add_flag("--seated", gardenOpts.seated,
+                 "With --xr: seated use (heights raised by the settings' offset, 0.5 m unless changed)");
+    app.add_flag("--smooth-turn", gardenOpts.smoothTurn, "With --xr: turn smoothly instead of in snaps (for this run)");
 
     ModelOptions checkOpts;
     auto* check = app.add_subcommand("check", "Parse a HyperFun file, list its bodies, evaluation path and model box");

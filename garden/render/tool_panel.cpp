@@ -1,5 +1,6 @@
-// The tool panel (panels.h): ImGui calls only, on the session's
-// ToolSettings and its sculpting API.
+// The tool panel (panels.h) and the widgets it shares with the hand panel
+// (tool_panel.h): ImGui calls only, on the session's ToolSettings and its
+// sculpting API.
 #include <imgui.h>
 
 #include <cstdint>
@@ -8,6 +9,7 @@
 #include "garden/app/garden_session.h"
 #include "garden/app/sculpture_gizmos.h"
 #include "garden/render/panels.h"
+#include "garden/render/tool_panel.h"
 
 namespace hg::garden {
 namespace {
@@ -18,36 +20,41 @@ using Kind = ToolSettings::Kind;
 constexpr Kind kTools[] = {Kind::None, Kind::Carve, Kind::Add, Kind::Melt, Kind::Perturb, Kind::Impacts, Kind::Move};
 constexpr const char* kToolLabels[] = {"morph (0)", "carve (1)", "add (2)", "melt (3)", "perturb (4)", "impacts (5)",
                                        "move (6)"};
-constexpr float kFieldWidth = 180.0f;
+constexpr ToolWidgetLook kDesktopLook{};
+
+// The label with the desktop's keys, or without them.
+const char* keyed(const char* withKeys, const char* plain, const ToolWidgetLook& look) {
+    return look.keyHints ? withKeys : plain;
+}
 
 // A slider on a double; logarithmic for sizes.
-bool sliderDouble(const char* label, double& value, double lo, double hi, const char* format, bool logarithmic = false) {
-    ImGui::SetNextItemWidth(kFieldWidth);
+bool sliderDouble(const char* label, double& value, double lo, double hi, const char* format, const ToolWidgetLook& look,
+                  bool logarithmic = false) {
+    ImGui::SetNextItemWidth(look.fieldWidth);
     return ImGui::SliderScalar(label, ImGuiDataType_Double, &value, &lo, &hi, format,
                                ImGuiSliderFlags_AlwaysClamp | (logarithmic ? ImGuiSliderFlags_Logarithmic : 0));
 }
 
 template <class E, std::size_t N>
-bool comboEnum(const char* label, E& value, const char* const (&names)[N]) {
+bool chooseEnum(const char* label, E& value, const char* const (&names)[N], const ToolWidgetLook& look) {
     int i = static_cast<int>(value);
-    ImGui::SetNextItemWidth(kFieldWidth);
-    if (!ImGui::Combo(label, &i, names, static_cast<int>(N))) return false;
+    if (!chooseOne(label, i, names, static_cast<int>(N), look)) return false;
     value = static_cast<E>(i);
     return true;
 }
 
-void strokeParameters(ToolSettings& t) {
-    sliderDouble("radius (m)  [ ]", t.radius, kMinToolRadius, 1.0, "%.3f", true);
-    if (t.kind == Kind::Melt) sliderDouble("softness (voxels)", t.softness, 0.25, 16.0, "%.2f", true);
+void strokeParameters(ToolSettings& t, const ToolWidgetLook& look) {
+    sliderDouble(keyed("radius (m)  [ ]", "radius (m)", look), t.radius, kMinToolRadius, 1.0, "%.3f", look, true);
+    if (t.kind == Kind::Melt) sliderDouble("softness (voxels)", t.softness, 0.25, 16.0, "%.2f", look, true);
 }
 
-void perturbParameters(ToolSettings& t) {
+void perturbParameters(ToolSettings& t, const ToolWidgetLook& look) {
     constexpr const char* shapes[] = {"ellipsoid", "torus"};
-    comboEnum("shape", t.shape, shapes);
+    chooseEnum("shape", t.shape, shapes, look);
     // The radii per axis in one row: dragged a millimetre a pixel, or typed
     // (Ctrl+click).
     const double lo = 0.005, hi = 2.0;
-    ImGui::SetNextItemWidth(kFieldWidth);
+    ImGui::SetNextItemWidth(look.fieldWidth);
     if (t.shape == QuadricShape::Ellipsoid) {
         ImGui::DragScalarN("radii x y z (m)", ImGuiDataType_Double, t.radii.data(), 3, 0.001f, &lo, &hi, "%.3f",
                             ImGuiSliderFlags_AlwaysClamp);
@@ -56,52 +63,98 @@ void perturbParameters(ToolSettings& t) {
                             ImGuiSliderFlags_AlwaysClamp);
         if (t.radii[1] >= t.radii[0]) ImGui::TextColored(ImVec4(1, 0.5f, 0.3f, 1), "the tube must be thinner than the ring");
     }
-    sliderDouble("strength (voxels)", t.strength, 0.1, 50.0, "%.2f", true);
-    sliderDouble("scale  [ ]", t.perturbScale, kMinPerturbScale, kMaxPerturbScale, "%.2f", true);
-    ImGui::TextDisabled(t.perturbStrength() > 0 ? "pulls (R: pushes)" : "pushes (R: pulls)");
+    sliderDouble("strength (voxels)", t.strength, 0.1, 50.0, "%.2f", look, true);
+    sliderDouble(keyed("scale  [ ]", "scale", look), t.perturbScale, kMinPerturbScale, kMaxPerturbScale, "%.2f", look, true);
+    const bool pulls = t.perturbStrength() > 0;
+    ImGui::TextDisabled("%s", pulls ? keyed("pulls (R: pushes)", "pulls", look) : keyed("pushes (R: pulls)", "pushes", look));
 }
 
-void impactParameters(ToolSettings& t) {
+void impactParameters(ToolSettings& t, const ToolWidgetLook& look) {
     constexpr const char* shapes[] = {"sphere", "V chisel", "square punch"};
     constexpr const char* spreads[] = {"uniform disc", "gaussian", "cone"};
-    comboEnum("impact", t.impactShape, shapes);
-    sliderDouble("size (m)  [ ]", t.impactSize, kMinImpactSize, kMaxImpactSize, "%.3f", true);
-    sliderDouble("compaction (cm3)", t.compactionCm3, 0.01, 100.0, "%.2f", true);
-    comboEnum("spread", t.spread, spreads);
-    if (t.spread == ImpactSpread::Cone) sliderDouble("half-angle (deg)", t.spreadSize, 0.5, 60.0, "%.1f");
-    else sliderDouble(t.spread == ImpactSpread::Gaussian ? "sigma (m)" : "disc radius (m)", t.spreadSize, 0.001, 2.0, "%.3f", true);
-    ImGui::SetNextItemWidth(kFieldWidth);
+    chooseEnum("impact", t.impactShape, shapes, look);
+    sliderDouble(keyed("size (m)  [ ]", "size (m)", look), t.impactSize, kMinImpactSize, kMaxImpactSize, "%.3f", look, true);
+    sliderDouble("compaction (cm3)", t.compactionCm3, 0.01, 100.0, "%.2f", look, true);
+    chooseEnum("spread", t.spread, spreads, look);
+    if (t.spread == ImpactSpread::Cone) sliderDouble("half-angle (deg)", t.spreadSize, 0.5, 60.0, "%.1f", look);
+    else
+        sliderDouble(t.spread == ImpactSpread::Gaussian ? "sigma (m)" : "disc radius (m)", t.spreadSize, 0.001, 2.0, "%.3f",
+                     look, true);
+    ImGui::SetNextItemWidth(look.fieldWidth);
     ImGui::SliderInt("count", &t.impactCount, 1, 500, "%d", ImGuiSliderFlags_Logarithmic);
-    ImGui::SetNextItemWidth(kFieldWidth);
-    ImGui::InputScalar("seed", ImGuiDataType_U64, &t.seed);
+    // Without a keyboard the seed is stepped; InputScalar draws - and +.
+    const std::uint64_t step = 1;
+    ImGui::SetNextItemWidth(look.fieldWidth);
+    ImGui::InputScalar("seed", ImGuiDataType_U64, &t.seed, look.choiceWidth > 0.0f ? &step : nullptr);
 }
 
-void selectionSection(GardenSession& session) {
+}  // namespace
+
+bool chooseOne(const char* label, int& index, const char* const names[], int count, const ToolWidgetLook& look) {
+    if (look.choiceWidth <= 0.0f) {
+        ImGui::SetNextItemWidth(look.fieldWidth);
+        return ImGui::Combo(label, &index, names, count);
+    }
+    bool changed = false;
+    ImGui::PushID(label);
+    for (int i = 0; i < count; ++i) {
+        if (i > 0) ImGui::SameLine();
+        const bool chosen = i == index;
+        if (chosen) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyle().Colors[ImGuiCol_ButtonActive]);
+        if (ImGui::Button(names[i], ImVec2(look.choiceWidth, 0.0f)) && !chosen) {
+            index = i;
+            changed = true;
+        }
+        if (chosen) ImGui::PopStyleColor();
+    }
+    ImGui::PopID();
+    ImGui::SameLine();
+    ImGui::TextUnformatted(label);
+    return changed;
+}
+
+void toolParameters(ToolSettings& t, const ToolWidgetLook& look) {
+    switch (t.kind) {
+        case Kind::Carve:
+        case Kind::Add:
+        case Kind::Melt: strokeParameters(t, look); break;
+        case Kind::Perturb: perturbParameters(t, look); break;
+        case Kind::Impacts: impactParameters(t, look); break;
+        case Kind::Move:
+        case Kind::None: break;
+    }
+    // Melt and impacts have no reverse.
+    if (t.kind == Kind::Carve || t.kind == Kind::Add || t.kind == Kind::Perturb)
+        ImGui::Checkbox(keyed("reverse (R)", "reverse", look), &t.reverse);
+}
+
+void selectionSection(GardenSession& session, const ToolWidgetLook& look) {
     const int selected = session.selected();
     if (selected < 0) {
-        ImGui::TextDisabled("no sculpture selected:\nclick one with the move tool,\nor pick it in the Garden panel");
+        ImGui::TextDisabled(look.keyHints
+                                ? "no sculpture selected:\nclick one with the move tool,\nor pick it in the Garden panel"
+                                : "no sculpture selected");
         return;
     }
     const Sculpture& s = session.sculptures()[static_cast<std::size_t>(selected)];
     ImGui::Text("%s%s", s.name.c_str(), s.morphResult() ? " (the morph result)" : "");
     if (s.missing()) return;
     bool mirror = s.mirror.has_value();
-    if (ImGui::Checkbox("mirror plane (M)", &mirror))
+    if (ImGui::Checkbox(keyed("mirror plane (M)", "mirror plane", look), &mirror))
         session.setMirror(selected, mirror ? std::optional<MirrorPlane>(centralMirror(s)) : std::nullopt);
+    // The button first: where it is does not depend on the count.
     const std::size_t edits = session.editCount(selected);
-    ImGui::Text("%zu edit%s", edits, edits == 1 ? "" : "s");
-    ImGui::SameLine();
     ImGui::BeginDisabled(edits == 0);
-    if (ImGui::Button("discard edits")) session.discardEdits(selected);
+    if (ImGui::Button("discard edits", ImVec2(look.choiceWidth, 0.0f))) session.discardEdits(selected);
     ImGui::EndDisabled();
     if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
         ImGui::SetTooltip(s.morphResult() ? "back to the pure blend: the edits go for good (no redo)"
                                           : "back to the unedited sculpture: the edits go for good (no redo)");
+    ImGui::SameLine();
+    ImGui::Text("%zu edit%s", edits, edits == 1 ? "" : "s");
     ImGui::TextDisabled("at (%.2f, %.2f, %.2f) m\nturned %.0f deg, scale %.3g", s.placement.position[0],
                         s.placement.position[1], s.placement.position[2], s.placement.yawDegrees, s.placement.scale);
 }
-
-}  // namespace
 
 void drawToolPanel(GardenSession& session) {
     // A bar along the bottom left, below the stats and garden panels: the
@@ -118,23 +171,15 @@ void drawToolPanel(GardenSession& session) {
             if (ImGui::RadioButton(kToolLabels[i], t.kind == kTools[i])) t.kind = kTools[i];
 
         ImGui::TableSetColumnIndex(1);
-        switch (t.kind) {
-            case Kind::Carve:
-            case Kind::Add:
-            case Kind::Melt: strokeParameters(t); break;
-            case Kind::Perturb: perturbParameters(t); break;
-            case Kind::Impacts: impactParameters(t); break;
-            case Kind::Move:
-                ImGui::TextDisabled("click: select\ndrag: move on the ground\nShift+drag, or drag the ring: turn\n"
-                                    "[ ] or the wheel: scale");
-                break;
-            case Kind::None: ImGui::TextDisabled("the left button picks the blend\non the ground triangle"); break;
-        }
-        // Melt and impacts have no reverse.
-        if (t.kind == Kind::Carve || t.kind == Kind::Add || t.kind == Kind::Perturb) ImGui::Checkbox("reverse (R)", &t.reverse);
+        toolParameters(t, kDesktopLook);
+        if (t.kind == Kind::Move)
+            ImGui::TextDisabled("click: select\ndrag: move on the ground\nShift+drag, or drag the ring: turn\n"
+                                "[ ] or the wheel: scale");
+        else if (t.kind == Kind::None)
+            ImGui::TextDisabled("the left button picks the blend\non the ground triangle");
 
         ImGui::TableSetColumnIndex(2);
-        selectionSection(session);
+        selectionSection(session, kDesktopLook);
         ImGui::Spacing();
         if (ImGui::Button("undo (Ctrl+Z)")) session.undo();
         ImGui::SameLine();

@@ -1,8 +1,12 @@
 // The panel on the navigation hand (xr/hand_panel.h): where the tool's ray
 // meets the board (image order: top left (0, 0)), the trigger the panel's
 // only for a pull that starts on the board, nothing from behind or while
-// the navigation hand is untracked.
+// the navigation hand is untracked; the hand panel's layout points on the
+// board, in order.
 #include <gtest/gtest.h>
+
+#include <iterator>
+#include <utility>
 
 #include "xr/hand_panel.h"
 #include "xr/hand_panel_ui.h"
@@ -78,6 +82,38 @@ TEST(HandPanel, TheTriggerIsThePanelsOnlyForAPullStartedOnIt) {
     p.place(garden::HandState{}, 1.0f);  // the navigation hand is lost
     p.update(t);
     EXPECT_FALSE(p.ownsTrigger());
+}
+
+// The layout's points (what tests and hands aim at) are on the board, the
+// options of a choice side by side, left to right, below the page buttons.
+TEST(HandPanel, ThePagesWidgetsLieOnTheBoardInOrder) {
+    const auto onBoard = [](const glm::vec2& p) { return p.x > 0.0f && p.x < 1.0f && p.y > 0.0f && p.y < 1.0f; };
+    const float pagesBottom = panelPageCenter(PanelPage::Tool).y;
+    for (const auto& [choice, options] : {std::pair<PanelChoice, int>{PanelChoice::PerturbShape, 2},
+                                          {PanelChoice::ImpactShape, 3},
+                                          {PanelChoice::ImpactSpread, 3},
+                                          {PanelChoice::SnapAngle, static_cast<int>(std::size(kSnapAngles))}}) {
+        for (int i = 0; i < options; ++i) {
+            const glm::vec2 p = panelChoiceCenter(choice, i);
+            EXPECT_TRUE(onBoard(p)) << static_cast<int>(choice) << " " << i;
+            EXPECT_GT(p.y, pagesBottom);
+            if (i > 0) {
+                EXPECT_GT(p.x, panelChoiceCenter(choice, i - 1).x);
+                EXPECT_EQ(p.y, panelChoiceCenter(choice, i - 1).y);
+            }
+        }
+    }
+    for (const PanelToggle t : {PanelToggle::LeftHanded, PanelToggle::Seated, PanelToggle::SmoothTurn, PanelToggle::Mirror})
+        EXPECT_TRUE(onBoard(panelToggleCenter(t)) && panelToggleCenter(t).y > pagesBottom) << static_cast<int>(t);
+    for (const PanelAction a : {PanelAction::PreviousSculpture, PanelAction::NextSculpture, PanelAction::DiscardEdits})
+        EXPECT_TRUE(onBoard(panelActionCenter(a)) && panelActionCenter(a).y > pagesBottom) << static_cast<int>(a);
+    EXPECT_LT(panelSeatedOffsetPoint(0.0).x, panelSeatedOffsetPoint(kMaxSeatedHeightOffset).x);
+    EXPECT_TRUE(onBoard(panelSeatedOffsetPoint(0.0)) && onBoard(panelSeatedOffsetPoint(kMaxSeatedHeightOffset)));
+    // The page buttons below every tool button, side by side.
+    for (int b = 0; b < static_cast<int>(PanelButton::Count); ++b)
+        EXPECT_LT(panelButtonCenter(static_cast<PanelButton>(b)).y, pagesBottom);
+    EXPECT_LT(panelPageCenter(PanelPage::Tool).x, panelPageCenter(PanelPage::Sculpture).x);
+    EXPECT_LT(panelPageCenter(PanelPage::Sculpture).x, panelPageCenter(PanelPage::Settings).x);
 }
 
 }  // namespace

@@ -1,6 +1,9 @@
-// Turning on the navigation stick (xr/turning.h): one snap per push, a
-// smooth turn proportional to the tilt, and the stick's x never strafes.
+// Turning on the navigation stick (xr/turning.h): one snap (of the angle
+// given) per push, a smooth turn proportional to the tilt, switched while
+// running, and the stick's x never strafes.
 #include <gtest/gtest.h>
+
+#include <glm/trigonometric.hpp>
 
 #include "xr/turning.h"
 
@@ -26,6 +29,23 @@ TEST(Turning, SnapsOncePerPush) {
     EXPECT_EQ(t.apply(h, 0.011), 0.0f);
     h = stick(-0.8f);
     EXPECT_FLOAT_EQ(t.apply(h, 0.011), -kSnapTurn);
+}
+
+TEST(Turning, SnapsTheAngleItIsGivenAndSwitchesWhenSet) {
+    const float quarter = glm::radians(90.0f);
+    Turning t(false, quarter);
+    garden::Hands h = stick(-0.9f);
+    EXPECT_FLOAT_EQ(t.apply(h, 0.011), -quarter);
+    // Switched to smooth while held: turns at once, proportionally.
+    t.set(true, quarter);
+    h = stick(-1.0f);
+    EXPECT_NEAR(t.apply(h, 0.5), -kSmoothTurnRate * 0.5f, 1e-6f);
+    // And back to snaps of 15 degrees.
+    t.set(false, glm::radians(15.0f));
+    h = stick(0.0f);
+    t.apply(h, 0.011);
+    h = stick(0.9f);
+    EXPECT_FLOAT_EQ(t.apply(h, 0.011), glm::radians(15.0f));
 }
 
 TEST(Turning, SmoothTurnsWithTheTilt) {

@@ -1,14 +1,20 @@
-// The small garden (tests/garden/session_garden.h) seen from the origin
-// looking along -z, so the mock runtime's stage is the world, with the mock
-// runtime selected and its read-back folder in the test's scratch folder.
+// A garden for runXrGarden against the mock runtime (xr_garden_test.cpp,
+// hand_panel_pages_test.cpp): the small garden (sculpture 'a', a ball of
+// radius 0.5 at (0, 0.5, -2.31)) seen from the origin along -z, so the
+// stage is the world; scripts written beside it; the hand panel pressed by
+// a scripted right hand.
 #pragma once
 
+#include "mock_xr_fixture.h"
+
 #include <fstream>
+#include <string>
 
 #include <nlohmann/json.hpp>
 
 #include "../garden/session_garden.h"
-#include "mock_xr_fixture.h"
+#include "garden/hands/hand_state.h"
+#include "xr/hand_panel.h"
 
 namespace hg::xr::test {
 
@@ -35,5 +41,28 @@ protected:
     }
     std::string gardenFile;
 };
+
+// A script step's hands (JSON): the left hand at `hand` (no turn), the
+// right hand's ray straight at the panel's board point `uv` from 0.3 m in
+// front of it.
+inline std::string atPanel(const glm::vec3& hand, const glm::vec2& uv, bool trigger, int frames) {
+    HandPanel p;
+    garden::HandState h;
+    h.tracked = true;
+    h.grip.position = hand;
+    p.place(h, 1.0f);
+    const glm::vec3 at = p.at(uv) + glm::vec3(0.0f, 0.0f, 0.3f);
+    const auto vec = [](const glm::vec3& v) { return nlohmann::json::array({v.x, v.y, v.z}).dump(); };
+    return R"({"frames": )" + std::to_string(frames) + R"(, "navigation": {"aim": {"position": )" + vec(hand) +
+           R"(}}, "tool": {"aim": {"position": )" + vec(at) + R"(, "direction": [0, 0, -1]}, "trigger": )" +
+           (trigger ? "1" : "0") + "}}";
+}
+
+// Points at a button, pulls and lets go (ImGui's buttons press on release).
+inline std::string pressPanel(const glm::vec3& hand, const glm::vec2& uv) {
+    return atPanel(hand, uv, false, 2) + ", " + atPanel(hand, uv, true, 3) + ", " + atPanel(hand, uv, false, 2);
+}
+
+const glm::vec3 kPanelHand(-0.2f, 1.0f, -0.4f);
 
 }  // namespace hg::xr::test

@@ -258,28 +258,6 @@ TEST_F(XrGarden, MenuOnTheLeftHandRecenters) {
     EXPECT_NEAR(eye.z, 0.0f, 1e-4f);
 }
 
-// A script step's hands (JSON): the left hand at `hand` (no turn), the
-// right hand's ray straight at the panel's board point `uv` from 0.3 m in
-// front of it.
-std::string atPanel(const glm::vec3& hand, const glm::vec2& uv, bool trigger, int frames) {
-    HandPanel p;
-    garden::HandState h;
-    h.tracked = true;
-    h.grip.position = hand;
-    p.place(h, 1.0f);
-    const glm::vec3 at = p.at(uv) + glm::vec3(0.0f, 0.0f, 0.3f);
-    const auto vec = [](const glm::vec3& v) { return nlohmann::json::array({v.x, v.y, v.z}).dump(); };
-    return R"({"frames": )" + std::to_string(frames) + R"(, "navigation": {"aim": {"position": )" + vec(hand) +
-           R"(}}, "tool": {"aim": {"position": )" + vec(at) + R"(, "direction": [0, 0, -1]}, "trigger": )" +
-           (trigger ? "1" : "0") + "}}";
-}
-
-// Points at a button, pulls and lets go (ImGui's buttons press on release).
-std::string pressPanel(const glm::vec3& hand, const glm::vec2& uv) {
-    return atPanel(hand, uv, false, 2) + ", " + atPanel(hand, uv, true, 3) + ", " + atPanel(hand, uv, false, 2);
-}
-
-const glm::vec3 kPanelHand(-0.2f, 1.0f, -0.4f);
 
 TEST_F(XrGarden, ThePanelsLabelledButtonsChooseTheToolAndUndo) {
     // The right hand presses the panel's carve button (above the left
@@ -324,8 +302,10 @@ TEST_F(XrGarden, ThePanelsMorphTriangleSetsTheWeights) {
 
 TEST_F(XrGarden, LeftHandedSwitchedOnThePanelIsKeptForTheNextRun) {
     const std::string settings = (dir / "config" / "xr.json").string();
-    // Run 1: the right hand ticks left-handed on the panel over the left hand.
-    std::string s = script("[" + pressPanel(kPanelHand, panelToggleCenter(PanelToggle::LeftHanded)) + R"(, {"frames": 2}])");
+    // Run 1: the right hand opens the settings page on the panel over the
+    // left hand and ticks left-handed.
+    std::string s = script("[" + pressPanel(kPanelHand, panelPageCenter(PanelPage::Settings)) + ", " +
+                           pressPanel(kPanelHand, panelToggleCenter(PanelToggle::LeftHanded)) + R"(, {"frames": 2}])");
     ::setenv("HG_MOCK_XR_SCRIPT", s.c_str(), 1);
     XrOptions o;
     o.script = s;

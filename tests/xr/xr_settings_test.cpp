@@ -1,6 +1,7 @@
 // The headset's user settings file (xr/xr_settings.h): written and read
-// back, the defaults without a file, a bad file named with its place and
-// the defaults kept, the path from the environment.
+// back (turning and the seated height too), the defaults without a file
+// and for keys an older file lacks, a bad file or value named with its
+// place and the defaults kept, the path from the environment.
 #include <gtest/gtest.h>
 
 #include <unistd.h>
@@ -60,6 +61,55 @@ TEST_F(XrSettings, ABadFileSaysWhereAndKeepsTheDefaults) {
     std::ofstream(path) << "{\n  \"seated\": tru\n}";
     loadXrSettings(path, warning);
     EXPECT_NE(warning.find("line 2"), std::string::npos) << warning;
+}
+
+TEST_F(XrSettings, TurningAndTheSeatedHeightReadBack) {
+    const std::string path = (dir / "xr.json").string();
+    XrUserSettings s;
+    s.smoothTurn = true;
+    s.snapDegrees = 45;
+    s.seatedHeightOffset = 0.35;
+    ASSERT_EQ(saveXrSettings(path, s), "");
+    std::string warning;
+    const XrUserSettings back = loadXrSettings(path, warning);
+    EXPECT_EQ(warning, "");
+    EXPECT_TRUE(back.smoothTurn);
+    EXPECT_EQ(back.snapDegrees, 45);
+    EXPECT_DOUBLE_EQ(back.seatedHeightOffset, 0.35);
+    EXPECT_FALSE(back.leftHanded);
+}
+
+TEST_F(XrSettings, AnOlderFileWithoutTheNewKeysReadsWithTheirDefaults) {
+    std::filesystem::create_directories(dir);
+    const std::string path = (dir / "xr.json").string();
+    std::ofstream(path) << R"({"left_handed": true, "seated": true})";
+    std::string warning;
+    const XrUserSettings s = loadXrSettings(path, warning);
+    EXPECT_EQ(warning, "");
+    EXPECT_TRUE(s.leftHanded);
+    EXPECT_TRUE(s.seated);
+    const XrUserSettings defaults;
+    EXPECT_EQ(s.smoothTurn, defaults.smoothTurn);
+    EXPECT_EQ(s.snapDegrees, 30);
+    EXPECT_DOUBLE_EQ(s.seatedHeightOffset, 0.5);
+}
+
+TEST_F(XrSettings, TurningAndHeightOutOfRangeAreNamedWithTheirPlace) {
+    std::filesystem::create_directories(dir);
+    const std::string path = (dir / "xr.json").string();
+    for (const auto& [text, place] : {std::pair<const char*, const char*>{R"({"snap_degrees": 20})", "$.snap_degrees"},
+                                      {R"({"snap_degrees": 30.5})", "$.snap_degrees"},
+                                      {R"({"seated_height_offset": -0.1})", "$.seated_height_offset"},
+                                      {R"({"seated_height_offset": 3})", "$.seated_height_offset"},
+                                      {R"({"smooth_turn": 1})", "$.smooth_turn"}}) {
+        std::ofstream(path) << text;
+        std::string warning;
+        const XrUserSettings s = loadXrSettings(path, warning);
+        EXPECT_NE(warning.find(path), std::string::npos) << text << ": " << warning;
+        EXPECT_NE(warning.find(place), std::string::npos) << text << ": " << warning;
+        EXPECT_EQ(s.snapDegrees, 30) << text;
+        EXPECT_DOUBLE_EQ(s.seatedHeightOffset, 0.5) << text;
+    }
 }
 
 TEST_F(XrSettings, ThePathFollowsTheEnvironment) {

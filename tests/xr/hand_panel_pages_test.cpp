@@ -1,0 +1,180 @@
+// The hand panel's pages (xr/hand_panel_ui.h) worked through the mock
+// runtime by a scripted right hand, as a user would: the perturb tool's
+// shape and the impact tool's shape and spread change the session's
+// ToolSettings; the sculpture page selects a sculpture, sets its mirror
+// plane and discards its edits (journalled: a reopened session has none);
+// the settings page's snap angle, smooth turning and seated height are
+// written to the settings file, and a second run without flags turns the
+// way they say.
+#include "xr_garden_fixture.h"
+
+#include <cmath>
+#include <memory>
+
+#include <glm/gtc/constants.hpp>
+#include <glm/trigonometric.hpp>
+
+#include "garden/app/garden_session.h"
+#include "garden/session/open_session.h"
+#include "voxel/volume.h"
+#include "xr/hand_panel_ui.h"
+#include "xr/xr_garden.h"
+#include "xr/xr_settings.h"
+
+namespace hg::xr::test {
+namespace {
+
+using Kind = garden::ToolSettings::Kind;
+
+// Degrees from yaw `from` to yaw `to` (radians), either way round.
+float turnedDegrees(float from, float to) {
+    return glm::degrees(std::fabs(std::remainder(to - from, 2.0f * glm::pi<float>())));
+}
+
+class HandPanelPages : public XrGarden {
+protected:
+    // Runs `steps` (a JSON list) as the script, hands and commands; `atEnd`
+    // sees the session.
+    void run(const std::string& steps, const std::function<void(garden::GardenSession&)>& atEnd = {}) {
+        const std::string s = script(steps);
+        ::setenv("HG_MOCK_XR_SCRIPT", s.c_str(), 1);
+        options.script = s;
+        ASSERT_EQ(runXrGarden(options, [&](garden::GardenSession& xr, const XrRunInfo&) {
+                      if (atEnd) atEnd(xr);
+                  }),
+                  0);
+    }
+    static std::string press(const glm::vec2& uv) { return pressPanel(kPanelHand, uv); }
+    void SetUp() override {
+        XrGarden::SetUp();
+        options.mirror = false;
+        options.settingsFile = (dir / "config" / "xr.json").string();
+    }
+    XrOptions options;
+};
+
+TEST_F(HandPanelPages, PerturbShapeChosenOnThePanel) {
+    garden::ToolSettings tool;
+    run("[" + press(panelButtonCenter(PanelButton::Perturb)) + ", " + press(panelChoiceCenter(PanelChoice::PerturbShape, 1)) +
+            R"(, {"frames": 2}])",
+        [&](garden::GardenSession& xr) { tool = xr.tool(); });
+    EXPECT_EQ(tool.kind, Kind::Perturb);
+    EXPECT_EQ(tool.shape, garden::QuadricShape::Torus);
+    // And back to the ellipsoid, the first option.
+    run("[" + press(panelButtonCenter(PanelButton::Perturb)) + ", " + press(panelChoiceCenter(PanelChoice::PerturbShape, 1)) +
+            ", " + press(panelChoiceCenter(PanelChoice::PerturbShape, 0)) + R"(, {"frames": 2}])",
+        [&](garden::GardenSession& xr) { tool = xr.tool(); });
+    EXPECT_EQ(tool.shape, garden::QuadricShape::Ellipsoid);
+}
+
+TEST_F(HandPanelPages, ImpactShapeAndSpreadChosenOnThePanel) {
+    garden::ToolSettings tool;
+    run("[" + press(panelButtonCenter(PanelButton::Impacts)) + ", " + press(panelChoiceCenter(PanelChoice::ImpactShape, 2)) +
+            ", " + press(panelChoiceCenter(PanelChoice::ImpactSpread, 2)) + R"(, {"frames": 2}])",
+        [&](garden::GardenSession& xr) { tool = xr.tool(); });
+    EXPECT_EQ(tool.kind, Kind::Impacts);
+    EXPECT_EQ(tool.impactShape, garden::ImpactShape::Square);
+    EXPECT_EQ(tool.spread, garden::ImpactSpread::Cone);
+    EXPECT_EQ(tool.spreadSize, garden::ToolSettings{}.spreadSize) << "the size kept, now read as the cone's half-angle";
+    run("[" + press(panelButtonCenter(PanelButton::Impacts)) + ", " + press(panelChoiceCenter(PanelChoice::ImpactSpread, 1)) +
+            R"(, {"frames": 2}])",
+        [&](garden::GardenSession& xr) { tool = xr.tool(); });
+    EXPECT_EQ(tool.spread, garden::ImpactSpread::Gaussian);
+    EXPECT_EQ(tool.impactShape, garden::ImpactShape::Sphere) << "a new run starts from the defaults";
+}
+
+TEST_F(HandPanelPages, TheSculpturePageMirrorsAndDiscardsTheSelectedSculpturesEdits) {
+    options.session = (dir / "session").string();
+    // Run 1: carve 'a' (the carve button, then the trigger on it), then on
+    // the sculpture page select the first sculpture ('a') and tick its
+    // mirror plane.
+    int selected = -1;
+    std::size_t edits = 0;
+    bool mirrored = false;
+    run("[" + press(panelButtonCenter(PanelButton::Carve)) + R"(,
+      {"frames": 6, "tool": {"aim": {"position": [0.3, 1.2, -1.0], "direction": [-0.35, -0.6, -1.3]}, "trigger": 1}},
+      {"frames": 2}, )" + press(panelPageCenter(PanelPage::Sculpture)) + ", " +
+            press(panelActionCenter(PanelAction::NextSculpture)) + ", " + press(panelToggleCenter(PanelToggle::Mirror)) +
+            R"(, {"frames": 2}])",
+        [&](garden::GardenSession& xr) {
+            selected = xr.selected();
+            const int a = xr.findSculpture("a");
+            edits = xr.editCount(a);
+            mirrored = xr.sculptures()[static_cast<std::size_t>(a)].mirror.has_value();
+        });
+    ASSERT_EQ(selected, 0);
+    ASSERT_EQ(edits, 1u) << "carved through the panel's carve button";
+    EXPECT_TRUE(mirrored) << "the mirror plane ticked on the panel";
+
+    // Run 2, the session reopened: select 'a' again and discard its edits.
+    std::unique_ptr<voxel::Volume> after;
+    bool redone = true;
+    run("[" + press(panelPageCenter(PanelPage::Sculpture)) + ", " + press(panelActionCenter(PanelAction::NextSculpture)) + ", " +
+            press(panelActionCenter(PanelAction::DiscardEdits)) + R"(, {"frames": 2}])",
+        [&](garden::GardenSession& xr) {
+            const int a = xr.findSculpture("a");
+            edits = xr.editCount(a);
+            redone = xr.redo();
+            after = std::make_unique<voxel::Volume>(xr.sculptures()[static_cast<std::size_t>(a)].volume->clone());
+        });
+    EXPECT_EQ(edits, 0u) << "discarded on the panel";
+    EXPECT_FALSE(redone) << "discarded for good, as on the desktop";
+    // The grid is the unedited sculpture's, and the discard is journalled.
+    garden::OpenedSession fresh = garden::openSession((dir / "fresh").string(), gardenFile, {});
+    ASSERT_TRUE(fresh.error.empty()) << fresh.error;
+    const int freshA = fresh.session->findSculpture("a");
+    ASSERT_TRUE(after);
+    EXPECT_EQ(garden::test::differingVoxels(*after, *fresh.session->sculptures()[static_cast<std::size_t>(freshA)].volume), 0);
+    garden::OpenedSession reopened = garden::openSession(options.session, gardenFile, {});
+    ASSERT_TRUE(reopened.error.empty()) << reopened.error;
+    EXPECT_EQ(reopened.session->editCount(reopened.session->findSculpture("a")), 0u);
+}
+
+
+TEST_F(HandPanelPages, TurningChosenOnTheSettingsPageIsKeptAndTurnsTheNextRun) {
+    float startYaw = 0.0f;
+    // Run 1: the settings page, a 90-degree snap, the seated height at 0.8 m.
+    run("[" + press(panelPageCenter(PanelPage::Settings)) + ", " + press(panelChoiceCenter(PanelChoice::SnapAngle, 3)) + ", " +
+            press(panelSeatedOffsetPoint(0.8)) + R"(, {"frames": 2}])",
+        [&](garden::GardenSession& xr) { startYaw = xr.navigator().yaw(); });
+    std::string warning;
+    XrUserSettings kept = loadXrSettings(options.settingsFile, warning);
+    EXPECT_EQ(warning, "");
+    EXPECT_EQ(kept.snapDegrees, 90);
+    EXPECT_FALSE(kept.smoothTurn);
+    EXPECT_NEAR(kept.seatedHeightOffset, 0.8, 0.02);
+
+    // Run 2, no flags: one push of the stick turns a quarter.
+    const std::string push = R"([{"frames": 18, "navigation": {"aim": {"position": [-0.2, 1.0, -0.4]}, "thumbstick": [1, 0]}},
+                                 {"frames": 2}])";
+    float yaw = 0.0f;
+    run(push, [&](garden::GardenSession& xr) { yaw = xr.navigator().yaw(); });
+    EXPECT_NEAR(turnedDegrees(startYaw, yaw), 90.0f, 1e-3f) << "one snap of the kept angle";
+
+    // Run 3: smooth turning ticked.
+    run("[" + press(panelPageCenter(PanelPage::Settings)) + ", " + press(panelToggleCenter(PanelToggle::SmoothTurn)) +
+        R"(, {"frames": 2}])");
+    kept = loadXrSettings(options.settingsFile, warning);
+    EXPECT_TRUE(kept.smoothTurn);
+    EXPECT_EQ(kept.snapDegrees, 90) << "the other settings kept";
+
+    // Run 4, no flags: the same push turns smoothly, 90 degrees a second at
+    // full tilt for 18 frames of 1/90 s: about 18 degrees, not a snap.
+    run(push, [&](garden::GardenSession& xr) { yaw = xr.navigator().yaw(); });
+    const float turned = turnedDegrees(startYaw, yaw);
+    EXPECT_GT(turned, 10.0f);
+    EXPECT_LT(turned, 25.0f);
+
+    // Run 5: the flag --smooth-turn over a file that says snap: smooth for
+    // its run, the file left as it was.
+    XrUserSettings snap = kept;
+    snap.smoothTurn = false;
+    ASSERT_EQ(saveXrSettings(options.settingsFile, snap), "");
+    options.smoothTurn = true;
+    run(push, [&](garden::GardenSession& xr) { yaw = xr.navigator().yaw(); });
+    EXPECT_LT(turnedDegrees(startYaw, yaw), 25.0f) << "smooth, not a 90-degree snap";
+    EXPECT_FALSE(loadXrSettings(options.settingsFile, warning).smoothTurn);
+}
+
+}  // namespace
+}  // namespace hg::xr::test
