@@ -3,7 +3,8 @@
 // desktop window's garden goes into the mock runtime's headset, is carved
 // there by the scripted right hand, and the desktop goes on with the carved
 // grid and its own view; no runtime leaves the desktop running with the
-// message; `--xr` goes to the desktop and back again.
+// message; closing the window in the headset ends the program; `--xr` goes
+// to the desktop on the same garden.
 #include "xr_carve_script.h"
 #include "xr_garden_fixture.h"
 
@@ -12,6 +13,9 @@
 #include "garden/session/open_session.h"
 #include "voxel/volume.h"
 #include "xr/xr_garden.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
 
 namespace hg::xr::test {
 namespace {
@@ -118,6 +122,28 @@ TEST_F(ModeSwitch, TheDesktopCanGoIntoTheHeadsetTwice) {
         EXPECT_GT(r.framesRendered, 0);
         EXPECT_EQ(r.endReason.empty(), false);
     }
+}
+
+TEST_F(ModeSwitch, ClosingTheWindowInTheHeadsetEndsTheProgram) {
+    // The mirror is the desktop's window: closing it while in the headset
+    // ends the headset session, then the desktop without another frame.
+    XrOptions x = headsetOptions();
+    x.onFrame = [](const garden::FrameStats&, int focused) {
+        if (focused == 4) glfwSetWindowShouldClose(glfwGetCurrentContext(), GLFW_TRUE);
+    };
+    std::vector<XrRunInfo> runs;
+    garden::DesktopOptions d = desktop(50);
+    d.headset = headsetFromDesktop(x, [&](const XrRunInfo& i) { runs.push_back(i); });
+    int last = -1;
+    d.onFrame = [&](garden::GardenSession&, int frame) {
+        last = frame;
+        return frame == 1;
+    };
+    ASSERT_EQ(garden::runDesktopGarden(d), 0);
+    ASSERT_EQ(runs.size(), 1u);
+    EXPECT_GE(runs[0].focusedFrames, 5);
+    EXPECT_LT(runs[0].framesSubmitted, 50) << "the headset session ended when the window closed";
+    EXPECT_EQ(last, 1) << "no desktop frame after the headset";
 }
 
 TEST_F(ModeSwitch, TheHeadsetGoesToTheDesktopOnTheSameGarden) {
