@@ -15,6 +15,7 @@
 #include "xr/hand_panel.h"
 #include "xr/hand_panel_ui.h"
 #include "xr/headset.h"
+#include "xr/mirror_fit.h"
 #include "xr/stage_rig.h"
 #include "xr/tool_stick.h"
 #include "xr/turning.h"
@@ -203,7 +204,12 @@ private:
     void frame() {
         const HeadsetFrame f = headset_.beginFrame();
         const double periodMs = static_cast<double>(f.state.predictedDisplayPeriod) / 1e6;
-        if (periodMs > 0.0) session_.scheduler().setBudgetMs(periodMs);
+        // The budget is the display's period: the smallest period seen.
+        // Monado paces a slow app to a multiple of it (its predicted period
+        // grows with the app's frame time), and a budget that followed would
+        // let a slow app stay slow.
+        if (periodMs > 0.0 && (displayPeriodMs_ <= 0.0 || periodMs < displayPeriodMs_)) displayPeriodMs_ = periodMs;
+        if (displayPeriodMs_ > 0.0) session_.scheduler().setBudgetMs(displayPeriodMs_);
         session_.beginFrame();
         const bool focused = headset_.focused();
         garden::Hands stage = controllers_->read(headset_.space(), f.state.predictedDisplayTime, heightOffset(), focused);
@@ -301,8 +307,10 @@ private:
     void drawPanels() {
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         overlay_->newFrame();
-        ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x - 10.0f, 10.0f), ImGuiCond_FirstUseEver,
-                                ImVec2(1.0f, 0.0f));
+        // Bottom right, clear of the frame statistics (top left) however
+        // long the runtime's and the profile's names are (Monado's are).
+        const ImVec2 display = ImGui::GetIO().DisplaySize;
+        ImGui::SetNextWindowPos(ImVec2(display.x - 10.0f, display.y - 10.0f), ImGuiCond_FirstUseEver, ImVec2(1.0f, 1.0f));
         ImGui::Begin("Headset", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
         ImGui::Text("%s", runtimeName_.c_str());
         ImGui::Text("space %s, world x%.2f", info_.space.c_str(), 1.0 / static_cast<double>(scale_));
@@ -313,12 +321,17 @@ private:
         overlay_->render();
     }
 
-    // The left eye, scaled into the mirror window.
+    // The left eye, scaled into the mirror window with its aspect kept
+    // (eyes need not be square), black bars around it.
     void mirror(const EyeTarget& target, const EyeImages& images) {
         const glm::ivec2 fb = window_.framebufferSize();
-        glBindFramebuffer(GL_READ_FRAMEBUFFER, target.fbo());
+        const MirrorRect r = fitMirror(glm::ivec2(images.width, images.height), fb);
         glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
-        glBlitFramebuffer(0, 0, images.width, images.height, 0, 0, fb.x, fb.y, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+        glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT);
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, target.fbo());
+        glBlitFramebuffer(0, 0, images.width, images.height, r.offset.x, r.offset.y, r.offset.x + r.size.x,
+                          r.offset.y + r.size.y, GL_COLOR_BUFFER_BIT, GL_LINEAR);
     }
 
     const XrOptions& options_;
@@ -343,6 +356,7 @@ private:
     glm::vec3 startEye_{0.0f};
     float startYaw_ = 0.0f;
     bool menuHeld_ = false;
+    double displayPeriodMs_ = 0.0;  // the smallest predicted display period seen
     XrRunInfo info_;
     std::string runtimeName_;
     std::string error_;

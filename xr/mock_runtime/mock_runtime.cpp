@@ -18,6 +18,7 @@
 #include <sstream>
 #include <memory>
 #include <thread>
+#include <utility>
 
 #include <glm/gtc/quaternion.hpp>
 #include <nlohmann/json.hpp>
@@ -359,6 +360,16 @@ XRAPI_ATTR XrResult XRAPI_CALL getViewConfigurationProperties(XrInstance instanc
     return XR_SUCCESS;
 }
 
+// HG_MOCK_XR_VIEW_SIZE=WxH: the recommended size of each view (512 x 512
+// unless set; Monado's simulated headset has 640 x 720).
+std::pair<std::uint32_t, std::uint32_t> viewSize() {
+    unsigned w = 0, h = 0;
+    const char* spec = std::getenv("HG_MOCK_XR_VIEW_SIZE");
+    if (spec && std::sscanf(spec, "%ux%u", &w, &h) == 2 && w > 0 && h > 0 && w <= kMaxImageSize && h <= kMaxImageSize)
+        return {w, h};
+    return {kViewWidth, kViewHeight};
+}
+
 XRAPI_ATTR XrResult XRAPI_CALL enumerateViewConfigurationViews(XrInstance instance, XrSystemId id,
                                                                XrViewConfigurationType type, uint32_t capacity,
                                                                uint32_t* count, XrViewConfigurationView* views) {
@@ -370,8 +381,9 @@ XRAPI_ATTR XrResult XRAPI_CALL enumerateViewConfigurationViews(XrInstance instan
     if (capacity < 2) return XR_ERROR_SIZE_INSUFFICIENT;
     for (int i = 0; i < 2; ++i) {
         if (views[i].type != XR_TYPE_VIEW_CONFIGURATION_VIEW) return XR_ERROR_VALIDATION_FAILURE;
-        views[i].recommendedImageRectWidth = kViewWidth;
-        views[i].recommendedImageRectHeight = kViewHeight;
+        const auto [width, height] = viewSize();
+        views[i].recommendedImageRectWidth = width;
+        views[i].recommendedImageRectHeight = height;
         views[i].maxImageRectWidth = kMaxImageSize;
         views[i].maxImageRectHeight = kMaxImageSize;
         views[i].recommendedSwapchainSampleCount = 1;

@@ -123,6 +123,14 @@ XRAPI_ATTR XrResult XRAPI_CALL requestExitSession(XrSession session) {
 
 // --- frames ------------------------------------------------------------------------
 
+// HG_MOCK_XR_APP_PERIODS=N: the display periods one app frame is paced to
+// (1 unless set to a whole number above 1).
+std::int64_t appPeriods() {
+    const char* n = std::getenv("HG_MOCK_XR_APP_PERIODS");
+    const long v = n ? std::strtol(n, nullptr, 10) : 1;
+    return v > 1 ? v : 1;
+}
+
 XRAPI_ATTR XrResult XRAPI_CALL waitFrame(XrSession session, const XrFrameWaitInfo* info, XrFrameState* state) {
     std::int64_t sleepUntil = 0;
     {
@@ -137,11 +145,14 @@ XRAPI_ATTR XrResult XRAPI_CALL waitFrame(XrSession session, const XrFrameWaitInf
         const auto range = rt.scheduledEvents.equal_range(s.waitCount);
         for (auto it = range.first; it != range.second; ++it) raiseEvent(it->second);
         // The next display refresh on the 90 Hz grid, one period ahead.
+        // After the first frame an app-paced period (HG_MOCK_XR_APP_PERIODS),
+        // as Monado reports for an app slower than its display.
+        const std::int64_t period = s.waitCount > 1 ? appPeriods() * kFramePeriodNs : kFramePeriodNs;
         const std::int64_t now = nowNs();
         const std::int64_t next = (now / kFramePeriodNs + 1) * kFramePeriodNs;
         sleepUntil = s.lastDisplayTime > 0 ? std::min(next, s.lastDisplayTime) : 0;
-        state->predictedDisplayTime = std::max(next + kFramePeriodNs, s.lastDisplayTime + kFramePeriodNs);
-        state->predictedDisplayPeriod = kFramePeriodNs;
+        state->predictedDisplayTime = std::max(next + kFramePeriodNs, s.lastDisplayTime + period);
+        state->predictedDisplayPeriod = period;
         state->shouldRender = s.state == XR_SESSION_STATE_VISIBLE || s.state == XR_SESSION_STATE_FOCUSED;
         s.lastDisplayTime = state->predictedDisplayTime;
         ++s.waitsOutstanding;
