@@ -57,8 +57,10 @@ Headset::Headset(const std::string& applicationName) {
         throw XrFailure("the runtime does not offer " + std::string(XR_KHR_OPENGL_ENABLE_EXTENSION_NAME),
                         XR_ERROR_EXTENSION_NOT_PRESENT);
     depthExtension_ = offered(extensions, XR_KHR_COMPOSITION_LAYER_DEPTH_EXTENSION_NAME);
+    refreshRateExtension_ = offered(extensions, XR_FB_DISPLAY_REFRESH_RATE_EXTENSION_NAME);
     std::vector<const char*> enabled = {XR_KHR_OPENGL_ENABLE_EXTENSION_NAME};
     if (depthExtension_) enabled.push_back(XR_KHR_COMPOSITION_LAYER_DEPTH_EXTENSION_NAME);
+    if (refreshRateExtension_) enabled.push_back(XR_FB_DISPLAY_REFRESH_RATE_EXTENSION_NAME);
 
     XrInstanceCreateInfo info{XR_TYPE_INSTANCE_CREATE_INFO};
     std::snprintf(info.applicationInfo.applicationName, XR_MAX_APPLICATION_NAME_SIZE, "%s", applicationName.c_str());
@@ -127,6 +129,13 @@ void Headset::createSession(GLFWwindow* window) {
     info.next = &binding;
     info.systemId = system_;
     check(xrCreateSession(instance_, &info, &session_), "xrCreateSession");
+
+    if (refreshRateExtension_) {
+        // Not fatal: without it the frame budget comes from the frames' periods.
+        float hz = 0.0f;
+        auto rate = function<PFN_xrGetDisplayRefreshRateFB>(instance_, "xrGetDisplayRefreshRateFB");
+        if (XR_SUCCEEDED(rate(session_, &hz)) && hz > 0.0f) refreshRate_ = hz;
+    }
 
     // The world's anchor: the stage (floor level), else LOCAL raised by a
     // standing eye height. (XR_EXT_local_floor is not in loader 1.0.20.)
@@ -247,6 +256,11 @@ bool Headset::pollEvents() {
                 doneReason_ = "the runtime is going away (instance loss pending)";
                 break;
             case XR_TYPE_EVENT_DATA_INTERACTION_PROFILE_CHANGED: profileChanged = true; break;
+            case XR_TYPE_EVENT_DATA_DISPLAY_REFRESH_RATE_CHANGED_FB: {
+                const auto& e = *reinterpret_cast<const XrEventDataDisplayRefreshRateChangedFB*>(&event);
+                if (e.toDisplayRefreshRate > 0.0f) refreshRate_ = e.toDisplayRefreshRate;
+                break;
+            }
             default: break;  // events lost, reference space changes: nothing to do
         }
         if (done_) break;

@@ -87,6 +87,15 @@ public:
     float floorOffset() const { return floorOffset_; }
     const char* spaceName() const { return stage_ ? "STAGE" : "LOCAL"; }
     bool depthSubmitted() const { return !depthSwapchains_.empty(); }
+    // One eye's image size in pixels (after createSession; 0 before).
+    std::array<int, 2> eyeSize() const {
+        return colorSwapchains_.empty() ? std::array<int, 2>{0, 0}
+                                        : std::array<int, 2>{colorSwapchains_[0].width, colorSwapchains_[0].height};
+    }
+    // The display's refresh rate (XR_FB_display_refresh_rate), Hz; 0 when
+    // the runtime does not say. The predicted display period is not it:
+    // Monado paces an app slower than the display to a multiple of it.
+    float displayRefreshRate() const { return refreshRate_; }
     std::int64_t colorFormat() const { return colorFormat_; }
     std::string runtimeName() const;
 
@@ -106,6 +115,8 @@ private:
     XrSession session_ = XR_NULL_HANDLE;
     XrSpace space_ = XR_NULL_HANDLE;
     bool depthExtension_ = false;
+    bool refreshRateExtension_ = false;
+    float refreshRate_ = 0.0f;
     bool stage_ = false;
     float floorOffset_ = 0.0f;
     std::int64_t colorFormat_ = 0;

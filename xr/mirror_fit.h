@@ -1,6 +1,7 @@
 // Where the mirror window shows an eye's image: as large as fits, its
 // aspect kept, centred (bars on the other sides). Eyes need not be square
-// (Monado's simulated headset: 640 x 720 per eye). Pure math.
+// (Monado's simulated headset under its main compositor: 640 x 720 per
+// eye). Pure math.
 #pragma once
 
 #include <glm/vec2.hpp>

@@ -110,6 +110,9 @@ public:
         info_.space = headset_.spaceName();
         runtimeName_ = headset_.runtimeName();
         info_.depthSubmitted = headset_.depthSubmitted();
+        // Level selection for the eye's own pixels, as the desktop does for
+        // its framebuffer (Monado's null compositor: 128 x 128 per eye).
+        if (headset_.eyeSize()[1] > 0) session_.settings().viewportHeight = headset_.eyeSize()[1];
         // The headset's height is the user's: the navigator flies, so a
         // grab may lift or lower the world.
         startEye_ = session_.navigator().eye();
@@ -204,12 +207,16 @@ private:
     void frame() {
         const HeadsetFrame f = headset_.beginFrame();
         const double periodMs = static_cast<double>(f.state.predictedDisplayPeriod) / 1e6;
-        // The budget is the display's period: the smallest period seen.
-        // Monado paces a slow app to a multiple of it (its predicted period
-        // grows with the app's frame time), and a budget that followed would
-        // let a slow app stay slow.
-        if (periodMs > 0.0 && (displayPeriodMs_ <= 0.0 || periodMs < displayPeriodMs_)) displayPeriodMs_ = periodMs;
-        if (displayPeriodMs_ > 0.0) session_.scheduler().setBudgetMs(displayPeriodMs_);
+        // The budget is the display's period, not the predicted one: Monado
+        // paces an app slower than the display to a multiple of it (the
+        // predicted period grows with the app's frame time, and its first
+        // frame's is a 16 ms placeholder), and a budget that followed would
+        // let a slow app stay slow. The display's refresh rate when the
+        // runtime says it, else the smallest period seen.
+        if (periodMs > 0.0 && (minPeriodMs_ <= 0.0 || periodMs < minPeriodMs_)) minPeriodMs_ = periodMs;
+        const float hz = headset_.displayRefreshRate();
+        const double budgetMs = hz > 0.0f ? 1000.0 / static_cast<double>(hz) : minPeriodMs_;
+        if (budgetMs > 0.0) session_.scheduler().setBudgetMs(budgetMs);
         session_.beginFrame();
         const bool focused = headset_.focused();
         garden::Hands stage = controllers_->read(headset_.space(), f.state.predictedDisplayTime, heightOffset(), focused);
@@ -356,7 +363,7 @@ private:
     glm::vec3 startEye_{0.0f};
     float startYaw_ = 0.0f;
     bool menuHeld_ = false;
-    double displayPeriodMs_ = 0.0;  // the smallest predicted display period seen
+    double minPeriodMs_ = 0.0;  // the smallest predicted display period seen
     XrRunInfo info_;
     std::string runtimeName_;
     std::string error_;
@@ -411,7 +418,7 @@ int runXrGarden(const XrOptions& options,
         wo.title = "Hypergarden - headset mirror (left eye)";
         garden::GlWindow window(wo);
         garden::SessionSettings settings;
-        settings.viewportHeight = 1024;  // level selection: about a headset's pixels per eye
+        settings.viewportHeight = 1024;  // until the swapchains say the eye's height
         garden::OpenedSession opened;
         if (load) {
             opened.session = std::make_unique<garden::GardenSession>(std::move(*load), settings);

@@ -1,8 +1,10 @@
 // What Monado (the open-source OpenXR runtime, docs/xr.md) does that the
 // mock did not, played by the mock and met by the program: a predicted
 // display period that grows while the app is slower than the display (the
-// frame budget stays the display's period), and eyes that are not square
-// (the swapchains follow the recommended size, the mirror keeps the aspect).
+// frame budget stays the display's period, from XR_FB_display_refresh_rate
+// or else the smallest period seen), eyes of another size than the mock's
+// (the level selection follows the eye's height) and not square (the mirror
+// keeps the aspect).
 #include "mock_xr_fixture.h"
 
 #include <fstream>
@@ -13,6 +15,7 @@
 
 #include "../garden/session_garden.h"
 #include "garden/app/frame_stats.h"
+#include "garden/app/garden_session.h"
 #include "garden/render/renderer.h"
 #include "xr/mirror_fit.h"
 #include "xr/xr_garden.h"
@@ -35,6 +38,7 @@ protected:
     void TearDown() override {
         ::unsetenv("HG_MOCK_XR_APP_PERIODS");
         ::unsetenv("HG_MOCK_XR_VIEW_SIZE");
+        ::unsetenv("HG_MOCK_XR_NO_REFRESH_RATE");
     }
     nlohmann::json readback() {
         std::ifstream in(dir / "readback" / "frames.json");
@@ -44,7 +48,8 @@ protected:
 };
 
 TEST_F(MonadoLike, TheBudgetIsTheDisplaysPeriodWhileTheRuntimePacesASlowApp) {
-    // From the second frame on, each frame is paced to three display periods.
+    // As Monado: a 16 ms placeholder first, then each frame paced to three
+    // display periods; the display's 90 Hz through XR_FB_display_refresh_rate.
     ::setenv("HG_MOCK_XR_APP_PERIODS", "3", 1);
     XrOptions o;
     o.garden = gardenFile;
@@ -57,7 +62,8 @@ TEST_F(MonadoLike, TheBudgetIsTheDisplaysPeriodWhileTheRuntimePacesASlowApp) {
     for (double b : budgets) EXPECT_NEAR(b, kDisplayPeriodMs, 0.01) << "not the paced period, 3 x 11.1 ms";
 }
 
-TEST_F(MonadoLike, TheBudgetFollowsAConstantPeriod) {
+TEST_F(MonadoLike, WithoutTheRefreshRateTheBudgetIsTheSmallestPeriodSeen) {
+    ::setenv("HG_MOCK_XR_NO_REFRESH_RATE", "1", 1);
     XrOptions o;
     o.garden = gardenFile;
     o.frames = 6;
@@ -70,7 +76,8 @@ TEST_F(MonadoLike, TheBudgetFollowsAConstantPeriod) {
 }
 
 TEST_F(MonadoLike, EyesThatAreNotSquareAreDrawnWhole) {
-    // Monado's simulated headset: 1280 x 720 split side by side.
+    // Monado's simulated headset under its main compositor: 1280 x 720
+    // split side by side.
     ::setenv("HG_MOCK_XR_VIEW_SIZE", "640x720", 1);
     XrOptions o;
     o.garden = gardenFile;
@@ -96,6 +103,19 @@ TEST_F(MonadoLike, EyesThatAreNotSquareAreDrawnWhole) {
             EXPECT_GT(std::abs(at(x, h - 4, 2) - at(x, 4, 2)), 40) << "bottom, x " << x << ": the ground";
         }
     stbi_image_free(px);
+}
+
+TEST_F(MonadoLike, LevelsAreChosenForTheEyesOwnHeight) {
+    // Monado's null compositor recommends 128 x 128 per eye.
+    ::setenv("HG_MOCK_XR_VIEW_SIZE", "128x128", 1);
+    XrOptions o;
+    o.garden = gardenFile;
+    o.frames = 4;
+    o.mirror = false;
+    int height = 0;
+    ASSERT_EQ(runXrGarden(o, [&](garden::GardenSession& s, const XrRunInfo&) { height = s.settings().viewportHeight; }), 0);
+    EXPECT_EQ(height, 128);
+    EXPECT_EQ(readback()["last_frame"]["image_size"], nlohmann::json::array({128, 128}));
 }
 
 TEST(MirrorFit, KeepsTheEyesAspectCentred) {

@@ -50,7 +50,23 @@ XrPosef toXr(const garden::Pose& p) {
 
 namespace {
 
-const char* const kExtensions[] = {XR_KHR_OPENGL_ENABLE_EXTENSION_NAME, XR_KHR_COMPOSITION_LAYER_DEPTH_EXTENSION_NAME};
+struct Extension {
+    const char* name;
+    uint32_t version;
+};
+const Extension kExtensions[] = {{XR_KHR_OPENGL_ENABLE_EXTENSION_NAME, XR_KHR_opengl_enable_SPEC_VERSION},
+                                 {XR_KHR_COMPOSITION_LAYER_DEPTH_EXTENSION_NAME, XR_KHR_composition_layer_depth_SPEC_VERSION},
+                                 {XR_FB_DISPLAY_REFRESH_RATE_EXTENSION_NAME, XR_FB_display_refresh_rate_SPEC_VERSION}};
+
+// What the runtime offers: all of kExtensions, less XR_FB_display_refresh_rate
+// under HG_MOCK_XR_NO_REFRESH_RATE.
+std::vector<Extension> offeredExtensions() {
+    std::vector<Extension> v;
+    for (const Extension& e : kExtensions)
+        if (std::strcmp(e.name, XR_FB_DISPLAY_REFRESH_RATE_EXTENSION_NAME) != 0 || !std::getenv("HG_MOCK_XR_NO_REFRESH_RATE"))
+            v.push_back(e);
+    return v;
+}
 
 // --- events ----------------------------------------------------------------
 
@@ -190,14 +206,15 @@ XRAPI_ATTR XrResult XRAPI_CALL enumerateInstanceExtensionProperties(const char* 
                                                                      uint32_t* count, XrExtensionProperties* props) {
     if (layerName && *layerName) return XR_ERROR_API_LAYER_NOT_PRESENT;
     if (!count) return XR_ERROR_VALIDATION_FAILURE;
-    const uint32_t n = sizeof kExtensions / sizeof kExtensions[0];
+    const std::vector<Extension> offered = offeredExtensions();
+    const auto n = static_cast<uint32_t>(offered.size());
     *count = n;
     if (capacity == 0) return XR_SUCCESS;
     if (capacity < n) return XR_ERROR_SIZE_INSUFFICIENT;
     for (uint32_t i = 0; i < n; ++i) {
         if (props[i].type != XR_TYPE_EXTENSION_PROPERTIES) return XR_ERROR_VALIDATION_FAILURE;
-        std::snprintf(props[i].extensionName, XR_MAX_EXTENSION_NAME_SIZE, "%s", kExtensions[i]);
-        props[i].extensionVersion = i == 0 ? XR_KHR_opengl_enable_SPEC_VERSION : XR_KHR_composition_layer_depth_SPEC_VERSION;
+        std::snprintf(props[i].extensionName, XR_MAX_EXTENSION_NAME_SIZE, "%s", offered[i].name);
+        props[i].extensionVersion = offered[i].version;
     }
     return XR_SUCCESS;
 }
@@ -218,8 +235,8 @@ XRAPI_ATTR XrResult XRAPI_CALL createInstance(const XrInstanceCreateInfo* info, 
     auto inst = std::make_unique<Instance>();
     for (uint32_t i = 0; i < info->enabledExtensionCount; ++i) {
         const std::string name = info->enabledExtensionNames[i];
-        if (std::find_if(std::begin(kExtensions), std::end(kExtensions), [&](const char* e) { return name == e; }) ==
-            std::end(kExtensions))
+        const std::vector<Extension> offered = offeredExtensions();
+        if (std::none_of(offered.begin(), offered.end(), [&](const Extension& e) { return name == e.name; }))
             return XR_ERROR_EXTENSION_NOT_PRESENT;
         inst->extensions.insert(name);
     }
@@ -455,6 +472,10 @@ XRAPI_ATTR XrResult XRAPI_CALL getInstanceProcAddr(XrInstance instance, const ch
     if (instance) {
         Lock lock(runtime().mutex);
         if (!isLive(runtime().instances, instance)) return XR_ERROR_HANDLE_INVALID;
+        // An extension's functions only for an instance that enabled it.
+        if (n == "xrGetDisplayRefreshRateFB" &&
+            !asInstance(instance)->extensions.count(XR_FB_DISPLAY_REFRESH_RATE_EXTENSION_NAME))
+            return XR_ERROR_FUNCTION_UNSUPPORTED;
     }
     if (n == "xrGetInstanceProcAddr") {
         *function = entry(getInstanceProcAddr);

@@ -123,6 +123,8 @@ XRAPI_ATTR XrResult XRAPI_CALL requestExitSession(XrSession session) {
 
 // --- frames ------------------------------------------------------------------------
 
+constexpr std::int64_t kMonadoFirstPeriodNs = 16000000;
+
 // HG_MOCK_XR_APP_PERIODS=N: the display periods one app frame is paced to
 // (1 unless set to a whole number above 1).
 std::int64_t appPeriods() {
@@ -145,9 +147,11 @@ XRAPI_ATTR XrResult XRAPI_CALL waitFrame(XrSession session, const XrFrameWaitInf
         const auto range = rt.scheduledEvents.equal_range(s.waitCount);
         for (auto it = range.first; it != range.second; ++it) raiseEvent(it->second);
         // The next display refresh on the 90 Hz grid, one period ahead.
-        // After the first frame an app-paced period (HG_MOCK_XR_APP_PERIODS),
-        // as Monado reports for an app slower than its display.
-        const std::int64_t period = s.waitCount > 1 ? appPeriods() * kFramePeriodNs : kFramePeriodNs;
+        // With HG_MOCK_XR_APP_PERIODS, Monado's app pacing: the first frame
+        // a placeholder period (16 ms, before it knows the display), then a
+        // multiple of the display's period for an app slower than it.
+        const std::int64_t n = appPeriods();
+        const std::int64_t period = n == 1 ? kFramePeriodNs : s.waitCount == 1 ? kMonadoFirstPeriodNs : n * kFramePeriodNs;
         const std::int64_t now = nowNs();
         const std::int64_t next = (now / kFramePeriodNs + 1) * kFramePeriodNs;
         sleepUntil = s.lastDisplayTime > 0 ? std::min(next, s.lastDisplayTime) : 0;
@@ -270,7 +274,21 @@ XRAPI_ATTR XrResult XRAPI_CALL endFrame(XrSession session, const XrFrameEndInfo*
 
 }  // namespace
 
+namespace {
+
+// XR_FB_display_refresh_rate: the display's 90 Hz, whatever the app's pacing.
+XRAPI_ATTR XrResult XRAPI_CALL getDisplayRefreshRate(XrSession session, float* rate) {
+    Lock lock(runtime().mutex);
+    if (!isLive(runtime().sessions, session)) return XR_ERROR_HANDLE_INVALID;
+    if (!rate) return XR_ERROR_VALIDATION_FAILURE;
+    *rate = static_cast<float>(1e9 / static_cast<double>(kFramePeriodNs));
+    return asSession(session)->lossPending ? XR_SESSION_LOSS_PENDING : XR_SUCCESS;
+}
+
+}  // namespace
+
 void addSessionFunctions(FunctionTable& t) {
+    t["xrGetDisplayRefreshRateFB"] = entry(getDisplayRefreshRate);
     t["xrCreateSession"] = entry(createSession);
     t["xrDestroySession"] = entry(destroySession);
     t["xrBeginSession"] = entry(beginSession);
