@@ -39,6 +39,7 @@ protected:
         ::unsetenv("HG_MOCK_XR_APP_PERIODS");
         ::unsetenv("HG_MOCK_XR_VIEW_SIZE");
         ::unsetenv("HG_MOCK_XR_NO_REFRESH_RATE");
+        ::unsetenv("HG_MOCK_XR_NO_DEPTH24");
     }
     nlohmann::json readback() {
         std::ifstream in(dir / "readback" / "frames.json");
@@ -116,6 +117,21 @@ TEST_F(MonadoLike, LevelsAreChosenForTheEyesOwnHeight) {
     ASSERT_EQ(runXrGarden(o, [&](garden::GardenSession& s, const XrRunInfo&) { height = s.settings().viewportHeight; }), 0);
     EXPECT_EQ(height, 128);
     EXPECT_EQ(readback()["last_frame"]["image_size"], nlohmann::json::array({128, 128}));
+}
+
+TEST_F(MonadoLike, DepthIsSubmittedWithoutA24BitFormat) {
+    // Monado's GL client offers 32-bit float and 16-bit depth, never GL_DEPTH_COMPONENT24.
+    ::setenv("HG_MOCK_XR_NO_DEPTH24", "1", 1);
+    XrOptions o;
+    o.garden = gardenFile;
+    o.frames = 4;
+    o.mirror = false;
+    XrRunInfo info;
+    ASSERT_EQ(runXrGarden(o, [&](garden::GardenSession&, const XrRunInfo& i) { info = i; }), 0);
+    EXPECT_TRUE(info.depthSubmitted);
+    const nlohmann::json j = readback();
+    EXPECT_EQ(j["last_frame"]["depth_views"], 2);
+    EXPECT_EQ(j["last_frame"]["depth_format"], 0x8CAC) << "GL_DEPTH_COMPONENT32F";
 }
 
 TEST(MirrorFit, KeepsTheEyesAspectCentred) {

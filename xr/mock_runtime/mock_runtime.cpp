@@ -170,6 +170,7 @@ void writeFrameLog() {
     j["frames_ended"] = l.framesEnded;
     j["frames_with_two_views"] = l.framesWithTwoViews;
     j["last_frame"] = {{"layers", l.layerTypes}, {"views", l.viewCount}, {"depth_views", l.depthViews},
+                       {"depth_format", l.depthFormat},
                        {"image_size", {l.imageWidth, l.imageHeight}}};
     j["interaction_profile"] = l.profile;
     j["haptic_pulses"] = l.hapticPulses;

@@ -214,6 +214,7 @@ XrResult checkProjection(Session& s, const XrCompositionLayerProjection& p, Fram
             if (d->minDepth < 0.0f || d->maxDepth > 1.0f || d->minDepth > d->maxDepth || d->nearZ == d->farZ)
                 return XR_ERROR_VALIDATION_FAILURE;
             ++log.depthViews;
+            log.depthFormat = asSwapchain(d->subImage.swapchain)->format;
         }
         if (v == 0) {
             log.imageWidth = static_cast<uint32_t>(sub.imageRect.extent.width);

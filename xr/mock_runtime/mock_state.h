@@ -106,6 +106,7 @@ struct Session {
 struct FrameLog {
     std::uint64_t framesEnded = 0, framesWithTwoViews = 0, hapticPulses = 0;
     std::uint32_t layerCount = 0, viewCount = 0, depthViews = 0, imageWidth = 0, imageHeight = 0;
+    std::int64_t depthFormat = 0;  // the last depth view's swapchain format (GL)
     std::vector<std::string> layerTypes;
     std::string profile;
 };
