@@ -106,6 +106,16 @@ void Headset::createSession(GLFWwindow* window) {
         throw XrFailure("the runtime needs a newer OpenGL than " + std::to_string(epoxy_gl_version()),
                         XR_ERROR_GRAPHICS_DEVICE_INVALID);
 
+    // OPAQUE unless the headset lacks it (a see-through one may offer only ADDITIVE).
+    uint32_t modeCount = 0;
+    check(xrEnumerateEnvironmentBlendModes(instance_, system_, kViewConfiguration, 0, &modeCount, nullptr),
+          "xrEnumerateEnvironmentBlendModes");
+    std::vector<XrEnvironmentBlendMode> modes(modeCount);
+    check(xrEnumerateEnvironmentBlendModes(instance_, system_, kViewConfiguration, modeCount, &modeCount, modes.data()),
+          "xrEnumerateEnvironmentBlendModes");
+    if (!modes.empty() && std::find(modes.begin(), modes.end(), XR_ENVIRONMENT_BLEND_MODE_OPAQUE) == modes.end())
+        blendMode_ = modes.front();
+
     XrGraphicsBindingOpenGLXlibKHR binding{XR_TYPE_GRAPHICS_BINDING_OPENGL_XLIB_KHR};
     binding.xDisplay = glfwGetX11Display();
     binding.glxContext = glfwGetGLXContext(window);
@@ -344,7 +354,7 @@ void Headset::endFrame(const HeadsetFrame& frame, bool rendered, float nearZ, fl
     }
     XrFrameEndInfo end{XR_TYPE_FRAME_END_INFO};
     end.displayTime = frame.state.predictedDisplayTime;
-    end.environmentBlendMode = XR_ENVIRONMENT_BLEND_MODE_OPAQUE;
+    end.environmentBlendMode = blendMode_;
     end.layerCount = rendered ? 1 : 0;
     end.layers = rendered ? layers : nullptr;
     check(xrEndFrame(session_, &end), "xrEndFrame");

@@ -98,6 +98,9 @@ public:
     float displayRefreshRate() const { return refreshRate_; }
     std::int64_t colorFormat() const { return colorFormat_; }
     std::string runtimeName() const;
+    // OPAQUE when the headset offers it, else its first (a see-through
+    // headset may offer only ADDITIVE, and refuses frames in another mode).
+    XrEnvironmentBlendMode blendMode() const { return blendMode_; }
 
 private:
     struct Swapchain {
@@ -116,6 +119,7 @@ private:
     XrSpace space_ = XR_NULL_HANDLE;
     bool depthExtension_ = false;
     bool refreshRateExtension_ = false;
+    XrEnvironmentBlendMode blendMode_ = XR_ENVIRONMENT_BLEND_MODE_OPAQUE;
     float refreshRate_ = 0.0f;
     bool stage_ = false;
     float floorOffset_ = 0.0f;

@@ -40,6 +40,8 @@ protected:
         ::unsetenv("HG_MOCK_XR_VIEW_SIZE");
         ::unsetenv("HG_MOCK_XR_NO_REFRESH_RATE");
         ::unsetenv("HG_MOCK_XR_NO_DEPTH24");
+        ::unsetenv("HG_MOCK_XR_BLEND_MODE");
+        ::unsetenv("HG_MOCK_XR_EVENTS");
     }
     nlohmann::json readback() {
         std::ifstream in(dir / "readback" / "frames.json");
@@ -132,6 +134,35 @@ TEST_F(MonadoLike, DepthIsSubmittedWithoutA24BitFormat) {
     const nlohmann::json j = readback();
     EXPECT_EQ(j["last_frame"]["depth_views"], 2);
     EXPECT_EQ(j["last_frame"]["depth_format"], 0x8CAC) << "GL_DEPTH_COMPONENT32F";
+}
+
+TEST_F(MonadoLike, TheBudgetFollowsTheDisplaysRefreshRateWhenItChanges) {
+    // XR_FB_display_refresh_rate's event: the display goes from 90 to 60 Hz.
+    ::setenv("HG_MOCK_XR_EVENTS", "5:refresh_60", 1);
+    XrOptions o;
+    o.garden = gardenFile;
+    o.frames = 10;
+    o.mirror = false;
+    std::vector<double> budgets;
+    o.onFrame = [&](const garden::FrameStats& s, int) { budgets.push_back(s.budgetMs); };
+    ASSERT_EQ(runXrGarden(o), 0);
+    ASSERT_GE(budgets.size(), 8u);
+    EXPECT_NEAR(budgets.front(), kDisplayPeriodMs, 0.01);
+    EXPECT_NEAR(budgets.back(), 1000.0 / 60.0, 0.01);
+}
+
+TEST_F(MonadoLike, ASeeThroughHeadsetGetsFramesInItsBlendMode) {
+    // Monado's simulated headset offers OPAQUE only; another may offer only ADDITIVE.
+    ::setenv("HG_MOCK_XR_BLEND_MODE", "additive", 1);
+    XrOptions o;
+    o.garden = gardenFile;
+    o.frames = 5;
+    o.mirror = false;
+    XrRunInfo info;
+    ASSERT_EQ(runXrGarden(o, [&](garden::GardenSession&, const XrRunInfo& i) { info = i; }), 0)
+        << "xrEndFrame refuses OPAQUE";
+    EXPECT_EQ(info.framesSubmitted, 5);
+    EXPECT_EQ(readback()["frames_with_two_views"], 4);
 }
 
 TEST(MirrorFit, KeepsTheEyesAspectCentred) {

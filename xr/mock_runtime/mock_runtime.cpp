@@ -94,6 +94,11 @@ void queueStopping(Session& s) {
     if (s.queuedState == XR_SESSION_STATE_SYNCHRONIZED) queueState(s, XR_SESSION_STATE_STOPPING);
 }
 
+XrEnvironmentBlendMode offeredBlendMode() {
+    const char* mode = std::getenv("HG_MOCK_XR_BLEND_MODE");
+    return mode && std::strcmp(mode, "additive") == 0 ? XR_ENVIRONMENT_BLEND_MODE_ADDITIVE : XR_ENVIRONMENT_BLEND_MODE_OPAQUE;
+}
+
 int raiseEvent(const std::string& event) {
     Runtime& rt = runtime();
     Session* s = rt.sessions.empty() ? nullptr : *rt.sessions.begin();
@@ -103,6 +108,18 @@ int raiseEvent(const std::string& event) {
         e.lossTime = nowNs() + kFramePeriodNs;
         pushEvent(&e, sizeof e);
         for (Instance* i : rt.instances) i->lost = true;
+        return 0;
+    }
+    if (event == "refresh_60") {
+        // The display now runs at 60 Hz (XR_FB_display_refresh_rate's event;
+        // the frames keep the mock's 90 Hz pacing).
+        if (s && s->instance->extensions.count(XR_FB_DISPLAY_REFRESH_RATE_EXTENSION_NAME)) {
+            XrEventDataDisplayRefreshRateChangedFB e{};
+            e.type = XR_TYPE_EVENT_DATA_DISPLAY_REFRESH_RATE_CHANGED_FB;
+            e.fromDisplayRefreshRate = s->refreshHz;
+            e.toDisplayRefreshRate = s->refreshHz = 60.0f;
+            pushEvent(&e, sizeof e);
+        }
         return 0;
     }
     if (event != "loss" && event != "exit" && event != "unfocus" && event != "focus") return -1;
@@ -418,7 +435,7 @@ XRAPI_ATTR XrResult XRAPI_CALL enumerateEnvironmentBlendModes(XrInstance instanc
     if (!count) return XR_ERROR_VALIDATION_FAILURE;
     *count = 1;
     if (capacity == 0) return XR_SUCCESS;
-    modes[0] = XR_ENVIRONMENT_BLEND_MODE_OPAQUE;
+    modes[0] = offeredBlendMode();
     return XR_SUCCESS;
 }
 

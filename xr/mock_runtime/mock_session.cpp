@@ -237,7 +237,7 @@ XRAPI_ATTR XrResult XRAPI_CALL endFrame(XrSession session, const XrFrameEndInfo*
     if (!s.running) return XR_ERROR_SESSION_NOT_RUNNING;
     if (!s.frameBegun) return XR_ERROR_CALL_ORDER_INVALID;
     if (info->displayTime <= 0) return XR_ERROR_TIME_INVALID;
-    if (info->environmentBlendMode != XR_ENVIRONMENT_BLEND_MODE_OPAQUE) return XR_ERROR_ENVIRONMENT_BLEND_MODE_UNSUPPORTED;
+    if (info->environmentBlendMode != offeredBlendMode()) return XR_ERROR_ENVIRONMENT_BLEND_MODE_UNSUPPORTED;
     if (info->layerCount > kMaxLayers) return XR_ERROR_LAYER_LIMIT_EXCEEDED;
     if (info->layerCount > 0 && !info->layers) return XR_ERROR_VALIDATION_FAILURE;
     FrameLog log = rt.log;
@@ -277,12 +277,13 @@ XRAPI_ATTR XrResult XRAPI_CALL endFrame(XrSession session, const XrFrameEndInfo*
 
 namespace {
 
-// XR_FB_display_refresh_rate: the display's 90 Hz, whatever the app's pacing.
+// XR_FB_display_refresh_rate: the display's 90 Hz (until the "refresh_60"
+// event), whatever the app's pacing.
 XRAPI_ATTR XrResult XRAPI_CALL getDisplayRefreshRate(XrSession session, float* rate) {
     Lock lock(runtime().mutex);
     if (!isLive(runtime().sessions, session)) return XR_ERROR_HANDLE_INVALID;
     if (!rate) return XR_ERROR_VALIDATION_FAILURE;
-    *rate = static_cast<float>(1e9 / static_cast<double>(kFramePeriodNs));
+    *rate = asSession(session)->refreshHz;
     return asSession(session)->lossPending ? XR_SESSION_LOSS_PENDING : XR_SUCCESS;
 }
 

@@ -91,6 +91,7 @@ struct Session {
     bool exitRequested = false;
     bool lossPending = false;
     bool focusedAfterFirstFrame = false;
+    float refreshHz = 1e9f / static_cast<float>(kFramePeriodNs);  // XR_FB_display_refresh_rate's
     int waitsOutstanding = 0;  // xrWaitFrame calls not yet followed by xrBeginFrame
     bool frameBegun = false;
     std::uint64_t waitCount = 0;
@@ -152,6 +153,9 @@ int raiseEvent(const std::string& event);
 void writeFrameLog();
 void writeViewImage(const Swapchain& sc, const XrRect2Di& rect, const std::string& name);
 bool validOrientation(const XrQuaternionf& q);  // of unit length
+// The one environment blend mode offered: OPAQUE, or ADDITIVE under
+// HG_MOCK_XR_BLEND_MODE=additive (a see-through headset).
+XrEnvironmentBlendMode offeredBlendMode();
 XrPosef toXr(const garden::Pose& p);
 std::int64_t nowNs();
 
