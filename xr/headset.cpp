@@ -40,8 +40,10 @@ Headset::Headset(const std::string& applicationName) {
         throw XrFailure("the runtime does not offer " + std::string(XR_KHR_OPENGL_ENABLE_EXTENSION_NAME),
                         XR_ERROR_EXTENSION_NOT_PRESENT);
     depthExtension_ = offered(extensions, XR_KHR_COMPOSITION_LAYER_DEPTH_EXTENSION_NAME);
+    refreshRateExtension_ = offered(extensions, XR_FB_DISPLAY_REFRESH_RATE_EXTENSION_NAME);
     std::vector<const char*> enabled = {XR_KHR_OPENGL_ENABLE_EXTENSION_NAME};
     if (depthExtension_) enabled.push_back(XR_KHR_COMPOSITION_LAYER_DEPTH_EXTENSION_NAME);
+    if (refreshRateExtension_) enabled.push_back(XR_FB_DISPLAY_REFRESH_RATE_EXTENSION_NAME);
 
     XrInstanceCreateInfo info{XR_TYPE_INSTANCE_CREATE_INFO};
     std::snprintf(info.applicationInfo.applicationName, XR_MAX_APPLICATION_NAME_SIZE, "%s", applicationName.c_str());
@@ -87,6 +89,16 @@ void Headset::createSession(GLFWwindow* window) {
         throw XrFailure("the runtime needs a newer OpenGL than " + std::to_string(epoxy_gl_version()),
                         XR_ERROR_GRAPHICS_DEVICE_INVALID);
 
+    // OPAQUE unless the headset lacks it (a see-through one may offer only ADDITIVE).
+    uint32_t modeCount = 0;
+    check(xrEnumerateEnvironmentBlendModes(instance_, system_, kViewConfiguration, 0, &modeCount, nullptr),
+          "xrEnumerateEnvironmentBlendModes");
+    std::vector<XrEnvironmentBlendMode> modes(modeCount);
+    check(xrEnumerateEnvironmentBlendModes(instance_, system_, kViewConfiguration, modeCount, &modeCount, modes.data()),
+          "xrEnumerateEnvironmentBlendModes");
+    if (!modes.empty() && std::find(modes.begin(), modes.end(), XR_ENVIRONMENT_BLEND_MODE_OPAQUE) == modes.end())
+        blendMode_ = modes.front();
+
     XrGraphicsBindingOpenGLXlibKHR binding{XR_TYPE_GRAPHICS_BINDING_OPENGL_XLIB_KHR};
     binding.xDisplay = glfwGetX11Display();
     binding.glxContext = glfwGetGLXContext(window);
@@ -110,6 +122,13 @@ void Headset::createSession(GLFWwindow* window) {
     info.next = &binding;
     info.systemId = system_;
     check(xrCreateSession(instance_, &info, &session_), "xrCreateSession");
+
+    if (refreshRateExtension_) {
+        // Not fatal: without it the frame budget comes from the frames' periods.
+        float hz = 0.0f;
+        auto rate = function<PFN_xrGetDisplayRefreshRateFB>(instance_, "xrGetDisplayRefreshRateFB");
+        if (XR_SUCCEEDED(rate(session_, &hz)) && hz > 0.0f) refreshRate_ = hz;
+    }
 
     // The world's anchor: the stage (floor level), else LOCAL raised by a
     // standing eye height. (XR_EXT_local_floor is not in loader 1.0.20.)
@@ -230,6 +249,11 @@ bool Headset::pollEvents() {
                 doneReason_ = "the runtime is going away (instance loss pending)";
                 break;
             case XR_TYPE_EVENT_DATA_INTERACTION_PROFILE_CHANGED: profileChanged = true; break;
+            case XR_TYPE_EVENT_DATA_DISPLAY_REFRESH_RATE_CHANGED_FB: {
+                const auto& e = *reinterpret_cast<const XrEventDataDisplayRefreshRateChangedFB*>(&event);
+                if (e.toDisplayRefreshRate > 0.0f) refreshRate_ = e.toDisplayRefreshRate;
+                break;
+            }
             default: break;  // events lost, reference space changes: nothing to do
         }
         if (done_) break;
@@ -313,7 +337,7 @@ void Headset::endFrame(const HeadsetFrame& frame, bool rendered, float nearZ, fl
     }
     XrFrameEndInfo end{XR_TYPE_FRAME_END_INFO};
     end.displayTime = frame.state.predictedDisplayTime;
-    end.environmentBlendMode = XR_ENVIRONMENT_BLEND_MODE_OPAQUE;
+    end.environmentBlendMode = blendMode_;
     end.layerCount = rendered ? 1 : 0;
     end.layers = rendered ? layers : nullptr;
     check(xrEndFrame(session_, &end), "xrEndFrame");

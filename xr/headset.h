@@ -87,8 +87,20 @@ public:
     float floorOffset() const { return floorOffset_; }
     const char* spaceName() const { return stage_ ? "STAGE" : "LOCAL"; }
     bool depthSubmitted() const { return !depthSwapchains_.empty(); }
+    // One eye's image size in pixels (after createSession; 0 before).
+    std::array<int, 2> eyeSize() const {
+        return colorSwapchains_.empty() ? std::array<int, 2>{0, 0}
+                                        : std::array<int, 2>{colorSwapchains_[0].width, colorSwapchains_[0].height};
+    }
+    // The display's refresh rate (XR_FB_display_refresh_rate), Hz; 0 when
+    // the runtime does not say. The predicted display period is not it:
+    // Monado paces an app slower than the display to a multiple of it.
+    float displayRefreshRate() const { return refreshRate_; }
     std::int64_t colorFormat() const { return colorFormat_; }
     std::string runtimeName() const;
+    // OPAQUE when the headset offers it, else its first (a see-through
+    // headset may offer only ADDITIVE, and refuses frames in another mode).
+    XrEnvironmentBlendMode blendMode() const { return blendMode_; }
 
 private:
     struct Swapchain {
@@ -106,6 +118,9 @@ private:
     XrSession session_ = XR_NULL_HANDLE;
     XrSpace space_ = XR_NULL_HANDLE;
     bool depthExtension_ = false;
+    bool refreshRateExtension_ = false;
+    XrEnvironmentBlendMode blendMode_ = XR_ENVIRONMENT_BLEND_MODE_OPAQUE;
+    float refreshRate_ = 0.0f;
     bool stage_ = false;
     float floorOffset_ = 0.0f;
     std::int64_t colorFormat_ = 0;

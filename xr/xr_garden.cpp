@@ -16,6 +16,7 @@
 #include "xr/hand_panel.h"
 #include "xr/hand_panel_ui.h"
 #include "xr/headset.h"
+#include "xr/mirror_fit.h"
 #include "xr/stage_rig.h"
 #include "xr/tool_stick.h"
 #include "xr/turning.h"
@@ -112,6 +113,9 @@ public:
         info_.space = headset_.spaceName();
         runtimeName_ = headset_.runtimeName();
         info_.depthSubmitted = headset_.depthSubmitted();
+        // Level selection for the eye's own pixels, as the desktop does for
+        // its framebuffer (Monado's null compositor: 128 x 128 per eye).
+        if (headset_.eyeSize()[1] > 0) session_.settings().viewportHeight = headset_.eyeSize()[1];
         // The headset's height is the user's: the navigator flies, so a
         // grab may lift or lower the world.
         startEye_ = session_.navigator().eye();
@@ -215,7 +219,16 @@ private:
     void frame() {
         const HeadsetFrame f = headset_.beginFrame();
         const double periodMs = static_cast<double>(f.state.predictedDisplayPeriod) / 1e6;
-        if (periodMs > 0.0) session_.scheduler().setBudgetMs(periodMs);
+        // The budget is the display's period, not the predicted one: Monado
+        // paces an app slower than the display to a multiple of it (the
+        // predicted period grows with the app's frame time, and its first
+        // frame's is a 16 ms placeholder), and a budget that followed would
+        // let a slow app stay slow. The display's refresh rate when the
+        // runtime says it, else the smallest period seen.
+        if (periodMs > 0.0 && (minPeriodMs_ <= 0.0 || periodMs < minPeriodMs_)) minPeriodMs_ = periodMs;
+        const float hz = headset_.displayRefreshRate();
+        const double budgetMs = hz > 0.0f ? 1000.0 / static_cast<double>(hz) : minPeriodMs_;
+        if (budgetMs > 0.0) session_.scheduler().setBudgetMs(budgetMs);
         session_.beginFrame();
         const bool focused = headset_.focused();
         garden::Hands stage = controllers_->read(headset_.space(), f.state.predictedDisplayTime, heightOffset(), focused);
@@ -316,8 +329,10 @@ private:
     void drawPanels() {
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         overlay_->newFrame();
-        ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x - 10.0f, 10.0f), ImGuiCond_FirstUseEver,
-                                ImVec2(1.0f, 0.0f));
+        // Bottom right, clear of the frame statistics (top left) however
+        // long the runtime's and the profile's names are (Monado's are).
+        const ImVec2 display = ImGui::GetIO().DisplaySize;
+        ImGui::SetNextWindowPos(ImVec2(display.x - 10.0f, display.y - 10.0f), ImGuiCond_FirstUseEver, ImVec2(1.0f, 1.0f));
         ImGui::Begin("Headset", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
         ImGui::Text("%s", runtimeName_.c_str());
         ImGui::Text("space %s, world x%.2f", info_.space.c_str(), 1.0 / static_cast<double>(scale_));
@@ -329,21 +344,17 @@ private:
         overlay_->render();
     }
 
-    // The left eye, scaled into the mirror window with its own aspect
-    // (a desktop window is wider than an eye), on black.
+    // The left eye, scaled into the mirror window with its aspect kept
+    // (eyes need not be square), black bars around it.
     void mirror(const EyeTarget& target, const EyeImages& images) {
         const glm::ivec2 fb = window_.framebufferSize();
+        const MirrorRect r = fitMirror(glm::ivec2(images.width, images.height), fb);
         glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
-        glViewport(0, 0, fb.x, fb.y);
         glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
         glClear(GL_COLOR_BUFFER_BIT);
-        const float fit = std::min(static_cast<float>(fb.x) / static_cast<float>(images.width),
-                                   static_cast<float>(fb.y) / static_cast<float>(images.height));
-        const glm::ivec2 size(glm::vec2(images.width, images.height) * fit);
-        const glm::ivec2 at = (fb - size) / 2;
         glBindFramebuffer(GL_READ_FRAMEBUFFER, target.fbo());
-        glBlitFramebuffer(0, 0, images.width, images.height, at.x, at.y, at.x + size.x, at.y + size.y,
-                          GL_COLOR_BUFFER_BIT, GL_LINEAR);
+        glBlitFramebuffer(0, 0, images.width, images.height, r.offset.x, r.offset.y, r.offset.x + r.size.x,
+                          r.offset.y + r.size.y, GL_COLOR_BUFFER_BIT, GL_LINEAR);
     }
 
     const XrOptions& options_;
@@ -371,6 +382,7 @@ private:
     glm::vec3 startEye_{0.0f};
     float startYaw_ = 0.0f;
     bool menuHeld_ = false;
+    double minPeriodMs_ = 0.0;  // the smallest predicted display period seen
     XrRunInfo info_;
     std::string runtimeName_;
     std::string error_;
@@ -408,7 +420,7 @@ int runHeadsetOn(const XrOptions& options, std::unique_ptr<Headset> headset, gar
                  garden::GardenWindow& window, const std::optional<garden::ReplayScript>& script, bool desktopButton,
                  XrRunInfo& info, bool& desktopAsked, std::string& error) {
     int status = 0;
-    session.settings().viewportHeight = 1024;  // level selection: about a headset's pixels per eye
+    session.settings().viewportHeight = 1024;  // until the swapchains say the eye's height
     try {
         XrRun run(options, session, *headset, window, script, desktopButton);
         status = run.loop();

@@ -18,6 +18,7 @@
 #include <sstream>
 #include <memory>
 #include <thread>
+#include <utility>
 
 #include <glm/gtc/quaternion.hpp>
 #include <nlohmann/json.hpp>
@@ -49,7 +50,23 @@ XrPosef toXr(const garden::Pose& p) {
 
 namespace {
 
-const char* const kExtensions[] = {XR_KHR_OPENGL_ENABLE_EXTENSION_NAME, XR_KHR_COMPOSITION_LAYER_DEPTH_EXTENSION_NAME};
+struct Extension {
+    const char* name;
+    uint32_t version;
+};
+const Extension kExtensions[] = {{XR_KHR_OPENGL_ENABLE_EXTENSION_NAME, XR_KHR_opengl_enable_SPEC_VERSION},
+                                 {XR_KHR_COMPOSITION_LAYER_DEPTH_EXTENSION_NAME, XR_KHR_composition_layer_depth_SPEC_VERSION},
+                                 {XR_FB_DISPLAY_REFRESH_RATE_EXTENSION_NAME, XR_FB_display_refresh_rate_SPEC_VERSION}};
+
+// What the runtime offers: all of kExtensions, less XR_FB_display_refresh_rate
+// under HG_MOCK_XR_NO_REFRESH_RATE.
+std::vector<Extension> offeredExtensions() {
+    std::vector<Extension> v;
+    for (const Extension& e : kExtensions)
+        if (std::strcmp(e.name, XR_FB_DISPLAY_REFRESH_RATE_EXTENSION_NAME) != 0 || !std::getenv("HG_MOCK_XR_NO_REFRESH_RATE"))
+            v.push_back(e);
+    return v;
+}
 
 // --- events ----------------------------------------------------------------
 
@@ -77,6 +94,11 @@ void queueStopping(Session& s) {
     if (s.queuedState == XR_SESSION_STATE_SYNCHRONIZED) queueState(s, XR_SESSION_STATE_STOPPING);
 }
 
+XrEnvironmentBlendMode offeredBlendMode() {
+    const char* mode = std::getenv("HG_MOCK_XR_BLEND_MODE");
+    return mode && std::strcmp(mode, "additive") == 0 ? XR_ENVIRONMENT_BLEND_MODE_ADDITIVE : XR_ENVIRONMENT_BLEND_MODE_OPAQUE;
+}
+
 int raiseEvent(const std::string& event) {
     Runtime& rt = runtime();
     Session* s = rt.sessions.empty() ? nullptr : *rt.sessions.begin();
@@ -86,6 +108,18 @@ int raiseEvent(const std::string& event) {
         e.lossTime = nowNs() + kFramePeriodNs;
         pushEvent(&e, sizeof e);
         for (Instance* i : rt.instances) i->lost = true;
+        return 0;
+    }
+    if (event == "refresh_60") {
+        // The display now runs at 60 Hz (XR_FB_display_refresh_rate's event;
+        // the frames keep the mock's 90 Hz pacing).
+        if (s && s->instance->extensions.count(XR_FB_DISPLAY_REFRESH_RATE_EXTENSION_NAME)) {
+            XrEventDataDisplayRefreshRateChangedFB e{};
+            e.type = XR_TYPE_EVENT_DATA_DISPLAY_REFRESH_RATE_CHANGED_FB;
+            e.fromDisplayRefreshRate = s->refreshHz;
+            e.toDisplayRefreshRate = s->refreshHz = 60.0f;
+            pushEvent(&e, sizeof e);
+        }
         return 0;
     }
     if (event != "loss" && event != "exit" && event != "unfocus" && event != "focus") return -1;
@@ -153,6 +187,7 @@ void writeFrameLog() {
     j["frames_ended"] = l.framesEnded;
     j["frames_with_two_views"] = l.framesWithTwoViews;
     j["last_frame"] = {{"layers", l.layerTypes}, {"views", l.viewCount}, {"depth_views", l.depthViews},
+                       {"depth_format", l.depthFormat},
                        {"image_size", {l.imageWidth, l.imageHeight}}};
     j["interaction_profile"] = l.profile;
     j["haptic_pulses"] = l.hapticPulses;
@@ -189,14 +224,15 @@ XRAPI_ATTR XrResult XRAPI_CALL enumerateInstanceExtensionProperties(const char* 
                                                                      uint32_t* count, XrExtensionProperties* props) {
     if (layerName && *layerName) return XR_ERROR_API_LAYER_NOT_PRESENT;
     if (!count) return XR_ERROR_VALIDATION_FAILURE;
-    const uint32_t n = sizeof kExtensions / sizeof kExtensions[0];
+    const std::vector<Extension> offered = offeredExtensions();
+    const auto n = static_cast<uint32_t>(offered.size());
     *count = n;
     if (capacity == 0) return XR_SUCCESS;
     if (capacity < n) return XR_ERROR_SIZE_INSUFFICIENT;
     for (uint32_t i = 0; i < n; ++i) {
         if (props[i].type != XR_TYPE_EXTENSION_PROPERTIES) return XR_ERROR_VALIDATION_FAILURE;
-        std::snprintf(props[i].extensionName, XR_MAX_EXTENSION_NAME_SIZE, "%s", kExtensions[i]);
-        props[i].extensionVersion = i == 0 ? XR_KHR_opengl_enable_SPEC_VERSION : XR_KHR_composition_layer_depth_SPEC_VERSION;
+        std::snprintf(props[i].extensionName, XR_MAX_EXTENSION_NAME_SIZE, "%s", offered[i].name);
+        props[i].extensionVersion = offered[i].version;
     }
     return XR_SUCCESS;
 }
@@ -217,8 +253,8 @@ XRAPI_ATTR XrResult XRAPI_CALL createInstance(const XrInstanceCreateInfo* info, 
     auto inst = std::make_unique<Instance>();
     for (uint32_t i = 0; i < info->enabledExtensionCount; ++i) {
         const std::string name = info->enabledExtensionNames[i];
-        if (std::find_if(std::begin(kExtensions), std::end(kExtensions), [&](const char* e) { return name == e; }) ==
-            std::end(kExtensions))
+        const std::vector<Extension> offered = offeredExtensions();
+        if (std::none_of(offered.begin(), offered.end(), [&](const Extension& e) { return name == e.name; }))
             return XR_ERROR_EXTENSION_NOT_PRESENT;
         inst->extensions.insert(name);
     }
@@ -359,6 +395,16 @@ XRAPI_ATTR XrResult XRAPI_CALL getViewConfigurationProperties(XrInstance instanc
     return XR_SUCCESS;
 }
 
+// HG_MOCK_XR_VIEW_SIZE=WxH: the recommended size of each view (512 x 512
+// unless set; Monado's simulated headset has 640 x 720).
+std::pair<std::uint32_t, std::uint32_t> viewSize() {
+    unsigned w = 0, h = 0;
+    const char* spec = std::getenv("HG_MOCK_XR_VIEW_SIZE");
+    if (spec && std::sscanf(spec, "%ux%u", &w, &h) == 2 && w > 0 && h > 0 && w <= kMaxImageSize && h <= kMaxImageSize)
+        return {w, h};
+    return {kViewWidth, kViewHeight};
+}
+
 XRAPI_ATTR XrResult XRAPI_CALL enumerateViewConfigurationViews(XrInstance instance, XrSystemId id,
                                                                XrViewConfigurationType type, uint32_t capacity,
                                                                uint32_t* count, XrViewConfigurationView* views) {
@@ -370,8 +416,9 @@ XRAPI_ATTR XrResult XRAPI_CALL enumerateViewConfigurationViews(XrInstance instan
     if (capacity < 2) return XR_ERROR_SIZE_INSUFFICIENT;
     for (int i = 0; i < 2; ++i) {
         if (views[i].type != XR_TYPE_VIEW_CONFIGURATION_VIEW) return XR_ERROR_VALIDATION_FAILURE;
-        views[i].recommendedImageRectWidth = kViewWidth;
-        views[i].recommendedImageRectHeight = kViewHeight;
+        const auto [width, height] = viewSize();
+        views[i].recommendedImageRectWidth = width;
+        views[i].recommendedImageRectHeight = height;
         views[i].maxImageRectWidth = kMaxImageSize;
         views[i].maxImageRectHeight = kMaxImageSize;
         views[i].recommendedSwapchainSampleCount = 1;
@@ -388,7 +435,7 @@ XRAPI_ATTR XrResult XRAPI_CALL enumerateEnvironmentBlendModes(XrInstance instanc
     if (!count) return XR_ERROR_VALIDATION_FAILURE;
     *count = 1;
     if (capacity == 0) return XR_SUCCESS;
-    modes[0] = XR_ENVIRONMENT_BLEND_MODE_OPAQUE;
+    modes[0] = offeredBlendMode();
     return XR_SUCCESS;
 }
 
@@ -443,6 +490,10 @@ XRAPI_ATTR XrResult XRAPI_CALL getInstanceProcAddr(XrInstance instance, const ch
     if (instance) {
         Lock lock(runtime().mutex);
         if (!isLive(runtime().instances, instance)) return XR_ERROR_HANDLE_INVALID;
+        // An extension's functions only for an instance that enabled it.
+        if (n == "xrGetDisplayRefreshRateFB" &&
+            !asInstance(instance)->extensions.count(XR_FB_DISPLAY_REFRESH_RATE_EXTENSION_NAME))
+            return XR_ERROR_FUNCTION_UNSUPPORTED;
     }
     if (n == "xrGetInstanceProcAddr") {
         *function = entry(getInstanceProcAddr);

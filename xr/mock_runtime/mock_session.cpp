@@ -123,6 +123,16 @@ XRAPI_ATTR XrResult XRAPI_CALL requestExitSession(XrSession session) {
 
 // --- frames ------------------------------------------------------------------------
 
+constexpr std::int64_t kMonadoFirstPeriodNs = 16000000;
+
+// HG_MOCK_XR_APP_PERIODS=N: the display periods one app frame is paced to
+// (1 unless set to a whole number above 1).
+std::int64_t appPeriods() {
+    const char* n = std::getenv("HG_MOCK_XR_APP_PERIODS");
+    const long v = n ? std::strtol(n, nullptr, 10) : 1;
+    return v > 1 ? v : 1;
+}
+
 XRAPI_ATTR XrResult XRAPI_CALL waitFrame(XrSession session, const XrFrameWaitInfo* info, XrFrameState* state) {
     std::int64_t sleepUntil = 0;
     {
@@ -137,11 +147,16 @@ XRAPI_ATTR XrResult XRAPI_CALL waitFrame(XrSession session, const XrFrameWaitInf
         const auto range = rt.scheduledEvents.equal_range(s.waitCount);
         for (auto it = range.first; it != range.second; ++it) raiseEvent(it->second);
         // The next display refresh on the 90 Hz grid, one period ahead.
+        // With HG_MOCK_XR_APP_PERIODS, Monado's app pacing: the first frame
+        // a placeholder period (16 ms, before it knows the display), then a
+        // multiple of the display's period for an app slower than it.
+        const std::int64_t n = appPeriods();
+        const std::int64_t period = n == 1 ? kFramePeriodNs : s.waitCount == 1 ? kMonadoFirstPeriodNs : n * kFramePeriodNs;
         const std::int64_t now = nowNs();
         const std::int64_t next = (now / kFramePeriodNs + 1) * kFramePeriodNs;
         sleepUntil = s.lastDisplayTime > 0 ? std::min(next, s.lastDisplayTime) : 0;
-        state->predictedDisplayTime = std::max(next + kFramePeriodNs, s.lastDisplayTime + kFramePeriodNs);
-        state->predictedDisplayPeriod = kFramePeriodNs;
+        state->predictedDisplayTime = std::max(next + kFramePeriodNs, s.lastDisplayTime + period);
+        state->predictedDisplayPeriod = period;
         state->shouldRender = s.state == XR_SESSION_STATE_VISIBLE || s.state == XR_SESSION_STATE_FOCUSED;
         s.lastDisplayTime = state->predictedDisplayTime;
         ++s.waitsOutstanding;
@@ -199,6 +214,7 @@ XrResult checkProjection(Session& s, const XrCompositionLayerProjection& p, Fram
             if (d->minDepth < 0.0f || d->maxDepth > 1.0f || d->minDepth > d->maxDepth || d->nearZ == d->farZ)
                 return XR_ERROR_VALIDATION_FAILURE;
             ++log.depthViews;
+            log.depthFormat = asSwapchain(d->subImage.swapchain)->format;
         }
         if (v == 0) {
             log.imageWidth = static_cast<uint32_t>(sub.imageRect.extent.width);
@@ -221,7 +237,7 @@ XRAPI_ATTR XrResult XRAPI_CALL endFrame(XrSession session, const XrFrameEndInfo*
     if (!s.running) return XR_ERROR_SESSION_NOT_RUNNING;
     if (!s.frameBegun) return XR_ERROR_CALL_ORDER_INVALID;
     if (info->displayTime <= 0) return XR_ERROR_TIME_INVALID;
-    if (info->environmentBlendMode != XR_ENVIRONMENT_BLEND_MODE_OPAQUE) return XR_ERROR_ENVIRONMENT_BLEND_MODE_UNSUPPORTED;
+    if (info->environmentBlendMode != offeredBlendMode()) return XR_ERROR_ENVIRONMENT_BLEND_MODE_UNSUPPORTED;
     if (info->layerCount > kMaxLayers) return XR_ERROR_LAYER_LIMIT_EXCEEDED;
     if (info->layerCount > 0 && !info->layers) return XR_ERROR_VALIDATION_FAILURE;
     FrameLog log = rt.log;
@@ -259,7 +275,22 @@ XRAPI_ATTR XrResult XRAPI_CALL endFrame(XrSession session, const XrFrameEndInfo*
 
 }  // namespace
 
+namespace {
+
+// XR_FB_display_refresh_rate: the display's 90 Hz (until the "refresh_60"
+// event), whatever the app's pacing.
+XRAPI_ATTR XrResult XRAPI_CALL getDisplayRefreshRate(XrSession session, float* rate) {
+    Lock lock(runtime().mutex);
+    if (!isLive(runtime().sessions, session)) return XR_ERROR_HANDLE_INVALID;
+    if (!rate) return XR_ERROR_VALIDATION_FAILURE;
+    *rate = asSession(session)->refreshHz;
+    return asSession(session)->lossPending ? XR_SESSION_LOSS_PENDING : XR_SUCCESS;
+}
+
+}  // namespace
+
 void addSessionFunctions(FunctionTable& t) {
+    t["xrGetDisplayRefreshRateFB"] = entry(getDisplayRefreshRate);
     t["xrCreateSession"] = entry(createSession);
     t["xrDestroySession"] = entry(destroySession);
     t["xrBeginSession"] = entry(beginSession);

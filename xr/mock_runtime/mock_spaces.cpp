@@ -18,7 +18,14 @@ namespace hg::xr::mock {
 namespace {
 
 const std::int64_t kColorFormats[] = {GL_SRGB8_ALPHA8, GL_RGBA8};
-const std::int64_t kDepthFormats[] = {GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT32F};
+const std::int64_t kDepthFormats[] = {GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT32F, GL_DEPTH_COMPONENT16};
+
+// HG_MOCK_XR_NO_DEPTH24: no GL_DEPTH_COMPONENT24, as Monado's GL client
+// (it has no GL name for VK_FORMAT_X8_D24_UNORM_PACK32); 16-bit depth then.
+bool depthFormatOffered(std::int64_t f) {
+    const bool monado = std::getenv("HG_MOCK_XR_NO_DEPTH24") != nullptr;
+    return monado ? f != GL_DEPTH_COMPONENT24 : f != GL_DEPTH_COMPONENT16;
+}
 
 bool stageOffered() { return std::getenv("HG_MOCK_XR_NO_STAGE") == nullptr; }
 
@@ -188,7 +195,9 @@ XRAPI_ATTR XrResult XRAPI_CALL locateViews(XrSession session, const XrViewLocate
 // --- swapchains ------------------------------------------------------------------
 
 bool isColorFormat(std::int64_t f) { return std::find(std::begin(kColorFormats), std::end(kColorFormats), f) != std::end(kColorFormats); }
-bool isDepthFormat(std::int64_t f) { return std::find(std::begin(kDepthFormats), std::end(kDepthFormats), f) != std::end(kDepthFormats); }
+bool isDepthFormat(std::int64_t f) {
+    return depthFormatOffered(f) && std::find(std::begin(kDepthFormats), std::end(kDepthFormats), f) != std::end(kDepthFormats);
+}
 
 XRAPI_ATTR XrResult XRAPI_CALL enumerateSwapchainFormats(XrSession session, uint32_t capacity, uint32_t* count,
                                                          int64_t* formats) {
@@ -196,7 +205,8 @@ XRAPI_ATTR XrResult XRAPI_CALL enumerateSwapchainFormats(XrSession session, uint
     if (!isLive(runtime().sessions, session)) return XR_ERROR_HANDLE_INVALID;
     if (!count) return XR_ERROR_VALIDATION_FAILURE;
     std::vector<std::int64_t> all(std::begin(kColorFormats), std::end(kColorFormats));
-    all.insert(all.end(), std::begin(kDepthFormats), std::end(kDepthFormats));
+    for (std::int64_t f : kDepthFormats)
+        if (depthFormatOffered(f)) all.push_back(f);
     *count = static_cast<uint32_t>(all.size());
     if (capacity == 0) return XR_SUCCESS;
     if (capacity < all.size()) return XR_ERROR_SIZE_INSUFFICIENT;

@@ -91,6 +91,7 @@ struct Session {
     bool exitRequested = false;
     bool lossPending = false;
     bool focusedAfterFirstFrame = false;
+    float refreshHz = 1e9f / static_cast<float>(kFramePeriodNs);  // XR_FB_display_refresh_rate's
     int waitsOutstanding = 0;  // xrWaitFrame calls not yet followed by xrBeginFrame
     bool frameBegun = false;
     std::uint64_t waitCount = 0;
@@ -106,6 +107,7 @@ struct Session {
 struct FrameLog {
     std::uint64_t framesEnded = 0, framesWithTwoViews = 0, hapticPulses = 0;
     std::uint32_t layerCount = 0, viewCount = 0, depthViews = 0, imageWidth = 0, imageHeight = 0;
+    std::int64_t depthFormat = 0;  // the last depth view's swapchain format (GL)
     std::vector<std::string> layerTypes;
     std::string profile;
 };
@@ -151,6 +153,9 @@ int raiseEvent(const std::string& event);
 void writeFrameLog();
 void writeViewImage(const Swapchain& sc, const XrRect2Di& rect, const std::string& name);
 bool validOrientation(const XrQuaternionf& q);  // of unit length
+// The one environment blend mode offered: OPAQUE, or ADDITIVE under
+// HG_MOCK_XR_BLEND_MODE=additive (a see-through headset).
+XrEnvironmentBlendMode offeredBlendMode();
 XrPosef toXr(const garden::Pose& p);
 std::int64_t nowNs();
 
