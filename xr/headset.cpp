@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstring>
 
+#include "xr/local_floor.h"
 #include "xr/xr_result.h"
 
 namespace hg::xr {
@@ -41,9 +42,11 @@ Headset::Headset(const std::string& applicationName) {
                         XR_ERROR_EXTENSION_NOT_PRESENT);
     depthExtension_ = offered(extensions, XR_KHR_COMPOSITION_LAYER_DEPTH_EXTENSION_NAME);
     refreshRateExtension_ = offered(extensions, XR_FB_DISPLAY_REFRESH_RATE_EXTENSION_NAME);
+    localFloorExtension_ = offered(extensions, kLocalFloorExtensionName);
     std::vector<const char*> enabled = {XR_KHR_OPENGL_ENABLE_EXTENSION_NAME};
     if (depthExtension_) enabled.push_back(XR_KHR_COMPOSITION_LAYER_DEPTH_EXTENSION_NAME);
     if (refreshRateExtension_) enabled.push_back(XR_FB_DISPLAY_REFRESH_RATE_EXTENSION_NAME);
+    if (localFloorExtension_) enabled.push_back(kLocalFloorExtensionName);
 
     XrInstanceCreateInfo info{XR_TYPE_INSTANCE_CREATE_INFO};
     std::snprintf(info.applicationInfo.applicationName, XR_MAX_APPLICATION_NAME_SIZE, "%s", applicationName.c_str());
@@ -130,18 +133,33 @@ void Headset::createSession(GLFWwindow* window) {
         if (XR_SUCCEEDED(rate(session_, &hz)) && hz > 0.0f) refreshRate_ = hz;
     }
 
-    // The world's anchor: the stage (floor level), else LOCAL raised by a
-    // standing eye height. (XR_EXT_local_floor is not in loader 1.0.20.)
+    // The world's anchor: LOCAL_FLOOR (the floor under where the user
+    // stood, facing their way: the garden's start is in front of them
+    // wherever the stage's walls are), else the stage (floor level), else
+    // LOCAL raised by a standing eye height. A space the runtime lists may
+    // still be refused on the way (an API layer older than the extension
+    // rejects LOCAL_FLOOR's enum): the next one is taken then.
     uint32_t count = 0;
     check(xrEnumerateReferenceSpaces(session_, 0, &count, nullptr), "xrEnumerateReferenceSpaces");
     std::vector<XrReferenceSpaceType> spaces(count);
     check(xrEnumerateReferenceSpaces(session_, count, &count, spaces.data()), "xrEnumerateReferenceSpaces");
-    stage_ = std::find(spaces.begin(), spaces.end(), XR_REFERENCE_SPACE_TYPE_STAGE) != spaces.end();
-    XrReferenceSpaceCreateInfo space{XR_TYPE_REFERENCE_SPACE_CREATE_INFO};
-    space.referenceSpaceType = stage_ ? XR_REFERENCE_SPACE_TYPE_STAGE : XR_REFERENCE_SPACE_TYPE_LOCAL;
-    space.poseInReferenceSpace.orientation.w = 1.0f;
-    check(xrCreateReferenceSpace(session_, &space, &space_), "xrCreateReferenceSpace");
-    floorOffset_ = stage_ ? 0.0f : kStandingEyeHeight;
+    const auto listed = [&](XrReferenceSpaceType t) { return std::find(spaces.begin(), spaces.end(), t) != spaces.end(); };
+    std::vector<XrReferenceSpaceType> candidates;
+    if (localFloorExtension_ && listed(kReferenceSpaceLocalFloor)) candidates.push_back(kReferenceSpaceLocalFloor);
+    if (listed(XR_REFERENCE_SPACE_TYPE_STAGE)) candidates.push_back(XR_REFERENCE_SPACE_TYPE_STAGE);
+    candidates.push_back(XR_REFERENCE_SPACE_TYPE_LOCAL);  // every runtime has it
+    for (const XrReferenceSpaceType t : candidates) {
+        XrReferenceSpaceCreateInfo space{XR_TYPE_REFERENCE_SPACE_CREATE_INFO};
+        space.referenceSpaceType = t;
+        space.poseInReferenceSpace.orientation.w = 1.0f;
+        const XrResult made = xrCreateReferenceSpace(session_, &space, &space_);
+        if (t == XR_REFERENCE_SPACE_TYPE_LOCAL) check(made, "xrCreateReferenceSpace");
+        if (XR_SUCCEEDED(made)) {
+            spaceType_ = t;
+            break;
+        }
+    }
+    floorOffset_ = spaceType_ == XR_REFERENCE_SPACE_TYPE_LOCAL ? kStandingEyeHeight : 0.0f;
 
     // Swapchains: sRGB colour (the renderer writes sRGB-encoded values, and
     // the compositor decodes them), 24-bit depth when submitted.
@@ -341,6 +359,11 @@ void Headset::endFrame(const HeadsetFrame& frame, bool rendered, float nearZ, fl
     end.layerCount = rendered ? 1 : 0;
     end.layers = rendered ? layers : nullptr;
     check(xrEndFrame(session_, &end), "xrEndFrame");
+}
+
+const char* Headset::spaceName() const {
+    if (spaceType_ == kReferenceSpaceLocalFloor) return "LOCAL_FLOOR";
+    return spaceType_ == XR_REFERENCE_SPACE_TYPE_STAGE ? "STAGE" : "LOCAL";
 }
 
 }  // namespace hg::xr

@@ -81,11 +81,11 @@ public:
 
     XrInstance instance() const { return instance_; }
     XrSession session() const { return session_; }
-    XrSpace space() const { return space_; }  // the world's anchor: STAGE, else LOCAL
+    XrSpace space() const { return space_; }  // the world's anchor: LOCAL_FLOOR, else STAGE, else LOCAL
     // Added to heights located in space() so that 0 is the floor (LOCAL: the
     // standing eye height).
     float floorOffset() const { return floorOffset_; }
-    const char* spaceName() const { return stage_ ? "STAGE" : "LOCAL"; }
+    const char* spaceName() const;  // "LOCAL_FLOOR", "STAGE" or "LOCAL"
     bool depthSubmitted() const { return !depthSwapchains_.empty(); }
     // One eye's image size in pixels (after createSession; 0 before).
     std::array<int, 2> eyeSize() const {
@@ -121,7 +121,8 @@ private:
     bool refreshRateExtension_ = false;
     XrEnvironmentBlendMode blendMode_ = XR_ENVIRONMENT_BLEND_MODE_OPAQUE;
     float refreshRate_ = 0.0f;
-    bool stage_ = false;
+    bool localFloorExtension_ = false;
+    XrReferenceSpaceType spaceType_ = XR_REFERENCE_SPACE_TYPE_LOCAL;
     float floorOffset_ = 0.0f;
     std::int64_t colorFormat_ = 0;
     std::vector<Swapchain> colorSwapchains_, depthSwapchains_;

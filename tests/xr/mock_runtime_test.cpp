@@ -4,6 +4,11 @@
 // kind the program could hit).
 #include "mock_xr_fixture.h"
 
+#include <algorithm>
+#include <vector>
+
+#include "xr/local_floor.h"
+
 #include <unistd.h>
 
 #include <filesystem>
@@ -203,6 +208,22 @@ TEST_F(MockRuntime, SwapchainFormatUnsupported) {
     info.sampleCount = info.faceCount = info.arraySize = info.mipCount = 1;
     XrSwapchain s = XR_NULL_HANDLE;
     EXPECT_EQ(xrCreateSwapchain(session, &info, &s), XR_ERROR_SWAPCHAIN_FORMAT_UNSUPPORTED);
+}
+
+TEST_F(MockRuntime, LocalFloorOnlyWithItsExtension) {
+    // This instance did not enable XR_EXT_local_floor: the space is neither
+    // listed nor made.
+    makeSession();
+    uint32_t count = 0;
+    ASSERT_EQ(xrEnumerateReferenceSpaces(session, 0, &count, nullptr), XR_SUCCESS);
+    std::vector<XrReferenceSpaceType> spaces(count);
+    ASSERT_EQ(xrEnumerateReferenceSpaces(session, count, &count, spaces.data()), XR_SUCCESS);
+    EXPECT_EQ(std::count(spaces.begin(), spaces.end(), kReferenceSpaceLocalFloor), 0);
+    XrReferenceSpaceCreateInfo info{XR_TYPE_REFERENCE_SPACE_CREATE_INFO};
+    info.referenceSpaceType = kReferenceSpaceLocalFloor;
+    info.poseInReferenceSpace.orientation.w = 1.0f;
+    XrSpace space = XR_NULL_HANDLE;
+    EXPECT_EQ(xrCreateReferenceSpace(session, &info, &space), XR_ERROR_REFERENCE_SPACE_UNSUPPORTED);
 }
 
 class MockActions : public MockXr {

@@ -31,7 +31,7 @@ inline void useMockRuntime() {
     for (const char* v : {"HG_MOCK_XR_SCRIPT", "HG_MOCK_XR_EVENTS", "HG_MOCK_XR_CONTROL", "HG_MOCK_XR_READBACK",
                           "HG_MOCK_XR_NO_STAGE", "HG_MOCK_XR_HEAD_YAW", "HG_MOCK_XR_APP_PERIODS",
                           "HG_MOCK_XR_VIEW_SIZE", "HG_MOCK_XR_NO_REFRESH_RATE",
-                          "HG_MOCK_XR_NO_DEPTH24", "HG_MOCK_XR_BLEND_MODE", "XR_ENABLE_API_LAYERS"})
+                          "HG_MOCK_XR_NO_DEPTH24", "HG_MOCK_XR_BLEND_MODE", "HG_MOCK_XR_NO_LOCAL_FLOOR", "XR_ENABLE_API_LAYERS"})
         ::unsetenv(v);
     ::setenv("HG_MOCK_XR_NO_THROTTLE", "1", 1);
     // The user's own headset settings are not the tests' (a fresh file each test).

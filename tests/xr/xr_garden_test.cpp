@@ -34,7 +34,7 @@ TEST_F(XrGarden, ReachesFocusedAndSubmitsBothViews) {
     EXPECT_EQ(info.framesSubmitted, 12);
     EXPECT_GE(info.focusedFrames, 10) << "focused from the second frame on";
     EXPECT_EQ(info.framesRendered, 11) << "every frame once visible";
-    EXPECT_EQ(info.space, "STAGE");
+    EXPECT_EQ(info.space, "LOCAL_FLOOR") << "XR_EXT_local_floor offered";
     EXPECT_EQ(info.interactionProfile, "/interaction_profiles/oculus/touch_controller");
     EXPECT_TRUE(info.depthSubmitted);
     EXPECT_FALSE(info.lost);
@@ -336,8 +336,10 @@ TEST_F(XrGarden, LeftHandedSwitchedOnThePanelIsKeptForTheNextRun) {
 
 TEST_F(XrGarden, TheStickWalksWhereTheHeadLooks) {
     // The head turned 90 degrees right (+x); the navigation stick pushed
-    // forward: the rig goes along +x, not the rig's own forward (-z).
+    // forward: the rig goes along +x, not the rig's own forward (-z). On
+    // the stage: LOCAL_FLOOR would face the head's way (the next test).
     ::setenv("HG_MOCK_XR_HEAD_YAW", "90", 1);
+    ::setenv("HG_MOCK_XR_NO_LOCAL_FLOOR", "1", 1);
     const std::string s = script(R"([{"frames": 20, "navigation": {"aim": {"position": [-0.2, 1.0, -0.4]}, "thumbstick": [0, 1]}}])");
     ::setenv("HG_MOCK_XR_SCRIPT", s.c_str(), 1);
     XrOptions o;
@@ -424,8 +426,45 @@ TEST_F(XrGarden, LeftHandedTheLeftControllerCarves) {
     EXPECT_EQ(edits, 1u);
 }
 
+TEST_F(XrGarden, LocalFloorFacesTheGardenWhereverTheUserFaced) {
+    // The head turned 90 degrees right of the stage's forward when the
+    // session began: in LOCAL_FLOOR that way is forward, so the garden's
+    // start faces the user and the stick walks into the garden (-z).
+    ::setenv("HG_MOCK_XR_HEAD_YAW", "90", 1);
+    const std::string s = script(R"([{"frames": 20, "navigation": {"aim": {"position": [-0.2, 1.0, -0.4]}, "thumbstick": [0, 1]}}])");
+    ::setenv("HG_MOCK_XR_SCRIPT", s.c_str(), 1);
+    XrOptions o;
+    o.script = s;
+    o.mirror = false;
+    glm::vec3 eye(0.0f);
+    XrRunInfo info;
+    ASSERT_EQ(runXrGarden(o,
+                          [&](garden::GardenSession& xr, const XrRunInfo& i) {
+                              eye = xr.navigator().eye();
+                              info = i;
+                          }),
+              0);
+    EXPECT_EQ(info.space, "LOCAL_FLOOR");
+    EXPECT_LT(eye.z, -0.1f) << "walked into the garden, the way the garden's start looks";
+    EXPECT_NEAR(eye.x, 0.0f, 1e-3f);
+    EXPECT_NEAR(eye.y, 1.7f, 1e-3f) << "LOCAL_FLOOR's floor is the ground";
+}
+
+TEST_F(XrGarden, StageStandsInForAMissingLocalFloor) {
+    ::setenv("HG_MOCK_XR_NO_LOCAL_FLOOR", "1", 1);
+    XrOptions o;
+    o.garden = gardenFile;
+    o.frames = 4;
+    o.mirror = false;
+    XrRunInfo info;
+    ASSERT_EQ(runXrGarden(o, [&](garden::GardenSession&, const XrRunInfo& i) { info = i; }), 0);
+    EXPECT_EQ(info.space, "STAGE");
+    EXPECT_EQ(info.framesRendered, 3);
+}
+
 TEST_F(XrGarden, LocalSpaceStandsInForAMissingStage) {
     ::setenv("HG_MOCK_XR_NO_STAGE", "1", 1);
+    ::setenv("HG_MOCK_XR_NO_LOCAL_FLOOR", "1", 1);
     XrOptions o;
     o.garden = gardenFile;
     o.frames = 4;

@@ -56,14 +56,17 @@ struct Extension {
 };
 const Extension kExtensions[] = {{XR_KHR_OPENGL_ENABLE_EXTENSION_NAME, XR_KHR_opengl_enable_SPEC_VERSION},
                                  {XR_KHR_COMPOSITION_LAYER_DEPTH_EXTENSION_NAME, XR_KHR_composition_layer_depth_SPEC_VERSION},
-                                 {XR_FB_DISPLAY_REFRESH_RATE_EXTENSION_NAME, XR_FB_display_refresh_rate_SPEC_VERSION}};
+                                 {XR_FB_DISPLAY_REFRESH_RATE_EXTENSION_NAME, XR_FB_display_refresh_rate_SPEC_VERSION},
+                                 {kLocalFloorExtensionName, 1}};
 
 // What the runtime offers: all of kExtensions, less XR_FB_display_refresh_rate
-// under HG_MOCK_XR_NO_REFRESH_RATE.
+// under HG_MOCK_XR_NO_REFRESH_RATE and XR_EXT_local_floor under
+// HG_MOCK_XR_NO_LOCAL_FLOOR.
 std::vector<Extension> offeredExtensions() {
     std::vector<Extension> v;
     for (const Extension& e : kExtensions)
-        if (std::strcmp(e.name, XR_FB_DISPLAY_REFRESH_RATE_EXTENSION_NAME) != 0 || !std::getenv("HG_MOCK_XR_NO_REFRESH_RATE"))
+        if ((std::strcmp(e.name, XR_FB_DISPLAY_REFRESH_RATE_EXTENSION_NAME) != 0 || !std::getenv("HG_MOCK_XR_NO_REFRESH_RATE")) &&
+            (std::strcmp(e.name, kLocalFloorExtensionName) != 0 || !std::getenv("HG_MOCK_XR_NO_LOCAL_FLOOR")))
             v.push_back(e);
     return v;
 }

@@ -29,6 +29,9 @@ bool depthFormatOffered(std::int64_t f) {
 
 bool stageOffered() { return std::getenv("HG_MOCK_XR_NO_STAGE") == nullptr; }
 
+// LOCAL_FLOOR needs its extension enabled on the session's instance.
+bool localFloorOffered(const Session& s) { return s.instance->extensions.count(kLocalFloorExtensionName) != 0; }
+
 // --- spaces and views ------------------------------------------------------------
 
 garden::Pose headPose() {
@@ -41,7 +44,9 @@ garden::Pose headPose() {
 
 garden::Pose referencePose(XrReferenceSpaceType t) {
     if (t == XR_REFERENCE_SPACE_TYPE_STAGE) return garden::Pose{};
-    return headPose();  // LOCAL: where the head started; VIEW: where it is (it does not move)
+    garden::Pose head = headPose();  // LOCAL: where the head started; VIEW: where it is (it does not move)
+    if (t == kReferenceSpaceLocalFloor) head.position.y = 0.0f;  // the head only turns about the vertical
+    return head;
 }
 
 garden::Pose fromXr(const XrPosef& x) {
@@ -97,10 +102,9 @@ XRAPI_ATTR XrResult XRAPI_CALL enumerateReferenceSpaces(XrSession session, uint3
     Lock lock(runtime().mutex);
     if (!isLive(runtime().sessions, session)) return XR_ERROR_HANDLE_INVALID;
     if (!count) return XR_ERROR_VALIDATION_FAILURE;
-    const std::vector<XrReferenceSpaceType> offered =
-        stageOffered() ? std::vector<XrReferenceSpaceType>{XR_REFERENCE_SPACE_TYPE_VIEW, XR_REFERENCE_SPACE_TYPE_LOCAL,
-                                                           XR_REFERENCE_SPACE_TYPE_STAGE}
-                       : std::vector<XrReferenceSpaceType>{XR_REFERENCE_SPACE_TYPE_VIEW, XR_REFERENCE_SPACE_TYPE_LOCAL};
+    std::vector<XrReferenceSpaceType> offered = {XR_REFERENCE_SPACE_TYPE_VIEW, XR_REFERENCE_SPACE_TYPE_LOCAL};
+    if (stageOffered()) offered.push_back(XR_REFERENCE_SPACE_TYPE_STAGE);
+    if (localFloorOffered(*asSession(session))) offered.push_back(kReferenceSpaceLocalFloor);
     *count = static_cast<uint32_t>(offered.size());
     if (capacity == 0) return XR_SUCCESS;
     if (capacity < offered.size()) return XR_ERROR_SIZE_INSUFFICIENT;
@@ -116,7 +120,8 @@ XRAPI_ATTR XrResult XRAPI_CALL createReferenceSpace(XrSession session, const XrR
     if (!info || !out || info->type != XR_TYPE_REFERENCE_SPACE_CREATE_INFO) return XR_ERROR_VALIDATION_FAILURE;
     const XrReferenceSpaceType t = info->referenceSpaceType;
     if (t != XR_REFERENCE_SPACE_TYPE_VIEW && t != XR_REFERENCE_SPACE_TYPE_LOCAL &&
-        !(t == XR_REFERENCE_SPACE_TYPE_STAGE && stageOffered()))
+        !(t == XR_REFERENCE_SPACE_TYPE_STAGE && stageOffered()) &&
+        !(t == kReferenceSpaceLocalFloor && localFloorOffered(*asSession(session))))
         return XR_ERROR_REFERENCE_SPACE_UNSUPPORTED;
     if (!validOrientation(info->poseInReferenceSpace.orientation)) return XR_ERROR_POSE_INVALID;
     auto sp = std::make_unique<Space>();

@@ -15,6 +15,8 @@
 #include <epoxy/glx.h>
 #include <openxr/openxr.h>
 #include <openxr/openxr_platform.h>
+
+#include "xr/local_floor.h"
 #undef None
 #undef Status
 
