@@ -8,6 +8,7 @@
 #include "garden/render/gl_objects.h"
 #include "garden/render/overlay.h"
 #include "garden/render/panels.h"
+#include "garden/render/tool_gizmo.h"
 #include "garden/replay/replay_runner.h"
 #include "garden/replay/replay_script.h"
 #include "garden/scene/json_reader.h"
@@ -45,6 +46,8 @@ namespace hg::xr {
 namespace {
 
 constexpr float kNearZ = 0.05f, kFarZ = 500.0f;
+// The tool hand's ray into the air, stage metres (the world's at scale 1).
+constexpr float kToolRayLength = 1.5f;
 constexpr int kMirrorWidth = 640, kMirrorHeight = 640;
 constexpr const char* kMirrorTitle = "Hypergarden - headset mirror (left eye)";
 
@@ -277,6 +280,13 @@ private:
         session_.stats().uploadsPending = pending;
         sch.beginStage(garden::Stage::Render);
         const bool render = f.state.shouldRender && f.viewsValid;
+        // Where the tool hand's ray ends: on the sculpture it meets (the
+        // tool's gizmo goes there), else a while into the air.
+        std::optional<glm::vec3> toolEnd;
+        if (render && world.tool.tracked && !panel_.hovered() && session_.tool().kind != garden::ToolSettings::Kind::None) {
+            const auto hit = session_.toolHit(world.tool.aim);
+            toolEnd = hit ? hit->second : world.tool.aim.position + world.tool.aim.forward() * (kToolRayLength * scale_);
+        }
         if (render) {
             const StageRig r = rig();
             for (int eye = 0; eye < 2; ++eye) {
@@ -287,6 +297,7 @@ private:
                 const garden::Pose eyePose = poseOf(v.pose, heightOffset());
                 view_.render(session_, glm::ivec2(images.width, images.height), r.viewOf(eyePose), projectionOf(v.fov),
                              r.toWorld(eyePose.position));
+                drawTool(world.tool, toolEnd);
                 drawPanel(world.tool, projectionOf(v.fov) * r.viewOf(eyePose));
                 if (eye == 0 && options_.mirror) mirror(target, images);
                 glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -303,6 +314,17 @@ private:
         if (focused && options_.onFrame) options_.onFrame(stats, scriptFrame_ - 1);
         ++info_.framesSubmitted;
         if (options_.mirror) window_.swapBuffers();
+    }
+
+    // The tool in the tool hand, as the desktop draws it where the mouse
+    // points: its ray to `end`, and its gizmo (live size and shape) where
+    // the ray meets a sculpture; the selection's mirror plane and move
+    // gizmo as on the desktop.
+    void drawTool(const garden::HandState& tool, const std::optional<glm::vec3>& end) {
+        garden::drawToolGizmos(renderer_, session_, end ? std::optional<garden::Pose>(tool.aim) : std::nullopt);
+        if (end)
+            renderer_.drawLines({tool.aim.position, *end}, garden::toolColor(session_.tool()), garden::LineMode::Segments,
+                                true);
     }
 
     // The panel's board and the tool hand's ray onto it, over the scene.

@@ -13,6 +13,7 @@
 
 #include "garden/app/garden_session.h"
 #include "garden/render/renderer.h"
+#include "garden/render/tool_gizmo.h"
 #include "garden/replay/replay_runner.h"
 #include "garden/session/open_session.h"
 #include "voxel/volume.h"
@@ -352,16 +353,43 @@ TEST_F(XrGarden, TheStickWalksWhereTheHeadLooks) {
     EXPECT_NEAR(eye.y, 1.7f, 1e-3f) << "on the ground's level";
 }
 
-// Pixels of the panel's background colour in the left eye's last image.
-int panelPixels(const std::filesystem::path& png) {
+// Pixels of an sRGB colour (bytes, within 2) in the left eye's last image.
+int pixelsOf(const std::filesystem::path& png, const glm::ivec3& rgb) {
     int w = 0, h = 0, n = 0;
     unsigned char* px = stbi_load(png.c_str(), &w, &h, &n, 4);
     if (!px) return -1;
     int count = 0;
     for (int i = 0; i < w * h; ++i)
-        if (std::abs(px[i * 4] - 31) <= 2 && std::abs(px[i * 4 + 1] - 26) <= 2 && std::abs(px[i * 4 + 2] - 51) <= 2) ++count;
+        if (std::abs(px[i * 4] - rgb.r) <= 2 && std::abs(px[i * 4 + 1] - rgb.g) <= 2 && std::abs(px[i * 4 + 2] - rgb.b) <= 2)
+            ++count;
     stbi_image_free(px);
     return count;
+}
+
+// Pixels of the panel's background colour in the left eye's last image.
+int panelPixels(const std::filesystem::path& png) { return pixelsOf(png, glm::ivec3(31, 26, 51)); }
+
+TEST_F(XrGarden, TheToolIsDrawnWhereTheToolHandPoints) {
+    // The right hand aims at sculpture 'a' without pulling: with the carve
+    // tool in hand its ray and wire sphere show in the carve colour; with
+    // no tool (the morph selector) they do not, and nothing is carved.
+    const glm::vec4 carve = garden::toolColor(garden::ToolSettings{garden::ToolSettings::Kind::Carve});
+    const glm::ivec3 rgb(glm::round(glm::vec3(carve) * 255.0f));
+    for (const char* tool : {"carve", "none"}) {
+        const std::string s = script(std::string(R"([{"frames": 2, "commands": [{"sculpt_tool": {"kind": ")") + tool +
+                                     R"(", "radius": 0.12}}]},
+          {"frames": 6, "tool": {"aim": {"position": [0.1, 1.2, -1.0], "direction": [0.05, -0.65, -1.3]}, "trigger": 0}}])");
+        ::setenv("HG_MOCK_XR_SCRIPT", s.c_str(), 1);
+        XrOptions o;
+        o.script = s;
+        o.mirror = false;
+        std::size_t edits = 1;
+        ASSERT_EQ(runXrGarden(o, [&](garden::GardenSession& xr, const XrRunInfo&) { edits = xr.editCount(xr.findSculpture("a")); }), 0);
+        EXPECT_EQ(edits, 0u);
+        const int shown = pixelsOf(dir / "readback" / "left.png", rgb);
+        if (std::string(tool) == "carve") EXPECT_GT(shown, 60) << "the ray and the sphere in the carve colour";
+        else EXPECT_EQ(shown, 0) << "no tool, nothing drawn";
+    }
 }
 
 TEST_F(XrGarden, ThePanelIsInTheEyesImage) {
