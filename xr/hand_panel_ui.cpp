@@ -25,9 +25,10 @@ namespace {
 
 using Kind = garden::ToolSettings::Kind;
 
-// Two rows of four buttons across the top (the tools, undo, redo), a row
+// Two rows of five buttons across the top (the tools, undo, redo), a row
 // of three page buttons, then the page.
-constexpr float kCellX = kPanelPixelsX / 4.0f, kCellY = 40.0f, kButtonInset = 4.0f;
+constexpr int kButtonColumns = 5;
+constexpr float kCellX = static_cast<float>(kPanelPixelsX) / kButtonColumns, kCellY = 40.0f, kButtonInset = 4.0f;
 constexpr float kTop = 4.0f;
 constexpr float kPageCellX = kPanelPixelsX / 3.0f, kPageCellY = 30.0f;
 constexpr float kPagesY = kTop + 2.0f * kCellY;
@@ -45,14 +46,16 @@ constexpr float kTextRow = kFontLine + kSpacingY;
 constexpr float kToggleStep = 130.0f;
 constexpr garden::ToolWidgetLook kLook{220.0f, false, 104.0f};
 
-constexpr const char* kLabels[] = {"morph", "carve", "add", "melt", "perturb", "impacts", "undo", "redo"};
+constexpr const char* kLabels[] = {"morph", "carve", "add", "melt", "perturb", "impacts", "move", "undo", "redo"};
+static_assert(std::size(kLabels) == static_cast<std::size_t>(PanelButton::Count));
 constexpr const char* kPageLabels[] = {"tool", "sculpture", "settings"};
 constexpr const char* kSnapLabels[] = {"15 deg", "30 deg", "45 deg", "90 deg"};
 static_assert(std::size(kSnapLabels) == std::size(kSnapAngles));
 
 glm::vec2 buttonTopLeft(PanelButton b) {
     const int i = static_cast<int>(b);
-    return glm::vec2(static_cast<float>(i % 4) * kCellX + kButtonInset, kTop + static_cast<float>(i / 4) * kCellY);
+    return glm::vec2(static_cast<float>(i % kButtonColumns) * kCellX + kButtonInset,
+                     kTop + static_cast<float>(i / kButtonColumns) * kCellY);
 }
 const glm::vec2 kButtonSize(kCellX - 2.0f * kButtonInset, kCellY - 2.0f * kButtonInset);
 const glm::vec2 kPageButtonSize(kPageCellX - 2.0f * kButtonInset, kPageCellY - 2.0f * kButtonInset);
@@ -76,6 +79,7 @@ Kind toolOf(PanelButton b) {
         case PanelButton::Melt: return Kind::Melt;
         case PanelButton::Perturb: return Kind::Perturb;
         case PanelButton::Impacts: return Kind::Impacts;
+        case PanelButton::Move: return Kind::Move;
         default: return Kind::None;
     }
 }
@@ -306,7 +310,8 @@ void HandPanelUi::toolPage(garden::GardenSession& session) {
     ImGui::BeginGroup();
     garden::toolParameters(t, kLook);
     if (t.kind == Kind::None) ImGui::TextDisabled("the trigger picks the blend\non the ground triangle,\nor here");
-    else if (t.kind == Kind::Move) ImGui::TextDisabled("move: on the desktop only");
+    else if (t.kind == Kind::Move)
+        ImGui::TextDisabled("the trigger on a sculpture\nselects and drags it,\non its ring turns it;\ntool stick up, down: its scale");
     else ImGui::TextDisabled("tool stick: size, strength");
     ImGui::EndGroup();
     if (t.kind != Kind::None) return;
@@ -332,8 +337,8 @@ void HandPanelUi::toolPage(garden::GardenSession& session) {
 }
 
 void HandPanelUi::sculpturePage(garden::GardenSession& session) {
-    // No pointing at sculptures to select them in the headset (the move
-    // tool is the desktop's): the buttons step through the garden's.
+    // The move tool selects what the tool hand points at; the buttons step
+    // through the garden's sculptures too.
     const int count = static_cast<int>(session.sculptures().size());
     const glm::vec2 size(kLook.choiceWidth, kFrame);
     ImGui::SetCursorPos(ImVec2(kButtonInset, rowTop(0)));

@@ -18,6 +18,8 @@ double scaled(double v, double factor, double lo, double hi) { return std::clamp
 
 }  // namespace
 
+double selectionScaleFactor(glm::vec2 stick, double dt) { return std::exp2(live(stick.y) * dt); }
+
 void adjustTool(garden::ToolSettings& tool, glm::vec2 stick, double dt) {
     const double size = std::exp2(live(stick.y) * dt), strength = std::exp2(live(stick.x) * dt);
     if (size != 1.0) {

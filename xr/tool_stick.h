@@ -17,4 +17,8 @@ constexpr float kStickDeadZone = 0.15f;
 
 void adjustTool(garden::ToolSettings& tool, glm::vec2 stick, double dt);
 
+// With the move tool the stick's up and down scale the selected sculpture
+// instead, at the same rate: the factor for this frame (1 in the dead zone).
+double selectionScaleFactor(glm::vec2 stick, double dt);
+
 }  // namespace hg::xr

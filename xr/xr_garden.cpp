@@ -267,7 +267,10 @@ private:
             keepSettings();
         if (panel_.ownsTrigger()) world.tool.trigger = 0.0f;  // the trigger is the panel's
         // The tool stick reshapes the tool; the navigator must not fly with it.
-        adjustTool(session_.tool(), world.tool.thumbstick, periodMs > 0.0 ? periodMs / 1000.0 : 1.0 / 90.0);
+        if (session_.tool().kind == garden::ToolSettings::Kind::Move)
+            scaleSelection(world.tool, periodMs > 0.0 ? periodMs / 1000.0 : 1.0 / 90.0);
+        else
+            adjustTool(session_.tool(), world.tool.thumbstick, periodMs > 0.0 ? periodMs / 1000.0 : 1.0 / 90.0);
         world.tool.thumbstick = glm::vec2(0.0f);
         const bool wasStroking = session_.stroking();
         session_.update(world, periodMs > 0.0 ? periodMs / 1000.0 : 1.0 / 90.0);
@@ -314,6 +317,21 @@ private:
         if (focused && options_.onFrame) options_.onFrame(stats, scriptFrame_ - 1);
         ++info_.framesSubmitted;
         if (options_.mirror) window_.swapBuffers();
+    }
+
+    // The move tool's stick: up and down scale the selected sculpture live,
+    // one undoable move per push (not while the trigger drags it).
+    void scaleSelection(const garden::HandState& tool, double dt) {
+        const int s = session_.selected();
+        const double factor = selectionScaleFactor(tool.thumbstick, dt);
+        if (s < 0 || tool.trigger > 0.5f || factor == 1.0) {
+            if (scalingSelection_) session_.endLiveMove();
+            scalingSelection_ = false;
+            return;
+        }
+        garden::Placement p = session_.sculptures()[static_cast<std::size_t>(s)].placement;
+        p.scale = std::clamp(p.scale * factor, garden::kMinSculptureScale, garden::kMaxSculptureScale);
+        scalingSelection_ = session_.moveSculptureLive(s, p).empty();
     }
 
     // The tool in the tool hand, as the desktop draws it where the mouse
@@ -404,6 +422,7 @@ private:
     glm::vec3 startEye_{0.0f};
     float startYaw_ = 0.0f;
     bool menuHeld_ = false;
+    bool scalingSelection_ = false;  // the move tool's stick holds a live move
     double minPeriodMs_ = 0.0;  // the smallest predicted display period seen
     XrRunInfo info_;
     std::string runtimeName_;

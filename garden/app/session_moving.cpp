@@ -85,8 +85,12 @@ void GardenSession::endLiveMove() {
 
 void GardenSession::moveWithHands(const HandState& h) {
     if (!h.tracked || h.trigger <= 0.5f) {
-        moveDrag_.reset();
-        endLiveMove();
+        // The drag's live move ends with it; another (the headset's tool
+        // stick scaling) is its owner's to end.
+        if (moveDrag_) {
+            moveDrag_.reset();
+            endLiveMove();
+        }
         toolArmed_ = true;
         return;
     }

@@ -83,7 +83,8 @@ SculptCommand readSculptCommand(const std::string& key, const nlohmann::json& v,
     else if (kind == "add") c.settings.kind = K::Add;
     else if (kind == "melt") c.settings.kind = K::Melt;
     else if (kind == "perturb") c.settings.kind = K::Perturb;
-    else throw JsonError(r.pathOf("kind"), "expected none, carve, add, melt or perturb");
+    else if (kind == "move") c.settings.kind = K::Move;
+    else throw JsonError(r.pathOf("kind"), "expected none, carve, add, melt, perturb or move");
     if (r.has("radius")) c.settings.radius = readNumber(r.required("radius"), r.pathOf("radius"), 1e-6, 100.0);
     if (r.has("softness")) c.settings.softness = readNumber(r.required("softness"), r.pathOf("softness"), 0.01, 64.0);
     if (r.has("shape")) c.settings.shape = readQuadricShape(r.required("shape"), r.pathOf("shape"));

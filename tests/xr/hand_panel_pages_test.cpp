@@ -67,6 +67,34 @@ TEST_F(HandPanelPages, PerturbShapeChosenOnThePanel) {
     EXPECT_EQ(tool.shape, garden::QuadricShape::Ellipsoid);
 }
 
+TEST_F(HandPanelPages, TheMoveToolSelectsWhatTheHandPointsAtAndTheStickScalesIt) {
+    // The panel's move button; the ray on sculpture 'a', a pull and a let
+    // go (no drag): 'a' is selected, nothing moved. Then the tool stick up
+    // for half a second grows it live, one undoable move.
+    const std::string aim = R"("aim": {"position": [0.1, 1.2, -1.0], "direction": [0.05, -0.65, -1.3]})";
+    Kind kind = Kind::None;
+    int selected = -1;
+    double scale = 0.0, undone = 0.0, start = -1.0;
+    run("[" + press(panelButtonCenter(PanelButton::Move)) + R"(, {"frames": 3, "tool": {)" + aim + R"(, "trigger": 1}},
+         {"frames": 2, "tool": {)" + aim + R"(, "trigger": 0}},
+         {"frames": 45, "tool": {)" + aim + R"(, "thumbstick": [0, 1]}},
+         {"frames": 3, "tool": {)" + aim + "}}]",
+        [&](garden::GardenSession& xr) {
+            kind = xr.tool().kind;
+            const int a = xr.findSculpture("a");
+            selected = xr.selected() == a ? 0 : xr.selected();
+            start = garden::Placement{}.scale;  // the small garden gives its balls no scale
+            scale = xr.sculptures()[static_cast<std::size_t>(a)].placement.scale;
+            xr.undo();
+            undone = xr.sculptures()[static_cast<std::size_t>(a)].placement.scale;
+        });
+    EXPECT_EQ(kind, Kind::Move);
+    EXPECT_EQ(selected, 0) << "sculpture 'a', pointed at, is selected";
+    // Full tilt doubles in a second: about 2^0.5 in 45 frames at 90 Hz.
+    EXPECT_NEAR(scale / start, std::sqrt(2.0), 0.05);
+    EXPECT_EQ(undone, start) << "one undo takes the whole push back";
+}
+
 TEST_F(HandPanelPages, ImpactShapeAndSpreadChosenOnThePanel) {
     garden::ToolSettings tool;
     run("[" + press(panelButtonCenter(PanelButton::Impacts)) + ", " + press(panelChoiceCenter(PanelChoice::ImpactShape, 2)) +
@@ -97,8 +125,8 @@ TEST_F(HandPanelPages, TheSculpturePageMirrorsAndDiscardsTheSelectedSculpturesEd
             press(panelActionCenter(PanelAction::NextSculpture)) + ", " + press(panelToggleCenter(PanelToggle::Mirror)) +
             R"(, {"frames": 2}])",
         [&](garden::GardenSession& xr) {
-            selected = xr.selected();
             const int a = xr.findSculpture("a");
+            selected = xr.selected() == a ? 0 : xr.selected();
             edits = xr.editCount(a);
             mirrored = xr.sculptures()[static_cast<std::size_t>(a)].mirror.has_value();
         });
