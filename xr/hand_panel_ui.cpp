@@ -1,5 +1,8 @@
 #include "xr/hand_panel_ui.h"
 
+#include <cstdint>
+#include <optional>
+
 #include "garden/app/garden_session.h"
 #include "garden/render/gl_context.h"
 #include "garden/render/gl_objects.h"
@@ -170,9 +173,34 @@ struct HandPanelUi::Gl {
     garden::gl::Buffer vertices = garden::gl::Buffer::create();
     glm::vec2 selector{0.5f, 0.3f};  // the morph triangle's point
     bool selectorSet = false;
+    std::optional<std::uint64_t> drawn;  // drawDataHash of what the texture shows
 };
 
 namespace {
+
+// FNV-1a over what ImGui would draw (vertices, indices, clip rectangles,
+// textures): equal hashes draw the same pixels.
+std::uint64_t drawDataHash(const ImDrawData& d) {
+    std::uint64_t h = 1469598103934665603ull;
+    const auto mix = [&h](const void* p, std::size_t n) {
+        const auto* b = static_cast<const unsigned char*>(p);
+        for (std::size_t i = 0; i < n; ++i) h = (h ^ b[i]) * 1099511628211ull;
+    };
+    for (int l = 0; l < d.CmdListsCount; ++l) {
+        const ImDrawList& list = *d.CmdLists[l];
+        mix(list.VtxBuffer.Data, static_cast<std::size_t>(list.VtxBuffer.Size) * sizeof(ImDrawVert));
+        mix(list.IdxBuffer.Data, static_cast<std::size_t>(list.IdxBuffer.Size) * sizeof(ImDrawIdx));
+        for (const ImDrawCmd& c : list.CmdBuffer) {
+            mix(&c.ClipRect, sizeof c.ClipRect);
+            mix(&c.TextureId, sizeof c.TextureId);
+            mix(&c.ElemCount, sizeof c.ElemCount);
+            mix(&c.IdxOffset, sizeof c.IdxOffset);
+            mix(&c.VtxOffset, sizeof c.VtxOffset);
+        }
+    }
+    return h;
+}
+
 
 // Makes `ours` current for a scope, then the one before it again.
 class ContextScope {
@@ -290,6 +318,11 @@ bool HandPanelUi::update(garden::GardenSession& session, const HandPanel& panel,
     ImGui::End();
     ImGui::Render();
 
+    // Most frames the board looks as it did: the texture (drawn and
+    // mipmapped, a cost on a software rasterizer) is kept then.
+    const std::uint64_t hash = drawDataHash(*ImGui::GetDrawData());
+    if (gl_->drawn == hash) return changed;
+    gl_->drawn = hash;
     GLint framebufferBefore = 0;
     glGetIntegerv(GL_FRAMEBUFFER_BINDING, &framebufferBefore);
     glBindFramebuffer(GL_FRAMEBUFFER, gl_->fbo.get());
