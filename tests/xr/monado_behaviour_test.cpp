@@ -5,7 +5,7 @@
 // or else the smallest period seen), eyes of another size than the mock's
 // (the level selection follows the eye's height) and not square (the mirror
 // keeps the aspect).
-#include "mock_xr_fixture.h"
+#include "xr_garden_fixture.h"
 
 #include <fstream>
 #include <vector>
@@ -13,7 +13,6 @@
 #include <nlohmann/json.hpp>
 #include <stb/stb_image.h>
 
-#include "../garden/session_garden.h"
 #include "garden/app/frame_stats.h"
 #include "garden/app/garden_session.h"
 #include "garden/render/renderer.h"
@@ -25,16 +24,8 @@ namespace {
 
 constexpr double kDisplayPeriodMs = 11.111111;  // the mock's 90 Hz
 
-class MonadoLike : public garden::test::SmallGarden {
+class MonadoLike : public XrGarden {
 protected:
-    void SetUp() override {
-        garden::test::SmallGarden::SetUp();
-        HG_REQUIRE_DISPLAY();
-        useMockRuntime();
-        ::setenv("HG_MOCK_XR_READBACK", (dir / "readback").c_str(), 1);
-        gardenFile = writeGarden(nlohmann::json::parse(
-            R"({"start": {"position": [0, 1.7, 0], "look_at": [0, 1.7, -1]}, "morph": null})"));
-    }
     void TearDown() override {
         ::unsetenv("HG_MOCK_XR_APP_PERIODS");
         ::unsetenv("HG_MOCK_XR_VIEW_SIZE");
@@ -42,22 +33,15 @@ protected:
         ::unsetenv("HG_MOCK_XR_NO_DEPTH24");
         ::unsetenv("HG_MOCK_XR_BLEND_MODE");
         ::unsetenv("HG_MOCK_XR_EVENTS");
+        XrGarden::TearDown();
     }
-    nlohmann::json readback() {
-        std::ifstream in(dir / "readback" / "frames.json");
-        return nlohmann::json::parse(in);
-    }
-    std::string gardenFile;
 };
 
 TEST_F(MonadoLike, TheBudgetIsTheDisplaysPeriodWhileTheRuntimePacesASlowApp) {
     // As Monado: a 16 ms placeholder first, then each frame paced to three
     // display periods; the display's 90 Hz through XR_FB_display_refresh_rate.
     ::setenv("HG_MOCK_XR_APP_PERIODS", "3", 1);
-    XrOptions o;
-    o.garden = gardenFile;
-    o.frames = 10;
-    o.mirror = false;
+    XrOptions o = framesRun(10);
     std::vector<double> budgets;
     o.onFrame = [&](const garden::FrameStats& s, int) { budgets.push_back(s.budgetMs); };
     ASSERT_EQ(runXrGarden(o), 0);
@@ -67,10 +51,7 @@ TEST_F(MonadoLike, TheBudgetIsTheDisplaysPeriodWhileTheRuntimePacesASlowApp) {
 
 TEST_F(MonadoLike, WithoutTheRefreshRateTheBudgetIsTheSmallestPeriodSeen) {
     ::setenv("HG_MOCK_XR_NO_REFRESH_RATE", "1", 1);
-    XrOptions o;
-    o.garden = gardenFile;
-    o.frames = 6;
-    o.mirror = false;
+    XrOptions o = framesRun(6);
     std::vector<double> budgets;
     o.onFrame = [&](const garden::FrameStats& s, int) { budgets.push_back(s.budgetMs); };
     ASSERT_EQ(runXrGarden(o), 0);
@@ -82,10 +63,7 @@ TEST_F(MonadoLike, EyesThatAreNotSquareAreDrawnWhole) {
     // Monado's simulated headset under its main compositor: 1280 x 720
     // split side by side.
     ::setenv("HG_MOCK_XR_VIEW_SIZE", "640x720", 1);
-    XrOptions o;
-    o.garden = gardenFile;
-    o.frames = 6;
-    o.mirror = false;
+    XrOptions o = framesRun(6);
     XrRunInfo info;
     ASSERT_EQ(runXrGarden(o, [&](garden::GardenSession&, const XrRunInfo& i) { info = i; }), 0);
     EXPECT_EQ(info.framesRendered, 5);
@@ -111,10 +89,7 @@ TEST_F(MonadoLike, EyesThatAreNotSquareAreDrawnWhole) {
 TEST_F(MonadoLike, LevelsAreChosenForTheEyesOwnHeight) {
     // Monado's null compositor recommends 128 x 128 per eye.
     ::setenv("HG_MOCK_XR_VIEW_SIZE", "128x128", 1);
-    XrOptions o;
-    o.garden = gardenFile;
-    o.frames = 4;
-    o.mirror = false;
+    XrOptions o = framesRun(4);
     int height = 0;
     ASSERT_EQ(runXrGarden(o, [&](garden::GardenSession& s, const XrRunInfo&) { height = s.settings().viewportHeight; }), 0);
     EXPECT_EQ(height, 128);
@@ -124,10 +99,7 @@ TEST_F(MonadoLike, LevelsAreChosenForTheEyesOwnHeight) {
 TEST_F(MonadoLike, DepthIsSubmittedWithoutA24BitFormat) {
     // Monado's GL client offers 32-bit float and 16-bit depth, never GL_DEPTH_COMPONENT24.
     ::setenv("HG_MOCK_XR_NO_DEPTH24", "1", 1);
-    XrOptions o;
-    o.garden = gardenFile;
-    o.frames = 4;
-    o.mirror = false;
+    XrOptions o = framesRun(4);
     XrRunInfo info;
     ASSERT_EQ(runXrGarden(o, [&](garden::GardenSession&, const XrRunInfo& i) { info = i; }), 0);
     EXPECT_TRUE(info.depthSubmitted);
@@ -139,10 +111,7 @@ TEST_F(MonadoLike, DepthIsSubmittedWithoutA24BitFormat) {
 TEST_F(MonadoLike, TheBudgetFollowsTheDisplaysRefreshRateWhenItChanges) {
     // XR_FB_display_refresh_rate's event: the display goes from 90 to 60 Hz.
     ::setenv("HG_MOCK_XR_EVENTS", "5:refresh_60", 1);
-    XrOptions o;
-    o.garden = gardenFile;
-    o.frames = 10;
-    o.mirror = false;
+    XrOptions o = framesRun(10);
     std::vector<double> budgets;
     o.onFrame = [&](const garden::FrameStats& s, int) { budgets.push_back(s.budgetMs); };
     ASSERT_EQ(runXrGarden(o), 0);
@@ -154,10 +123,7 @@ TEST_F(MonadoLike, TheBudgetFollowsTheDisplaysRefreshRateWhenItChanges) {
 TEST_F(MonadoLike, ASeeThroughHeadsetGetsFramesInItsBlendMode) {
     // Monado's simulated headset offers OPAQUE only; another may offer only ADDITIVE.
     ::setenv("HG_MOCK_XR_BLEND_MODE", "additive", 1);
-    XrOptions o;
-    o.garden = gardenFile;
-    o.frames = 5;
-    o.mirror = false;
+    XrOptions o = framesRun(5);
     XrRunInfo info;
     ASSERT_EQ(runXrGarden(o, [&](garden::GardenSession&, const XrRunInfo& i) { info = i; }), 0)
         << "xrEndFrame refuses OPAQUE";

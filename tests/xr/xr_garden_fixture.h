@@ -15,6 +15,7 @@
 #include "../garden/session_garden.h"
 #include "garden/hands/hand_state.h"
 #include "xr/hand_panel.h"
+#include "xr/xr_garden.h"
 
 namespace hg::xr::test {
 
@@ -34,6 +35,14 @@ protected:
         const std::string path = (dir / "carve.json").string();
         std::ofstream(path) << R"({"garden": "garden.json", "steps": )" << steps << "}";
         return path;
+    }
+    // A run of `frames` frames on the garden, without the mirror window.
+    XrOptions framesRun(int frames) const {
+        XrOptions o;
+        o.garden = gardenFile;
+        o.frames = frames;
+        o.mirror = false;
+        return o;
     }
     nlohmann::json readback() {
         std::ifstream in(dir / "readback" / "frames.json");

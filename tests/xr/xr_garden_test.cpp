@@ -26,10 +26,7 @@ namespace hg::xr::test {
 namespace {
 
 TEST_F(XrGarden, ReachesFocusedAndSubmitsBothViews) {
-    XrOptions o;
-    o.garden = gardenFile;
-    o.frames = 12;
-    o.mirror = false;
+    XrOptions o = framesRun(12);
     XrRunInfo info;
     ASSERT_EQ(runXrGarden(o, [&](garden::GardenSession&, const XrRunInfo& i) { info = i; }), 0);
     EXPECT_EQ(info.framesSubmitted, 12);
@@ -425,10 +422,7 @@ TEST_F(XrGarden, InstanceLossEndsTheRun) {
 TEST_F(XrGarden, UnfocusedFramesRenderWithoutInput) {
     // The runtime takes focus away for frames 6 to 15 (a system menu, say).
     ::setenv("HG_MOCK_XR_EVENTS", "6:unfocus,16:focus", 1);
-    XrOptions o;
-    o.garden = gardenFile;
-    o.frames = 24;
-    o.mirror = false;
+    XrOptions o = framesRun(24);
     XrRunInfo info;
     ASSERT_EQ(runXrGarden(o, [&](garden::GardenSession&, const XrRunInfo& i) { info = i; }), 0);
     EXPECT_EQ(info.framesRendered, 23) << "visible all along";
@@ -478,29 +472,15 @@ TEST_F(XrGarden, LocalFloorFacesTheGardenWhereverTheUserFaced) {
     EXPECT_NEAR(eye.y, 1.7f, 1e-3f) << "LOCAL_FLOOR's floor is the ground";
 }
 
-TEST_F(XrGarden, StageStandsInForAMissingLocalFloor) {
+TEST_F(XrGarden, StageStandsInForAMissingLocalFloorAndLocalForBoth) {
     ::setenv("HG_MOCK_XR_NO_LOCAL_FLOOR", "1", 1);
-    XrOptions o;
-    o.garden = gardenFile;
-    o.frames = 4;
-    o.mirror = false;
-    XrRunInfo info;
-    ASSERT_EQ(runXrGarden(o, [&](garden::GardenSession&, const XrRunInfo& i) { info = i; }), 0);
-    EXPECT_EQ(info.space, "STAGE");
-    EXPECT_EQ(info.framesRendered, 3);
-}
-
-TEST_F(XrGarden, LocalSpaceStandsInForAMissingStage) {
-    ::setenv("HG_MOCK_XR_NO_STAGE", "1", 1);
-    ::setenv("HG_MOCK_XR_NO_LOCAL_FLOOR", "1", 1);
-    XrOptions o;
-    o.garden = gardenFile;
-    o.frames = 4;
-    o.mirror = false;
-    XrRunInfo info;
-    ASSERT_EQ(runXrGarden(o, [&](garden::GardenSession&, const XrRunInfo& i) { info = i; }), 0);
-    EXPECT_EQ(info.space, "LOCAL");
-    EXPECT_EQ(info.framesRendered, 3);
+    for (const char* expected : {"STAGE", "LOCAL"}) {
+        if (std::string(expected) == "LOCAL") ::setenv("HG_MOCK_XR_NO_STAGE", "1", 1);
+        XrRunInfo info;
+        ASSERT_EQ(runXrGarden(framesRun(4), [&](garden::GardenSession&, const XrRunInfo& i) { info = i; }), 0);
+        EXPECT_EQ(info.space, expected);
+        EXPECT_EQ(info.framesRendered, 3);
+    }
 }
 
 }  // namespace
