@@ -525,20 +525,13 @@ int runXrGarden(const XrOptions& options,
         wo.title = kMirrorTitle;
         garden::GardenWindow window(wo, options.mirror || options.desktop.has_value());
         garden::SessionSettings settings;
-        garden::OpenedSession opened;
-        if (load) {
-            opened.session = std::make_unique<garden::GardenSession>(std::move(*load), settings);
-        } else {
-            opened = garden::openSession(options.session, gardenFile, settings);
-            if (!opened.error.empty()) {
-                std::cerr << "error: " << opened.error << "\n";
-                return opened.exitStatus;
-            }
-            for (const std::string& n : opened.notes) std::cerr << "note: " << n << "\n";
+        garden::OpenedSession opened = garden::openLoadedOrSession(std::move(load), options.session, gardenFile, settings);
+        if (!opened.error.empty()) {
+            std::cerr << "error: " << opened.error << "\n";
+            return opened.exitStatus;
         }
+        for (const std::string& m : garden::openedMessages(opened)) std::cerr << m << "\n";
         garden::GardenSession& session = *opened.session;
-        for (const garden::Sculpture& s : session.sculptures())
-            if (s.missing()) std::cerr << "warning: sculpture '" << s.name << "' is missing: " << s.error << "\n";
         XrRunInfo info;
         bool desktopAsked = false;
         std::string error;

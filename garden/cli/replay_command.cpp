@@ -14,16 +14,6 @@
 
 namespace hg::garden::cli {
 
-namespace {
-
-// Prints what is missing from a garden that opened anyway.
-void reportMissing(const GardenSession& session) {
-    for (const Sculpture& s : session.sculptures())
-        if (s.missing()) std::cerr << "warning: sculpture '" << s.name << "' is missing: " << s.error << (s.error.empty() || s.error.back() != '\n' ? "\n" : "");
-}
-
-}  // namespace
-
 int runReplay(const ReplayCommandOptions& options) {
     ReplayScript script;
     try {
@@ -54,24 +44,21 @@ int runReplay(const ReplayCommandOptions& options) {
     settings.viewportHeight = height;
     // The garden, or a session folder made from it (its journal replayed,
     // the script's actions journalled).
-    OpenedSession opened;
-    if (!options.session.empty()) {
-        opened = openSession(options.session, script.garden, settings);
-        if (!opened.error.empty()) {
-            std::cerr << "error: " << opened.error << "\n";
-            return opened.exitStatus;
-        }
-        for (const std::string& n : opened.notes) std::cerr << "note: " << n << "\n";
-    } else {
-        GardenLoad load = loadGarden(script.garden);
-        if (!load.ok()) {
-            std::cerr << "error: " << load.error << "\n";
+    std::optional<GardenLoad> load;
+    if (options.session.empty()) {
+        load = loadGarden(script.garden);
+        if (!load->ok()) {
+            std::cerr << "error: " << load->error << "\n";
             return 2;
         }
-        opened.session = std::make_unique<GardenSession>(std::move(load), settings);
     }
+    OpenedSession opened = openLoadedOrSession(std::move(load), options.session, script.garden, settings);
+    if (!opened.error.empty()) {
+        std::cerr << "error: " << opened.error << "\n";
+        return opened.exitStatus;
+    }
+    for (const std::string& m : openedMessages(opened)) std::cerr << m << "\n";
     GardenSession& session = *opened.session;
-    reportMissing(session);
 
     std::unique_ptr<OffscreenGarden> offscreen;
     if (!options.headless) {

@@ -130,19 +130,12 @@ int runDesktopGarden(const DesktopOptions& options) {
         SessionSettings settings;
         settings.scheduler.budgetMs = options.budgetMs;
         settings.viewportHeight = window.window().framebufferSize().y;
-        OpenedSession opened;
-        if (load) {
-            opened.session = std::make_unique<GardenSession>(std::move(*load), settings);
-        } else {
-            opened = openSession(options.session, options.garden, settings);
-            if (!opened.error.empty()) {
-                std::cerr << "error: " << opened.error << "\n";
-                return opened.exitStatus;
-            }
-            for (const std::string& n : opened.notes) std::cerr << "note: " << n << "\n";
+        OpenedSession opened = openLoadedOrSession(std::move(load), options.session, options.garden, settings);
+        if (!opened.error.empty()) {
+            std::cerr << "error: " << opened.error << "\n";
+            return opened.exitStatus;
         }
-        for (const Sculpture& s : opened.session->sculptures())
-            if (s.missing()) std::cerr << "warning: sculpture '" << s.name << "' is missing: " << s.error << "\n";
+        for (const std::string& m : openedMessages(opened)) std::cerr << m << "\n";
         return runDesktopOn(*opened.session, window, options);
     } catch (const GlError& e) {
         std::cerr << "error: " << e.what() << "\n";

@@ -34,4 +34,27 @@ OpenedSession openSession(const std::string& dir, const std::string& gardenFile,
     return out;
 }
 
+OpenedSession openLoadedOrSession(std::optional<GardenLoad> loaded, const std::string& dir, const std::string& gardenFile,
+                                  const SessionSettings& settings) {
+    if (dir.empty() && loaded) {
+        OpenedSession out;
+        out.session = std::make_unique<GardenSession>(std::move(*loaded), settings);
+        return out;
+    }
+    return openSession(dir, gardenFile, settings);
+}
+
+std::vector<std::string> openedMessages(const OpenedSession& opened) {
+    std::vector<std::string> lines;
+    for (const std::string& n : opened.notes) lines.push_back("note: " + n);
+    if (opened.session)
+        for (const Sculpture& s : opened.session->sculptures()) {
+            if (!s.missing()) continue;
+            std::string error = s.error;
+            while (!error.empty() && error.back() == '\n') error.pop_back();  // a parser's message may end its line
+            lines.push_back("warning: sculpture '" + s.name + "' is missing: " + error);
+        }
+    return lines;
+}
+
 }  // namespace hg::garden

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,5 +24,16 @@ struct OpenedSession {
 
 // `gardenFile` is used only when `dir` holds no session yet.
 OpenedSession openSession(const std::string& dir, const std::string& gardenFile, const SessionSettings& settings);
+
+// How the desktop window, the headset and replay open their garden: with no
+// session folder, `loaded` (a garden file already read and accepted; nothing
+// journalled), else the folder `dir` as openSession opens it.
+OpenedSession openLoadedOrSession(std::optional<GardenLoad> loaded, const std::string& dir, const std::string& gardenFile,
+                                  const SessionSettings& settings);
+
+// What the user is told once a garden opened, a line each (no newline):
+// the session's notes ("note: ...") and every missing sculpture
+// ("warning: sculpture 'NAME' is missing: ...").
+std::vector<std::string> openedMessages(const OpenedSession& opened);
 
 }  // namespace hg::garden

@@ -46,6 +46,29 @@ void sculpt(GardenSession& s) {
     ASSERT_EQ(s.applyStroke(s.findSculpture("c"), StrokeTool::Add, {{2.6, 0.5, 1.15}, {2.8, 0.6, 1.15}}, 0.1), "");
 }
 
+TEST_F(SessionFolderTest, AGardenOpensLoadedOrInItsFolderWithItsMessages) {
+    const std::string garden = writeGarden();
+    // No folder: the loaded garden as it is, nothing journalled, only the
+    // missing sculpture to tell (its message on one line).
+    OpenedSession loaded = openLoadedOrSession(loadGarden(garden), "", garden, test::smallSessionSettings());
+    ASSERT_TRUE(loaded.error.empty()) << loaded.error;
+    ASSERT_TRUE(loaded.session);
+    EXPECT_FALSE(loaded.recorder);
+    std::vector<std::string> messages = openedMessages(loaded);
+    ASSERT_EQ(messages.size(), 1u);
+    EXPECT_EQ(messages[0].rfind("warning: sculpture 'lost' is missing: ", 0), 0u) << messages[0];
+    EXPECT_EQ(messages[0].find('\n'), std::string::npos) << messages[0];
+    // A folder: made from the garden file, the note first.
+    const std::string folder = (dir / "session").string();
+    OpenedSession made = openLoadedOrSession(std::nullopt, folder, garden, test::smallSessionSettings());
+    ASSERT_TRUE(made.error.empty()) << made.error;
+    EXPECT_TRUE(made.recorder);
+    messages = openedMessages(made);
+    ASSERT_EQ(messages.size(), 2u);
+    EXPECT_EQ(messages[0], "note: created the session " + folder + " from " + garden);
+    EXPECT_EQ(messages[1].rfind("warning: sculpture 'lost'", 0), 0u) << messages[1];
+}
+
 TEST_F(SessionFolderTest, ASessionReopensWithIdenticalGridsAndItsUndoHistory) {
     const std::string garden = writeGarden();
     const std::string folder = (dir / "session").string();
