@@ -283,13 +283,13 @@ private:
         session_.stats().uploadsPending = pending;
         sch.beginStage(garden::Stage::Render);
         const bool render = f.state.shouldRender && f.viewsValid;
-        // Where the tool hand's ray ends: on the sculpture it meets (the
-        // tool's gizmo goes there), else a while into the air.
-        std::optional<glm::vec3> toolEnd;
-        if (render && world.tool.tracked && !panel_.hovered() && session_.tool().kind != garden::ToolSettings::Kind::None) {
-            const auto hit = session_.toolHit(world.tool.aim);
-            toolEnd = hit ? hit->second : world.tool.aim.position + world.tool.aim.forward() * (kToolRayLength * scale_);
-        }
+        // The tool hand aims (not at the panel) with a tool in hand: where
+        // its ray meets a sculpture, found once for both eyes.
+        const bool aiming = render && world.tool.tracked && !panel_.hovered() &&
+                            session_.tool().kind != garden::ToolSettings::Kind::None;
+        std::optional<glm::vec3> toolHit;
+        if (aiming)
+            if (const auto hit = session_.toolHit(world.tool.aim)) toolHit = hit->second;
         if (render) {
             const StageRig r = rig();
             for (int eye = 0; eye < 2; ++eye) {
@@ -300,7 +300,7 @@ private:
                 const garden::Pose eyePose = poseOf(v.pose, heightOffset());
                 view_.render(session_, glm::ivec2(images.width, images.height), r.viewOf(eyePose), projectionOf(v.fov),
                              r.toWorld(eyePose.position));
-                drawTool(world.tool, toolEnd);
+                drawTool(world.tool, aiming, toolHit);
                 drawPanel(world.tool, projectionOf(v.fov) * r.viewOf(eyePose));
                 if (eye == 0 && options_.mirror) mirror(target, images);
                 glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -335,14 +335,14 @@ private:
     }
 
     // The tool in the tool hand, as the desktop draws it where the mouse
-    // points: its ray to `end`, and its gizmo (live size and shape) where
-    // the ray meets a sculpture; the selection's mirror plane and move
-    // gizmo as on the desktop.
-    void drawTool(const garden::HandState& tool, const std::optional<glm::vec3>& end) {
-        garden::drawToolGizmos(renderer_, session_, end ? std::optional<garden::Pose>(tool.aim) : std::nullopt);
-        if (end)
-            renderer_.drawLines({tool.aim.position, *end}, garden::toolColor(session_.tool()), garden::LineMode::Segments,
-                                true);
+    // points: while `aiming`, its ray to `hit` (else a while into the air)
+    // and its gizmo (live size and shape) at `hit`; the selection's mirror
+    // plane and move gizmo as on the desktop.
+    void drawTool(const garden::HandState& tool, bool aiming, const std::optional<glm::vec3>& hit) {
+        garden::drawToolGizmos(renderer_, session_, aiming ? std::optional<garden::Pose>(tool.aim) : std::nullopt, hit);
+        if (!aiming) return;
+        const glm::vec3 end = hit ? *hit : tool.aim.position + tool.aim.forward() * (kToolRayLength * scale_);
+        renderer_.drawLines({tool.aim.position, end}, garden::toolColor(session_.tool()), garden::LineMode::Segments, true);
     }
 
     // The panel's board and the tool hand's ray onto it, over the scene.

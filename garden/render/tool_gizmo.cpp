@@ -199,6 +199,14 @@ std::vector<GizmoLines> mirrorGizmo(const Sculpture& s) {
 }
 
 void drawToolGizmos(Renderer& renderer, const GardenSession& session, const std::optional<Pose>& aim) {
+    std::optional<glm::vec3> hit;
+    if (aim)
+        if (const auto h = session.toolHit(*aim)) hit = h->second;
+    drawToolGizmos(renderer, session, aim, hit);
+}
+
+void drawToolGizmos(Renderer& renderer, const GardenSession& session, const std::optional<Pose>& aim,
+                    const std::optional<glm::vec3>& hit) {
     std::vector<GizmoLines> lines;
     const int selected = session.selected();
     const ToolSettings& tool = session.tool();
@@ -208,10 +216,9 @@ void drawToolGizmos(Renderer& renderer, const GardenSession& session, const std:
         if (tool.kind == ToolSettings::Kind::Move)
             for (GizmoLines& l : moveGizmo(s)) lines.push_back(std::move(l));
     }
-    if (aim && tool.kind != ToolSettings::Kind::None && tool.kind != ToolSettings::Kind::Move)
-        if (const auto hit = session.toolHit(*aim))
-            for (GizmoLines& l : toolGizmo(tool, hit->second, aim->position, aim->forward(), session.navigator().eye()))
-                lines.push_back(std::move(l));
+    if (aim && hit && tool.kind != ToolSettings::Kind::None && tool.kind != ToolSettings::Kind::Move)
+        for (GizmoLines& l : toolGizmo(tool, *hit, aim->position, aim->forward(), session.navigator().eye()))
+            lines.push_back(std::move(l));
     // Depth-tested lines first, then what shows over everything.
     for (const GizmoLines& l : lines)
         if (!l.overEverything) renderer.drawLines(l.points, l.color, l.mode, true);

@@ -50,5 +50,10 @@ std::vector<GizmoLines> mirrorGizmo(const Sculpture& s);
 // while the move tool is in hand, and the tool where `aim` (the tool hand's
 // ray; none while the pointer is on a panel) meets a sculpture.
 void drawToolGizmos(Renderer& renderer, const GardenSession& session, const std::optional<Pose>& aim);
+// The same with the point where `aim` meets a sculpture already found
+// (GardenSession::toolHit; none: it meets none), so a headset's two eyes
+// share one ray cast.
+void drawToolGizmos(Renderer& renderer, const GardenSession& session, const std::optional<Pose>& aim,
+                    const std::optional<glm::vec3>& hit);
 
 }  // namespace hg::garden
