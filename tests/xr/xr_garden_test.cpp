@@ -332,19 +332,34 @@ TEST_F(XrGarden, LeftHandedSwitchedOnThePanelIsKeptForTheNextRun) {
     EXPECT_TRUE(loadXrSettings(settings, warning).leftHanded);
 }
 
-TEST_F(XrGarden, TheStickWalksWhereTheHeadLooks) {
-    // The head turned 90 degrees right (+x); the navigation stick pushed
-    // forward: the rig goes along +x, not the rig's own forward (-z). On
-    // the stage: LOCAL_FLOOR would face the head's way (the next test).
+// The left stick held forward for 20 frames.
+constexpr const char* kWalkForward =
+    R"([{"frames": 20, "navigation": {"aim": {"position": [-0.2, 1.0, -0.4]}, "thumbstick": [0, 1]}}])";
+
+// The script `s` (kWalkForward) with the head turned 90 degrees right when
+// the session began: where the eye ends, and the run.
+std::pair<glm::vec3, XrRunInfo> walkWithTheHeadTurned(const std::string& s) {
     ::setenv("HG_MOCK_XR_HEAD_YAW", "90", 1);
-    ::setenv("HG_MOCK_XR_NO_LOCAL_FLOOR", "1", 1);
-    const std::string s = script(R"([{"frames": 20, "navigation": {"aim": {"position": [-0.2, 1.0, -0.4]}, "thumbstick": [0, 1]}}])");
     ::setenv("HG_MOCK_XR_SCRIPT", s.c_str(), 1);
     XrOptions o;
     o.script = s;
     o.mirror = false;
-    glm::vec3 eye(0.0f);
-    ASSERT_EQ(runXrGarden(o, [&](garden::GardenSession& xr, const XrRunInfo&) { eye = xr.navigator().eye(); }), 0);
+    std::pair<glm::vec3, XrRunInfo> out;
+    EXPECT_EQ(runXrGarden(o,
+                          [&](garden::GardenSession& xr, const XrRunInfo& i) {
+                              out = {xr.navigator().eye(), i};
+                          }),
+              0);
+    return out;
+}
+
+TEST_F(XrGarden, TheStickWalksWhereTheHeadLooks) {
+    // The head turned 90 degrees right (+x); the navigation stick pushed
+    // forward: the rig goes along +x, not the rig's own forward (-z). On
+    // the stage: LOCAL_FLOOR would face the head's way (the next test).
+    ::setenv("HG_MOCK_XR_NO_LOCAL_FLOOR", "1", 1);
+    const auto [eye, info] = walkWithTheHeadTurned(script(kWalkForward));
+    EXPECT_EQ(info.space, "STAGE");
     EXPECT_GT(eye.x, 0.1f) << "walked to the head's right of the start";
     EXPECT_NEAR(eye.z, 0.0f, 1e-3f);
     EXPECT_NEAR(eye.y, 1.7f, 1e-3f) << "on the ground's level";
@@ -452,20 +467,7 @@ TEST_F(XrGarden, LocalFloorFacesTheGardenWhereverTheUserFaced) {
     // The head turned 90 degrees right of the stage's forward when the
     // session began: in LOCAL_FLOOR that way is forward, so the garden's
     // start faces the user and the stick walks into the garden (-z).
-    ::setenv("HG_MOCK_XR_HEAD_YAW", "90", 1);
-    const std::string s = script(R"([{"frames": 20, "navigation": {"aim": {"position": [-0.2, 1.0, -0.4]}, "thumbstick": [0, 1]}}])");
-    ::setenv("HG_MOCK_XR_SCRIPT", s.c_str(), 1);
-    XrOptions o;
-    o.script = s;
-    o.mirror = false;
-    glm::vec3 eye(0.0f);
-    XrRunInfo info;
-    ASSERT_EQ(runXrGarden(o,
-                          [&](garden::GardenSession& xr, const XrRunInfo& i) {
-                              eye = xr.navigator().eye();
-                              info = i;
-                          }),
-              0);
+    const auto [eye, info] = walkWithTheHeadTurned(script(kWalkForward));
     EXPECT_EQ(info.space, "LOCAL_FLOOR");
     EXPECT_LT(eye.z, -0.1f) << "walked into the garden, the way the garden's start looks";
     EXPECT_NEAR(eye.x, 0.0f, 1e-3f);
