@@ -6,6 +6,7 @@
 #include "xr_carve_script.h"
 #include "xr_garden_fixture.h"
 
+#include <cmath>
 #include <fstream>
 
 #include <nlohmann/json.hpp>
@@ -483,6 +484,29 @@ TEST_F(XrGarden, StageStandsInForAMissingLocalFloorAndLocalForBoth) {
         EXPECT_EQ(info.space, expected);
         EXPECT_EQ(info.framesRendered, 3);
     }
+}
+
+TEST_F(XrGarden, TheTwoHandedContentScriptCarvesAndScalesInTheDefaultGarden) {
+    // content/replays/xr_two_hands.json, as the README runs it on the mock
+    // runtime: the left hand pulls the world nearer, the right carves a
+    // groove in column west, then with the move tool picks column east and
+    // scales it up with the tool stick.
+    const std::string s = std::string(HG_SOURCE_DIR) + "/content/replays/xr_two_hands.json";
+    ::setenv("HG_MOCK_XR_SCRIPT", s.c_str(), 1);
+    XrOptions o;
+    o.script = s;
+    o.mirror = false;
+    std::size_t carved = 0;
+    double scale = 0.0;
+    ASSERT_EQ(runXrGarden(o,
+                          [&](garden::GardenSession& xr, const XrRunInfo&) {
+                              carved = xr.editCount(xr.findSculpture("column west"));
+                              const int east = xr.findSculpture("column east");
+                              scale = xr.sculptures()[static_cast<std::size_t>(east)].placement.scale;
+                          }),
+              0);
+    EXPECT_EQ(carved, 1u) << "one groove";
+    EXPECT_NEAR(scale, std::sqrt(2.0), 0.05) << "half a second of the stick at full tilt";
 }
 
 }  // namespace
