@@ -6,8 +6,9 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <sstream>
 
-#include "voxel/atomic_write.h"
+#include "io/checked_write.h"
 
 namespace hg::poly {
 
@@ -90,12 +91,13 @@ std::string writeGlb(const Mesh& mesh, const std::string& path, double scale, co
     if (mesh.normals.size() != mesh.positions.size())
         return "cannot write " + path + ": the mesh has no normal for every vertex";
     const tinygltf::Model model = buildModel(mesh, static_cast<float>(scale), meshName);
-    return voxel::writeAtomically(path, [&](const std::string& tmp) -> std::string {
-        tinygltf::TinyGLTF gltf;
-        // Buffers embedded, no pretty printing, binary.
-        if (!gltf.WriteGltfSceneToFile(&model, tmp, false, true, false, true)) return "cannot write " + path;
-        return "";
-    });
+    // Encoded in memory (binary, not pretty printed), then written with
+    // every step checked: tinygltf's own file writer does not report a full
+    // disk.
+    tinygltf::TinyGLTF gltf;
+    std::ostringstream out(std::ios::binary);
+    if (!gltf.WriteGltfSceneToStream(&model, out, false, true)) return "cannot write " + path + ": glTF encoding failed";
+    return io::writeFileAtomically(path, out.str(), io::WriteSite::Export);
 }
 
 }  // namespace hg::poly

@@ -1,5 +1,7 @@
 #include "polygonizer/mesh_export.h"
 
+#include "io/checked_write.h"
+
 #include <algorithm>
 #include <cctype>
 #include <chrono>
@@ -124,7 +126,7 @@ std::string exportMesh(const frep::Model& model, const frep::Box3& box, const Me
         return "the simplification error must be a finite number of model units, 0 or more";
     if (options.simplifyError > 0.0 && format == MeshFormat::Vdb) return "simplification applies to meshes, not to .vdb";
     if (options.ascii && format != MeshFormat::Stl) return "ASCII applies to STL only";
-    if (std::string why = voxel::checkWritable(path); !why.empty()) return why;
+    if (std::string why = io::checkWritable(path); !why.empty()) return why;
 
     if (format == MeshFormat::Vdb) {
         std::string why = exportVdb(model, box, options, path, report, progress);

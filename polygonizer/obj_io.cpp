@@ -7,7 +7,7 @@
 #include <cstring>
 #include <memory>
 
-#include "voxel/atomic_write.h"
+#include "io/checked_write.h"
 
 namespace hg::poly {
 
@@ -16,8 +16,7 @@ namespace {
 // Lines are gathered in a buffer and written a few MiB at a time.
 class LineBuffer {
 public:
-    explicit LineBuffer(std::FILE* f) : file_(f), data_(new char[kSize]) {}
-    bool failed() const { return failed_; }
+    explicit LineBuffer(io::CheckedFile& f) : file_(f), data_(new char[kSize]) {}
 
     void text(const char* s) {
         const std::size_t n = std::strlen(s);
@@ -39,10 +38,9 @@ public:
         reserve(1);
         data_[used_++] = c;
     }
-    bool flush() {
-        if (used_ && !failed_ && std::fwrite(data_.get(), 1, used_, file_) != used_) failed_ = true;
+    void flush() {
+        file_.write(data_.get(), used_);
         used_ = 0;
-        return !failed_;
     }
 
 private:
@@ -50,17 +48,16 @@ private:
     void reserve(std::size_t n) {
         if (used_ + n > kSize) flush();
     }
-    std::FILE* file_;
+    io::CheckedFile& file_;
     std::unique_ptr<char[]> data_;
     std::size_t used_ = 0;
-    bool failed_ = false;
 };
 
 std::string writeTo(const Mesh& mesh, const std::string& tmp, const std::string& path, float scale,
                     const std::string& objectName) {
-    std::FILE* f = std::fopen(tmp.c_str(), "wb");
-    if (!f) return "cannot write " + path + ": " + std::strerror(errno);
-    LineBuffer out(f);
+    io::CheckedFile file(tmp, io::WriteSite::Export);
+    if (!file.ok()) return file.error();
+    LineBuffer out(file);
     out.text("# Hypergarden mesh export: metres, counter-clockwise faces seen from outside\no ");
     out.text(objectName.c_str());
     out.put('\n');
@@ -92,10 +89,8 @@ std::string writeTo(const Mesh& mesh, const std::string& tmp, const std::string&
         }
         out.put('\n');
     }
-    const int writeErrno = out.flush() ? 0 : errno;
-    const bool closed = std::fclose(f) == 0;
-    if (writeErrno || !closed)
-        return "cannot write " + path + ": " + std::strerror(writeErrno ? writeErrno : errno);
+    out.flush();
+    if (std::string why = file.finish(); !why.empty()) return "cannot write " + path + ": " + why;
     return "";
 }
 
@@ -106,7 +101,7 @@ std::string writeObj(const Mesh& mesh, const std::string& path, double scale, co
     if (mesh.normals.size() != mesh.positions.size())
         return "cannot write " + path + ": the mesh has no normal for every vertex";
     const auto s = static_cast<float>(scale);
-    return voxel::writeAtomically(path, [&](const std::string& tmp) { return writeTo(mesh, tmp, path, s, objectName); });
+    return io::writeAtomically(path, io::WriteSite::Export, [&](const std::string& tmp) { return writeTo(mesh, tmp, path, s, objectName); });
 }
 
 }  // namespace hg::poly

@@ -21,7 +21,7 @@
 #include <string_view>
 #include <vector>
 
-#include "voxel/atomic_write.h"
+#include "io/checked_write.h"
 
 namespace hg::poly {
 
@@ -219,11 +219,12 @@ struct Slice {
 
 std::string writeContents(const Mesh& mesh, double scale, const std::string& tmp, const std::string& path, bool ascii,
                           const std::string& name) {
-    File file(tmp, "wb");
+    io::CheckedFile file(tmp, io::WriteSite::Export);
     const std::string cannot = "cannot write " + path + ": ";
-    if (!file.get()) return cannot + std::strerror(errno);
+    if (!file.ok()) return file.error();
     auto put = [&file](const std::string& bytes) {
-        return std::fwrite(bytes.data(), 1, bytes.size(), file.get()) == bytes.size();
+        file.write(bytes);
+        return file.ok();
     };
     const std::size_t triangles = mesh.triangleCount();
 
@@ -236,11 +237,11 @@ std::string writeContents(const Mesh& mesh, double scale, const std::string& tmp
         head.resize(kHeaderBytes + 4);
         putU32(&head[kHeaderBytes], static_cast<std::uint32_t>(triangles));
     }
-    if (!put(head)) return cannot + std::strerror(errno);
+    put(head);
 
     BufferPool pool;
     std::size_t next = 0;
-    std::atomic<int> error{0};  // errno of the first failed write: no slice is started or written after it
+    std::atomic<bool> error{!file.ok()};  // a write failed: no slice is started or written after it
     const auto tokens = static_cast<std::size_t>(2 * std::max(1, tbb::this_task_arena::max_concurrency()));
     tbb::parallel_pipeline(
         tokens,
@@ -265,13 +266,11 @@ std::string writeContents(const Mesh& mesh, double scale, const std::string& tmp
                                                return s;
                                            }) &
             tbb::make_filter<Slice, void>(tbb::filter_mode::serial_in_order, [&](Slice s) {
-                if (!error && !put(*s.text)) error = errno ? errno : EIO;
+                if (!error && !put(*s.text)) error = true;
                 pool.give(std::move(s.text));
             }));
-    if (error) return cannot + std::strerror(error.load());
-
-    if (ascii && !put(name.empty() ? "endsolid\n" : "endsolid " + name + "\n")) return cannot + std::strerror(errno);
-    if (!file.close()) return cannot + std::strerror(errno);
+    if (ascii && !error) put(name.empty() ? "endsolid\n" : "endsolid " + name + "\n");
+    if (std::string why = file.finish(); !why.empty()) return cannot + why;
     return "";
 }
 
@@ -498,7 +497,7 @@ std::string writeStl(const Mesh& mesh, const std::string& path, bool ascii, doub
         return cannot + "vertex " + std::to_string(i / 3) + " is not finite";
     }
 
-    return voxel::writeAtomically(path, [&](const std::string& tmp) {
+    return io::writeAtomically(path, io::WriteSite::Export, [&](const std::string& tmp) {
         return writeContents(mesh, scale, tmp, path, ascii, sanitizeName(solidName));
     });
 }

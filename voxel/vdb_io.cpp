@@ -6,8 +6,10 @@
 #include <fstream>
 #include <sstream>
 
+#include <openvdb/io/Stream.h>
 #include <openvdb/tools/LevelSetRebuild.h>
 
+#include "io/checked_write.h"
 #include "voxel/volume_vdb.h"
 
 namespace hg::voxel {
@@ -53,19 +55,36 @@ void addMetadata(openvdb::GridBase& grid, const Volume& v) {
     grid.insertMeta(meta::kIndexMax, openvdb::Vec3IMetadata(openvdb::Vec3i(f.indexBox.hi[0], f.indexBox.hi[1], f.indexBox.hi[2])));
 }
 
-std::string writeGrid(const openvdb::GridBase::Ptr& grid, const std::string& path) {
+// The grid as the bytes of a .vdb file (OpenVDB's stream format, which
+// openvdb::io::File reads), so that the caller writes them with every step
+// checked (io/checked_write.h): OpenVDB's own file writer does not report
+// a full disk.
+std::string encodeGrid(const openvdb::GridBase::Ptr& grid, std::string& bytes) {
     ensureOpenVdbInitialized();
-    if (std::string why = checkWritable(path); !why.empty()) return why;
-    return writeAtomically(path, [&](const std::string& tmp) -> std::string {
-        try {
-            openvdb::io::File file(tmp);
-            file.write(openvdb::GridPtrVec{grid});
-            file.close();
-        } catch (const std::exception& e) {
-            return "cannot write " + path + ": " + e.what();
-        }
-        return "";
-    });
+    try {
+        std::ostringstream out(std::ios::binary);
+        openvdb::io::Stream(out).write(openvdb::GridPtrVec{grid});
+        bytes = out.str();
+    } catch (const std::exception& e) {
+        return std::string("cannot encode the grid: ") + e.what();
+    }
+    return "";
+}
+
+std::string writeGrid(const openvdb::GridBase::Ptr& grid, const std::string& path, io::WriteSite site) {
+    if (std::string why = io::checkWritable(path); !why.empty()) return why;
+    std::string bytes;
+    if (std::string why = encodeGrid(grid, bytes); !why.empty()) return "cannot write " + path + ": " + why;
+    return io::writeFileAtomically(path, bytes, site);
+}
+
+openvdb::FloatGrid::Ptr ourGrid(const Volume& volume) {
+    // Shares the (unchanged) tree; the metadata added below is the copy's own.
+    openvdb::FloatGrid::Ptr grid = std::const_pointer_cast<openvdb::FloatGrid>(vdb(volume).copy());
+    addMetadata(*grid, volume);
+    grid->insertMeta(meta::kSign, openvdb::StringMetadata("positive inside (HyperFun); values in voxels"));
+    grid->setGridClass(openvdb::GRID_UNKNOWN);
+    return grid;
 }
 
 template <class T, class M>
@@ -78,28 +97,11 @@ bool readMeta(const openvdb::GridBase& grid, const char* key, T& out) {
 
 }  // namespace
 
-std::string temporaryPathFor(const std::string& path) {
-    return path + ".partial-" + std::to_string(::getpid());
+std::string writeVolume(const Volume& volume, const std::string& path, io::WriteSite site) {
+    return writeGrid(ourGrid(volume), path, site);
 }
 
-std::string checkWritable(const std::string& path) {
-    if (path.empty()) return "no output file given";
-    const std::string probe = temporaryPathFor(path);
-    std::ofstream out(probe, std::ios::binary);
-    if (!out) return "cannot write " + path + ": " + std::strerror(errno);
-    out.close();
-    std::remove(probe.c_str());
-    return "";
-}
-
-std::string writeVolume(const Volume& volume, const std::string& path) {
-    // Shares the (unchanged) tree; the metadata added below is the copy's own.
-    openvdb::FloatGrid::Ptr grid = std::const_pointer_cast<openvdb::FloatGrid>(vdb(volume).copy());
-    addMetadata(*grid, volume);
-    grid->insertMeta(meta::kSign, openvdb::StringMetadata("positive inside (HyperFun); values in voxels"));
-    grid->setGridClass(openvdb::GRID_UNKNOWN);
-    return writeGrid(grid, path);
-}
+std::string encodeVolume(const Volume& volume, std::string& bytes) { return encodeGrid(ourGrid(volume), bytes); }
 
 std::string writeLevelSet(const Volume& volume, const std::string& path, double metresPerUnit) {
     // Our values are f scaled to about one unit per voxel, not distances;
@@ -133,7 +135,7 @@ std::string writeLevelSet(const Volume& volume, const std::string& path, double 
         grid->insertMeta(meta::kSign, openvdb::StringMetadata("negative inside (OpenVDB level set); signed distance in model units"));
     }
     grid->setGridClass(openvdb::GRID_LEVEL_SET);
-    return writeGrid(grid, path);
+    return writeGrid(grid, path, io::WriteSite::Export);
 }
 
 std::string readVolume(const std::string& path, Volume& volume, const std::string& gridName) {

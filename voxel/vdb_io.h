@@ -2,12 +2,13 @@
 // inside) and values in voxels, with metadata that says where they came
 // from; the level-set export is for other tools (OpenVDB's convention:
 // negative inside, world units, class level set). Files are written to a
-// temporary name beside the target and renamed into place, so a failure
-// never leaves a partial file.
+// temporary name beside the target, synced and renamed into place, so a
+// failure never leaves a partial file (io/checked_write.h).
 #pragma once
 
 #include <string>
 
+#include "io/write_faults.h"
 #include "voxel/volume.h"
 
 namespace hg::voxel {
@@ -31,8 +32,12 @@ constexpr const char* kIndexMin = "hypergarden.index_min";
 constexpr const char* kIndexMax = "hypergarden.index_max";
 }  // namespace meta
 
-// "" on success, otherwise what went wrong (with the path).
-std::string writeVolume(const Volume& volume, const std::string& path);
+// "" on success, otherwise what went wrong (with the path). Every write is
+// checked and passes the fault seam as `site` (io/checked_write.h).
+std::string writeVolume(const Volume& volume, const std::string& path, io::WriteSite site = io::WriteSite::Export);
+// The bytes writeVolume would write, for callers that publish several
+// files together (a session's snapshot). "" or why not.
+std::string encodeVolume(const Volume& volume, std::string& bytes);
 // The level set for other tools: negative inside, signed distances; in
 // model units, or in metres with the sculpture's metres per model unit
 // (values and transform scaled alike).
@@ -42,16 +47,4 @@ std::string writeLevelSet(const Volume& volume, const std::string& path, double 
 // file). "" on success.
 std::string readVolume(const std::string& path, Volume& volume, const std::string& gridName = "");
 
-// Writes `contents` to `path` atomically: `write(tmpPath)` fills a temporary
-// file in the same directory, which is renamed to `path` when it returns ""
-// and removed otherwise. Returns `write`'s message or the rename's.
-template <class Write>
-std::string writeAtomically(const std::string& path, Write write);
-
-// Checks that `path` can be created (its directory exists and is writable)
-// without leaving anything behind. "" when it can.
-std::string checkWritable(const std::string& path);
-
 }  // namespace hg::voxel
-
-#include "voxel/atomic_write.h"

@@ -525,12 +525,14 @@ int runXrGarden(const XrOptions& options,
         wo.title = kMirrorTitle;
         garden::GardenWindow window(wo, options.mirror || options.desktop.has_value());
         garden::SessionSettings settings;
-        garden::OpenedSession opened = garden::openLoadedOrSession(std::move(load), options.session, gardenFile, settings);
+        garden::OpenedSession opened = garden::openLoadedOrSession(
+            std::move(load), {options.session, gardenFile, options.gardenGiven, "hypergarden --xr"}, settings);
         if (!opened.error.empty()) {
             std::cerr << "error: " << opened.error << "\n";
             return opened.exitStatus;
         }
         for (const std::string& m : garden::openedMessages(opened)) std::cerr << m << "\n";
+        garden::reportSaveChangesOnStderr(opened);
         garden::GardenSession& session = *opened.session;
         XrRunInfo info;
         bool desktopAsked = false;
@@ -553,7 +555,10 @@ int runXrGarden(const XrOptions& options,
             status = garden::runDesktopOn(session, window, desktop);
         }
         if (atEnd) atEnd(session, info);
-        return status;
+        std::vector<std::string> last;
+        const int saved = garden::closeSession(opened, last);
+        for (const std::string& line : last) std::cerr << line << "\n";
+        return status != 0 ? status : saved;
     } catch (const garden::GlError& e) {
         std::cerr << "error: " << e.what() << "\n";
         return 1;

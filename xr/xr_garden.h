@@ -27,6 +27,7 @@ constexpr int kExitNoRuntime = 3;
 
 struct XrOptions {
     std::string garden;      // the garden file ("" with a script: the script's)
+    bool gardenGiven = false;  // named by the user: told when an existing session keeps its own
     std::string session;     // a session folder ("" : none)
     std::string script;      // a replay script whose commands run at their frames ("" : none)
     int frames = 0;          // ask the runtime to end the session after this many frames (0: never)

@@ -13,7 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "garden/scene/json_reader.h"
-#include "voxel/atomic_write.h"
+#include "io/checked_write.h"
 
 namespace hg::xr {
 
@@ -87,14 +87,7 @@ std::string saveXrSettings(const std::string& path, const XrUserSettings& s) {
                               {"seated_height_offset", s.seatedHeightOffset},
                               {"smooth_turn", s.smoothTurn},
                               {"snap_degrees", s.snapDegrees}};
-    return voxel::writeAtomically(path, [&](const std::string& tmp) -> std::string {
-        std::ofstream out(tmp, std::ios::trunc);
-        if (!out) return "cannot write " + path + ": " + std::strerror(errno);
-        out << j.dump(2) << "\n";
-        out.close();
-        if (!out) return "cannot write " + path + ": " + std::strerror(errno);
-        return "";
-    });
+    return io::writeFileAtomically(path, j.dump(2) + "\n", io::WriteSite::Settings);
 }
 
 }  // namespace hg::xr

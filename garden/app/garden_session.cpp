@@ -182,7 +182,7 @@ void GardenSession::recordMorph() {
 }
 
 void GardenSession::record(const JournalRecord& r) {
-    if (journal_ && !restoring_) journal_(r);
+    if (journal_ && !restoring_) journal_->append(r);
 }
 
 void GardenSession::restartMorph() {

@@ -30,7 +30,7 @@
 #include "garden/scene/garden_file.h"
 #include "garden/sculpt/edit.h"
 #include "garden/sculpt/tool_settings.h"
-#include "garden/session/journal.h"
+#include "garden/session/journal_sink.h"
 #include "polygonizer/lod_selection.h"
 #include "polygonizer/remesh_queue.h"
 
@@ -163,12 +163,16 @@ public:
     // --- the journal (garden/session) ------------------------------------
     // Called with every finished action (a stroke at its end, a
     // perturbation, undo, redo, discard, a morph weight change once the
-    // hand lets go); the session folder appends it to its journal.
-    void setJournal(std::function<void(const JournalRecord&)> journal) { journal_ = std::move(journal); }
+    // hand lets go); the session folder appends it to its journal and says
+    // whether it is saved (garden/session/journal_sink.h). Not owned.
+    void setJournal(JournalSink* journal) { journal_ = journal; }
+    JournalSink* journal() const { return journal_; }
     // Plays journalled actions without journalling them again, the grids
     // recomputed once at the end (each voxel once). "" or why a record
     // cannot be played (its number, from 1, and the reason).
     std::string restore(const std::vector<JournalRecord>& records);
+    // The same, with the record that could not be played taken apart.
+    JournalPlayed restoreRecords(const std::vector<JournalRecord>& records);
     ToolSettings& tool() { return tool_; }
     const ToolSettings& tool() const { return tool_; }
     // Where the tool hand's ray first meets a sculpture's surface (world):
@@ -256,7 +260,7 @@ private:
     std::vector<UndoEntry> redoOrder_;
     std::uint32_t lastButtons_ = 0;    // the tool hand's buttons last frame (undo, redo edges)
     bool toolArmed_ = true;            // the trigger was released since the last action
-    std::function<void(const JournalRecord&)> journal_;
+    JournalSink* journal_ = nullptr;
     bool restoring_ = false;           // playing a journal: nothing is journalled again
     bool morphDragging_ = false;       // the tool hand holds the selector on the ground
     bool morphDragged_ = false;        // ... and moved it: journalled on release

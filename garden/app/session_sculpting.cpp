@@ -61,12 +61,14 @@ void GardenSession::discardEdits(int sculpture) {
     record(DiscardRecord{s.name});
 }
 
-std::string GardenSession::restore(const std::vector<JournalRecord>& records) {
+std::string GardenSession::restore(const std::vector<JournalRecord>& records) { return restoreRecords(records).message(); }
+
+JournalPlayed GardenSession::restoreRecords(const std::vector<JournalRecord>& records) {
     restoring_ = true;
     for (Sculpture& s : sculptures_)
         if (s.edits) s.edits->setDeferred(true);
-    std::string error;
-    for (std::size_t n = 0; n < records.size() && error.empty(); ++n) {
+    JournalPlayed result;
+    for (std::size_t n = 0; n < records.size() && result.ok(); ++n) {
         const JournalRecord& r = records[n];
         std::string why;
         const auto sculptureOf = [&](const std::string& name) {
@@ -113,13 +115,18 @@ std::string GardenSession::restore(const std::vector<JournalRecord>& records) {
                 restartMorph();
             }
         }
-        if (!why.empty()) error = "record " + std::to_string(n + 1) + " (" + journalRecordKind(r) + "): " + why;
+        if (why.empty()) {
+            ++result.played;
+        } else {
+            result.action = journalRecordKind(r);
+            result.reason = why;
+        }
     }
     restoring_ = false;
     for (std::size_t i = 0; i < sculptures_.size(); ++i)
         if (sculptures_[i].edits)
             for (const voxel::IndexBox& box : sculptures_[i].edits->flush()) showChanged(static_cast<int>(i), box);
-    return error;
+    return result;
 }
 
 void GardenSession::showChanged(int sculpture, const voxel::IndexBox& box) {

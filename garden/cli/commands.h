@@ -59,6 +59,7 @@ struct ReplayCommandOptions {
 
 struct GardenOptions {
     std::string garden;               // the garden file
+    bool gardenGiven = false;         // named on the command line (not the default)
     int width = 1280, height = 720;
     bool noVsync = false;
     double budgetMs = 11.1;
@@ -77,6 +78,7 @@ struct SessionCommandOptions {
     std::string dir;
     bool verify = false;
     bool json = false;
+    std::size_t cutAt = 0;  // cut the journal at this record (from 1); 0: no
 };
 int runSessionCommand(const SessionCommandOptions& options);
 

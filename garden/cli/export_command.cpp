@@ -18,6 +18,7 @@
 #include "garden/export/hyperfun_export.h"
 #include "garden/session/journal.h"
 #include "garden/session/session_folder.h"
+#include "io/folder_lock.h"
 
 namespace hg::garden::cli {
 
@@ -47,6 +48,11 @@ std::unique_ptr<GardenSession> openForExport(const std::string& input, int& stat
             return nullptr;
         }
         gardenFile = paths.garden;
+        // Exporting only reads: a session open elsewhere is read as its
+        // journal stands now, and the user is told so.
+        if (const auto holder = io::lockHolder(input, kSessionLockFile))
+            std::cerr << "note: " << input << " is open in " << holder->describe()
+                      << "; exporting what its journal holds now (the session is not changed)\n";
         if (std::filesystem::exists(paths.journal)) {
             journal = readJournal(paths.journal);
             if (!journal.ok()) {

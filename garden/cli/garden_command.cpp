@@ -8,6 +8,7 @@ namespace hg::garden::cli {
 int runGarden(const GardenOptions& options) {
     xr::XrOptions x;
     x.garden = options.garden;
+    x.gardenGiven = options.gardenGiven;
     x.session = options.session;
     // The flags only switch on; without them the user's settings hold.
     if (options.leftHanded) x.leftHanded = true;
@@ -16,6 +17,7 @@ int runGarden(const GardenOptions& options) {
 
     DesktopOptions d;
     d.garden = options.garden;
+    d.gardenGiven = options.gardenGiven;
     d.width = options.width;
     d.height = options.height;
     d.vsync = !options.noVsync;

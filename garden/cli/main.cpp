@@ -19,7 +19,8 @@ int main(int argc, char** argv) {
     app.require_subcommand(0, 1);
     GardenOptions gardenOpts;
     gardenOpts.garden = HG_DEFAULT_GARDEN;
-    app.add_option("--garden", gardenOpts.garden, "Garden file to open (default: content/gardens/default.json)");
+    CLI::Option* gardenOption =
+        app.add_option("--garden", gardenOpts.garden, "Garden file to open (default: content/gardens/default.json)");
     app.add_option("--width", gardenOpts.width, "Window width in pixels (default 1280)");
     app.add_option("--height", gardenOpts.height, "Window height in pixels (default 720)");
     app.add_flag("--no-vsync", gardenOpts.noVsync, "Do not wait for the display's refresh");
@@ -101,6 +102,10 @@ int main(int argc, char** argv) {
     sessionCmd->add_flag("--verify", sessionOpts.verify,
                          "Rebuild every grid from the journal and compare it with the snapshots (exit 1 where they differ)");
     sessionCmd->add_flag("--json", sessionOpts.json, "Print JSON instead of text");
+    sessionCmd->add_option("--cut-at", sessionOpts.cutAt,
+                           "Cut the journal at record N (it and those after it removed; the whole journal kept "
+                           "beside it), so that a session stopped at an unplayable record can go on")
+        ->check(CLI::PositiveNumber);
 
     ExportOptions exportOpts;
     std::string exportBox;
@@ -120,6 +125,7 @@ int main(int argc, char** argv) {
     } catch (const CLI::ParseError& e) {
         return app.exit(e);
     }
+    gardenOpts.gardenGiven = gardenOption->count() > 0;
     if (!parseNumberList(checkA, checkOpts.parameters) || !parseNumberList(evalA, evalOpts.model.parameters) ||
         !parseNumberList(voxA, voxOpts.model.parameters) || !parseNumberList(meshA, meshOpts.model.parameters)) {
         std::cerr << "error: --a expects numbers separated by commas, for example --a 0.5,1\n";

@@ -1,12 +1,12 @@
 #include <iostream>
 
 #include "garden/cli/load_model.h"
-#include "voxel/vdb_io.h"
+#include "io/checked_write.h"
 
 namespace hg::garden::cli {
 
 bool outputWritable(const std::string& path) {
-    std::string why = voxel::checkWritable(path);
+    std::string why = io::checkWritable(path);
     if (!why.empty()) std::cerr << "error: " << why << "\n";
     return why.empty();
 }

@@ -10,7 +10,7 @@
 #include "garden/replay/replay_runner.h"
 #include "garden/scene/json_reader.h"
 #include "garden/session/open_session.h"
-#include "voxel/vdb_io.h"
+#include "io/checked_write.h"
 
 namespace hg::garden::cli {
 
@@ -23,7 +23,7 @@ int runReplay(const ReplayCommandOptions& options) {
         return 2;
     }
     if (!options.statsPath.empty()) {
-        const std::string why = voxel::checkWritable(options.statsPath);
+        const std::string why = io::checkWritable(options.statsPath);
         if (!why.empty()) {
             std::cerr << "error: --stats: " << why << "\n";
             return 2;
@@ -52,12 +52,14 @@ int runReplay(const ReplayCommandOptions& options) {
             return 2;
         }
     }
-    OpenedSession opened = openLoadedOrSession(std::move(load), options.session, script.garden, settings);
+    OpenedSession opened =
+        openLoadedOrSession(std::move(load), {options.session, script.garden, true, "hypergarden replay"}, settings);
     if (!opened.error.empty()) {
         std::cerr << "error: " << opened.error << "\n";
         return opened.exitStatus;
     }
     for (const std::string& m : openedMessages(opened)) std::cerr << m << "\n";
+    reportSaveChangesOnStderr(opened);
     GardenSession& session = *opened.session;
 
     std::unique_ptr<OffscreenGarden> offscreen;
@@ -77,12 +79,7 @@ int runReplay(const ReplayCommandOptions& options) {
     for (const std::string& n : result.notes) std::cerr << "note: " << n << "\n";
     if (!options.statsPath.empty()) {
         const std::string json = statsJson(script, result);
-        const std::string why = voxel::writeAtomically(options.statsPath, [&json](const std::string& tmp) -> std::string {
-            std::ofstream out(tmp, std::ios::binary);
-            out << json;
-            out.close();
-            return out ? "" : "cannot write " + tmp;
-        });
+        const std::string why = io::writeFileAtomically(options.statsPath, json, io::WriteSite::Stats);
         if (!why.empty()) {
             std::cerr << "error: --stats: " << why << "\n";
             return 1;
@@ -93,11 +90,14 @@ int runReplay(const ReplayCommandOptions& options) {
     std::cout << "replayed " << result.frames << " frames of " << script.file << " (mean "
               << (result.frames ? total / result.frames : 0.0) << " ms per frame, budget " << script.budgetMs
               << " ms); " << result.screenshots.size() << " screenshots\n";
+    std::vector<std::string> last;
+    int status = closeSession(opened, last);
+    for (const std::string& line : last) std::cerr << line << "\n";
     if (!result.ok()) {
         std::cerr << "error: " << result.error << "\n";
         return 1;
     }
-    return 0;
+    return status;
 }
 
 }  // namespace hg::garden::cli

@@ -1,10 +1,19 @@
-// `hypergarden session DIR [--verify] [--json]`: what a session folder holds
-// (its sculptures and the edits on each, the journal's actions, the
-// snapshot, a damaged tail); --verify rebuilds every grid from the journal
-// and compares it with the snapshot's grids.
+// `hypergarden session DIR [--verify] [--json] [--cut-at N]`: what a
+// session folder holds (its sculptures and the edits on each, the
+// journal's actions, the snapshot, a damaged tail, who has it open);
+// --verify rebuilds every grid from the journal and compares it with the
+// snapshot's grids; --cut-at cuts the journal before a record that cannot
+// be played, keeping the whole journal beside it. Reporting reads a
+// session another process holds; --verify and --cut-at take its lock.
 #include <filesystem>
 #include <iostream>
+#include <cerrno>
+#include <cstring>
+#include <fstream>
 #include <map>
+#include <memory>
+#include <optional>
+#include <sstream>
 
 #include <nlohmann/json.hpp>
 
@@ -12,7 +21,12 @@
 #include "garden/cli/commands.h"
 #include "garden/sculpt/sculpture_edits.h"
 #include "garden/session/session_folder.h"
+#include "io/checked_write.h"
+#include "io/folder_lock.h"
 #include "voxel/vdb_io.h"
+
+#include <fcntl.h>
+#include <unistd.h>
 
 namespace hg::garden::cli {
 
@@ -27,6 +41,61 @@ std::size_t differingVoxels(const voxel::Volume& a, const voxel::Volume& b) {
     return n;
 }
 
+std::string readBytes(const std::string& path, std::string& bytes) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return "cannot read " + path + ": " + std::strerror(errno);
+    std::ostringstream s;
+    s << in.rdbuf();
+    bytes = s.str();
+    return "";
+}
+
+// The journal cut at record `n` (from 1): records n and after removed, the
+// whole journal kept first as journal.hgj.before-cut-at-N, and a snapshot
+// that covers cut records removed (its grids hold them).
+int cutJournal(const SessionPaths& paths, std::size_t n) {
+    const JournalRead journal = readJournal(paths.journal);
+    if (!journal.ok()) {
+        std::cerr << "error: " << journal.error << "\n";
+        return 2;
+    }
+    if (n > journal.records.size()) {
+        std::cerr << "error: --cut-at " << n << ": the journal has " << journal.records.size() << " readable records\n";
+        return 2;
+    }
+    std::string bytes;
+    if (std::string why = readBytes(paths.journal, bytes); !why.empty()) {
+        std::cerr << "error: " << why << "\n";
+        return 1;
+    }
+    std::string copy = paths.journal + ".before-cut-at-" + std::to_string(n);
+    for (int k = 2; std::filesystem::exists(copy); ++k)
+        copy = paths.journal + ".before-cut-at-" + std::to_string(n) + "-" + std::to_string(k);
+    if (std::string why = io::writeFileAtomically(copy, bytes, io::WriteSite::Journal); !why.empty()) {
+        std::cerr << "error: the journal was not cut: " << why << "\n";
+        return 1;
+    }
+    const int fd = ::open(paths.journal.c_str(), O_WRONLY | O_CLOEXEC);
+    std::string why = fd < 0 ? "cannot open " + paths.journal + ": " + std::strerror(errno) : "";
+    if (why.empty()) why = io::truncateFile(fd, journal.recordOffsets[n - 1], io::WriteSite::Journal, paths.journal);
+    if (why.empty()) why = io::syncFile(fd, io::WriteSite::Journal, paths.journal);
+    if (fd >= 0) ::close(fd);
+    if (!why.empty()) {
+        std::cerr << "error: the journal was not cut: " << why << " (the whole journal is kept as " << copy << ")\n";
+        return 1;
+    }
+    std::cout << "cut the journal of " << paths.dir << " at record " << n << ": records 1 to " << n - 1
+              << " kept, " << journal.records.size() - n + 1 << " removed; the whole journal is kept as " << copy << "\n";
+    const SnapshotInfo snap = readSnapshotInfo(paths);
+    if (snap.present && snap.records > n - 1) {
+        std::error_code ec;
+        std::filesystem::remove(paths.snapshotManifest, ec);
+        for (const std::string& f : snap.files) std::filesystem::remove(std::filesystem::path(paths.snapshots) / f, ec);
+        std::cout << "removed the snapshot of " << snap.records << " records (it held records that were cut)\n";
+    }
+    return 0;
+}
+
 }  // namespace
 
 int runSessionCommand(const SessionCommandOptions& options) {
@@ -38,6 +107,21 @@ int runSessionCommand(const SessionCommandOptions& options) {
     if (std::string why = checkSessionManifest(paths); !why.empty()) {
         std::cerr << "error: " << why << "\n";
         return 2;
+    }
+    // Verifying and cutting want the session still: they take its lock.
+    std::unique_ptr<io::FolderLock> lock;
+    std::optional<io::LockHolder> holder;
+    if (options.verify || options.cutAt) {
+        std::string why;
+        lock = io::FolderLock::acquire(options.dir, kSessionLockFile, "hypergarden session", why, holder);
+        if (!lock) {
+            std::cerr << "error: " << why << "\n";
+            return 2;
+        }
+        if (options.cutAt) return cutJournal(paths, options.cutAt);
+    } else if ((holder = io::lockHolder(options.dir, kSessionLockFile))) {
+        std::cerr << "note: " << options.dir << " is open in " << holder->describe()
+                  << "; this reads what its journal holds now and changes nothing\n";
     }
     nlohmann::json report;
     report["session"] = options.dir;
@@ -70,7 +154,14 @@ int runSessionCommand(const SessionCommandOptions& options) {
     GardenSession session(std::move(load), settings);
     const std::size_t upTo = options.verify && snap.present ? std::min(snap.records, journal.records.size()) : journal.records.size();
     const std::vector<JournalRecord> played(journal.records.begin(), journal.records.begin() + static_cast<std::ptrdiff_t>(upTo));
-    const std::string playError = session.restore(played);
+    const JournalPlayed result = session.restoreRecords(played);
+    std::string playError = result.message();
+    if (!result.ok()) {
+        const std::size_t after = journal.records.size() - result.played - 1;
+        playError += "; " + std::to_string(after) + " record" + (after == 1 ? "" : "s") +
+                     " after it; to go on from the records before it: hypergarden session " + options.dir +
+                     " --cut-at " + std::to_string(result.played + 1);
+    }
     if (!playError.empty()) report["play_error"] = playError;
     nlohmann::json sculptures = nlohmann::json::array();
     for (std::size_t i = 0; i < session.sculptures().size(); ++i) {
@@ -89,11 +180,11 @@ int runSessionCommand(const SessionCommandOptions& options) {
     int status = journal.damaged() || !playError.empty() ? 1 : 0;
     if (options.verify) {
         nlohmann::json verify = nlohmann::json::array();
-        if (!snap.present) report["verify"] = "no snapshot to compare with";
         for (const std::string& name : snap.sculptures) {
             const int i = session.findSculpture(name);
             voxel::Volume saved;
-            const std::string path = (std::filesystem::path(paths.snapshots) / (name + ".vdb")).string();
+            const std::size_t at = static_cast<std::size_t>(&name - snap.sculptures.data());
+            const std::string path = (std::filesystem::path(paths.snapshots) / snap.files[at]).string();
             std::string why = voxel::readVolume(path, saved);
             nlohmann::json v = {{"sculpture", name}};
             if (i < 0) why = "no such sculpture in the garden";
@@ -108,6 +199,27 @@ int runSessionCommand(const SessionCommandOptions& options) {
             verify.push_back(std::move(v));
         }
         if (snap.present) report["verify"] = std::move(verify);
+        // What was checked, in words, also when there was nothing to compare.
+        std::string summary;
+        if (!playError.empty())
+            summary = "the journal does not play to its end (" + playError + ")";
+        else if (!snap.error.empty())
+            summary = "the snapshot cannot be read (" + snap.error + "); the journal's " +
+                      std::to_string(journal.records.size()) + " records play";
+        else if (!snap.present)
+            summary = "no snapshot yet (one is written every " + std::to_string(kSnapshotEvery) +
+                      " actions and when the session closes): the journal's " + std::to_string(journal.records.size()) +
+                      " records play on the session's garden; no grid to compare";
+        else if (snap.records > journal.records.size())
+            summary = "the snapshot covers " + std::to_string(snap.records) + " records but the journal holds only " +
+                      std::to_string(journal.records.size());
+        else
+            summary = "the journal's first " + std::to_string(snap.records) + " of " +
+                      std::to_string(journal.records.size()) + " records played and " +
+                      std::to_string(snap.sculptures.size()) + " snapshot grid" + (snap.sculptures.size() == 1 ? "" : "s") +
+                      " compared voxel by voxel" + (status ? ": they differ (see above)" : ": all equal");
+        if (!snap.error.empty() || snap.records > journal.records.size()) status = 1;
+        report["verify_summary"] = summary;
     }
     if (options.json) {
         std::cout << report.dump(2) << "\n";
@@ -127,6 +239,7 @@ int runSessionCommand(const SessionCommandOptions& options) {
             for (const auto& e : s["edit_list"]) std::cout << "  " << e.get<std::string>() << "\n";
     }
     if (!playError.empty()) std::cout << "not played: " << playError << "\n";
+    if (options.verify) std::cout << "verify: " << report["verify_summary"].get<std::string>() << "\n";
     if (options.verify && report["verify"].is_array())
         for (const auto& v : report["verify"])
             std::cout << "verify " << v["sculpture"].get<std::string>() << ": "

@@ -130,13 +130,19 @@ int runDesktopGarden(const DesktopOptions& options) {
         SessionSettings settings;
         settings.scheduler.budgetMs = options.budgetMs;
         settings.viewportHeight = window.window().framebufferSize().y;
-        OpenedSession opened = openLoadedOrSession(std::move(load), options.session, options.garden, settings);
+        OpenedSession opened = openLoadedOrSession(
+            std::move(load), {options.session, options.garden, options.gardenGiven, "hypergarden (desktop)"}, settings);
         if (!opened.error.empty()) {
             std::cerr << "error: " << opened.error << "\n";
             return opened.exitStatus;
         }
         for (const std::string& m : openedMessages(opened)) std::cerr << m << "\n";
-        return runDesktopOn(*opened.session, window, options);
+        reportSaveChangesOnStderr(opened);
+        int status = runDesktopOn(*opened.session, window, options);
+        std::vector<std::string> last;
+        const int saved = closeSession(opened, last);
+        for (const std::string& line : last) std::cerr << line << "\n";
+        return status != 0 ? status : saved;
     } catch (const GlError& e) {
         std::cerr << "error: " << e.what() << "\n";
         return 1;

@@ -27,6 +27,7 @@ using HeadsetEntry = std::function<HeadsetReturn(GardenSession&, GardenWindow&, 
 
 struct DesktopOptions {
     std::string garden;         // the garden file
+    bool gardenGiven = false;   // named by the user: told when an existing session keeps its own
     int width = 1280, height = 720;
     bool vsync = true;
     double budgetMs = 11.1;

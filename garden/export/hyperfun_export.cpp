@@ -18,7 +18,7 @@
 #include "garden/morph/morph_sources.h"
 #include "garden/sculpt/edit_field.h"
 #include "garden/sculpt/sculpture_edits.h"
-#include "voxel/atomic_write.h"
+#include "io/checked_write.h"
 
 namespace hg::garden {
 
@@ -321,14 +321,7 @@ HyperFunExport exportHyperFun(const GardenSession& session, int sculpture) {
 
 std::string writeHyperFunExport(const HyperFunExport& r, const std::string& path) {
     if (!r.error.empty()) return r.error;
-    return voxel::writeAtomically(path, [&](const std::string& tmp) -> std::string {
-        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-        if (!out) return "cannot write " + path + ": " + std::strerror(errno);
-        out << r.text;
-        out.close();
-        if (!out) return "cannot write " + path + ": " + std::strerror(errno);
-        return "";
-    });
+    return io::writeFileAtomically(path, r.text, io::WriteSite::Export);
 }
 
 std::string exportSculptureHyperFun(const GardenSession& session, int sculpture, const std::string& path) {

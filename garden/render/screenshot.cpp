@@ -5,7 +5,7 @@
 #include <cstring>
 
 #include "garden/render/offscreen_target.h"
-#include "voxel/vdb_io.h"
+#include "io/checked_write.h"
 
 // stb's implementation is compiled here, file-local (STB_IMAGE_WRITE_STATIC),
 // so it cannot clash with the copy in Debian's libstb that ImGui pulls in;
@@ -29,19 +29,8 @@
 namespace hg::garden {
 namespace {
 
-struct Sink {
-    std::FILE* file;
-    bool failed;
-    int error;
-};
-
-void writeToFile(void* context, void* data, int size) {
-    auto* sink = static_cast<Sink*>(context);
-    if (sink->failed || size <= 0) return;
-    if (std::fwrite(data, 1, static_cast<std::size_t>(size), sink->file) != static_cast<std::size_t>(size)) {
-        sink->failed = true;
-        sink->error = errno;
-    }
+void appendTo(void* context, void* data, int size) {
+    if (size > 0) static_cast<std::string*>(context)->append(static_cast<const char*>(data), static_cast<std::size_t>(size));
 }
 
 }  // namespace
@@ -51,17 +40,10 @@ std::string writePng(const std::string& path, int width, int height, const std::
     if (rgba.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4)
         return "cannot write " + path + ": pixel buffer does not match " + std::to_string(width) + "x" +
                std::to_string(height) + " RGBA";
-    return voxel::writeAtomically(path, [&](const std::string& tmp) -> std::string {
-        std::FILE* file = std::fopen(tmp.c_str(), "wb");
-        if (!file) return "cannot write " + path + ": " + std::strerror(errno);
-        Sink sink{file, false, 0};
-        int ok = stbi_write_png_to_func(writeToFile, &sink, width, height, 4, rgba.data(), width * 4);
-        int closeError = std::fclose(file) == 0 ? 0 : errno;
-        if (sink.failed) return "cannot write " + path + ": " + std::strerror(sink.error);
-        if (closeError != 0) return "cannot write " + path + ": " + std::strerror(closeError);
-        if (!ok) return "cannot write " + path + ": PNG encoding failed";
-        return "";
-    });
+    std::string png;
+    if (!stbi_write_png_to_func(appendTo, &png, width, height, 4, rgba.data(), width * 4))
+        return "cannot write " + path + ": PNG encoding failed";
+    return io::writeFileAtomically(path, png, io::WriteSite::Screenshot);
 }
 
 std::string writeFramebufferPng(const std::string& path, int width, int height) {

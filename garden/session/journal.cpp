@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include <sys/stat.h>
 #include <fcntl.h>
 #include <unistd.h>
 
@@ -13,6 +14,7 @@
 
 #include "garden/scene/json_reader.h"
 #include "garden/sculpt/edit_names.h"
+#include "io/checked_write.h"
 
 namespace hg::garden {
 
@@ -237,6 +239,10 @@ JournalRecord parseJournalRecord(const std::string& text, const std::string& pat
 
 JournalRead parseJournal(const std::string& text, const std::string& name) {
     JournalRead out;
+    // A journal is made with its first record: an empty file, or a header
+    // cut short by a crash, holds no record yet.
+    const std::string fullHeader = std::string(kHeader) + " " + std::to_string(kJournalVersion) + "\n";
+    if (text.size() < fullHeader.size() && fullHeader.compare(0, text.size(), text) == 0) return out;
     const std::size_t headerEnd = text.find('\n');
     const std::string header = text.substr(0, headerEnd);
     if (header.rfind(kHeader, 0) != 0) {
@@ -283,6 +289,7 @@ JournalRead parseJournal(const std::string& text, const std::string& name) {
         }
         try {
             out.records.push_back(parseJournalRecord(json, "record " + std::to_string(number)));
+            out.recordOffsets.push_back(pos);
         } catch (const JsonError& e) {
             fail(std::string("the record cannot be read: ") + e.what());
             return out;
@@ -306,33 +313,47 @@ JournalRead readJournal(const std::string& path) {
 }
 
 JournalWriter::~JournalWriter() {
-    if (file_) std::fclose(file_);
+    if (fd_ >= 0) ::close(fd_);
 }
 
 std::string JournalWriter::open(const std::string& path, std::uint64_t truncateTo) {
     path_ = path;
-    const bool fresh = ::access(path.c_str(), F_OK) != 0;
-    if (!fresh && truncateTo != ~std::uint64_t{0} && ::truncate(path.c_str(), static_cast<off_t>(truncateTo)) != 0)
-        return "cannot cut the damaged tail of " + path + ": " + std::strerror(errno);
-    file_ = std::fopen(path.c_str(), "ab");
-    if (!file_) return "cannot open the journal " + path + " for writing: " + std::strerror(errno);
-    if (fresh) {
-        std::fprintf(file_, "%s %d\n", kHeader, kJournalVersion);
-        if (std::fflush(file_) != 0 || ::fsync(::fileno(file_)) != 0)
-            return "cannot write the journal " + path + ": " + std::strerror(errno);
+    fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
+    if (fd_ < 0) return "cannot open the journal " + path + " for writing: " + std::strerror(errno);
+    struct stat st {};
+    if (::fstat(fd_, &st) != 0) return "cannot read the size of the journal " + path + ": " + std::strerror(errno);
+    goodSize_ = static_cast<std::uint64_t>(st.st_size);
+    if (truncateTo < goodSize_) {
+        if (std::string why = io::truncateFile(fd_, truncateTo, io::WriteSite::Journal, path); !why.empty())
+            return "cannot cut the damaged tail of the journal: " + why;
+        goodSize_ = truncateTo;
     }
     return "";
 }
 
 std::string JournalWriter::append(const JournalRecord& r) {
-    if (!file_) return "the journal is not open";
+    if (fd_ < 0) return "the journal is not open";
+    if (torn_) {
+        // What a failed append left is cut first: records stay whole and in order.
+        if (std::string why = io::truncateFile(fd_, goodSize_, io::WriteSite::Journal, path_); !why.empty()) return why;
+        torn_ = false;
+    }
     const std::string json = journalRecordJson(r);
     char crc[16];
     std::snprintf(crc, sizeof crc, "%08x ", crc32(json));
-    const std::string line = crc + json + "\n";
-    if (std::fwrite(line.data(), 1, line.size(), file_) != line.size() || std::fflush(file_) != 0 ||
-        ::fsync(::fileno(file_)) != 0)
-        return "cannot append to the journal " + path_ + ": " + std::strerror(errno);
+    std::string line;
+    if (goodSize_ == 0) line = std::string(kHeader) + " " + std::to_string(kJournalVersion) + "\n";
+    line += crc + json + "\n";
+    std::string why = io::writeAll(fd_, line.data(), line.size(), io::WriteSite::Journal, path_);
+    if (why.empty()) why = io::syncFile(fd_, io::WriteSite::Journal, path_);
+    if (!why.empty()) {
+        torn_ = true;
+        // Cut now as well when the file system lets us: a reader meanwhile
+        // (or a crash before the retry) sees only whole records.
+        if (io::truncateFile(fd_, goodSize_, io::WriteSite::Journal, path_).empty()) torn_ = false;
+        return why;
+    }
+    goodSize_ += line.size();
     ++written_;
     return "";
 }

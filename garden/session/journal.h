@@ -88,6 +88,8 @@ struct JournalRead {
     std::size_t damagedRecord = 0;
     std::uint64_t damagedOffset = 0;
     std::uint64_t goodBytes = 0;  // where the trusted part ends
+    // Where each record's line starts (records[i] at recordOffsets[i]).
+    std::vector<std::uint64_t> recordOffsets;
 
     bool ok() const { return error.empty(); }
     bool damaged() const { return !damage.empty(); }
@@ -96,7 +98,10 @@ struct JournalRead {
 JournalRead readJournal(const std::string& path);
 JournalRead parseJournal(const std::string& text, const std::string& name);
 
-// Appends records, each synced to disk before append() returns.
+// Appends records, each written whole and synced to disk before append()
+// returns "" (io/checked_write.h). A failed append leaves the file as it
+// was before it: what it wrote of the record is cut before the next try,
+// so a record is on disk whole or not at all, and in order.
 class JournalWriter {
 public:
     JournalWriter() = default;
@@ -104,17 +109,19 @@ public:
     JournalWriter(const JournalWriter&) = delete;
     JournalWriter& operator=(const JournalWriter&) = delete;
 
-    // Opens `path` for appending (writing the header into a new file).
-    // `truncateTo`: cut a damaged tail first (the reader's goodBytes).
-    // "" on success, else why not.
+    // Opens `path` for appending; the header is written with the first
+    // record of a new (or empty) file. `truncateTo`: cut a damaged tail
+    // first (the reader's goodBytes). "" on success, else why not.
     std::string open(const std::string& path, std::uint64_t truncateTo = ~std::uint64_t{0});
     std::string append(const JournalRecord& r);
-    bool isOpen() const { return file_ != nullptr; }
+    bool isOpen() const { return fd_ >= 0; }
     std::size_t written() const { return written_; }
 
 private:
-    std::FILE* file_ = nullptr;
+    int fd_ = -1;
     std::string path_;
+    std::uint64_t goodSize_ = 0;  // the file's length after the last whole record
+    bool torn_ = false;           // an append failed: cut back to goodSize_ first
     std::size_t written_ = 0;
 };
 

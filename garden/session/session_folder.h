@@ -1,25 +1,28 @@
 // A session folder (DESIGN §6, docs/session-format.md): the garden and its
 // sculptures' sources copied in, the journal of finished actions, and
-// snapshots of the edited grids. Opening a folder that holds no session
-// creates one from a garden file; opening one that does replays its journal
-// (a damaged tail is reported with its record number and byte offset, kept
-// in a copy, and everything before it recovered). Saving needs no action:
-// every finished action is synced to the journal as it ends, and snapshots
-// are written atomically (write, then rename).
+// snapshots of the edited grids. One process writes a session at a time
+// (it holds DIR/session.lock); every write is checked, and a failed one
+// leaves the work in memory, shown as "not saved" and retried, never lost
+// without a word.
 //
 //   DIR/session.json        {"format": "hypergarden-session", "version": 1}
+//   DIR/session.lock        the writer's lock and who holds it (io/folder_lock.h)
 //   DIR/garden.json         the garden, its "file" entries pointing into sources/
 //   DIR/sources/*.hf        the sculptures' HyperFun files as they were
 //   DIR/journal.hgj         garden/session/journal.h
-//   DIR/snapshots/          snapshot.json (the record count it covers) and one
-//                           NAME.vdb per edited sculpture
+//   DIR/snapshots/          snapshot.json (the record count it covers and the
+//                           grids' files) and one NAME.RECORDS.vdb per edited
+//                           sculpture
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "garden/session/journal.h"
+#include "garden/session/journal_sink.h"
+#include "io/folder_lock.h"
 
 namespace hg::garden {
 
@@ -28,16 +31,27 @@ class GardenSession;
 constexpr int kSessionVersion = 1;
 // A snapshot every this many journalled actions (and when the session closes).
 constexpr std::size_t kSnapshotEvery = 100;
+constexpr const char* kSessionLockFile = "session.lock";
 
 struct SessionPaths {
     std::string dir, manifest, garden, journal, snapshots, snapshotManifest;
     explicit SessionPaths(const std::string& dir);
 };
 
-// Creates DIR as a session of `gardenFile` when DIR holds no session.json
-// (DIR may exist, empty). "" on success, else why not (nothing half-made is
-// left as a session: session.json is written last).
-std::string ensureSession(const std::string& dir, const std::string& gardenFile, bool& created);
+// What DIR is to `--session DIR`.
+enum class FolderKind {
+    Session,     // holds session.json
+    Unfinished,  // a session whose making was cut short (only our files, no session.json)
+    Empty,       // empty
+    Missing,     // does not exist
+    Other,       // a file, or a folder with other things in it: never made a session
+};
+FolderKind folderKind(const std::string& dir);
+
+// Makes DIR a session of `gardenFile` (DIR exists, Empty or Unfinished;
+// the caller holds its lock). "" on success, else why not (nothing
+// half-made is taken for a session: session.json is written last).
+std::string makeSession(const std::string& dir, const std::string& gardenFile);
 
 // The version and format check of DIR/session.json; "" when it is ours.
 std::string checkSessionManifest(const SessionPaths& paths);
@@ -46,16 +60,24 @@ struct SnapshotInfo {
     bool present = false;
     std::size_t records = 0;               // journal records it covers
     std::vector<std::string> sculptures;   // edited sculptures with a grid in it
+    std::vector<std::string> files;        // their grids' file names in snapshots/
     std::string error;                     // unreadable snapshot.json
 };
 SnapshotInfo readSnapshotInfo(const SessionPaths& paths);
 
+// Removes what dead writers left (the caller holds the lock): temporaries
+// (NAME.partial-PID) in the folder, sources/ and snapshots/, and grids in
+// snapshots/ that no published snapshot names. The removed paths.
+std::vector<std::string> removeLeftovers(const SessionPaths& paths);
+
 // Keeps a running GardenSession's journal: attach() replays what the
 // journal holds into the session, then appends every finished action.
-class SessionRecorder {
+class SessionRecorder : public JournalSink {
 public:
-    explicit SessionRecorder(std::string dir);
-    ~SessionRecorder();
+    SessionRecorder(std::string dir, std::unique_ptr<io::FolderLock> lock);
+    ~SessionRecorder() override;
+    SessionRecorder(const SessionRecorder&) = delete;
+    SessionRecorder& operator=(const SessionRecorder&) = delete;
 
     const SessionPaths& paths() const { return paths_; }
     // Reads the journal (before the session is built). "" or why the
@@ -66,21 +88,49 @@ public:
     const std::vector<std::string>& notes() const { return notes_; }
 
     // Replays the journal into `session` and journals its actions from now
-    // on. "" or why a record could not be played (the records before it are).
-    std::string attach(GardenSession& session);
-    // Writes the snapshot now (atomically). "" or why not.
+    // on. A record that cannot be played leaves the session read-only on
+    // what played (saveStatus() says which record and what to do); a
+    // journal that cannot be opened for writing leaves it not saved.
+    void attach(GardenSession& session);
+    const JournalPlayed& restored() const { return restored_; }
+
+    // JournalSink: every finished action is written at once; after a
+    // failure it is kept in memory with the ones after it, in order, and
+    // written with the next action or retrySave().
+    void append(const JournalRecord& record) override;
+    SaveStatus saveStatus() const override { return status_; }
+    bool retrySave() override;
+    // Called at each change of saveStatus() (the terminal's line).
+    void setStatusListener(std::function<void(const SaveStatus&)> listener) { listener_ = std::move(listener); }
+
+    // Writes the snapshot now, only when everything is saved. "" or why
+    // not (a failed snapshot is never published).
     std::string snapshot();
+    // The last snapshot's failure, "" when it was written.
+    const std::string& snapshotProblem() const { return snapshotProblem_; }
+    // Ends the session: the backlog tried once more, the last snapshot
+    // written. The final status (also kept by saveStatus()).
+    SaveStatus close();
     std::size_t records() const { return records_; }
 
 private:
-    void onAction(const JournalRecord& r);
+    bool writeBacklog();
+    void setStatus(SaveStatus::State state, const std::string& reason, const std::string& remedy = "");
 
     SessionPaths paths_;
+    std::unique_ptr<io::FolderLock> lock_;
     JournalRead read_;
     JournalWriter writer_;
+    bool writerOpen_ = false;
     GardenSession* session_ = nullptr;
+    JournalPlayed restored_;
+    std::vector<JournalRecord> backlog_;  // finished, not yet on disk, in order
+    SaveStatus status_;
+    std::function<void(const SaveStatus&)> listener_;
     std::size_t records_ = 0;
     std::size_t lastSnapshot_ = 0;
+    std::string snapshotProblem_;
+    bool closed_ = false;
     std::vector<std::string> notes_;
 };
 

@@ -34,7 +34,7 @@ TEST_F(ExportCliTest, ASessionsSculptureIsWrittenAsTheLibraryWritesIt) {
     {
         SessionSettings settings;
         settings.maxLevel = 0;
-        OpenedSession o = openSession(folder, gardenFile, settings);
+        OpenedSession o = openSession({folder, gardenFile}, settings);
         ASSERT_EQ(o.error, "");
         GardenSession& s = *o.session;
         const int c = s.findSculpture("c");
@@ -93,7 +93,7 @@ TEST_F(ExportCliTest, AnEditedSculptureIsMeshedFromItsExportedFRepInEveryFormat)
     {
         SessionSettings settings;
         settings.maxLevel = 0;
-        OpenedSession o = openSession(folder, gardenFile, settings);
+        OpenedSession o = openSession({folder, gardenFile}, settings);
         ASSERT_EQ(o.error, "");
         const int a = o.session->findSculpture("a");
         ASSERT_EQ(o.session->applyStroke(a, StrokeTool::Carve, {{-0.3, 1.0, -2.3094}, {0.3, 1.0, -2.3094}}, 0.1), "");

@@ -50,7 +50,7 @@ TEST_F(SessionFolderTest, AGardenOpensLoadedOrInItsFolderWithItsMessages) {
     const std::string garden = writeGarden();
     // No folder: the loaded garden as it is, nothing journalled, only the
     // missing sculpture to tell (its message on one line).
-    OpenedSession loaded = openLoadedOrSession(loadGarden(garden), "", garden, test::smallSessionSettings());
+    OpenedSession loaded = openLoadedOrSession(loadGarden(garden), {"", garden}, test::smallSessionSettings());
     ASSERT_TRUE(loaded.error.empty()) << loaded.error;
     ASSERT_TRUE(loaded.session);
     EXPECT_FALSE(loaded.recorder);
@@ -60,13 +60,14 @@ TEST_F(SessionFolderTest, AGardenOpensLoadedOrInItsFolderWithItsMessages) {
     EXPECT_EQ(messages[0].find('\n'), std::string::npos) << messages[0];
     // A folder: made from the garden file, the note first.
     const std::string folder = (dir / "session").string();
-    OpenedSession made = openLoadedOrSession(std::nullopt, folder, garden, test::smallSessionSettings());
+    OpenedSession made = openLoadedOrSession(std::nullopt, {folder, garden}, test::smallSessionSettings());
     ASSERT_TRUE(made.error.empty()) << made.error;
     EXPECT_TRUE(made.recorder);
     messages = openedMessages(made);
-    ASSERT_EQ(messages.size(), 2u);
-    EXPECT_EQ(messages[0], "note: created the session " + folder + " from " + garden);
-    EXPECT_EQ(messages[1].rfind("warning: sculpture 'lost'", 0), 0u) << messages[1];
+    ASSERT_EQ(messages.size(), 3u);
+    EXPECT_EQ(messages[0], "note: created the folder " + folder);
+    EXPECT_EQ(messages[1], "note: created the session " + folder + " from " + garden);
+    EXPECT_EQ(messages[2].rfind("warning: sculpture 'lost'", 0), 0u) << messages[2];
 }
 
 TEST_F(SessionFolderTest, ASessionReopensWithIdenticalGridsAndItsUndoHistory) {
@@ -74,12 +75,12 @@ TEST_F(SessionFolderTest, ASessionReopensWithIdenticalGridsAndItsUndoHistory) {
     const std::string folder = (dir / "session").string();
     std::vector<voxel::Volume> saved;
     {
-        OpenedSession o = openSession(folder, garden, settings());
+        OpenedSession o = openSession({folder, garden}, settings());
         ASSERT_EQ(o.error, "");
         sculpt(*o.session);
         for (const char* n : {"a", "b", "c"}) saved.push_back(grid(o, n).clone());
     }
-    OpenedSession o = openSession(folder, garden, settings());
+    OpenedSession o = openSession({folder, garden}, settings());
     ASSERT_EQ(o.error, "");
     EXPECT_EQ(o.session->editCount(o.session->findSculpture("a")), 1u);
     EXPECT_EQ(o.session->editCount(o.session->findSculpture("c")), 1u);
@@ -99,7 +100,7 @@ TEST_F(SessionFolderTest, ADamagedTailIsReportedKeptAndCutAndTheRestRecovered) {
     const std::string garden = writeGarden();
     const std::string folder = (dir / "session").string();
     {
-        OpenedSession o = openSession(folder, garden, settings());
+        OpenedSession o = openSession({folder, garden}, settings());
         ASSERT_EQ(o.error, "");
         sculpt(*o.session);
     }
@@ -107,7 +108,7 @@ TEST_F(SessionFolderTest, ADamagedTailIsReportedKeptAndCutAndTheRestRecovered) {
     const auto goodSize = std::filesystem::file_size(paths.journal);
     std::ofstream(paths.journal, std::ios::app | std::ios::binary) << "0badc0de {\"action\":\"stro";  // a torn write
     {
-        OpenedSession o = openSession(folder, garden, settings());
+        OpenedSession o = openSession({folder, garden}, settings());
         ASSERT_EQ(o.error, "");
         bool reported = false;
         for (const std::string& n : o.notes)
@@ -126,10 +127,10 @@ TEST_F(SessionFolderTest, ADamagedTailIsReportedKeptAndCutAndTheRestRecovered) {
 TEST_F(SessionFolderTest, AnUnknownJournalVersionIsRefusedAndLeftAlone) {
     const std::string garden = writeGarden();
     const std::string folder = (dir / "session").string();
-    { OpenedSession o = openSession(folder, garden, settings()); }
+    { OpenedSession o = openSession({folder, garden}, settings()); }
     const SessionPaths paths(folder);
     std::ofstream(paths.journal, std::ios::binary) << "hypergarden-journal 9\nfuture records\n";
-    OpenedSession o = openSession(folder, garden, settings());
+    OpenedSession o = openSession({folder, garden}, settings());
     EXPECT_NE(o.error.find("version '9'"), std::string::npos) << o.error;
     EXPECT_EQ(o.exitStatus, 2);
     std::ifstream in(paths.journal);
@@ -209,7 +210,7 @@ TEST_F(SessionFolderTest, AProcessKilledAtAnyMomentReopensWithEveryFinishedActio
                                                                                      : JournalRead{};
         ASSERT_TRUE(r.ok()) << r.error;
         // What reopens is every record that was written whole, in order.
-        OpenedSession o = openSession(folder, garden, settings());
+        OpenedSession o = openSession({folder, garden}, settings());
         ASSERT_EQ(o.error, "");
         // ... and they are a prefix of the script's actions: strokes in order,
         // an undo after every ninth.

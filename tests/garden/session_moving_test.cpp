@@ -16,11 +16,20 @@
 namespace hg::garden {
 namespace {
 
+// Keeps the journalled records in memory.
+struct ListJournal : JournalSink {
+    explicit ListJournal(std::vector<JournalRecord>& list) : records(list) {}
+    void append(const JournalRecord& r) override { records.push_back(r); }
+    SaveStatus saveStatus() const override { return {}; }
+    bool retrySave() override { return true; }
+    std::vector<JournalRecord>& records;
+};
+
 class SessionMovingTest : public test::SmallGardenSession {
 protected:
     void SetUp() override {
         test::SmallGardenSession::SetUp();
-        session->setJournal([this](const JournalRecord& r) { journal.push_back(r); });
+        session->setJournal(&sink);
     }
     const Placement& placementOf(int i) const { return session->sculptures()[static_cast<std::size_t>(i)].placement; }
     int moves() const {
@@ -45,6 +54,7 @@ protected:
         return h;
     }
     std::vector<JournalRecord> journal;
+    ListJournal sink{journal};
 };
 
 TEST_F(SessionMovingTest, ALiveMoveIsOneUndoableJournalledMove) {

@@ -148,12 +148,12 @@ TEST_F(HandPanelPages, TheSculpturePageMirrorsAndDiscardsTheSelectedSculpturesEd
     EXPECT_EQ(edits, 0u) << "discarded on the panel";
     EXPECT_FALSE(redone) << "discarded for good, as on the desktop";
     // The grid is the unedited sculpture's, and the discard is journalled.
-    garden::OpenedSession fresh = garden::openSession((dir / "fresh").string(), gardenFile, {});
+    garden::OpenedSession fresh = garden::openSession({(dir / "fresh").string(), gardenFile}, {});
     ASSERT_TRUE(fresh.error.empty()) << fresh.error;
     const int freshA = fresh.session->findSculpture("a");
     ASSERT_TRUE(after);
     EXPECT_EQ(garden::test::differingVoxels(*after, *fresh.session->sculptures()[static_cast<std::size_t>(freshA)].volume), 0);
-    garden::OpenedSession reopened = garden::openSession(options.session, gardenFile, {});
+    garden::OpenedSession reopened = garden::openSession({options.session, gardenFile}, {});
     ASSERT_TRUE(reopened.error.empty()) << reopened.error;
     EXPECT_EQ(reopened.session->editCount(reopened.session->findSculpture("a")), 0u);
 }

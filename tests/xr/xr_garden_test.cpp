@@ -172,7 +172,7 @@ TEST_F(XrGarden, SessionLossKeepsTheStrokeInTheJournal) {
     EXPECT_LT(info.framesSubmitted, 20) << "the run ended at the loss, not at the script's end";
     ASSERT_TRUE(carved);
     // Reopened, the session has the stroke and the same grid.
-    garden::OpenedSession reopened = garden::openSession(o.session, gardenFile, {});
+    garden::OpenedSession reopened = garden::openSession({o.session, gardenFile}, {});
     ASSERT_TRUE(reopened.error.empty()) << reopened.error;
     const int a = reopened.session->findSculpture("a");
     EXPECT_EQ(reopened.session->editCount(a), 1u);
@@ -196,7 +196,7 @@ TEST_F(XrGarden, ExitRaisedByTheRuntimeEndsTheRunWithTheStrokeJournalled) {
     EXPECT_FALSE(info.lost);
     EXPECT_EQ(info.endReason, "the session ended");
     EXPECT_LE(info.framesSubmitted, 30);
-    garden::OpenedSession reopened = garden::openSession(o.session, gardenFile, {});
+    garden::OpenedSession reopened = garden::openSession({o.session, gardenFile}, {});
     ASSERT_TRUE(reopened.error.empty()) << reopened.error;
     EXPECT_EQ(reopened.session->editCount(reopened.session->findSculpture("a")), 1u);
 }
