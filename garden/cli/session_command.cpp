@@ -7,10 +7,12 @@
 // session another process holds; --verify and --cut-at take its lock.
 #include <filesystem>
 #include <iostream>
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <fstream>
 #include <map>
+#include <set>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -151,6 +153,19 @@ int runSessionCommand(const SessionCommandOptions& options) {
     }
     SessionSettings settings;
     settings.maxLevel = 0;
+    // The snapshot's grids, read first: a session played at another
+    // resolution (`replay --res`) is rebuilt at the resolution its grids have.
+    std::vector<voxel::Volume> saved(snap.sculptures.size());
+    std::vector<std::string> unreadable(snap.sculptures.size());
+    if (options.verify) {
+        std::set<int> resolutions;
+        for (std::size_t k = 0; k < snap.sculptures.size(); ++k) {
+            const std::string path = (std::filesystem::path(paths.snapshots) / snap.files[k]).string();
+            unreadable[k] = voxel::readVolume(path, saved[k]);
+            if (unreadable[k].empty()) resolutions.insert(saved[k].frame.resolution);
+        }
+        if (resolutions.size() == 1) settings.sculptureResolution = *resolutions.begin();
+    }
     GardenSession session(std::move(load), settings);
     const std::size_t upTo = options.verify && snap.present ? std::min(snap.records, journal.records.size()) : journal.records.size();
     const std::vector<JournalRecord> played(journal.records.begin(), journal.records.begin() + static_cast<std::ptrdiff_t>(upTo));
@@ -180,16 +195,21 @@ int runSessionCommand(const SessionCommandOptions& options) {
     int status = journal.damaged() || !playError.empty() ? 1 : 0;
     if (options.verify) {
         nlohmann::json verify = nlohmann::json::array();
-        for (const std::string& name : snap.sculptures) {
+        for (std::size_t k = 0; k < snap.sculptures.size(); ++k) {
+            const std::string& name = snap.sculptures[k];
             const int i = session.findSculpture(name);
-            voxel::Volume saved;
-            const std::size_t at = static_cast<std::size_t>(&name - snap.sculptures.data());
-            const std::string path = (std::filesystem::path(paths.snapshots) / snap.files[at]).string();
-            std::string why = voxel::readVolume(path, saved);
+            std::string why = unreadable[k];
             nlohmann::json v = {{"sculpture", name}};
             if (i < 0) why = "no such sculpture in the garden";
+            const voxel::Volume* rebuilt = i < 0 ? nullptr : session.sculptures()[static_cast<std::size_t>(i)].volume.get();
+            const auto sameBox = [](const voxel::IndexBox& x, const voxel::IndexBox& y) {
+                return std::equal(x.lo, x.lo + 3, y.lo) && std::equal(x.hi, x.hi + 3, y.hi);
+            };
+            if (why.empty() && (!rebuilt || !sameBox(rebuilt->frame.indexBox, saved[k].frame.indexBox)))
+                why = "the snapshot's grid (resolution " + std::to_string(saved[k].frame.resolution) +
+                      ") does not cover the same voxels as the rebuilt one";
             if (why.empty()) {
-                const std::size_t d = differingVoxels(*session.sculptures()[static_cast<std::size_t>(i)].volume, saved);
+                const std::size_t d = differingVoxels(*rebuilt, saved[k]);
                 v["differing_voxels"] = d;
                 if (d) status = 1;
             } else {

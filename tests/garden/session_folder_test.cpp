@@ -212,6 +212,9 @@ TEST_F(SessionFolderTest, AProcessKilledAtAnyMomentReopensWithEveryFinishedActio
         // What reopens is every record that was written whole, in order.
         OpenedSession o = openSession({folder, garden}, settings());
         ASSERT_EQ(o.error, "");
+        // Nothing the killed writer left half-made survives the opening.
+        for (const auto& e : std::filesystem::recursive_directory_iterator(folder))
+            EXPECT_EQ(e.path().filename().string().find(".partial-"), std::string::npos) << e.path();
         // ... and they are a prefix of the script's actions: strokes in order,
         // an undo after every ninth.
         std::size_t strokes = 0;
