@@ -316,6 +316,9 @@ bool HandPanelUi::update(garden::GardenSession& session, const HandPanel& panel,
         case PanelPage::Count: break;
     }
     ImGui::End();
+    // Over the bottom of the board, where the tool hand's user looks: work
+    // that is not on disk.
+    garden::drawSaveBanner(session, {0.0f, io.DisplaySize.y * 0.62f}, io.DisplaySize.x);
     ImGui::Render();
 
     // Most frames the board looks as it did: the texture (drawn and

@@ -5,6 +5,7 @@
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <ctime>
@@ -247,6 +248,9 @@ int runDesktopOn(GardenSession& session, GardenWindow& gardenWindow, const Deskt
         ImGui::End();
         drawToolPanel(session);
         drawStatsPanel(session.scheduler().history());
+        // Above everything, centred: work that is not on disk.
+        const float bannerWidth = std::min(640.0f, static_cast<float>(fb.x) - 20.0f);
+        drawSaveBanner(session, {0.5f * (static_cast<float>(fb.x) - bannerWidth), 10.0f}, bannerWidth);
         overlay.render();
         session.endFrame();
         const bool lastFrame = options.frames > 0 && frame + 1 == options.frames;

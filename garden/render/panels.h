@@ -22,6 +22,13 @@ void drawStatsPanel(const FrameHistory& history);
 // and redo. The desktop's key for each control is named beside it.
 void drawToolPanel(GardenSession& session);
 
+// While the session's work is not all on disk (garden/session/journal_sink.h):
+// a banner at `topLeft`, `width` wide, red for actions held in memory after
+// a failed write (the folder, the reason, a Retry button), amber for a
+// session opened read-only (the record it cannot play, what to do).
+// Nothing when everything is saved. True when shown.
+bool drawSaveBanner(GardenSession& session, glm::vec2 topLeft, float width);
+
 // The morph selector inside the current window: a triangle whose corners
 // carry labels[0..2] (bottom left, bottom right, top); clicking or dragging
 // in it moves `point`, kept inside the triangle, in the local frame of

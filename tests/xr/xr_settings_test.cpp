@@ -6,10 +6,13 @@
 
 #include <unistd.h>
 
+#include <cerrno>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 
+#include "io/write_faults.h"
 #include "xr/xr_settings.h"
 
 namespace hg::xr {
@@ -122,6 +125,32 @@ TEST_F(XrSettings, ThePathFollowsTheEnvironment) {
     const char* home = std::getenv("HOME");
     if (home) {
         EXPECT_EQ(xrSettingsPath(), std::string(home) + "/.config/hypergarden/xr.json");
+    }
+}
+
+// A settings write that fails (the write seam, every errno) says why and
+// keeps the settings the file held.
+TEST_F(XrSettings, AFailedWriteKeepsTheOldSettingsAndSaysWhy) {
+    const std::string path = (dir / "xr.json").string();
+    XrUserSettings s;
+    s.seated = true;
+    ASSERT_EQ(saveXrSettings(path, s), "");
+    for (int error : {ENOSPC, EIO, EDQUOT, EROFS, EFBIG}) {
+        io::FaultPlan p;
+        p.anySite = false;
+        p.site = io::WriteSite::Settings;
+        p.error = error;
+        io::setFaultPlan(p);
+        XrUserSettings changed;
+        changed.leftHanded = true;
+        const std::string why = saveXrSettings(path, changed);
+        io::setFaultPlan(std::nullopt);
+        EXPECT_NE(why.find(std::strerror(error)), std::string::npos) << why;
+        std::string warning;
+        const XrUserSettings kept = loadXrSettings(path, warning);
+        EXPECT_TRUE(kept.seated);
+        EXPECT_FALSE(kept.leftHanded);
+        EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir), std::filesystem::directory_iterator()), 1);
     }
 }
 
