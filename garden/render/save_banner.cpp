@@ -6,6 +6,8 @@
 // read-only on a record it cannot play (with what to do).
 #include <imgui.h>
 
+#include <string>
+
 #include "garden/app/garden_session.h"
 #include "garden/render/panels.h"
 
@@ -25,8 +27,13 @@ bool drawSaveBanner(GardenSession& session, glm::vec2 topLeft, float width) {
                  ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
                      ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoFocusOnAppearing);
     ImGui::PushTextWrapPos(0.0f);
-    ImGui::TextUnformatted(notSaved ? "NOT SAVED" : "READ-ONLY");
-    ImGui::TextUnformatted(status.headline().c_str());
+    const std::string actions = std::to_string(status.unsaved) + (status.unsaved == 1 ? " action" : " actions");
+    const std::string title =
+        notSaved ? "NOT SAVED: " + actions + " only in memory, retried with each new action"
+                 : "READ-ONLY: the journal holds a record that cannot be played" +
+                       (status.unsaved ? "; " + actions + " made here not saved" : std::string());
+    ImGui::TextUnformatted(title.c_str());
+    ImGui::TextUnformatted(status.reason.c_str());
     if (!status.remedy.empty()) ImGui::TextUnformatted(status.remedy.c_str());
     ImGui::PopTextWrapPos();
     if (notSaved) {

@@ -224,12 +224,15 @@ void SessionRecorder::attach(GardenSession& session) {
     session.setJournal(this);
     if (!restored_.ok()) {
         const std::size_t after = read_.records.size() - restored_.played - 1;
+        const auto records = [](std::size_t n) { return std::to_string(n) + (n == 1 ? " record" : " records"); };
         setStatus(SaveStatus::State::ReadOnly,
-                  paths_.journal + ": " + restored_.message() + "; the session shows the " +
-                      std::to_string(restored_.played) + " records before it, and the " + std::to_string(after) +
-                      (after == 1 ? " record after it is" : " records after it are") + " kept on disk, not played",
-                  "to go on from record " + std::to_string(restored_.played) + ": hypergarden session " + paths_.dir +
-                      " --cut-at " + std::to_string(restored_.played + 1) + " (the whole journal is kept beside it)");
+                  paths_.journal + ": " + restored_.message() + "; the session shows the " + records(restored_.played) +
+                      " before it" +
+                      (after ? ", and the " + records(after) + " after it " + (after == 1 ? "is" : "are") +
+                                   " kept on disk, not played"
+                             : std::string()),
+                  "to go on from the records before it: hypergarden session " + paths_.dir + " --cut-at " +
+                      std::to_string(restored_.played + 1) + " (the whole journal is kept beside it)");
         return;
     }
     // A journal cut short by a crash (or damaged) is cut back to its last

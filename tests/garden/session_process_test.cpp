@@ -110,7 +110,7 @@ void expectPrefixOfScript(const JournalRead& r, std::size_t strokesInScript) {
 std::size_t actionsOf(std::size_t strokes) { return strokes + strokes / 9; }
 
 TEST_F(SessionProcessTest, ASecondProcessIsRefusedWhileTheFirstWritesAndReadersSaySo) {
-    const std::string s = script(18, 2, 10, 30000);
+    const std::string s = script(18, 2, 10, 150000);  // then about five seconds idle: time for the others
     const std::string folder = (dir / "session").string();
     const pid_t first = ::fork();
     ASSERT_GE(first, 0);
