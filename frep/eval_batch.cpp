@@ -12,8 +12,15 @@
 namespace hg::frep {
 
 template <class T>
-BatchEvaluator<T>::BatchEvaluator(const Tape& tape)
-    : tape_(tape), regs_(static_cast<size_t>(tape.registers) * kBatch), fail_(kBatch), bad_(kBatch) {
+BatchEvaluator<T>::BatchEvaluator(const Tape& tape) : tape_(&tape), fail_(kBatch), bad_(kBatch) {
+    rebind(tape);
+}
+
+template <class T>
+void BatchEvaluator<T>::rebind(const Tape& tape) {
+    tape_ = &tape;
+    if (regs_.size() < static_cast<size_t>(tape.registers) * kBatch) regs_.resize(static_cast<size_t>(tape.registers) * kBatch);
+    firstInstr_ = 0;
     for (size_t i = 0; i < tape.code.size(); ++i) {
         const Instr& in = tape.code[i];
         if (in.op == Op::X || in.op == Op::Y || in.op == Op::Z) { firstInstr_ = i + 1; continue; }
@@ -99,8 +106,8 @@ void transcendental(T* __restrict o, const T* __restrict a, size_t n, Op op) {
 
 template <class T>
 void BatchEvaluator<T>::traceNan(size_t k) {
-    const Instr& in = tape_.code[k];
-    const std::uint32_t o = tape_.out[k];
+    const Instr& in = tape_->code[k];
+    const std::uint32_t o = tape_->out[k];
     if (!std::isnan(reg(o)[0])) {
         nanFrom_[o] = kNoReg;
         return;
@@ -121,13 +128,13 @@ template <class T>
 void BatchEvaluator<T>::chunk(const T* x, const T* y, const T* z, const T* w, T* out, size_t n,
                               ErrorReport& errors, std::uint8_t* failed, bool trace) {
     // Registers 0..2 are x, y, z (TapeBuilder::finish).
-    for (size_t i = 0; i < tape_.code.size() && i < 3; ++i) {
-        const Op op = tape_.code[i].op;
+    for (size_t i = 0; i < tape_->code.size() && i < 3; ++i) {
+        const Op op = tape_->code[i].op;
         const T* src = op == Op::X ? x : op == Op::Y ? y : z;
-        std::copy_n(src, n, reg(tape_.out[i]));
+        std::copy_n(src, n, reg(tape_->out[i]));
     }
     if (trace) {
-        nanFrom_.assign(tape_.registers, kNoReg);
+        nanFrom_.assign(tape_->registers, kNoReg);
         for (size_t k = 0; k < firstInstr_; ++k) traceNan(k);
     }
     std::fill_n(fail_.data(), n, std::uint8_t(0));
@@ -136,9 +143,9 @@ void BatchEvaluator<T>::chunk(const T* x, const T* y, const T* z, const T* w, T*
     DomainError firstError = DomainError::None;
 
     const T eps = hf::kEps<T>;
-    for (size_t k = firstInstr_; k < tape_.code.size(); ++k) {
-        const Instr& in = tape_.code[k];
-        T* o = reg(tape_.out[k]);
+    for (size_t k = firstInstr_; k < tape_->code.size(); ++k) {
+        const Instr& in = tape_->code[k];
+        T* o = reg(tape_->out[k]);
         const T* a = in.a != kNoReg ? reg(in.a) : nullptr;
         const T* b = in.b != kNoReg ? reg(in.b) : nullptr;
         const T* c = in.c != kNoReg ? reg(in.c) : nullptr;
@@ -207,7 +214,7 @@ void BatchEvaluator<T>::chunk(const T* x, const T* y, const T* z, const T* w, T*
             case Op::ConvSegment:
             case Op::ConvArc:
             case Op::SoftStep:
-                fusedBatch(in.op, a, b, c, o, n, tape_.params.data() + in.param);
+                fusedBatch(in.op, a, b, c, o, n, tape_->params.data() + in.param);
                 break;
             case Op::Check: {
                 for (size_t i = 0; i < n; ++i) { o[i] = a[i]; bad_[i] = a[i] == T(0); }
@@ -235,7 +242,7 @@ void BatchEvaluator<T>::chunk(const T* x, const T* y, const T* z, const T* w, T*
                 }
                 if (hit && !anyFail) {
                     anyFail = true;
-                    firstLoc = tape_.sites[in.site];
+                    firstLoc = tape_->sites[in.site];
                     firstError = in.op == Op::Check ? in.error : [&] {
                         for (size_t i = 0; i < n; ++i) {
                             if (!bad_[i]) continue;
@@ -251,7 +258,7 @@ void BatchEvaluator<T>::chunk(const T* x, const T* y, const T* z, const T* w, T*
         if (trace) traceNan(k);
     }
 
-    const T* r = reg(tape_.result);
+    const T* r = reg(tape_->result);
     const T limit = clamped_ ? static_cast<T>(kValueLimit) : std::numeric_limits<T>::infinity();
     std::uint64_t failures = 0;
     size_t nanPoint = n;  // the first point that failed only by being NaN, when that is the first error
@@ -273,8 +280,8 @@ void BatchEvaluator<T>::chunk(const T* x, const T* y, const T* z, const T* w, T*
         // the tape (the registers are free now). Rare, so not worth a
         // register of origins on every point.
         if (trace) {
-            const std::uint32_t from = nanFrom_[tape_.result];
-            if (from < tape_.locs.size()) firstLoc = tape_.locs[from];
+            const std::uint32_t from = nanFrom_[tape_->result];
+            if (from < tape_->locs.size()) firstLoc = tape_->locs[from];
         } else {
             ErrorReport one;
             T v;

@@ -38,7 +38,12 @@ public:
     // interpreter and the reference do (`hypergarden eval` prints those).
     void setClamped(bool clamped) { clamped_ = clamped; }
 
-    const Tape& tape() const { return tape_; }
+    const Tape& tape() const { return *tape_; }
+
+    // Runs `tape` from now on (it must outlive the evaluator), keeping the
+    // registers' memory: a tape specialized to each box costs no allocation
+    // once the largest has been seen.
+    void rebind(const Tape& tape);
 
 private:
     // `w`: the base value input (Op::W), or null. `trace` (one point):
@@ -48,7 +53,7 @@ private:
     void traceNan(size_t k);
     T* reg(std::uint32_t r) { return regs_.data() + static_cast<size_t>(r) * kBatch; }
 
-    const Tape& tape_;
+    const Tape* tape_;
     size_t firstInstr_ = 0;  // instructions before this are x, y, z and constants
     std::vector<T> regs_;
     std::vector<std::uint8_t> fail_;

@@ -9,9 +9,20 @@
 namespace hg::frep {
 
 GradientEvaluator::GradientEvaluator(const Tape& tape)
-    : tape_(tape),
+    : tape_(&tape),
       v_(static_cast<size_t>(tape.registers) * kBatch),
       dx_(v_.size()), dy_(v_.size()), dz_(v_.size()), fail_(kBatch) {}
+
+void GradientEvaluator::rebind(const Tape& tape) {
+    tape_ = &tape;
+    const size_t n = static_cast<size_t>(tape.registers) * kBatch;
+    if (v_.size() < n) {
+        v_.resize(n);
+        dx_.resize(n);
+        dy_.resize(n);
+        dz_.resize(n);
+    }
+}
 
 Gradient GradientEvaluator::evaluate(double x, double y, double z, ErrorReport& errors) {
     Gradient g;
@@ -30,9 +41,9 @@ void GradientEvaluator::chunk(const double* x, const double* y, const double* z,
     std::fill_n(fail_.data(), n, 0);
     DomainError firstError = DomainError::None;
     SourceLoc firstLoc;
-    for (size_t k = 0; k < tape_.code.size(); ++k) {
-        const Instr& in = tape_.code[k];
-        const size_t o = static_cast<size_t>(tape_.out[k]) * kBatch;
+    for (size_t k = 0; k < tape_->code.size(); ++k) {
+        const Instr& in = tape_->code[k];
+        const size_t o = static_cast<size_t>(tape_->out[k]) * kBatch;
         const size_t a = in.a != kNoReg ? static_cast<size_t>(in.a) * kBatch : 0;
         const size_t b = in.b != kNoReg ? static_cast<size_t>(in.b) * kBatch : 0;
         const size_t c = in.c != kNoReg ? static_cast<size_t>(in.c) * kBatch : 0;
@@ -51,13 +62,13 @@ void GradientEvaluator::chunk(const double* x, const double* y, const double* z,
             if (fusedParamCount(in.op) > 0) {
                 // The kernel's own closed form, differentiated analytically.
                 double slope[3];
-                value = fusedGradient(in.op, av, bv, cv, tape_.params.data() + in.param, slope);
+                value = fusedGradient(in.op, av, bv, cv, tape_->params.data() + in.param, slope);
                 ka = slope[0]; kb = slope[1]; kc = slope[2];
             }
             if (e != DomainError::None && (in.guard == kNoReg || v_[static_cast<size_t>(in.guard) * kBatch + i] != 0.0)) {
                 if (!fail_[i] && firstError == DomainError::None) {
                     firstError = e;
-                    firstLoc = tape_.sites[in.site];
+                    firstLoc = tape_->sites[in.site];
                 }
                 fail_[i] = 1;
             }
@@ -124,7 +135,7 @@ void GradientEvaluator::chunk(const double* x, const double* y, const double* z,
             dx_[o + i] = gx; dy_[o + i] = gy; dz_[o + i] = gz;
         }
     }
-    const size_t r = static_cast<size_t>(tape_.result) * kBatch;
+    const size_t r = static_cast<size_t>(tape_->result) * kBatch;
     std::uint64_t failures = 0;
     for (size_t i = 0; i < n; ++i) {
         Gradient g{v_[r + i], dx_[r + i], dy_[r + i], dz_[r + i]};

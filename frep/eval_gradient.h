@@ -25,11 +25,13 @@ public:
 
     void evaluate(const double* x, const double* y, const double* z, Gradient* out, size_t n, ErrorReport& errors);
     Gradient evaluate(double x, double y, double z, ErrorReport& errors);
+    // Runs `tape` from now on (it must outlive the evaluator), keeping the memory.
+    void rebind(const Tape& tape);
 
 private:
     void chunk(const double* x, const double* y, const double* z, Gradient* out, size_t n, ErrorReport& errors);
 
-    const Tape& tape_;
+    const Tape* tape_;
     std::vector<double> v_, dx_, dy_, dz_;
     std::vector<unsigned char> fail_;
 };

@@ -192,6 +192,8 @@ Interval hfPow(const Interval& b, const Interval& e, bool& mayFail) {
     return any ? r : Interval(0.0);
 }
 
+bool exactInFloat(double v) { return std::isfinite(v) && static_cast<double>(static_cast<float>(v)) == v; }
+
 bool mayBeTrue(const Interval& c) { return c.maybeNaN || c.hi != 0.0 || c.lo != 0.0; }
 bool surelyTrue(const Interval& c) { return !c.maybeNaN && (c.lo > 0.0 || c.hi < 0.0); }
 
@@ -209,8 +211,20 @@ Interval boolI(bool surelyT, bool surelyF) {
 
 }  // namespace
 
+IntervalEvaluator::IntervalEvaluator(const Tape& tape, std::vector<Affine> affine)
+    : tape_(&tape), regs_(tape.registers), exact_(tape.registers), affine_(std::move(affine)) {}
+
+void IntervalEvaluator::rebind(const Tape& tape, const std::vector<Affine>& affine) {
+    tape_ = &tape;
+    if (regs_.size() < tape.registers) {
+        regs_.resize(tape.registers);
+        exact_.resize(tape.registers);
+    }
+    affine_.assign(affine.begin(), affine.end());
+}
+
 IntervalEvaluator::IntervalEvaluator(const Tape& tape)
-    : tape_(tape), regs_(tape.registers), affine_(tape.code.size()) {
+    : tape_(&tape), regs_(tape.registers), exact_(tape.registers), affine_(tape.code.size()) {
     // Which registers hold affine functions of the point, in tape order
     // (registers are reused, so this follows the code).
     std::vector<Affine> reg(tape.registers);
@@ -249,10 +263,14 @@ IntervalEvaluator::IntervalEvaluator(const Tape& tape)
     }
 }
 
-Interval IntervalEvaluator::evaluate(const Interval& x, const Interval& y, const Interval& z) {
+Interval IntervalEvaluator::evaluate(const Interval& x, const Interval& y, const Interval& z, IntervalTrace* trace) {
     bool mayFail = false;
-    for (size_t k = 0; k < tape_.code.size(); ++k) {
-        const Instr& in = tape_.code[k];
+    if (trace) {
+        trace->value.resize(tape_->code.size());
+        trace->flags.assign(tape_->code.size(), 0);
+    }
+    for (size_t k = 0; k < tape_->code.size(); ++k) {
+        const Instr& in = tape_->code[k];
         const Interval a = in.a != kNoReg ? regs_[in.a] : Interval();
         const Interval b = in.b != kNoReg ? regs_[in.b] : Interval();
         const Interval c = in.c != kNoReg ? regs_[in.c] : Interval();
@@ -265,10 +283,17 @@ Interval IntervalEvaluator::evaluate(const Interval& x, const Interval& y, const
             case Op::Z: r = z; break;
             case Op::Const: r = Interval(in.imm); break;
             // The base value input (edit tapes) is not bounded here: any value.
-            case Op::W: r = Interval(-kValueLimit, kValueLimit); break;
+            case Op::W: r = base_; break;
             case Op::Add: r = add(a, b); break;
             case Op::Sub: r = sub(a, b); break;
-            case Op::Mul: r = mul(a, b, in.a == in.b); break;
+            case Op::Mul:
+                // A product of constants that float holds exactly (0 * 0, a
+                // far perturbation's cube) is that constant, not widened.
+                if (a.isPoint() && b.isPoint() && exactInFloat(a.lo) && exactInFloat(b.lo) && exactInFloat(a.lo * b.lo))
+                    r = Interval(a.lo * b.lo);
+                else
+                    r = mul(a, b, in.a == in.b);
+                break;
             case Op::Div: r = div(a, b); break;
             case Op::Neg: r = neg(a); break;
             case Op::Abs: r = absI(a); break;
@@ -386,11 +411,12 @@ Interval IntervalEvaluator::evaluate(const Interval& x, const Interval& y, const
                 break;
             case Op::ConvSegment:
             case Op::ConvArc:
-            case Op::SoftStep: r = fusedBounds(in.op, a, b, c, tape_.params.data() + in.param); break;
+            case Op::SoftStep: r = fusedBounds(in.op, a, b, c, tape_->params.data() + in.param); break;
         }
+        bool failsHere = false;
         if (fails || (opCanFail(in.op) && nan)) {
             const bool guardMayHold = in.guard == kNoReg || mayBeTrue(regs_[in.guard]);
-            if (guardMayHold) mayFail = true;
+            if (guardMayHold) mayFail = failsHere = true;
         }
         const Affine& f = affine_[k];
         if (f.valid && in.op != Op::X && in.op != Op::Y && in.op != Op::Z && in.op != Op::Const) {
@@ -410,9 +436,48 @@ Interval IntervalEvaluator::evaluate(const Interval& x, const Interval& y, const
                 r.hi = std::min(r.hi, mid + reach + pad);
             }
         }
-        regs_[tape_.out[k]] = r;
+        regs_[tape_->out[k]] = r;
+        if (trace) {
+            // Which bounds are constants that float evaluation keeps too:
+            // min, max and negation are exact in every precision.
+            std::uint8_t e = 0;
+            if (!r.maybeNaN) {
+                const std::uint8_t ea = in.a != kNoReg ? exact_[in.a] : 0, eb = in.b != kNoReg ? exact_[in.b] : 0;
+                constexpr std::uint8_t lo = IntervalTrace::kLoExact, hi = IntervalTrace::kHiExact;
+                switch (in.op) {
+                    case Op::Const: e = lo | hi; break;
+                    case Op::W: e = baseExact_ ? lo | hi : 0; break;
+                    case Op::Neg: e = static_cast<std::uint8_t>(((ea & lo) ? hi : 0) | ((ea & hi) ? lo : 0)); break;
+                    // x + 0 is x, or +0 where x is -0: bounds that hold for
+                    // x hold for it (a perturbation far from its quadric).
+                    case Op::Add:
+                        if (b.isPoint() && b.lo == 0.0 && (eb & lo) && (eb & hi)) e = ea;
+                        else if (a.isPoint() && a.lo == 0.0 && (ea & lo) && (ea & hi)) e = eb;
+                        break;
+                    // A product of constants that float holds exactly (0 * 0).
+                    case Op::Mul:
+                        if (r.isPoint() && a.isPoint() && b.isPoint() && (ea & eb & lo) && (ea & eb & hi)) e = lo | hi;
+                        break;
+                    // min(a, b) <= a: its upper bound is the smaller operand's,
+                    // exact when that one's is; it may be either operand's
+                    // value, so its lower bound is exact only when both are.
+                    case Op::Min:
+                        if (ea & eb & lo) e |= lo;
+                        if (a.hi < b.hi ? (ea & hi) : a.hi > b.hi ? (eb & hi) : ((ea | eb) & hi)) e |= hi;
+                        break;
+                    case Op::Max:
+                        if (a.lo > b.lo ? (ea & lo) : a.lo < b.lo ? (eb & lo) : ((ea | eb) & lo)) e |= lo;
+                        if (ea & eb & hi) e |= hi;
+                        break;
+                    default: break;
+                }
+            }
+            exact_[tape_->out[k]] = e;
+            trace->value[k] = r;
+            trace->flags[k] = static_cast<std::uint8_t>(e | (failsHere ? IntervalTrace::kMayFail : 0));
+        }
     }
-    Interval result = regs_[tape_.result];
+    Interval result = regs_[tape_->result];
     if (result.maybeNaN || mayFail) result = hull(result, Interval(kOutsideValue));
     result.maybeNaN = false;
     result.lo = std::max(result.lo, -kValueLimit);

@@ -192,33 +192,47 @@ Tape TapeBuilder::finish(std::uint32_t result) const {
         for (std::uint32_t r : {in.a, in.b, in.c, in.guard})
             if (r != kNoReg) live[r] = 1;
     }
+    return assembleTape(code_, locs_, live, result, sites_, params_);
+}
+
+Tape assembleTape(const std::vector<Instr>& code, const std::vector<SourceLoc>& locs, const std::vector<char>& live,
+                  std::uint32_t result, std::vector<SourceLoc> sites, std::vector<double> params,
+                  std::vector<std::uint32_t>* order) {
+    const size_t n = code.size();
+    if (order) order->clear();
     // Last use of each value, to recycle its register.
     std::vector<size_t> lastUse(n, 0);
     for (size_t i = 0; i < n; ++i) {
         if (!live[i]) continue;
-        const Instr& in = code_[i];
+        const Instr& in = code[i];
         for (std::uint32_t r : {in.a, in.b, in.c, in.guard})
             if (r != kNoReg) lastUse[r] = std::max(lastUse[r], i);
     }
     lastUse[result] = n;
 
     Tape t;
+    const std::size_t kept = static_cast<std::size_t>(std::count(live.begin(), live.end(), char(1))) + 3;
+    t.code.reserve(kept);
+    t.out.reserve(kept);
+    t.locs.reserve(kept);
+    if (order) order->reserve(kept);
     std::vector<std::uint32_t> reg(n, kNoReg);
     std::uint32_t next = 0;
     // x, y, z, then constants: fixed registers.
     for (size_t i = 0; i < n; ++i) {
-        const Op o = code_[i].op;
+        const Op o = code[i].op;
         if (o == Op::X || o == Op::Y || o == Op::Z || (o == Op::Const && live[i])) {
             reg[i] = next++;
-            Instr in = code_[i];
+            Instr in = code[i];
             t.code.push_back(in);
             t.out.push_back(reg[i]);
-            t.locs.push_back(locs_[i]);
+            t.locs.push_back(locs[i]);
+            if (order) order->push_back(static_cast<std::uint32_t>(i));
         }
     }
     std::vector<std::uint32_t> freeRegs;
     for (size_t i = 0; i < n; ++i) {
-        const Instr& src = code_[i];
+        const Instr& src = code[i];
         if (!live[i] || src.op == Op::X || src.op == Op::Y || src.op == Op::Z || src.op == Op::Const) continue;
         Instr in = src;
         for (std::uint32_t* r : {&in.a, &in.b, &in.c, &in.guard})
@@ -229,12 +243,13 @@ Tape TapeBuilder::finish(std::uint32_t result) const {
         reg[i] = r;
         t.code.push_back(in);
         t.out.push_back(r);
-        t.locs.push_back(locs_[i]);
+        t.locs.push_back(locs[i]);
+        if (order) order->push_back(static_cast<std::uint32_t>(i));
         // Operands whose last use is here free their registers only now, so
         // an instruction never writes a register it reads.
         for (std::uint32_t s : {src.a, src.b, src.c, src.guard}) {
             if (s == kNoReg || lastUse[s] != i) continue;
-            const Op so = code_[s].op;
+            const Op so = code[s].op;
             if (so == Op::X || so == Op::Y || so == Op::Z || so == Op::Const) continue;
             if (std::find(freeRegs.begin(), freeRegs.end(), reg[s]) == freeRegs.end()) freeRegs.push_back(reg[s]);
         }
@@ -242,8 +257,8 @@ Tape TapeBuilder::finish(std::uint32_t result) const {
     }
     t.registers = next;
     t.result = reg[result];
-    t.sites = sites_;
-    t.params = params_;
+    t.sites = std::move(sites);
+    t.params = std::move(params);
     return t;
 }
 

@@ -89,4 +89,13 @@ private:
     std::uint32_t x_, y_, z_;
 };
 
+// Register allocation of SSA code whose operands are value indices: the
+// values marked `live` (x, y and z always), x, y, z and the constants first
+// in fixed registers, the rest in order with registers recycled after their
+// last use. `order`, if given, receives each tape instruction's SSA index.
+// TapeBuilder::finish and the tape specializer (tape_specializer.h) share it.
+Tape assembleTape(const std::vector<Instr>& code, const std::vector<SourceLoc>& locs, const std::vector<char>& live,
+                  std::uint32_t result, std::vector<SourceLoc> sites, std::vector<double> params,
+                  std::vector<std::uint32_t>* order = nullptr);
+
 }  // namespace hg::frep

@@ -7,16 +7,26 @@
 // are batch-evaluated. A voxel's value depends only on its own position and
 // the boxes above it, never on which part of the grid is being sampled:
 // that is what makes a region resample bit-identical to a full one.
+//
+// Each box's interval pass also specializes the tape to the box
+// (frep/tape_specializer.h): its children are tested and its leaves
+// evaluated with the shorter tape, which computes the same values bit for
+// bit, so the grids are the same with or without it, only faster where
+// many bounded pieces (a sculpture's edits) each reach a few boxes.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <bitset>
 #include <cstdint>
 #include <memory>
+#include <utility>
 #include <vector>
 
+#include "frep/eval_batch.h"
 #include "frep/eval_interval.h"
 #include "frep/model.h"
+#include "frep/tape_specializer.h"
 #include "voxel/volume_frame.h"
 
 namespace hg::voxel {
@@ -44,10 +54,14 @@ struct WalkCounters {
     std::uint64_t boxesOutside = 0;  // proven beyond -band
     std::uint64_t samples = 0;       // points batch-evaluated
     std::uint64_t leaves = 0;        // leaves with evaluated points
+    // The tape each evaluated leaf ran: lengths summed, the longest.
+    std::uint64_t leafTapeSum = 0, leafTapeMax = 0, leafTapes = 0;
 
     void add(const WalkCounters& o) {
         boxesTested += o.boxesTested; boxesInside += o.boxesInside; boxesOutside += o.boxesOutside;
         samples += o.samples; leaves += o.leaves;
+        leafTapeSum += o.leafTapeSum; leafTapes += o.leafTapes;
+        leafTapeMax = std::max(leafTapeMax, o.leafTapeMax);
     }
 };
 
@@ -58,27 +72,63 @@ struct WalkOutput {
     frep::ErrorReport errors;
 };
 
+// A box left for later, with the tape its parent specialized to (none:
+// the model's), so that its walk starts where the parent's left off.
+struct DeferredBox {
+    std::array<int, 3> origin;
+    std::shared_ptr<const frep::SpecializedTape> tape;
+};
+
 // One per thread.
 class BoxWalker {
 public:
     BoxWalker(const frep::Model& model, const VolumeFrame& frame, double scale);
 
-    // Walks the aligned box at `origin` of edge `size`, restricted to `clip`.
-    // Boxes of edge `deferSize` met below it are appended to `deferred`
-    // instead of walked (pass deferSize 0 to walk everything).
+    // Walks the aligned box at `origin` of edge `size`, restricted to `clip`,
+    // with `tape` (a specialization of the model's to a box holding this
+    // one; none: the model's own). Boxes of edge `deferSize` met below it
+    // are appended to `deferred` instead of walked (pass deferSize 0 to
+    // walk everything).
     void walk(const int origin[3], int size, const IndexBox& clip, WalkOutput& out, int deferSize = 0,
-              std::vector<std::array<int, 3>>* deferred = nullptr);
+              std::vector<DeferredBox>* deferred = nullptr, std::shared_ptr<const frep::SpecializedTape> tape = {});
 
 private:
     enum class Verdict { Inside, Outside, Unknown };
-    Verdict classify(const IndexBox& domain, WalkCounters& counters);
-    void evaluateLeaf(const int origin[3], const IndexBox& target, WalkOutput& out);
+    // The tape in force at one depth of the recursion (0: the model's) and
+    // an interval evaluator bound to it.
+    struct Level {
+        const frep::Tape* tape = nullptr;
+        const std::vector<frep::IntervalEvaluator::Affine>* affine = nullptr;
+        frep::SpecializedTape own;  // this depth's specialization, when it has one
+        std::unique_ptr<frep::IntervalEvaluator> interval;
+        std::uint64_t bound = 0;    // the generation `interval` is bound to
+        std::uint64_t generation = 0;
+    };
+    static constexpr int kDepths = 8;  // 128 down to 8, and the leaf's own
+
+    void walkAt(const int origin[3], int size, const IndexBox& clip, WalkOutput& out, int deferSize,
+                std::vector<DeferredBox>* deferred, int depth);
+    Verdict classify(const IndexBox& domain, WalkCounters& counters, int depth);
+    // The tape for the boxes below one at `depth` just classified (from its trace).
+    void descend(int depth);
+    void evaluateLeaf(const int origin[3], const IndexBox& target, WalkOutput& out, int depth);
 
     const VolumeFrame& frame_;
     double scale_;
     float scalef_;
-    std::unique_ptr<frep::IntervalEvaluator> interval_;
-    frep::PointSampler<float> sampler_;
+    bool specialize_ = false;  // the tape has min or max to prune, and specialization is on
+    std::array<Level, kDepths> levels_;
+    const frep::Tape* modelTape_ = nullptr;
+    std::vector<frep::IntervalEvaluator::Affine> modelAffine_;
+    std::shared_ptr<const frep::SpecializedTape> start_;  // the tape this walk started with
+    std::shared_ptr<const frep::SpecializedTape> deferredShare_;  // a copy of the tape handed to deferred boxes
+    std::uint64_t deferredGeneration_ = 0;
+    frep::IntervalTrace trace_;
+    frep::TapeSpecializer specializer_;
+    std::unique_ptr<frep::BatchEvaluator<float>> batch_;  // the tape's path
+    const frep::Tape* batchTape_ = nullptr;
+    std::uint64_t batchGeneration_ = 0;
+    std::unique_ptr<frep::PointSampler<float>> sampler_;  // the interpreter's path
     std::vector<float> x_, y_, z_, f_;
 };
 

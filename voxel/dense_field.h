@@ -1,5 +1,5 @@
 // Unclamped normalized values of every voxel of a box: the source cache the
-// morph blends from (DESIGN §4: blending clamped narrow-band values is wrong
+// morph blends from (docs/design.md §4: blending clamped narrow-band values is wrong
 // away from the band), and the dense peer the culled sampler is measured
 // against.
 #pragma once

@@ -9,20 +9,50 @@
 #include <tbb/parallel_for.h>
 
 #include "frep/eval_batch.h"
+#include "frep/eval_interval.h"
+#include "frep/tape_specializer.h"
 #include "voxel/volume_vdb.h"
 
 namespace hg::voxel {
 
 namespace {
 
+// Tapes shorter than this run as they are: specializing costs about an
+// evaluation of a few points, and a short tape has little to prune.
+constexpr std::size_t kSpecializeFrom = 96;
+
 struct Worker {
-    explicit Worker(const frep::Tape& tape, const openvdb::FloatTree& base) : eval(tape), acc(base) {}
+    explicit Worker(const frep::Tape& t, const openvdb::FloatTree& base, float band)
+        : tape(t), eval(t), interval(t), acc(base), specialize(frep::specializationEnabled() && t.size() >= kSpecializeFrom) {
+        // The base grid's values lie in [-band, band], both float constants.
+        interval.setBaseBounds(frep::Interval(-static_cast<double>(band), static_cast<double>(band)), true);
+    }
+    const frep::Tape& tape;
     frep::BatchEvaluator<float> eval;
+    frep::IntervalEvaluator interval;
+    frep::TapeSpecializer specializer;
+    frep::IntervalTrace trace;
+    frep::SpecializedTape shorter;
     openvdb::tree::ValueAccessor<const openvdb::FloatTree> acc;
+    bool specialize;
     std::vector<float> x, y, z, w, out;
     std::vector<openvdb::Index> offsets;
     frep::ErrorReport errors;
 };
+
+// The tape for the voxels of `box`: specialized to it (frep/tape_specializer.h,
+// the same values bit for bit) when that shortens it.
+void bindTapeFor(Worker& wk, const VolumeFrame& frame, const IndexBox& box) {
+    wk.eval.rebind(wk.tape);
+    if (!wk.specialize) return;
+    frep::Interval axis[3];
+    for (int a = 0; a < 3; ++a)  // rounded as the points are (monotone)
+        axis[a] = frep::Interval(static_cast<double>(static_cast<float>(frame.coordinate(a, box.lo[a]))),
+                                 static_cast<double>(static_cast<float>(frame.coordinate(a, box.hi[a]))));
+    wk.interval.evaluate(axis[0], axis[1], axis[2], &wk.trace);
+    if (wk.specializer.specialize(wk.tape, wk.interval.affine(), wk.trace, frep::Precision::Float, wk.shorter))
+        wk.eval.rebind(wk.shorter.tape);
+}
 
 // The voxels of the leaf at `o` inside `clip`: base values and positions
 // through the worker's tape, clamped to the band, stored active inside it.
@@ -41,6 +71,10 @@ void fillLeaf(Worker& wk, const VolumeFrame& frame, const IndexBox& clip, const 
                 wk.offsets.push_back(FloatLeaf::coordToOffset(c));
             }
     wk.out.resize(wk.x.size());
+    bindTapeFor(wk, frame,
+                IndexBox::fromCorners(std::max(o[0], clip.lo[0]), std::max(o[1], clip.lo[1]), std::max(o[2], clip.lo[2]),
+                                      std::min(o[0] + dim - 1, clip.hi[0]), std::min(o[1] + dim - 1, clip.hi[1]),
+                                      std::min(o[2] + dim - 1, clip.hi[2])));
     wk.eval.evaluate(wk.x.data(), wk.y.data(), wk.z.data(), wk.w.data(), wk.out.data(), wk.x.size(), wk.errors);
     const float band = frame.band;
     for (std::size_t n = 0; n < wk.out.size(); ++n) {
@@ -69,7 +103,7 @@ EditRegionStats applyEditTape(const Volume& base, Volume& target, const IndexBox
 
     const openvdb::FloatTree& baseTree = vdb(base).tree();
     tbb::enumerable_thread_specific<std::unique_ptr<Worker>> workers(
-        [&] { return std::make_unique<Worker>(tape, baseTree); });
+        [&] { return std::make_unique<Worker>(tape, baseTree, frame.band); });
     tbb::parallel_for(std::size_t{0}, origins.size(), [&](std::size_t b) {
         Worker& wk = *workers.local();
         fillLeaf(wk, frame, clip, origins[b], *leaves[b]);
@@ -101,7 +135,7 @@ EditRegionStats applyEditTapes(const Volume& base, Volume& target, const std::ve
     tbb::parallel_for(std::size_t{0}, regions.size(), [&](std::size_t r) {
         if (clips[r].empty()) return;
         const frep::Tape tape = tapeOf(r);
-        Worker wk(tape, baseTree);
+        Worker wk(tape, baseTree, frame.band);
         for (std::size_t b = 0; b < origins[r].size(); ++b) fillLeaf(wk, frame, clips[r], origins[r][b], *leaves[r][b]);
         errors.local().merge(wk.errors);
     });

@@ -6,10 +6,13 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <map>
 #include <memory>
 #include <vector>
 
 #include "frep/eval_gradient.h"
+#include "frep/eval_interval.h"
+#include "frep/tape_specializer.h"
 #include "voxel/lattice_evaluation.h"
 
 namespace hg::voxel {
@@ -90,25 +93,103 @@ std::vector<double> surfacePoints(const Probe& p) {
     return kept;
 }
 
-std::vector<double> gradientMagnitudes(const frep::Model& model, const std::vector<double>& pts, double h) {
+// Surface samples grouped by the block of probe cells they fall in, and
+// within it by a smaller block, so that each group's gradients run a tape
+// specialized to its box (the outer block's tape specialized further).
+constexpr int kOuterBlockCells = 8, kInnerBlockCells = 2;
+
+struct GradientWorker {
+    explicit GradientWorker(const frep::Tape& t) : outer(t), inner(t), grad(t) {}
+    frep::IntervalEvaluator outer, inner;
+    frep::GradientEvaluator grad;
+    frep::TapeSpecializer specializer;
+    frep::IntervalTrace trace;
+    frep::SpecializedTape outerTape, innerTape;
+};
+
+// The box of the samples `group` (indices into `pts`, xyz triples).
+std::array<frep::Interval, 3> boxOf(const std::vector<double>& pts, const std::vector<std::size_t>& group) {
+    std::array<frep::Interval, 3> box;
+    for (std::size_t a = 0; a < 3; ++a) box[a] = frep::Interval(pts[3 * group[0] + a]);
+    for (std::size_t i : group)
+        for (std::size_t a = 0; a < 3; ++a) {
+            box[a].lo = std::min(box[a].lo, pts[3 * i + a]);
+            box[a].hi = std::max(box[a].hi, pts[3 * i + a]);
+        }
+    return box;
+}
+
+std::vector<double> gradientMagnitudes(const frep::Model& model, const std::vector<double>& pts, double h,
+                                       const Probe& probe) {
     std::size_t n = pts.size() / 3;
     std::vector<double> mags;
     mags.reserve(n);
     frep::ErrorReport errors;
     if (const frep::Tape* tape = model.tape()) {
+        // groups[outer][inner] = sample indices, in a fixed order.
+        std::vector<std::vector<std::vector<std::size_t>>> groups;
+        {
+            std::map<std::array<int, 3>, std::size_t> outerIndex;
+            std::vector<std::map<std::array<int, 3>, std::size_t>> innerIndex;
+            for (std::size_t i = 0; i < n; ++i) {
+                std::array<int, 3> cell;
+                for (std::size_t a = 0; a < 3; ++a)
+                    cell[a] = static_cast<int>(std::floor((pts[3 * i + a] - probe.lo[a]) / probe.step));
+                std::array<int, 3> outerKey, innerKey;
+                for (std::size_t a = 0; a < 3; ++a) {
+                    outerKey[a] = cell[a] >= 0 ? cell[a] / kOuterBlockCells : -1;
+                    innerKey[a] = cell[a] >= 0 ? cell[a] / kInnerBlockCells : -1;
+                }
+                auto [o, freshOuter] = outerIndex.emplace(outerKey, groups.size());
+                if (freshOuter) {
+                    groups.emplace_back();
+                    innerIndex.emplace_back();
+                }
+                auto [in, freshInner] = innerIndex[o->second].emplace(innerKey, groups[o->second].size());
+                if (freshInner) groups[o->second].emplace_back();
+                groups[o->second][in->second].push_back(i);
+            }
+        }
         // In parallel, each magnitude written at its sample's index so the
-        // result does not depend on the number of threads.
+        // result does not depend on the number of threads. The specialized
+        // tapes give the same values, bit for bit (frep/tape_specializer.h).
         std::vector<double> all(n, 0.0);
-        tbb::enumerable_thread_specific<std::unique_ptr<frep::GradientEvaluator>> evaluators;
-        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 64), [&](const tbb::blocked_range<std::size_t>& r) {
-            auto& grad = evaluators.local();
-            if (!grad) grad = std::make_unique<frep::GradientEvaluator>(*tape);
+        const bool specialize = frep::specializationEnabled();
+        tbb::enumerable_thread_specific<std::unique_ptr<GradientWorker>> workers;
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, groups.size(), 1), [&](const tbb::blocked_range<std::size_t>& r) {
+            auto& w = workers.local();
+            if (!w) w = std::make_unique<GradientWorker>(*tape);
             frep::ErrorReport pointErrors;
-            for (std::size_t i = r.begin(); i != r.end(); ++i) {
-                std::uint64_t before = pointErrors.count;
-                frep::Gradient g = grad->evaluate(pts[3 * i], pts[3 * i + 1], pts[3 * i + 2], pointErrors);
-                double m = std::sqrt(g.dx * g.dx + g.dy * g.dy + g.dz * g.dz);
-                if (pointErrors.count == before && std::isfinite(m) && m > 0.0) all[i] = m;
+            for (std::size_t g = r.begin(); g != r.end(); ++g) {
+                const frep::Tape* outerTape = tape;
+                if (specialize) {
+                    std::vector<std::size_t> every;
+                    for (const auto& inner : groups[g]) every.insert(every.end(), inner.begin(), inner.end());
+                    const auto box = boxOf(pts, every);
+                    w->outer.evaluate(box[0], box[1], box[2], &w->trace);
+                    if (w->specializer.specialize(*tape, w->outer.affine(), w->trace, frep::Precision::Gradient, w->outerTape)) {
+                        outerTape = &w->outerTape.tape;
+                        w->inner.rebind(w->outerTape.tape, w->outerTape.affine);
+                    } else {
+                        w->inner.rebind(*tape, w->outer.affine());
+                    }
+                }
+                for (const auto& group : groups[g]) {
+                    w->grad.rebind(*outerTape);
+                    if (specialize) {
+                        const auto box = boxOf(pts, group);
+                        w->inner.evaluate(box[0], box[1], box[2], &w->trace);
+                        if (w->specializer.specialize(*outerTape, w->inner.affine(), w->trace, frep::Precision::Gradient,
+                                                      w->innerTape))
+                            w->grad.rebind(w->innerTape.tape);
+                    }
+                    for (std::size_t i : group) {
+                        std::uint64_t before = pointErrors.count;
+                        frep::Gradient gr = w->grad.evaluate(pts[3 * i], pts[3 * i + 1], pts[3 * i + 2], pointErrors);
+                        double m = std::sqrt(gr.dx * gr.dx + gr.dy * gr.dy + gr.dz * gr.dz);
+                        if (pointErrors.count == before && std::isfinite(m) && m > 0.0) all[i] = m;
+                    }
+                }
             }
         });
         for (double m : all)
@@ -150,7 +231,7 @@ Normalization estimateNormalization(const frep::Model& model, const VolumeFrame&
     result.scale = 1.0 / frame.voxelSize;
     Probe probe = sampleLattice(model, frame);
     std::vector<double> pts = surfacePoints(probe);
-    std::vector<double> mags = gradientMagnitudes(model, pts, frame.voxelSize * 0.25);
+    std::vector<double> mags = gradientMagnitudes(model, pts, frame.voxelSize * 0.25, probe);
     result.surfaceSamples = mags.size();
     if (mags.empty()) return result;
     medianAndP90(mags.data(), mags.size(), result.medianGradient, result.p90Gradient);

@@ -40,18 +40,18 @@ bool runWalk(const frep::Model& model, const VolumeFrame& frame, double scale, c
     };
     std::vector<std::array<int, 3>> tops = alignedBoxes(clip, kTopBoxSize);
     std::vector<WalkOutput> topOut(tops.size());
-    std::vector<std::vector<std::array<int, 3>>> deferred(tops.size());
+    std::vector<std::vector<DeferredBox>> deferred(tops.size());
     tbb::parallel_for(std::size_t{0}, tops.size(), [&](std::size_t i) {
         walker().walk(tops[i].data(), kTopBoxSize, clip, topOut[i], kTaskBoxSize, &deferred[i]);
     });
-    std::vector<std::array<int, 3>> tasks;
+    std::vector<DeferredBox> tasks;
     for (auto& d : deferred) tasks.insert(tasks.end(), d.begin(), d.end());
     if (!beforeTasks(tasks.size())) return false;
 
     std::vector<WalkOutput> taskOut(tasks.size());
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tasks.size(), 1), [&](const tbb::blocked_range<std::size_t>& r) {
         for (std::size_t i = r.begin(); i != r.end(); ++i) {
-            walker().walk(tasks[i].data(), kTaskBoxSize, clip, taskOut[i]);
+            walker().walk(tasks[i].origin.data(), kTaskBoxSize, clip, taskOut[i], 0, nullptr, tasks[i].tape);
             afterTask(i, taskOut[i]);
         }
     });
@@ -70,6 +70,10 @@ void copyStats(const Walk& walk, SampleStats& stats) {
     stats.boxesCulled = walk.counters.boxesInside + walk.counters.boxesOutside;
     stats.samples = walk.counters.samples;
     stats.leaves = walk.counters.leaves;
+    stats.leafTapeMax = walk.counters.leafTapeMax;
+    stats.leafTapeMean = walk.counters.leafTapes
+                             ? static_cast<double>(walk.counters.leafTapeSum) / static_cast<double>(walk.counters.leafTapes)
+                             : 0.0;
     stats.errors = walk.errors;
 }
 

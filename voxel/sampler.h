@@ -33,6 +33,10 @@ struct SampleStats {
     std::uint64_t voxels = 0;         // voxels in the sampled box
     std::uint64_t leaves = 0;         // leaves that hold evaluated voxels
     std::uint64_t estimatedBytes = 0; // the memory guard's estimate
+    // The tape each evaluated leaf ran, specialized to its box
+    // (frep/tape_specializer.h): mean and longest, against the full tape.
+    double leafTapeMean = 0.0;
+    std::uint64_t leafTapeMax = 0;
     double seconds = 0.0;
     frep::ErrorReport errors;         // domain errors at sampled points
 

@@ -9,16 +9,23 @@
 // Seed 002's impact table form: 10, 100 and 1,000 impacts in one pull, cast,
 // applied and remeshed. A whole carving frame in the running garden.
 // Reopening a session of 10,000 journalled actions. Exporting a sculpture
-// of 1,000 edits as HyperFun.
+// of 1,000 edits as HyperFun, and meshed to binary STL (`export-stl`,
+// issue 20) beside the same sculpture unedited and beside the edited one
+// evaluated with the full tape (specialization off): the tape each leaf
+// ran, mean and longest, against the full tape's length.
 // Prints a Markdown table; --json FILE writes the rows too.
 //
 //   ./build/release/bench/bench_tools [--json out.json] [--filter NAME] [--repeat N]
+//   (HG_BENCH_EXPORT_RES=256,512 sets the export-stl rows' resolutions)
 #include <algorithm>
+#include <cmath>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <random>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -29,6 +36,9 @@
 
 #include "frep/parser.h"
 #include "garden/app/garden_session.h"
+#include "frep/model.h"
+#include "frep/tape_specializer.h"
+#include "garden/export/export_file.h"
 #include "garden/export/hyperfun_export.h"
 #include "garden/sculpt/impacts.h"
 #include "garden/sculpt/sculpture_edits.h"
@@ -308,22 +318,28 @@ int main(int argc, char** argv) {
     }
     // Exporting a sculpture of 1,000 edits as HyperFun (docs/export.md):
     // the text made, written atomically, and read back by our parser.
-    if (args.matches("export")) {
-        std::printf("\n| sculpture | edits | pieces | statements | bytes | export (ms) | write (ms) | parse back (ms) |\n");
-        std::printf("|---|---:|---:|---:|---:|---:|---:|---:|\n");
-        const std::string gardenPath = std::string(HG_SOURCE_DIR) + "/content/gardens/default.json";
-        garden::SessionSettings settings;
-        settings.maxLevel = 0;
-        garden::GardenSession session(garden::loadGarden(gardenPath), settings);
+    // The dryad of the default garden with 1,000 edits in a fixed seeded
+    // script, where a sculptor puts them: on its surface (voxels within one
+    // voxel of it); strokes carving and adding, one perturbation in four.
+    const std::string gardenPath = std::string(HG_SOURCE_DIR) + "/content/gardens/default.json";
+    const auto editDryad = [&](garden::GardenSession& session) {
         const int d = session.findSculpture("dryad");
         const garden::Sculpture& dryad = session.sculptures()[static_cast<std::size_t>(d)];
-        const frep::Box3& b = dryad.volume->frame.modelBox;
-        const double v = dryad.volume->frame.voxelSize;
+        const voxel::VolumeFrame& f = dryad.volume->frame;
+        const double v = f.voxelSize;
+        std::vector<garden::ModelPoint> surface;
+        for (int k = f.indexBox.lo[2]; k <= f.indexBox.hi[2]; ++k)
+            for (int j = f.indexBox.lo[1]; j <= f.indexBox.hi[1]; ++j)
+                for (int i = f.indexBox.lo[0]; i <= f.indexBox.hi[0]; ++i)
+                    if (std::fabs(dryad.volume->value(i, j, k)) < 1.0f) {
+                        const auto p = f.position(i, j, k);
+                        surface.push_back({p[0], p[1], p[2]});
+                    }
         std::mt19937 rng(17);
-        std::uniform_real_distribution<double> ux(b.lo[0], b.hi[0]), uy(b.lo[1], b.hi[1]), uz(b.lo[2], b.hi[2]);
+        std::uniform_int_distribution<std::size_t> pick(0, surface.size() - 1);
         std::vector<garden::JournalRecord> records;
         for (int i = 0; i < 1000; ++i) {
-            const garden::ModelPoint a{ux(rng), uy(rng), uz(rng)};
+            const garden::ModelPoint a = surface[pick(rng)];
             if (i % 4 == 3) {
                 garden::Perturbation p;
                 p.center = a;
@@ -335,13 +351,78 @@ int main(int argc, char** argv) {
                                                        4 * v, 2.0, {a, {a[0] + 10 * v, a[1] + 4 * v, a[2]}}, std::nullopt});
             }
         }
-        if (const std::string why = session.restore(records); !why.empty()) std::fprintf(stderr, "export: %s\n", why.c_str());
+        if (const std::string why = session.restore(records); !why.empty()) std::fprintf(stderr, "edits: %s\n", why.c_str());
+        return d;
+    };
+    if (args.matches("export-stl")) {
+        std::printf("\n| sculpture | res | unedited (s) | edited (s) | edited / unedited | edited, full tape (s) | speed-up | full tape | leaf tape mean | leaf tape max |\n");
+        std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+        garden::SessionSettings settings;
+        settings.maxLevel = 0;
+        garden::GardenSession plain(garden::loadGarden(gardenPath), settings);
+        garden::GardenSession edited(garden::loadGarden(gardenPath), settings);
+        const int d = editDryad(edited);
+        std::vector<int> resolutions = {256};
+        if (const char* r = std::getenv("HG_BENCH_EXPORT_RES")) {
+            resolutions.clear();
+            for (std::stringstream in(r); in.good();) {
+                int v = 0;
+                in >> v;
+                in.ignore(1);
+                if (v > 0) resolutions.push_back(v);
+            }
+        }
+        const std::string out = (std::filesystem::temp_directory_path() / "bench_tools_export.stl").string();
+        const auto exportSeconds = [&](const garden::GardenSession& s, int res, bool specialize) {
+            frep::setSpecialization(specialize);
+            garden::ExportFileOptions fo;
+            fo.resolution = res;
+            garden::ExportFileReport report;
+            const double seconds = bench::bestOf(args.repeat, [&] {
+                const std::string why = garden::exportSculptureFile(s, d, out, fo, report);
+                if (!why.empty()) std::fprintf(stderr, "export-stl: %s\n", why.c_str());
+            });
+            frep::setSpecialization(true);
+            return seconds;
+        };
+        // The tape per leaf, from the exported file voxelized as the export samples it.
+        const garden::HyperFunExport e = garden::exportHyperFun(edited, d);
+        frep::ParseResult parsed = frep::parseProgram(e.text, "export.hf");
+        if (!parsed.ok()) {
+            std::fprintf(stderr, "export-stl: the exported text does not parse\n");
+            return 1;
+        }
+        const frep::Model model(std::make_shared<const frep::Program>(std::move(*parsed.program)), parsed.program->defaultBody());
+        for (int res : resolutions) {
+            const double plainS = exportSeconds(plain, res, true);
+            const double editedS = exportSeconds(edited, res, true);
+            const double fullS = exportSeconds(edited, res, false);
+            voxel::VolumeRequest tapeReq;
+            tapeReq.resolution = res;
+            const voxel::VoxelizeResult tapeRun = voxel::voxelize(model, tapeReq);
+            const std::size_t full = model.tape() ? model.tape()->size() : 0;
+            std::printf("| key_dryad, 1,000 edits | %d | %.2f | %.2f | %.2fx | %.2f | %.1fx | %zu | %.0f | %llu |\n", res, plainS,
+                        editedS, editedS / plainS, fullS, fullS / editedS, full, tapeRun.stats.leafTapeMean,
+                        static_cast<unsigned long long>(tapeRun.stats.leafTapeMax));
+            rows.push_back({{"name", "export-stl/" + std::to_string(res)}, {"unedited_s", plainS}, {"edited_s", editedS},
+                            {"edited_full_tape_s", fullS}, {"full_tape", full}, {"leaf_tape_mean", tapeRun.stats.leafTapeMean},
+                            {"leaf_tape_max", tapeRun.stats.leafTapeMax}});
+        }
+        std::filesystem::remove(out);
+    }
+    if (args.matches("export")) {
+        std::printf("\n| sculpture | edits | pieces | statements | bytes | export (ms) | write (ms) | parse back (ms) |\n");
+        std::printf("|---|---:|---:|---:|---:|---:|---:|---:|\n");
+        garden::SessionSettings settings;
+        settings.maxLevel = 0;
+        garden::GardenSession session(garden::loadGarden(gardenPath), settings);
+        const int d = editDryad(session);
         garden::HyperFunExport e;
         const double exportS = bench::bestOf(args.repeat, [&] { e = garden::exportHyperFun(session, d); });
         if (!e.error.empty()) std::fprintf(stderr, "export: %s\n", e.error.c_str());
         const std::string out = (std::filesystem::temp_directory_path() / "bench_tools_export.hf").string();
         const double writeS = bench::bestOf(args.repeat, [&] { garden::writeHyperFunExport(e, out); });
-        std::filesystem::remove(out);
+        if (!std::getenv("HG_BENCH_KEEP")) std::filesystem::remove(out);
         bool parsed = false;
         const double parseS = bench::bestOf(args.repeat, [&] { parsed = frep::parseProgram(e.text, "export.hf").ok(); });
         if (!parsed) std::fprintf(stderr, "export: the exported text does not parse\n");

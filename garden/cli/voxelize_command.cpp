@@ -113,6 +113,9 @@ int runVoxelize(const VoxelizeOptions& o) {
                 s.seconds, static_cast<unsigned long long>(s.samples), 100.0 * s.evaluatedFraction(),
                 static_cast<unsigned long long>(s.voxels), static_cast<unsigned long long>(s.boxesCulled),
                 static_cast<unsigned long long>(s.boxesTested), volume.activeVoxelCount());
+    if (o.stats && model.tape() && s.leafTapeMean > 0.0)
+        std::printf("stats: the tape specialized to each leaf's box ran %.0f instructions on average, %llu at most, of %zu\n",
+                    s.leafTapeMean, static_cast<unsigned long long>(s.leafTapeMax), model.tape()->size());
     if (o.stats) {
         voxel::GridStats g = voxel::measureGrid(volume);
         std::printf("stats: |grad| of the stored field at %zu surface voxels: median %.3f, 90th percentile %.3f "

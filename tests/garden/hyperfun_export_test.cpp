@@ -17,6 +17,8 @@
 #include "frep/interpreter.h"
 #include "frep/model.h"
 #include "frep/parser.h"
+#include "frep/tape_specializer.h"
+#include "voxel/sampler.h"
 #include "garden/app/garden_session.h"
 #include "garden/export/export_field.h"
 #include "garden/export/hyperfun_export.h"
@@ -311,6 +313,42 @@ std::vector<JournalRecord> manyEdits(int n, unsigned seed) {
         }
     }
     return out;
+}
+
+// The grid updates and the rebuild run each leaf with the edit tape
+// specialized to it (voxel/edit_region.cpp): the grids are the ones the
+// full tapes give, bit for bit, and so is the exported file's sampling.
+TEST(SpecializedEdits, GridsAndTheExportedFileAreTheSameWithAndWithoutSpecialization) {
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("hg_spec_edits_" + std::to_string(::getpid()));
+    const std::string garden = test::writeSmallGarden(dir, nlohmann::json::parse(R"({"morph": null})"));
+    std::unique_ptr<GardenSession> with, without;
+    frep::setSpecialization(false);
+    without = std::make_unique<GardenSession>(loadGarden(garden), smallSettings());
+    ASSERT_EQ(without->restore(manyEdits(400, 3)), "");
+    frep::setSpecialization(true);
+    with = std::make_unique<GardenSession>(loadGarden(garden), smallSettings());
+    ASSERT_EQ(with->restore(manyEdits(400, 3)), "");
+    std::filesystem::remove_all(dir);
+    const int c = with->findSculpture("c");
+    const Sculpture& a = with->sculptures()[static_cast<std::size_t>(c)];
+    const Sculpture& b = without->sculptures()[static_cast<std::size_t>(c)];
+    EXPECT_EQ(test::differingVoxels(*a.volume, *b.volume), 0);
+    EXPECT_EQ(test::differingVoxels(*a.edits->rebuild(), *b.volume), 0);
+    // The exported file voxelized both ways.
+    const HyperFunExport e = exportOf(*with, c);
+    const Parsed p = parseExport(e.text);
+    ASSERT_TRUE(p.program && p.body >= 0);
+    const frep::Model model(std::shared_ptr<const frep::Program>(p.program.get(), [](const frep::Program*) {}), p.body);
+    voxel::VolumeRequest req;
+    req.resolution = 48;
+    req.box = a.volume->frame.modelBox;
+    frep::setSpecialization(false);
+    const voxel::VoxelizeResult full = voxel::voxelize(model, req);
+    frep::setSpecialization(true);
+    const voxel::VoxelizeResult fast = voxel::voxelize(model, req);
+    ASSERT_TRUE(full.volume && fast.volume);
+    EXPECT_EQ(test::differingVoxels(*full.volume, *fast.volume), 0);
+    EXPECT_LT(fast.stats.leafTapeMean, 0.5 * full.stats.leafTapeMean);
 }
 
 // Thousands of edits: the exported values stay finite and within the band,

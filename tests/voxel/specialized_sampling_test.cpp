@@ -1,0 +1,87 @@
+// Sampling with tapes specialized to each box (voxel/box_walker.h,
+// frep/tape_specializer.h) stores the same grid, voxel for voxel and bit for
+// bit, as sampling with the full tape: our content, the bounded files and a
+// program of many bounded edits, whose leaves then run a far shorter tape.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <filesystem>
+#include <random>
+
+#include "frep/tape_specializer.h"
+#include "test_models.h"
+#include "voxel/sampler.h"
+
+namespace hg::voxel {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Sampled {
+    Volume volume;
+    SampleStats stats;
+};
+
+Sampled sample(const frep::Model& model, int resolution, bool specialize) {
+    frep::setSpecialization(specialize);
+    VolumeRequest req;
+    req.resolution = resolution;
+    VoxelizeResult r = voxelize(model, req);
+    frep::setSpecialization(true);
+    EXPECT_TRUE(r.volume) << r.error;
+    return {r.volume ? std::move(*r.volume) : Volume(), r.stats};
+}
+
+std::size_t differing(const Volume& a, const Volume& b) {
+    std::size_t n = 0;
+    const IndexBox& box = a.frame.indexBox;
+    for (int k = box.lo[2]; k <= box.hi[2]; ++k)
+        for (int j = box.lo[1]; j <= box.hi[1]; ++j)
+            for (int i = box.lo[0]; i <= box.hi[0]; ++i) {
+                const float va = a.value(i, j, k), vb = b.value(i, j, k);
+                n += std::memcmp(&va, &vb, sizeof va) != 0 || a.active(i, j, k) != b.active(i, j, k);
+            }
+    return n;
+}
+
+// Bounded carves, adds and bumps on a ball, as an exported sculpture has them.
+std::string editedBall(int edits) {
+    std::mt19937 rng(9);
+    std::uniform_real_distribution<double> dir(-1.0, 1.0), r(0.04, 0.1);
+    std::string body = "  f = max(min((0.6 - (x[1]^2 + x[2]^2 + x[3]^2)) * 30, 3), -3);\n";
+    for (int i = 0; i < edits; ++i) {
+        double p[3] = {dir(rng), dir(rng), dir(rng)};
+        const double len = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]) / 0.77;
+        const double rad = r(rng);
+        const std::string d = "((x[1] - " + std::to_string(p[0] / len) + ")^2 + (x[2] - " + std::to_string(p[1] / len) +
+                              ")^2 + (x[3] - " + std::to_string(p[2] / len) + ")^2)";
+        const std::string g = "max(min((" + std::to_string(rad * rad) + " - " + d + ") * 300, 3), -3)";
+        body += i % 2 ? "  f = min(f, -" + g + ");\n" : "  f = max(f, " + g + ");\n";
+    }
+    return "edited(x[3], a[1]) {\n" + body + "  edited = f;\n}\n";
+}
+
+TEST(SpecializedSampling, GridsAreTheSameBitForBit) {
+    std::vector<std::pair<std::string, frep::Model>> models;
+    for (const fs::path& dir : {fs::path(HG_SOURCE_DIR) / "content" / "hyperfun", fs::path(HG_TEST_DATA_DIR) / "bounded"})
+        for (const auto& e : fs::directory_iterator(dir))
+            if (e.path().extension() == ".hf") models.emplace_back(e.path().stem().string(), test::modelFromFile(e.path().string(), {0.4}));
+    models.emplace_back("edited", test::modelFromSource(editedBall(400).c_str()));
+    for (const auto& [name, model] : models) {
+        SCOPED_TRACE(name);
+        const Sampled full = sample(model, 72, false), fast = sample(model, 72, true);
+        EXPECT_EQ(full.volume.normalization, fast.volume.normalization);
+        EXPECT_EQ(full.stats.samples, fast.stats.samples);
+        EXPECT_EQ(full.stats.boxesCulled, fast.stats.boxesCulled);
+        EXPECT_EQ(differing(full.volume, fast.volume), 0u);
+        EXPECT_LE(fast.stats.leafTapeMean, full.stats.leafTapeMean);
+        if (name == "edited") {
+            // 400 edits, each reaching a few leaves: the leaves run a few of them.
+            EXPECT_LT(fast.stats.leafTapeMean, 0.1 * full.stats.leafTapeMean)
+                << fast.stats.leafTapeMean << " of " << full.stats.leafTapeMean;
+        }
+    }
+}
+
+}  // namespace
+}  // namespace hg::voxel
