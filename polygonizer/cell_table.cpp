@@ -3,6 +3,8 @@
 #include <cstddef>
 #include <vector>
 
+#include "polygonizer/loop_fan.h"
+
 namespace hg::poly {
 
 namespace {
@@ -23,6 +25,15 @@ int edgeBetween(int c0, int c1) {
         if ((ec[0] == c0 && ec[1] == c1) || (ec[0] == c1 && ec[1] == c0)) return e;
     }
     return -1;
+}
+
+// Whether edges e0 and e1 lie on one face of the cube: all their corners
+// agree on some axis.
+bool shareFace(int e0, int e1) {
+    const auto& a = kEdgeCorners[static_cast<std::size_t>(e0)];
+    const auto& b = kEdgeCorners[static_cast<std::size_t>(e1)];
+    const int same = ~(a[0] ^ a[1]) & ~(a[0] ^ b[0]) & ~(a[0] ^ b[1]) & 7;
+    return same != 0;
 }
 
 // The six faces, corners in counter-clockwise order seen from outside the
@@ -68,12 +79,16 @@ CellCase triangulate(int mask) {
         }
         // The loop runs counter-clockwise around the inside region seen from
         // outside the cube, so its right-hand normal points into the solid:
-        // fan it in reverse for outward-facing triangles.
-        for (std::size_t i = 1; i + 1 < loop.size(); ++i) {
+        // fan it in reverse for outward-facing triangles. The fan starts
+        // where none of its chords lies on a face of the cube: a chord there
+        // can be the neighbour's chord too, an edge of four triangles
+        // (loop_fan.h says when).
+        const std::size_t s = fanStartOffFaces(loop, shareFace), n = loop.size();
+        for (std::size_t i = 1; i + 1 < n; ++i) {
             std::size_t t = cc.triangleCount++;
-            cc.edges[3 * t] = static_cast<std::uint8_t>(loop[0]);
-            cc.edges[3 * t + 1] = static_cast<std::uint8_t>(loop[i + 1]);
-            cc.edges[3 * t + 2] = static_cast<std::uint8_t>(loop[i]);
+            cc.edges[3 * t] = static_cast<std::uint8_t>(loop[s]);
+            cc.edges[3 * t + 1] = static_cast<std::uint8_t>(loop[(s + i + 1) % n]);
+            cc.edges[3 * t + 2] = static_cast<std::uint8_t>(loop[(s + i) % n]);
         }
     }
     return cc;

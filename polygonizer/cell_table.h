@@ -9,7 +9,10 @@
 //
 // The segments of the six faces chain into closed loops (the boundary of the
 // inside part of the cube's surface); each loop is fanned into triangles,
-// counter-clockwise seen from outside the solid.
+// counter-clockwise seen from outside the solid, from a crossing whose
+// chords lie on no face of the cube. That second rule is what makes meshes
+// manifold as well as closed: a chord on a face could be the neighbour's
+// chord too, an edge of four triangles (loop_fan.h).
 #pragma once
 
 #include <array>

@@ -38,12 +38,6 @@ void fillGeometry(const MeshReport& r, MeshExportReport& report) {
     }
 }
 
-std::string invalidMesh(const MeshReport& r) {
-    return "the mesh is not fit to write (" + std::string(r.closed() ? "" : "not closed; ") +
-           (r.manifold() ? "" : "not manifold; ") + (r.outwardFacing() ? "" : "not facing outward; ") +
-           "see docs/mesh-export.md):\n" + describe(r);
-}
-
 // Simplifies `mesh` in place (simplifyMesh validates every pass) and says
 // in the report what it did.
 void simplify(Mesh& mesh, double error, MeshExportReport& report) {
@@ -151,7 +145,7 @@ std::string exportMesh(const frep::Model& model, const frep::Box3& box, const Me
     Mesh& mesh = tiled.mesh;
 
     MeshReport checked = validateMesh(mesh);
-    if (!checked.ok()) return invalidMesh(checked);
+    if (!checked.ok()) return describeUnfitMesh(checked, format, options);
     if (options.simplifyError > 0.0) {
         simplify(mesh, options.simplifyError, report);
         if (report.simplified) checked = validateMesh(mesh);
@@ -169,10 +163,24 @@ std::string exportMesh(const frep::Model& model, const frep::Box3& box, const Me
     return why;
 }
 
+FileUnit fileUnitOf(MeshFormat format, const MeshExportOptions& options) {
+    if (format == MeshFormat::Stl) return {options.mmPerUnit, "mm"};
+    return {options.metresPerUnit, "m"};  // OBJ, glTF and the level set's transform and values
+}
+
+std::string describeUnfitMesh(const MeshReport& r, MeshFormat format, const MeshExportOptions& options) {
+    // In the file's units: at one millimetre per model unit the report had
+    // a sculpture 1.49 mm across whose STL would be 1,492 mm.
+    const FileUnit u = fileUnitOf(format, options);
+    return "the mesh is not fit to write (" + std::string(r.closed() ? "" : "not closed; ") +
+           (r.manifold() ? "" : "not manifold; ") + (r.outwardFacing() ? "" : "not facing outward; ") +
+           "see docs/mesh-export.md):\n" + describe(r, u.perModelUnit, u.name);
+}
+
 std::string describe(const MeshExportReport& r, const MeshExportOptions& o) {
-    const bool metres = r.format == MeshFormat::Obj || r.format == MeshFormat::Glb;
-    const double unit = r.format == MeshFormat::Stl ? o.mmPerUnit : metres ? o.metresPerUnit : 1.0;
-    const char* name = r.format == MeshFormat::Stl ? "mm" : metres ? "m" : "model units";
+    const FileUnit u = fileUnitOf(r.format, o);
+    const double unit = u.perModelUnit;
+    const char* name = u.name;
     std::ostringstream m;
     m.precision(6);
     m << meshFormatName(r.format);
@@ -180,8 +188,8 @@ std::string describe(const MeshExportReport& r, const MeshExportOptions& o) {
     m << "\nvolume " << r.volume * unit * unit * unit << " " << name << "^3, size " << r.size[0] * unit << " x "
       << r.size[1] * unit << " x " << r.size[2] * unit << " " << name << "\n";
     if (r.simplified)
-        m << "simplified from " << r.trianglesBeforeSimplify << " triangles, deviation up to " << r.simplifyAchievedError
-          << " model units\n";
+        m << "simplified from " << r.trianglesBeforeSimplify << " triangles, deviation up to "
+          << r.simplifyAchievedError * unit << " " << name << "\n";
     if (!r.simplifyNote.empty()) m << "note: " << r.simplifyNote << "\n";
     if (r.tiles) m << r.tiles << " tiles of " << r.tileSize << "^3 cells, largest tile grid " << voxel::formatBytes(r.peakTileBytes) << "; ";
     m << "estimated " << voxel::formatBytes(r.estimatedBytes) << " of " << voxel::formatBytes(r.limitBytes)

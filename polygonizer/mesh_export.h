@@ -23,6 +23,7 @@
 
 #include "frep/box.h"
 #include "frep/model.h"
+#include "polygonizer/mesh_validation.h"
 
 namespace hg::poly {
 
@@ -82,5 +83,18 @@ std::string exportMesh(const frep::Model& model, const frep::Box3& box, const Me
 // A few lines for a person: format, triangles, volume and size in the
 // file's units, time, tiles and memory.
 std::string describe(const MeshExportReport& report, const MeshExportOptions& options);
+
+// The length unit of `format`'s files, and how many of it make one model
+// unit: STL millimetres (options.mmPerUnit), OBJ, glTF and VDB metres
+// (options.metresPerUnit). Every size a report gives is in it.
+struct FileUnit {
+    double perModelUnit = 1.0;
+    const char* name = "mm";
+};
+FileUnit fileUnitOf(MeshFormat format, const MeshExportOptions& options);
+
+// Why a mesh is not written, with its validation report in the file's
+// units: what exportMesh says when validation fails.
+std::string describeUnfitMesh(const MeshReport& report, MeshFormat format, const MeshExportOptions& options);
 
 }  // namespace hg::poly

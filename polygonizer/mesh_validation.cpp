@@ -358,24 +358,28 @@ std::string count(std::size_t n, const char* one, const char* many) {
 
 }  // namespace
 
-std::string describe(const MeshReport& r, double mmPerUnit) {
-    const double s = mmPerUnit;
+std::string describe(const MeshReport& r, double mmPerUnit) { return describe(r, mmPerUnit, "mm"); }
+
+std::string describe(const MeshReport& r, double perModelUnit, const std::string& unit) {
+    const double s = perModelUnit;
+    const std::string& u = unit;
     std::string out;
     out += "triangles: " + std::to_string(r.triangles) + " (" + count(r.vertices, "vertex", "vertices") + ", " +
            count(r.components, "part", "parts") + ")\n";
-    out += "volume: " + num(r.volume * s * s * s) + " mm^3 (" + num(r.volume * s * s * s / 1000) + " cm^3)";
+    out += "volume: " + num(r.volume * s * s * s) + " " + u + "^3";
+    if (u == "mm") out += " (" + num(r.volume * s * s * s / 1000) + " cm^3)";
     if (!r.closed()) out += ", not meaningful: the surface is open";
     out += "\n";
-    out += "surface area: " + num(r.area * s * s) + " mm^2\n";
+    out += "surface area: " + num(r.area * s * s) + " " + u + "^2\n";
     double size[3], lo[3], hi[3];
     for (int a = 0; a < 3; ++a) {
         lo[a] = static_cast<double>(r.boxMin[a]) * s;
         hi[a] = static_cast<double>(r.boxMax[a]) * s;
         size[a] = hi[a] - lo[a];
     }
-    out += "size: " + num(size[0]) + " x " + num(size[1]) + " x " + num(size[2]) + " mm, from (" + num(lo[0]) +
+    out += "size: " + num(size[0]) + " x " + num(size[1]) + " x " + num(size[2]) + " " + u + ", from (" + num(lo[0]) +
            ", " + num(lo[1]) + ", " + num(lo[2]) + ") to (" + num(hi[0]) + ", " + num(hi[1]) + ", " + num(hi[2]) +
-           ") mm\n";
+           ") " + u + "\n";
     out += "boundary edges: " + std::to_string(r.boundaryEdges) + (r.boundaryEdges ? " (holes)\n" : "\n");
     out += "non-manifold edges: " + std::to_string(r.nonManifoldEdges) +
            (r.nonManifoldEdges ? " (shared by more than two triangles)\n" : "\n");

@@ -50,5 +50,10 @@ MeshReport validateMesh(const Mesh& mesh);
 // A few lines for a person: counts, volume and size in millimetres (model
 // units times `mmPerUnit`), the defects found, and a one-line verdict.
 std::string describe(const MeshReport& report, double mmPerUnit = 1.0);
+// The same in another length unit: `perModelUnit` of `unit` ("m", "model
+// units", ...) per model unit. Say sizes in the unit of the file a mesh is
+// written to (a sculpture's STL is in millimetres of its true size, its OBJ
+// and glTF in metres), never in one a person has to convert from.
+std::string describe(const MeshReport& report, double perModelUnit, const std::string& unit);
 
 }  // namespace hg::poly

@@ -1,5 +1,5 @@
 // Keeps every chunk's mesh up to date as the grid and the levels of detail
-// change, a budget at a time (DESIGN §5, incremental):
+// change, a budget at a time (docs/design.md §5, incremental):
 //
 //   markChanged(box)  the grid changed there (after LodPyramid::update):
 //                     chunks that read it are dirty;

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "polygonizer/loop_fan.h"
+
 namespace hg::poly {
 
 namespace {
@@ -49,8 +51,20 @@ TransitionGeometry makeGeometry() {
     return g;
 }
 
+// Bit f set when edge e (into g.edges) lies on face f of the cell.
+std::vector<unsigned> facesOfEdges(const TransitionGeometry& g) {
+    std::vector<unsigned> faces(g.edges.size(), 0u);
+    for (std::size_t f = 0; f < g.faces.size(); ++f) {
+        const auto& face = g.faces[f];
+        for (std::size_t i = 0; i < face.size(); ++i)
+            faces[static_cast<std::size_t>(g.edgeIndex(face[i], face[(i + 1) % face.size()]))] |= 1u << f;
+    }
+    return faces;
+}
+
 TransitionCase triangulate(int c) {
     const TransitionGeometry& g = transitionGeometry();
+    static const std::vector<unsigned> faceBits = facesOfEdges(g);
     std::vector<int> next(g.edges.size(), -1), prevCount(g.edges.size(), 0);
     for (const auto& f : g.faces) {
         const int n = static_cast<int>(f.size());
@@ -77,11 +91,20 @@ TransitionCase triangulate(int c) {
             used[static_cast<size_t>(e)] = true;
             loop.push_back(e);
         }
-        for (size_t i = 1; i + 1 < loop.size(); ++i) {  // reversed fan: outward-facing
+        // Reversed fan (outward-facing), from a crossing whose chords lie on
+        // none of the cell's faces, as in the cell table (loop_fan.h). Across
+        // the fine quads and the back quad lie regular cells, which draw no
+        // chord on a face, so one here would still be used only twice; the
+        // shared rule keeps that from resting on the neighbour's table.
+        auto shareFace = [](int a, int b) {
+            return (faceBits[static_cast<size_t>(a)] & faceBits[static_cast<size_t>(b)]) != 0;
+        };
+        const size_t s = fanStartOffFaces(loop, shareFace), n = loop.size();
+        for (size_t i = 1; i + 1 < n; ++i) {
             size_t t = tc.triangleCount++;
-            tc.edges[3 * t] = static_cast<std::uint8_t>(loop[0]);
-            tc.edges[3 * t + 1] = static_cast<std::uint8_t>(loop[i + 1]);
-            tc.edges[3 * t + 2] = static_cast<std::uint8_t>(loop[i]);
+            tc.edges[3 * t] = static_cast<std::uint8_t>(loop[s]);
+            tc.edges[3 * t + 1] = static_cast<std::uint8_t>(loop[(s + i + 1) % n]);
+            tc.edges[3 * t + 2] = static_cast<std::uint8_t>(loop[(s + i) % n]);
         }
     }
     return tc;

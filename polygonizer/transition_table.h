@@ -13,7 +13,8 @@
 // Each face joins its crossings so that every run of consecutive inside
 // vertices is cut off by its own segment; the faces' segments chain into
 // closed loops, fanned into triangles counter-clockwise seen from outside
-// the solid.
+// the solid from a crossing whose chords lie on none of the cell's faces
+// (loop_fan.h).
 #pragma once
 
 #include <array>

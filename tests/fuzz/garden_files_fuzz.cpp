@@ -1,4 +1,4 @@
-// libFuzzer target for the garden's JSON readers (DESIGN §10: every file
+// libFuzzer target for the garden's JSON readers (docs/design.md §10: every file
 // reader is fuzzed): garden files and replay scripts. Any input must be
 // accepted or refused with a JsonError that names a path and a reason;
 // any other exception, a crash or undefined behaviour is a bug.

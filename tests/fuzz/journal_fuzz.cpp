@@ -1,4 +1,4 @@
-// libFuzzer target for the session journal's reader (DESIGN §10): any bytes
+// libFuzzer target for the session journal's reader (docs/design.md §10): any bytes
 // are a journal refused with a message, or records with at most a damaged
 // tail that names its record and offset inside the input. Every record read
 // writes back to a line the reader reads again to the same record.

@@ -19,13 +19,17 @@
 #include "polygonizer/export_mesher.h"
 #include "polygonizer/lod_selection.h"
 #include "polygonizer/mesh_validation.h"
+#include "chunk_union.h"
 #include "sample_program.h"
 #include "voxel/sampler.h"
 
 namespace hg::poly {
 namespace {
 
+using test::edgeUse;
+using test::EdgeUse;
 using test::sampleProgram;
+using test::unionOf;
 
 // Thin features (the ring's tube is a few coarse cells wide) so that coarse
 // and fine samples disagree often along seams.
@@ -33,63 +37,11 @@ const char* kRings =
     "q(x[3], a[1]) { array c[3], d[3]; c = [0, 0, 0]; d = [0.25, 0.1, 0];"
     " q = hfTorusY(x, c, 0.55, 0.12) | hfTorusX(x, d, 0.45, 0.09) | (0.05 - ((x[1]-0.2)^2 + (x[2]+0.3)^2 + (x[3]-0.5)^2)); }";
 
-Mesh unionOf(const LodPyramid& pyramid, const ChunkLayout& layout, const std::vector<int>& levels) {
-    const std::vector<ChunkLod> lods = chunkLods(layout, levels);
-    Mesh all;
-    for (std::size_t i = 0; i < layout.count(); ++i) {
-        Mesh m = meshChunk(pyramid, layout, i, lods[i]);
-        EXPECT_EQ(m.normals.size(), m.positions.size());
-        const auto base = static_cast<std::uint32_t>(all.vertexCount());
-        all.positions.insert(all.positions.end(), m.positions.begin(), m.positions.end());
-        all.normals.insert(all.normals.end(), m.normals.begin(), m.normals.end());
-        for (std::uint32_t idx : m.indices) all.indices.push_back(base + idx);
-    }
-    return all;
-}
-
 std::string describeLevels(const ChunkLayout& layout, const std::vector<int>& levels) {
     std::ostringstream s;
     s << "chunks " << layout.dims()[0] << "x" << layout.dims()[1] << "x" << layout.dims()[2] << " levels";
     for (int l : levels) s << ' ' << l;
     return s.str();
-}
-
-// Edges of the welded mesh used other than twice by its triangles, as
-// counts: [boundary (once), pinches (four times, on a chunk edge line),
-// other].
-struct EdgeUse {
-    std::size_t boundary = 0, pinches = 0, other = 0;
-};
-
-// A pinch is where a feature thinner than a coarse cell passes between two
-// fine chunks diagonal to each other across a chunk edge: the two coarse
-// chunks around that edge see no volume there, so the surface closes but
-// touches itself along the edge line. Anywhere else an edge must be used
-// exactly twice.
-EdgeUse edgeUse(const Mesh& welded, const ChunkLayout& layout) {
-    std::map<std::pair<std::uint32_t, std::uint32_t>, int> uses;
-    for (std::size_t t = 0; t < welded.triangleCount(); ++t)
-        for (int k = 0; k < 3; ++k) {
-            std::uint32_t a = welded.indices[3 * t + k], b = welded.indices[3 * t + (k + 1) % 3];
-            if (a != b) ++uses[{std::min(a, b), std::max(a, b)}];
-        }
-    const voxel::VolumeFrame& f = layout.frame();
-    auto onChunkEdgeLine = [&](std::uint32_t v) {
-        int planes = 0;
-        for (int a = 0; a < 3; ++a) {
-            double i = (welded.positions[3 * v + a] - f.modelBox.lo[a]) / f.voxelSize;
-            double r = i / layout.chunkSize();
-            planes += std::fabs(r - std::round(r)) * layout.chunkSize() < 1e-3;
-        }
-        return planes >= 2;
-    };
-    EdgeUse e;
-    for (const auto& [edge, n] : uses) {
-        if (n == 1) ++e.boundary;
-        else if (n == 4 && onChunkEdgeLine(edge.first) && onChunkEdgeLine(edge.second)) ++e.pinches;
-        else if (n != 2) ++e.other;
-    }
-    return e;
 }
 
 void expectClosed(const LodPyramid& pyramid, const ChunkLayout& layout, const std::vector<int>& levels) {
