@@ -1,4 +1,4 @@
-// The two controllers as OpenXR actions (DESIGN §8): one action set with
+// The two controllers as OpenXR actions (docs/design.md §8): one action set with
 // both hands as subaction paths, grip and aim poses, trigger, squeeze,
 // thumbstick, primary and secondary buttons, menu, stick click and a haptic
 // output; suggested bindings for khr/simple_controller,

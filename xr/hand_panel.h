@@ -1,4 +1,4 @@
-// The panel on the navigation hand (DESIGN §8, issue 13): a board above the
+// The panel on the navigation hand (docs/design.md §8, issue 13): a board above the
 // hand, pointed at with the tool hand's aim ray and worked with its
 // trigger. What is on it (labelled buttons, the tool's parameters, the
 // morph triangle) is xr/hand_panel_ui.h's; this is the board's place and

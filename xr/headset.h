@@ -1,4 +1,4 @@
-// One headset through OpenXR (DESIGN §8): the instance and the HMD system,
+// One headset through OpenXR (docs/design.md §8): the instance and the HMD system,
 // the session on the GLFW window's GL context (XR_KHR_opengl_enable, Xlib
 // binding), the stage space, a colour swapchain per eye (sRGB) and a depth
 // swapchain per eye when XR_KHR_composition_layer_depth is offered, and the

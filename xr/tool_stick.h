@@ -1,4 +1,4 @@
-// The tool hand's thumbstick reshapes the tool live (DESIGN §6, §8): up
+// The tool hand's thumbstick reshapes the tool live (docs/design.md §6, §8): up
 // and down grow and shrink its size (radius, perturbation radii, impact
 // size), right and left strengthen and weaken it (perturbation strength,
 // impact compaction volume). Full tilt doubles or halves in a second;

@@ -1,4 +1,4 @@
-// Turning with the navigation thumbstick's x (DESIGN §8: snap turn is the
+// Turning with the navigation thumbstick's x (docs/design.md §8: snap turn is the
 // comfort default): a snap (30 degrees unless the user's settings say
 // otherwise) each time the stick is pushed past 70 % of its reach, or,
 // smooth, 90 degrees a second at full tilt past a dead zone. The stick's x

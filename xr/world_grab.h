@@ -1,4 +1,4 @@
-// Two-handed manipulation of the world (DESIGN §6, §8): squeezing the
+// Two-handed manipulation of the world (docs/design.md §6, §8): squeezing the
 // navigation hand grabs the world, which then follows the hand; squeezing
 // both scales it about the midpoint of the hands (the scale clamped, never
 // zero or negative) and turns it about the vertical through that midpoint

@@ -1,4 +1,4 @@
-// `hypergarden --xr`: the garden in a headset (DESIGN §8, docs/xr.md). The
+// `hypergarden --xr`: the garden in a headset (docs/design.md §8, docs/xr.md). The
 // same GardenSession, tools and renderer as the desktop window; the
 // controllers become the Hands (xr/controllers.h), both eyes are drawn into
 // the runtime's sRGB swapchains, and the frame follows xrWaitFrame with the

@@ -1,4 +1,4 @@
-// The running garden, replay-driven (issue 5; DESIGN §9): GardenSession
+// The running garden, replay-driven (issue 5; docs/design.md §9): GardenSession
 // frames played by runReplay, headless (input, level selection, morph,
 // remesh) or with --offscreen (the upload and render stages too, through
 // OffscreenGarden: a hidden GL 3.3 window; needs xvfb-run -a here).

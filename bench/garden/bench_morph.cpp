@@ -1,7 +1,7 @@
 // Morph blend benchmark: the default garden's three key sculptures as morph
 // sources at 128^3 and 256^3 (longest side of the shared box), blended from
 // scratch and by budgeted partial updates of a million samples per step
-// (DESIGN §9: at least 1,000,000 samples per frame inside the budget). The
+// (docs/design.md §9: at least 1,000,000 samples per frame inside the budget). The
 // peer, measured in the same run, is a plain single-threaded loop over three
 // float arrays computing the same clamped weighted sum into a fourth (the
 // streaming bound, no grid). Prints a Markdown table; --json FILE writes

@@ -1,4 +1,4 @@
-// One budget per frame (DESIGN §6; default 11.1 ms for 90 Hz, in XR the
+// One budget per frame (docs/design.md §6; default 11.1 ms for 90 Hz, in XR the
 // runtime's predicted display period) shared by the stages in their order:
 // input, level selection, morph updates, remeshing, uploads, rendering.
 // The scheduler times every stage and tells a budgeted stage how long it may

@@ -1,4 +1,4 @@
-// What one frame cost and did, collected every frame (DESIGN §6: stats are
+// What one frame cost and did, collected every frame (docs/design.md §6: stats are
 // always on) and shown by the overlay, written by `replay --stats`.
 #pragma once
 

@@ -1,4 +1,4 @@
-// The garden while it runs, without a window (DESIGN §6): every sculpture
+// The garden while it runs, without a window (docs/design.md §6): every sculpture
 // as a volume with its LOD pyramid and remesh queue, the metamorphosis (its
 // source caches, its result and the budgeted blend), the navigator and the
 // frame scheduler. One frame is:

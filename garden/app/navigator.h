@@ -1,4 +1,4 @@
-// Moving about the garden from the hands (DESIGN §6): walk on the ground at
+// Moving about the garden from the hands (docs/design.md §6): walk on the ground at
 // eye height, fly freely, or orbit a selected sculpture. The navigation
 // hand's thumbstick moves, Hands::look turns, the stick click toggles walk
 // and fly, the primary button toggles orbiting (when a target is set).

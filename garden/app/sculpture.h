@@ -1,4 +1,4 @@
-// One sculpture of the running garden (DESIGN §4): what the user made (its
+// One sculpture of the running garden (docs/design.md §4): what the user made (its
 // source, its edit list, its placement) and the caches rebuilt from them
 // (the grid, its LOD pyramid, chunk layout and remesh queue). The morph
 // result is a sculpture like the others: its source is the blend of three

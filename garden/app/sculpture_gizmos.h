@@ -1,4 +1,4 @@
-// Where a sculpture's gizmos are (DESIGN §6), shared by the session (what
+// Where a sculpture's gizmos are (docs/design.md §6), shared by the session (what
 // the move tool grabs, where the mirror plane goes) and the renderer (what
 // it draws), so what is drawn is what the hand can grab.
 #pragma once

@@ -1,4 +1,4 @@
-// GardenSession's move tool (DESIGN §6: select, move, rotate a sculpture
+// GardenSession's move tool (docs/design.md §6: select, move, rotate a sculpture
 // with a gizmo): the tool hand's trigger on a sculpture selects it and drags
 // it on a horizontal plane (near level, at the distance it was grabbed); held with the secondary button (the desktop's
 // Shift), or started on the selected sculpture's ring, the drag turns it

@@ -1,6 +1,6 @@
 // GardenSession's sculpting: edits applied to a sculpture's grid within the
 // call, undo and redo across sculptures, and the tool hand driving strokes
-// and perturbations (DESIGN §6: tools read hands, never devices).
+// and perturbations (docs/design.md §6: tools read hands, never devices).
 #include <algorithm>
 #include <cmath>
 

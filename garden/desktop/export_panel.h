@@ -1,4 +1,4 @@
-// The desktop's Export panel (DESIGN §7): the selected sculpture written
+// The desktop's Export panel (docs/design.md §7): the selected sculpture written
 // next to the session (or the working folder without one) in the format
 // picked. HyperFun is written at once; meshes are made on a worker thread
 // from the exported FRep while the garden goes on, with a progress bar.

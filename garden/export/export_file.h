@@ -1,5 +1,5 @@
 // One sculpture of a running garden written to a file in any export format
-// (DESIGN §7, docs/export.md): exact HyperFun (.hf), or a mesh meshed from
+// (docs/design.md §7, docs/export.md): exact HyperFun (.hf), or a mesh meshed from
 // that exported FRep (.stl, .obj, .glb, .vdb: polygonizer/mesh_export.h), so
 // every format shows the same solid. The command line (`hypergarden
 // export`) and the desktop panel's Export button both call this.

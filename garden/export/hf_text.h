@@ -1,4 +1,4 @@
-// The third value type of the edit list's expression templates (DESIGN §4,
+// The third value type of the edit list's expression templates (docs/design.md §4,
 // garden/sculpt/edit_field.h): a value that writes HyperFun text. Every
 // operation on a value that is not a constant appends one statement
 // `tN = A op B;` to the body being written and returns the temporary tN, so

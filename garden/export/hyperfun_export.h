@@ -1,5 +1,5 @@
 // A sculpture of the running garden as one self-contained HyperFun file
-// (DESIGN §7, docs/export.md): its source bodies renamed so their names
+// (docs/design.md §7, docs/export.md): its source bodies renamed so their names
 // cannot clash (bodies they call come along, earlier in the file), the
 // morph blend when it is the morph result, and `my_model`, the edited
 // sculpture in its model frame, evaluating to the sculpture's field value

@@ -1,4 +1,4 @@
-// The desktop mapping onto hands (DESIGN §6): keys and mouse become a
+// The desktop mapping onto hands (docs/design.md §6): keys and mouse become a
 // navigation hand and a tool hand, so the tools and the navigator run the
 // same code on the desktop, in XR and in scripts.
 //

@@ -1,4 +1,4 @@
-// The hands every tool reads (DESIGN §6): one type for the desktop (mouse
+// The hands every tool reads (docs/design.md §6): one type for the desktop (mouse
 // and keys mapped onto two hands), OpenXR (two controllers) and scripts
 // (recorded hands). Tools never see a device.
 #pragma once

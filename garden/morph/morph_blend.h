@@ -8,7 +8,7 @@
 // from the sources' bands.
 //
 // Two ways to get it: blendMorph() computes the whole result at once;
-// MorphBlender spreads the same work over frames (DESIGN §4, seed 004's
+// MorphBlender spreads the same work over frames (docs/design.md §4, seed 004's
 // partial updates). Its work list holds OpenVDB-leaf-aligned blocks of
 // 8^3 voxels in two passes:
 //

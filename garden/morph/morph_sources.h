@@ -3,7 +3,7 @@
 // shared frame), sampled densely and unclamped over the frame's whole index
 // box (voxel::sampleDense) and kept block by block (blocked_field.h).
 // Blending clamped narrow-band values would be wrong away from the band
-// (DESIGN §4); these caches are what the blend reads, and what the
+// (docs/design.md §4); these caches are what the blend reads, and what the
 // balancing factors are measured on.
 #pragma once
 

@@ -1,4 +1,4 @@
-// The morph selector's maths (DESIGN §4, seed 004): a point in the morph
+// The morph selector's maths (docs/design.md §4, seed 004): a point in the morph
 // triangle gives each source the area of the sub-triangle opposite its
 // corner over the whole area (barycentric coordinates), times a balancing
 // factor that makes the sources' fields rise equally fast across their

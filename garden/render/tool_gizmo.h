@@ -1,4 +1,4 @@
-// Tool gizmos (DESIGN §6): the tool in hand drawn where its aim ray meets a
+// Tool gizmos (docs/design.md §6): the tool in hand drawn where its aim ray meets a
 // sculpture, at its live size and shape (a wire sphere of the stroke
 // radius, the perturbation's ellipsoid or torus, the impacts' spread), the
 // move tool's ring and axes on the selected sculpture, and the selected

@@ -46,7 +46,7 @@ struct SculptureSpec {
     Material material;
 };
 
-// The metamorphosis (DESIGN §4): three sources stand at the corners of the
+// The metamorphosis (docs/design.md §4): three sources stand at the corners of the
 // triangle (the corners are their positions on the ground), the result
 // stands at its own placement, by default the triangle's centroid.
 struct MorphSpec {

@@ -1,4 +1,4 @@
-// What a user did to a sculpture, as data (DESIGN §4): the ordered edit list
+// What a user did to a sculpture, as data (docs/design.md §4): the ordered edit list
 // is the sculpture's source of truth next to its HyperFun source, and the
 // grid is a cache rebuilt from both. Each edit is one FRep operation on the
 // field before it, built by the one expression template in edit_field.h

@@ -1,4 +1,4 @@
-// The one expression builder of the edit list (DESIGN §4): each edit as an
+// The one expression builder of the edit list (docs/design.md §4): each edit as an
 // FRep operation on the field before it, written once as a template over
 // the value type. On frep::Sym it records the grid update's tape (the base
 // field is the tape's W input); on double it is the reference the tests

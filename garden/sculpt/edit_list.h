@@ -1,7 +1,7 @@
 // A sculpture's edits in order, with a spatial index over their pieces (a
 // stroke's segments, a perturbation's quadric): a box update asks which
 // pieces reach the box and evaluates only those, so a sculpture with
-// thousands of edits updates a small box as fast as one with ten (DESIGN
+// thousands of edits updates a small box as fast as one with ten (docs/design.md
 // §4). The list's field is exactly the base field with every edit applied
 // in order; pieces outside a box leave it unchanged there (edit_field.h).
 #pragma once

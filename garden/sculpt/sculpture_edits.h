@@ -1,4 +1,4 @@
-// The edits of one sculpture and the grid they make (DESIGN §4): the
+// The edits of one sculpture and the grid they make (docs/design.md §4): the
 // unedited grid (its source sampled, or the morph's blend) kept as the
 // base, the edit list, the redo stack, and the shown grid updated box by
 // box: a new edit, a live stroke's new segments, an undo or a redo each

@@ -1,5 +1,5 @@
 // A stroke's path resampled into Cauchy line segments whose surfaces have
-// the tool's radius (DESIGN §4: S and T chosen so that the surface radius is
+// the tool's radius (docs/sculpting.md: S and T chosen so that the surface radius is
 // the tool radius; the path sampled finely enough for the radius).
 #pragma once
 

@@ -1,4 +1,4 @@
-// What the tool hand works with (DESIGN §6): the tool and its live sizes.
+// What the tool hand works with (docs/design.md §6): the tool and its live sizes.
 #pragma once
 
 #include <array>
@@ -9,7 +9,7 @@
 
 namespace hg::garden {
 
-// The tool the tool hand works (DESIGN §6); sizes in metres of the world.
+// The tool the tool hand works (docs/design.md §6); sizes in metres of the world.
 struct ToolSettings {
     enum class Kind { None, Carve, Add, Melt, Perturb, Impacts, Move };
     // None: the trigger picks the morph on the ground; Move: it selects,

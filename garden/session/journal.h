@@ -1,4 +1,4 @@
-// The session's journal (DESIGN §4, docs/session-format.md): one record per
+// The session's journal (docs/design.md §10, docs/session-format.md): one record per
 // finished action, appended and synced to disk when the action ends, so a
 // process killed at any moment loses no finished action. Records are in the
 // sculpture's model frame, so replaying them rebuilds the same edits (and

@@ -1,4 +1,4 @@
-// A session folder (DESIGN §6, docs/session-format.md): the garden and its
+// A session folder (docs/design.md §10, docs/session-format.md): the garden and its
 // sculptures' sources copied in, the journal of finished actions, and
 // snapshots of the edited grids. One process writes a session at a time
 // (it holds DIR/session.lock); every write is checked, and a failed one
