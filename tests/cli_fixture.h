@@ -20,10 +20,11 @@ struct CommandRun {
     std::string output;  // stdout and stderr together
 };
 
-inline CommandRun runHypergarden(const std::string& args) {
+// `environment`: assignments for the command ("NAME=value ...").
+inline CommandRun runHypergarden(const std::string& args, const std::string& environment = "") {
     CommandRun r;
 #ifdef HG_HYPERGARDEN_EXE
-    std::string cmd = std::string("'") + HG_HYPERGARDEN_EXE + "' " + args + " 2>&1";
+    std::string cmd = environment + (environment.empty() ? "" : " ") + "'" + HG_HYPERGARDEN_EXE + "' " + args + " 2>&1";
     FILE* pipe = ::popen(cmd.c_str(), "r");
     if (!pipe) return r;
     std::array<char, 4096> buf;
@@ -33,6 +34,7 @@ inline CommandRun runHypergarden(const std::string& args) {
     r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
 #else
     (void)args;
+    (void)environment;
 #endif
     return r;
 }

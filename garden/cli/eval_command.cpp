@@ -8,6 +8,7 @@
 // Before waiting for more input it answers every line it has read, so a
 // terminal, or a program writing a line and waiting for its answer, gets
 // each answer as soon as its line is complete.
+#include <algorithm>
 #include <charconv>
 #include <cstdint>
 #include <cstdio>
@@ -18,7 +19,9 @@
 #include <vector>
 
 #include "frep/eval_batch.h"
+#include "frep/eval_interval.h"
 #include "frep/interpreter.h"
+#include "frep/tape_specializer.h"
 #include "garden/cli/commands.h"
 #include "garden/cli/load_model.h"
 #include "garden/cli/point_lines.h"
@@ -63,7 +66,7 @@ public:
     static constexpr size_t kMax = 4096;
 
     PointBatch(const frep::Model& model, bool forceInterpreter)
-        : interp_(model.program(), model.bodyIndex(), model.parameters()) {
+        : model_(model), interp_(model.program(), model.bodyIndex(), model.parameters()) {
         if (model.tape() && !forceInterpreter) {
             tape_.emplace(*model.tape());
             // eval prints what the program computes, as the interpreter does.
@@ -84,8 +87,7 @@ public:
         if (tape_) {
             values_.resize(n);
             failed_.resize(n);
-            frep::ErrorReport errors;
-            tape_->evaluate(x_.data(), y_.data(), z_.data(), values_.data(), n, errors, failed_.data());
+            evaluateByRegion(n);
             for (size_t i = 0; i < n; ++i) {
                 if (!failed_[i]) {
                     out.value(values_[i]);
@@ -111,6 +113,74 @@ public:
     }
 
 private:
+    // Points that lie close together are evaluated together with the tape
+    // specialized to their box (frep/tape_specializer.h; the same values
+    // bit for bit): the batch is split at the median of its longest side
+    // until a group holds at most kGroup points.
+    static constexpr size_t kGroup = 256;
+    void evaluateByRegion(size_t n) {
+        const frep::Tape& full = *model_.tape();
+        if (!frep::specializationEnabled() || full.size() < 96 || n < 2 * kGroup) {
+            frep::ErrorReport errors;
+            tape_->rebind(full);
+            tape_->evaluate(x_.data(), y_.data(), z_.data(), values_.data(), n, errors, failed_.data());
+            return;
+        }
+        if (!interval_) interval_.emplace(full);
+        order_.resize(n);
+        for (size_t i = 0; i < n; ++i) order_[i] = i;
+        split(0, n, full);
+    }
+    void split(size_t begin, size_t end, const frep::Tape& full) {
+        const double* axes[3] = {x_.data(), y_.data(), z_.data()};
+        double lo[3], hi[3];
+        for (int a = 0; a < 3; ++a) lo[a] = hi[a] = axes[a][order_[begin]];
+        for (size_t k = begin; k < end; ++k)
+            for (int a = 0; a < 3; ++a) {
+                lo[a] = std::min(lo[a], axes[a][order_[k]]);
+                hi[a] = std::max(hi[a], axes[a][order_[k]]);
+            }
+        if (end - begin > kGroup) {
+            int longest = 0;
+            for (int a = 1; a < 3; ++a)
+                if (hi[a] - lo[a] > hi[longest] - lo[longest]) longest = a;
+            const size_t mid = begin + (end - begin) / 2;
+            const double* v = axes[longest];
+            std::nth_element(order_.begin() + static_cast<std::ptrdiff_t>(begin), order_.begin() + static_cast<std::ptrdiff_t>(mid),
+                             order_.begin() + static_cast<std::ptrdiff_t>(end),
+                             [v](size_t a, size_t b) { return v[a] < v[b] || (v[a] == v[b] && a < b); });
+            split(begin, mid, full);
+            split(mid, end, full);
+            return;
+        }
+        interval_->evaluate(frep::Interval(lo[0], hi[0]), frep::Interval(lo[1], hi[1]), frep::Interval(lo[2], hi[2]), &trace_);
+        tape_->rebind(specializer_.specialize(full, interval_->affine(), trace_, frep::Precision::Double, shorter_)
+                          ? shorter_.tape
+                          : full);
+        const size_t m = end - begin;
+        gx_.resize(m); gy_.resize(m); gz_.resize(m); gv_.resize(m); gf_.resize(m);
+        for (size_t k = 0; k < m; ++k) {
+            gx_[k] = x_[order_[begin + k]];
+            gy_[k] = y_[order_[begin + k]];
+            gz_[k] = z_[order_[begin + k]];
+        }
+        frep::ErrorReport errors;
+        tape_->evaluate(gx_.data(), gy_.data(), gz_.data(), gv_.data(), m, errors, gf_.data());
+        for (size_t k = 0; k < m; ++k) {
+            values_[order_[begin + k]] = gv_[k];
+            failed_[order_[begin + k]] = gf_[k];
+        }
+        tape_->rebind(full);
+    }
+
+    const frep::Model& model_;
+    std::optional<frep::IntervalEvaluator> interval_;
+    frep::IntervalTrace trace_;
+    frep::TapeSpecializer specializer_;
+    frep::SpecializedTape shorter_;
+    std::vector<size_t> order_;
+    std::vector<double> gx_, gy_, gz_, gv_;
+    std::vector<std::uint8_t> gf_;
     frep::Interpreter interp_;
     std::optional<frep::BatchEvaluator<double>> tape_;
     std::vector<double> x_, y_, z_, values_;

@@ -109,6 +109,38 @@ TEST_F(EvalCli, RuntimeErrorsNameTheirLineAndColumnOnBothPaths) {
     EXPECT_EQ(lines(one.output), std::vector<std::string>{want[2]});
 }
 
+// Many points of a long program of bounded pieces: evaluated in groups
+// with the tape specialized to each group's box, the text is the same as
+// with the full tape at every point (HG_NO_SPECIALIZE=1), failures and
+// their locations included.
+TEST_F(EvalCli, PointsEvaluatedByRegionGiveTheFullTapesText) {
+    std::string body = "  f = max(min((0.8 - (x[1]^2 + x[2]^2 + x[3]^2)) * 40, 3), -3);\n";
+    for (int i = 0; i < 120; ++i) {
+        const double c = -0.9 + 0.015 * i;
+        const std::string d = "((x[1] - " + std::to_string(c) + ")^2 + (x[2] - " + std::to_string(-c) + ")^2 + x[3]^2)";
+        const std::string g = "max(min((0.004 - " + d + ") * 400, 3), -3)";
+        body += i % 2 ? "  f = min(f, -" + g + ");\n" : "  f = max(f, " + g + ");\n";
+    }
+    // A failing piece far from everything else: sqrt of a negative number there.
+    body += "  f = f + sqrt(x[1] - 5) * 0;\n";
+    write("edited.hf", "edited(x[3], a[1]) {\n" + body + "  edited = f;\n}\n");
+    std::string points;
+    for (int i = 0; i < 6000; ++i) {
+        const double t = i / 6000.0;
+        char line[96];
+        std::snprintf(line, sizeof line, "%.9g %.9g %.9g\n", -1.0 + 2.0 * t + 0.001 * (i % 7), 0.9 - 1.8 * t,
+                      0.01 * (i % 13) - 0.06);
+        points += line;
+    }
+    points += "6 0 0\n4 0 0\n";
+    write("points.txt", points);
+    const CommandRun region = runHypergarden("eval " + path("edited.hf") + " < " + path("points.txt"));
+    const CommandRun full = runHypergarden("eval " + path("edited.hf") + " < " + path("points.txt") + " ", "HG_NO_SPECIALIZE=1");
+    EXPECT_EQ(lines(region.output).size(), 6002u);
+    EXPECT_EQ(region.output, full.output);
+    EXPECT_EQ(region.status, full.status);
+}
+
 TEST_F(EvalCli, BadLinesAreReportedInOrderAndFailTheRun) {
     write("sphere.hf", "m(x[3], a[1]) { array c[3]; c = [0, 0, 0]; m = hfSphere(x, c, 1); }\n");
     // istream's rules: "1e" and hexadecimal are not numbers, trailing text
