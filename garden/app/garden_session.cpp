@@ -40,18 +40,24 @@ glm::vec3 Sculpture::worldCentre() const {
     return glm::vec3(modelToWorld * c);
 }
 
-GardenSession::GardenSession(GardenLoad load, SessionSettings settings)
-    : load_(std::move(load)), settings_(settings), scheduler_(settings.scheduler) {
-    if (settings_.sculptureResolution > 0)
-        for (SculptureSpec& spec : load_.garden->sculptures) spec.resolution = settings_.sculptureResolution;
-    if (settings_.morphResolution > 0 && load_.garden->morph) load_.garden->morph->resolution = settings_.morphResolution;
+void GardenSession::resetView() {
     const Garden& g = *load_.garden;
     const glm::vec3 eye = toGlm(g.start.position);
     const glm::vec3 at = toGlm(g.start.lookAt);
     glm::vec3 dir = at - eye;
     if (glm::length(dir) < 1e-6f) dir = glm::vec3(0.0f, 0.0f, -1.0f);
     dir = glm::normalize(dir);
+    navigator_.setMode(NavigationMode::Walk);
     navigator_.setPose(eye, std::atan2(dir.x, -dir.z), std::asin(std::clamp(dir.y, -1.0f, 1.0f)));
+}
+
+GardenSession::GardenSession(GardenLoad load, SessionSettings settings)
+    : load_(std::move(load)), settings_(settings), scheduler_(settings.scheduler) {
+    if (settings_.sculptureResolution > 0)
+        for (SculptureSpec& spec : load_.garden->sculptures) spec.resolution = settings_.sculptureResolution;
+    if (settings_.morphResolution > 0 && load_.garden->morph) load_.garden->morph->resolution = settings_.morphResolution;
+    const Garden& g = *load_.garden;
+    resetView();
     sculptures_.resize(g.sculptures.size());
     // Sculptures are independent: built side by side (each one's box
     // estimate runs on one thread), each into its own slot.

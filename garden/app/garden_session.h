@@ -78,6 +78,8 @@ public:
     std::vector<Sculpture>& sculptures() { return sculptures_; }
     const std::vector<Sculpture>& sculptures() const { return sculptures_; }
     Navigator& navigator() { return navigator_; }
+    // Back where the garden file starts the visitor, walking (the desktop's Home key).
+    void resetView();
     const Navigator& navigator() const { return navigator_; }
     FrameScheduler& scheduler() { return scheduler_; }
     SessionSettings& settings() { return settings_; }

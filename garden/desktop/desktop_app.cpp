@@ -159,6 +159,7 @@ void showAsDesktop(GardenWindow& window, const DesktopOptions& options) {
 int runDesktopOn(GardenSession& session, GardenWindow& gardenWindow, const DesktopOptions& options) {
     GlWindow& window = gardenWindow.window();
     Overlay& overlay = *gardenWindow.overlay();
+    bool showHelp = true;  // the key list, open for a first look; F1 toggles it
     Renderer& renderer = gardenWindow.renderer();
     GardenView& view = gardenWindow.view();
     WindowEvents& events = gardenWindow.events();
@@ -213,7 +214,9 @@ int runDesktopOn(GardenSession& session, GardenWindow& gardenWindow, const Deskt
         const glm::mat4 projection =
             glm::perspective(fovY, static_cast<float>(fb.x) / static_cast<float>(std::max(fb.y, 1)), 0.05f, 500.0f);
         const Hands hands = desktopHands(in, pressed, session, projection, speed);
-        if (pressed.quit) window.setShouldClose(true);
+        if (quitRequested(pressed)) window.setShouldClose(true);
+        if (pressed.resetView) session.resetView();
+        if (pressed.help) showHelp = !showHelp;
         if (pressed.detail) {
             // Where the mouse ray meets the ground, a metre up; again: removed.
             if (session.detail()) session.setDetail(std::nullopt);
@@ -248,6 +251,7 @@ int runDesktopOn(GardenSession& session, GardenWindow& gardenWindow, const Deskt
         ImGui::End();
         drawToolPanel(session);
         drawStatsPanel(session.scheduler().history());
+        drawHelpPanel(showHelp, {0.5f * static_cast<float>(fb.x), static_cast<float>(fb.y)});
         // Above everything, centred: work that is not on disk.
         const float bannerWidth = std::min(640.0f, static_cast<float>(fb.x) - 20.0f);
         drawSaveBanner(session, {0.5f * (static_cast<float>(fb.x) - bannerWidth), 10.0f}, bannerWidth);

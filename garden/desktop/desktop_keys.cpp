@@ -3,6 +3,8 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
+#include <imgui.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -49,8 +51,14 @@ bool addKeyPress(DesktopKeys& keys, int key, int mods) {
         case GLFW_KEY_F9: keys.headset = true; return true;
         case GLFW_KEY_F12: keys.screenshot = true; return true;
         case GLFW_KEY_ESCAPE: keys.quit = true; return true;
+        case GLFW_KEY_HOME: keys.resetView = true; return true;
+        case GLFW_KEY_F1: keys.help = true; return true;
         default: return false;
     }
+}
+
+bool quitRequested(const DesktopKeys& keys) {
+    return keys.quit && !(ImGui::GetCurrentContext() && ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId));
 }
 
 void applyToolKeys(const DesktopKeys& keys, float& wheel, GardenSession& session) {

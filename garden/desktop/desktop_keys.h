@@ -25,12 +25,18 @@ struct DesktopKeys {
     bool undo = false;                       // Ctrl+Z
     bool redo = false;                       // Ctrl+Shift+Z, Ctrl+Y
     bool fly = false, orbit = false, detail = false, screenshot = false, quit = false;  // space, O, G, F12, Esc
+    bool resetView = false;                  // Home: back to the garden's start
+    bool help = false;                       // F1: the key list
     bool headset = false;                    // F9: into the headset, and back
 };
 
 // Adds one press of a GLFW key with its modifier bits; false when the key
 // means nothing here.
 bool addKeyPress(DesktopKeys& keys, int glfwKey, int glfwMods);
+
+// Esc quits, unless it was pressed to close a drop-down or popup of the
+// panels (open in the last frame): then it is the panel's.
+bool quitRequested(const DesktopKeys& keys);
 
 // The size factor of one [ or ] press.
 constexpr double kToolSizeStep = 1.25;

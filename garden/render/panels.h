@@ -29,6 +29,10 @@ void drawToolPanel(GardenSession& session);
 // Nothing when everything is saved. True when shown.
 bool drawSaveBanner(GardenSession& session, glm::vec2 topLeft, float width);
 
+// The key list (open: a window the user can close; closed: a hint line at
+// `bottomCentre`, the middle of the window's bottom edge in pixels, to press F1).
+void drawHelpPanel(bool& open, glm::vec2 bottomCentre);
+
 // The morph selector inside the current window: a triangle whose corners
 // carry labels[0..2] (bottom left, bottom right, top); clicking or dragging
 // in it moves `point`, kept inside the triangle, in the local frame of

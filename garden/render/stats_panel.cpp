@@ -52,6 +52,8 @@ void frameGraph(const FrameHistory& history, double budgetMs) {
 void drawStatsPanel(const FrameHistory& history) {
     // Always fitted to its contents: they change from "no frames yet" to the
     // full panel, and a size fitted once would clip them.
+    // Folded at first: numbers for whoever looks for them, not a new user's view.
+    ImGui::SetNextWindowCollapsed(true, ImGuiCond_FirstUseEver);
     if (!ImGui::Begin("Frame stats", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
         ImGui::End();
         return;

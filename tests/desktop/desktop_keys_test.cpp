@@ -9,6 +9,8 @@
 
 #include <cmath>
 
+#include <imgui.h>
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "../garden/session_garden.h"
@@ -94,6 +96,61 @@ protected:
     glm::mat4 projection{1.0f};
     float speed = 1.0f, lastSpeed = 1.0f;
 };
+
+// Esc quits, except when it was pressed to close a panel's drop-down;
+// Home and F1 are the view's reset and the key list.
+TEST(DesktopKeys, EscClosesAnOpenDropDownInsteadOfQuitting) {
+    EXPECT_TRUE(press(GLFW_KEY_HOME).resetView);
+    EXPECT_TRUE(press(GLFW_KEY_F1).help);
+    const DesktopKeys esc = press(GLFW_KEY_ESCAPE);
+    EXPECT_TRUE(quitRequested(esc));  // no ImGui context: nothing to close
+    ImGui::CreateContext();
+    ImGuiIO& io = ImGui::GetIO();
+    io.IniFilename = nullptr;
+    io.DisplaySize = ImVec2(800, 600);
+    unsigned char* pixels = nullptr;
+    int w = 0, h = 0;
+    io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
+    const auto frame = [](bool open) {
+        ImGui::NewFrame();
+        ImGui::Begin("panel");
+        if (open) ImGui::OpenPopup("choices");
+        if (ImGui::BeginPopup("choices")) {
+            ImGui::TextUnformatted("a");
+            ImGui::EndPopup();
+        }
+        ImGui::End();
+        ImGui::Render();
+    };
+    frame(false);
+    EXPECT_TRUE(quitRequested(esc));
+    frame(true);
+    EXPECT_FALSE(quitRequested(esc));  // the drop-down is the panel's
+    EXPECT_FALSE(quitRequested(DesktopKeys{}));
+    ImGui::CloseCurrentPopup();
+    ImGui::NewFrame();
+    ImGui::Begin("panel");
+    if (ImGui::BeginPopup("choices")) {
+        ImGui::CloseCurrentPopup();
+        ImGui::EndPopup();
+    }
+    ImGui::End();
+    ImGui::Render();
+    frame(false);
+    EXPECT_TRUE(quitRequested(esc));
+    ImGui::DestroyContext();
+}
+
+TEST_F(DesktopKeysSession, HomeTakesTheViewBackToTheGardensStart) {
+    // The small garden starts the visitor at (0, 1.7, 8) looking at (0, 0.5, 0).
+    session->navigator().setMode(NavigationMode::Fly);
+    session->navigator().setPose(glm::vec3(3.0f, 4.0f, -2.0f), 1.0f, 0.3f);
+    session->resetView();
+    EXPECT_EQ(session->navigator().eye(), glm::vec3(0.0f, 1.7f, 8.0f));
+    EXPECT_FLOAT_EQ(session->navigator().yaw(), 0.0f);
+    EXPECT_NEAR(session->navigator().pitch(), std::asin(-1.2f / std::sqrt(1.44f + 64.0f)), 1e-6);
+    EXPECT_EQ(session->navigator().mode(), NavigationMode::Walk);
+}
 
 TEST_F(DesktopKeysSession, ToolKeysPickToolsAndScaleTheirSizes) {
     ToolSettings& t = session->tool();

@@ -174,7 +174,11 @@ TEST_F(HeadlessImGui, StatsPanelDrawsWithAndWithoutFrames) {
         }
         return count;
     };
+    // It starts folded (a new user's view); folded, it is its title alone.
+    const int folded = vertices(sampleHistory(300));
+    ImGui::SetWindowCollapsed("Frame stats", false);
     const int none = vertices(sampleHistory(0));
+    EXPECT_GT(none, folded) << "unfolded, it says there are no frames";
     const int one = vertices(sampleHistory(1));
     const int full = vertices(sampleHistory(300));
     EXPECT_GT(none, 0) << "says there are no frames";
