@@ -125,12 +125,25 @@ TEST_F(SessionProcessTest, ASecondProcessIsRefusedWhileTheFirstWritesAndReadersS
     // Once the first holds the session (and has journalled something).
     const auto giveUp = std::chrono::steady_clock::now() + std::chrono::seconds(120);
     std::optional<io::LockHolder> holder;
+    int early = 0;
+    bool ended = false;
     while (std::chrono::steady_clock::now() < giveUp) {
         holder = io::lockHolder(folder, kSessionLockFile);
         if (holder && fs::exists(SessionPaths(folder).journal)) break;
+        if (::waitpid(first, &early, WNOHANG) == first) {
+            ended = true;
+            break;
+        }
         std::this_thread::sleep_for(std::chrono::milliseconds(5));
     }
-    ASSERT_TRUE(holder);
+    const auto log = [&] {
+        std::ifstream in(dir / "first.log");
+        std::ostringstream s;
+        s << in.rdbuf();
+        return s.str();
+    };
+    ASSERT_FALSE(ended) << "the first process ended early (status " << early << "): " << log();
+    ASSERT_TRUE(holder) << log();
     EXPECT_EQ(holder->pid, static_cast<long>(first));
     const ShellRun second = shell(replay(s, folder));
     const ShellRun verify = shell("$HG session '" + folder + "' --verify");
