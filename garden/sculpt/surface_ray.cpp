@@ -7,6 +7,10 @@ namespace hg::garden {
 
 std::optional<double> marchToSurface(const voxel::Volume& volume, const ModelPoint& o, const ModelPoint& d) {
     const voxel::VolumeFrame& f = volume.frame;
+    // A ray from a NaN pose (a singular placement, a lost controller) meets
+    // nothing; left in, NaN passes the box test and the march never ends.
+    for (int a = 0; a < 3; ++a)
+        if (!std::isfinite(o[a]) || !std::isfinite(d[a])) return std::nullopt;
     double t0 = 0.0, t1 = 1e300;
     for (int a = 0; a < 3; ++a) {
         const double lo = f.modelBox.lo[a], hi = f.modelBox.hi[a];
