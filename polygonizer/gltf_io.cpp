@@ -90,6 +90,8 @@ std::string writeGlb(const Mesh& mesh, const std::string& path, double scale, co
     if (!(scale > 0.0) || !std::isfinite(scale)) return "cannot write " + path + ": the scale must be finite and positive";
     if (mesh.normals.size() != mesh.positions.size())
         return "cannot write " + path + ": the mesh has no normal for every vertex";
+    // glTF readers refuse a binary chunk of no bytes: an empty mesh is no file.
+    if (mesh.triangleCount() == 0) return "cannot write " + path + ": the mesh has no triangles";
     const tinygltf::Model model = buildModel(mesh, static_cast<float>(scale), meshName);
     // Encoded in memory (binary, not pretty printed), then written with
     // every step checked: tinygltf's own file writer does not report a full

@@ -101,7 +101,11 @@ std::string writeObj(const Mesh& mesh, const std::string& path, double scale, co
     if (mesh.normals.size() != mesh.positions.size())
         return "cannot write " + path + ": the mesh has no normal for every vertex";
     const auto s = static_cast<float>(scale);
-    return io::writeAtomically(path, io::WriteSite::Export, [&](const std::string& tmp) { return writeTo(mesh, tmp, path, s, objectName); });
+    // The name stays on its "o" line: a line break in it would start lines of its own.
+    std::string name = objectName;
+    for (char& c : name)
+        if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = '_';
+    return io::writeAtomically(path, io::WriteSite::Export, [&](const std::string& tmp) { return writeTo(mesh, tmp, path, s, name); });
 }
 
 }  // namespace hg::poly

@@ -1,11 +1,13 @@
 #include "garden/sculpt/tool_settings.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace hg::garden {
 
 void scaleToolSize(ToolSettings& tool, double factor) {
     using K = ToolSettings::Kind;
+    if (std::isnan(factor)) return;  // clamping would keep the NaN
     switch (tool.kind) {
         case K::Carve:
         case K::Add:

@@ -171,6 +171,9 @@ TEST(ToolSettings, SizesStopExactlyAtTheBounds) {
         EXPECT_EQ(*sizeOf(t), lo);
         scaleToolSize(t, 1e300);
         EXPECT_EQ(*sizeOf(t), hi);
+        // A NaN factor (a broken stick reading) leaves the size alone.
+        scaleToolSize(t, std::nan(""));
+        EXPECT_EQ(*sizeOf(t), hi);
     }
     // None and move have no size: nothing changes, whatever the factor.
     for (Kind k : {Kind::None, Kind::Move}) {

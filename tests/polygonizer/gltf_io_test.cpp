@@ -210,6 +210,8 @@ TEST(GltfIo, BadScalesAndMissingNormalsAreRefusedWithoutAFile) {
     Mesh noNormals = mesh;
     noNormals.normals.clear();
     EXPECT_EQ(writeGlb(noNormals, path), "cannot write " + path + ": the mesh has no normal for every vertex");
+    // Readers refuse a glTF with an empty binary chunk: no triangles, no file.
+    EXPECT_EQ(writeGlb(Mesh{}, path), "cannot write " + path + ": the mesh has no triangles");
     EXPECT_TRUE(dir.entries().empty());
 }
 

@@ -23,6 +23,7 @@
 #include <cstdio>
 #include <cstring>
 #include <limits>
+#include <fstream>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -199,6 +200,17 @@ TEST(ObjIo, BadScalesAndMissingNormalsAreRefusedWithoutAFile) {
     fewNormals.normals.resize(fewNormals.normals.size() - 3);
     EXPECT_EQ(writeObj(fewNormals, path), "cannot write " + path + ": the mesh has no normal for every vertex");
     EXPECT_TRUE(dir.entries().empty());
+    // A name with a line break stays on its "o" line: no vertex of its own.
+    ASSERT_EQ(writeObj(mesh, path, 1.0, "a\nv 9 9 9"), "");
+    std::ifstream in(path);
+    std::string line;
+    std::size_t vertices = 0, objects = 0;
+    while (std::getline(in, line)) {
+        vertices += line.rfind("v ", 0) == 0;
+        objects += line.rfind("o ", 0) == 0;
+    }
+    EXPECT_EQ(vertices, mesh.vertexCount());
+    EXPECT_EQ(objects, 1u);
 }
 
 TEST(ObjIo, AFailedWriteLeavesNothingAndKeepsTheOlderFile) {
