@@ -62,6 +62,7 @@ bool ExportPanel::start(const GardenSession& session, int index, const std::stri
         return false;
     }
     status();  // collect the previous one
+    shownFor_ = index;  // what the status line will be about
     if (index < 0 || static_cast<std::size_t>(index) >= session.sculptures().size()) {
         status_ = "error: select a sculpture to export";
         return false;
@@ -76,8 +77,10 @@ bool ExportPanel::start(const GardenSession& session, int index, const std::stri
     const std::time_t t = std::time(nullptr);
     char stamp[32];
     std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", std::localtime(&t));
-    const std::string path =
-        (dir / (safeName(session.sculptures()[static_cast<std::size_t>(index)].name) + "-" + stamp + extension)).string();
+    const std::string file = fileName_.empty()
+                                 ? safeName(session.sculptures()[static_cast<std::size_t>(index)].name) + "-" + stamp
+                                 : safeName(fileName_);
+    const std::string path = (dir / (file + extension)).string();
     auto work = std::make_unique<Work>();
     ExportFileOptions options;
     options.resolution = resolution;
@@ -98,13 +101,26 @@ bool ExportPanel::start(const GardenSession& session, int index, const std::stri
 }
 
 void ExportPanel::draw(const GardenSession& session) {
+    const int selected = session.selected();
+    // What the status line says belongs to the sculpture it was about: a
+    // new selection starts clean (an export under way keeps its line).
+    if (selected != shownFor_ && !busy()) {
+        status();
+        status_.clear();
+        shownFor_ = selected;
+    }
     if (!ImGui::CollapsingHeader("Export")) return;
     ImGui::Combo("format", &format_, kFormatNames, IM_ARRAYSIZE(kFormatNames));
     if (format_ != 0) {
         ImGui::InputInt("resolution (0: the grid's)", &resolution_, 64, 256);
         resolution_ = std::max(0, std::min(resolution_, 4096));
     }
-    const int selected = session.selected();
+    if (ImGui::InputTextWithHint("file name", "NAME-TIME (the sculpture's name and the time)", nameField_,
+                                 sizeof nameField_))
+        fileName_ = nameField_;
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("written to %s/exports/; letters, digits, - and _ are kept, the rest become _",
+                          folder_.empty() ? "." : folder_.c_str());
     const bool can = selected >= 0 && !busy();
     if (!can) ImGui::BeginDisabled();
     if (ImGui::Button("Export the selected sculpture")) start(session, selected, kFormats[format_], resolution_);

@@ -25,8 +25,12 @@ public:
     void draw(const GardenSession& session);
     // Starts exporting sculpture `index` as `extension` (".hf", ".stl", ...)
     // at `resolution` (0: the grid's); false (and status() says why) when it
-    // cannot start. The path is exports/NAME-TIME.EXT in the folder.
+    // cannot start. The path is exports/FILE.EXT in the folder, FILE the
+    // name given (fileName, letters, digits, - and _ kept) or else the
+    // sculpture's name and the time.
     bool start(const GardenSession& session, int index, const std::string& extension, int resolution);
+    // The file name the next export takes ("": NAME-TIME).
+    void setFileName(const std::string& name) { fileName_ = name; }
     bool busy() const;
     // The last export's outcome ("" before any); collects a finished worker.
     const std::string& status();
@@ -39,6 +43,9 @@ private:
     std::string lastPath_;
     int format_ = 0;
     int resolution_ = 0;
+    std::string fileName_;
+    char nameField_[128] = {};
+    int shownFor_ = -1;  // the selection the status line was about
     std::unique_ptr<Work> work_;
 };
 

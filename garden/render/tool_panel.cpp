@@ -20,6 +20,14 @@ using Kind = ToolSettings::Kind;
 constexpr Kind kTools[] = {Kind::None, Kind::Carve, Kind::Add, Kind::Melt, Kind::Perturb, Kind::Impacts, Kind::Move};
 constexpr const char* kToolLabels[] = {"morph (0)", "carve (1)", "add (2)", "melt (3)", "perturb (4)", "impacts (5)",
                                        "move (6)"};
+constexpr const char* kToolTips[] = {
+    "no tool: the left button picks the blend of the three key sculptures on the ground triangle",
+    "carve: remove material along the stroke (R: add instead)",
+    "add: build material along the stroke (R: carve instead)",
+    "melt: a soft, rounded carve along the stroke",
+    "perturb: push the surface out with a bump (R: pull it in)",
+    "impacts: age the surface with a series of hits fired at it",
+    "move: select a sculpture, drag it on the ground, turn it on its ring, [ ] to scale"};
 constexpr ToolWidgetLook kDesktopLook{};
 
 // The label with the desktop's keys, or without them.
@@ -167,8 +175,10 @@ void drawToolPanel(GardenSession& session) {
     if (ImGui::BeginTable("##tool", 3, ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_BordersInnerV)) {
         ImGui::TableNextRow();
         ImGui::TableSetColumnIndex(0);
-        for (std::size_t i = 0; i < std::size(kTools); ++i)
+        for (std::size_t i = 0; i < std::size(kTools); ++i) {
             if (ImGui::RadioButton(kToolLabels[i], t.kind == kTools[i])) t.kind = kTools[i];
+            if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", kToolTips[i]);
+        }
 
         ImGui::TableSetColumnIndex(1);
         toolParameters(t, kDesktopLook);

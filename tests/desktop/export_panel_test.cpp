@@ -9,6 +9,8 @@
 #include <sstream>
 #include <thread>
 
+#include <imgui.h>
+
 #include "garden/app/garden_session.h"
 #include "garden/desktop/export_panel.h"
 #include "garden/export/hyperfun_export.h"
@@ -21,6 +23,15 @@ namespace {
 
 class ExportPanelTest : public test::SmallGarden {
 protected:
+    static void createHeadlessImGui() {
+        ImGui::CreateContext();
+        ImGuiIO& io = ImGui::GetIO();
+        io.IniFilename = nullptr;
+        io.DisplaySize = ImVec2(1280, 720);
+        unsigned char* pixels = nullptr;
+        int w = 0, h = 0;
+        io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
+    }
     std::unique_ptr<GardenSession> open() {
         SessionSettings settings;
         settings.maxLevel = 0;
@@ -72,6 +83,38 @@ TEST_F(ExportPanelTest, WithoutASelectionOrWithAMissingSculptureNothingIsWritten
     EXPECT_NE(panel.status().find("missing"), std::string::npos) << panel.status();
     const std::filesystem::path exports = dir / "session" / "exports";
     EXPECT_TRUE(!std::filesystem::exists(exports) || std::filesystem::is_empty(exports));
+}
+
+// A name of the user's own (kept to letters, digits, - and _), and a
+// status line that belongs to the sculpture it was about: drawn for another
+// selection, it starts clean.
+TEST_F(ExportPanelTest, TheFileTakesTheGivenNameAndAnErrorGoesWithANewSelection) {
+    auto session = open();
+    const int c = session->findSculpture("c");
+    ExportPanel panel((dir / "session").string());
+    panel.setFileName("my piece/v2");
+    ASSERT_TRUE(panel.start(*session, c, ".hf", 0)) << panel.status();
+    finish(panel);
+    EXPECT_EQ(std::filesystem::path(panel.lastPath()), dir / "session" / "exports" / "my_piece_v2.hf");
+    EXPECT_TRUE(std::filesystem::exists(panel.lastPath()));
+
+    EXPECT_FALSE(panel.start(*session, session->findSculpture("lost"), ".hf", 0));
+    EXPECT_NE(panel.status().find("missing"), std::string::npos);
+    createHeadlessImGui();
+    const auto frame = [&] {
+        ImGui::NewFrame();
+        ImGui::Begin("Garden");
+        panel.draw(*session);
+        ImGui::End();
+        ImGui::Render();
+    };
+    session->select(session->findSculpture("lost"));
+    frame();
+    EXPECT_NE(panel.status().find("missing"), std::string::npos) << "still about the sculpture selected";
+    session->select(c);
+    frame();
+    EXPECT_EQ(panel.status(), "") << "another sculpture: the old error is gone";
+    ImGui::DestroyContext();
 }
 
 }  // namespace
