@@ -79,11 +79,13 @@ std::unique_ptr<GardenSession> openForExport(const std::string& input, int& stat
     SessionSettings settings;
     settings.maxLevel = 0;  // no window: the coarsest meshes are not wanted
     auto session = std::make_unique<GardenSession>(std::move(load), settings);
-    if (std::string why = session->restore(journal.records); !why.empty()) {
-        std::cerr << "error: " << input << ": the journal cannot be played: " << why << "\n";
-        status = 1;
-        return nullptr;
-    }
+    // A record that cannot be played ends what the session shows (it opens
+    // read-only there, docs/session-format.md): the export is of that too.
+    const JournalPlayed played = session->restoreRecords(journal.records);
+    if (!played.ok())
+        std::cerr << "warning: " << input << ": journal " << played.message() << "; exporting the "
+                  << played.played << " records before it (hypergarden session " << input << " --cut-at "
+                  << played.played + 1 << " makes the session writable again)\n";
     status = 0;
     return session;
 }

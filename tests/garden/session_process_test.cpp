@@ -340,6 +340,11 @@ TEST_F(SessionProcessTest, AnUnplayableRecordIsToldAndCutAtMakesTheSessionWritab
     EXPECT_EQ(report.status, 1);
     EXPECT_NE(report.output.find("not played: record 3 (redo): nothing to redo; 2 records after it"), std::string::npos)
         << report.output;
+    // Export reads what the session shows: the records before it.
+    const ShellRun exported = shell("$HG export '" + folder + "' --sculpture a -o '" + (dir / "a.hf").string() + "'");
+    EXPECT_EQ(exported.status, 0) << exported.output;
+    EXPECT_NE(exported.output.find("exporting the 2 records before it"), std::string::npos) << exported.output;
+    EXPECT_TRUE(fs::exists(dir / "a.hf"));
     const ShellRun opened = shell(replay(s, folder));
     EXPECT_EQ(opened.status, 1) << opened.output;
     EXPECT_NE(opened.output.find("READ-ONLY"), std::string::npos) << opened.output;
