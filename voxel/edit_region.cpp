@@ -35,6 +35,7 @@ struct Worker {
     frep::SpecializedTape shorter;
     openvdb::tree::ValueAccessor<const openvdb::FloatTree> acc;
     bool specialize;
+    bool boundFull = true;  // `eval` runs the full tape (else the last specialized one)
     std::vector<float> x, y, z, w, out;
     std::vector<openvdb::Index> offsets;
     frep::ErrorReport errors;
@@ -43,15 +44,23 @@ struct Worker {
 // The tape for the voxels of `box`: specialized to it (frep/tape_specializer.h,
 // the same values bit for bit) when that shortens it.
 void bindTapeFor(Worker& wk, const VolumeFrame& frame, const IndexBox& box) {
-    wk.eval.rebind(wk.tape);
-    if (!wk.specialize) return;
+    // Rebinding fills every constant's registers: the full tape only when
+    // it is not bound already, a specialized one each time (new contents).
+    const auto useFull = [&wk] {
+        if (wk.boundFull) return;
+        wk.eval.rebind(wk.tape);
+        wk.boundFull = true;
+    };
+    if (!wk.specialize) return useFull();
     frep::Interval axis[3];
     for (int a = 0; a < 3; ++a)  // rounded as the points are (monotone)
         axis[a] = frep::Interval(static_cast<double>(static_cast<float>(frame.coordinate(a, box.lo[a]))),
                                  static_cast<double>(static_cast<float>(frame.coordinate(a, box.hi[a]))));
     wk.interval.evaluate(axis[0], axis[1], axis[2], &wk.trace);
-    if (wk.specializer.specialize(wk.tape, wk.interval.affine(), wk.trace, frep::Precision::Float, wk.shorter))
-        wk.eval.rebind(wk.shorter.tape);
+    if (!wk.specializer.specialize(wk.tape, wk.interval.affine(), wk.trace, frep::Precision::Float, wk.shorter))
+        return useFull();
+    wk.eval.rebind(wk.shorter.tape);
+    wk.boundFull = false;
 }
 
 // The voxels of the leaf at `o` inside `clip`: base values and positions

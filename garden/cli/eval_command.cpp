@@ -122,7 +122,6 @@ private:
         const frep::Tape& full = *model_.tape();
         if (!frep::specializationEnabled() || full.size() < 96 || n < 2 * kGroup) {
             frep::ErrorReport errors;
-            tape_->rebind(full);
             tape_->evaluate(x_.data(), y_.data(), z_.data(), values_.data(), n, errors, failed_.data());
             return;
         }
@@ -130,6 +129,13 @@ private:
         order_.resize(n);
         for (size_t i = 0; i < n; ++i) order_[i] = i;
         split(0, n, full);
+        bindFull(full);  // a failed point is evaluated alone on it, for its own message
+    }
+    // Rebinding fills every constant's registers: the full tape only when
+    // another is bound.
+    void bindFull(const frep::Tape& full) {
+        if (!boundFull_) tape_->rebind(full);
+        boundFull_ = true;
     }
     void split(size_t begin, size_t end, const frep::Tape& full) {
         const double* axes[3] = {x_.data(), y_.data(), z_.data()};
@@ -154,9 +160,12 @@ private:
             return;
         }
         interval_->evaluate(frep::Interval(lo[0], hi[0]), frep::Interval(lo[1], hi[1]), frep::Interval(lo[2], hi[2]), &trace_);
-        tape_->rebind(specializer_.specialize(full, interval_->affine(), trace_, frep::Precision::Double, shorter_)
-                          ? shorter_.tape
-                          : full);
+        if (specializer_.specialize(full, interval_->affine(), trace_, frep::Precision::Double, shorter_)) {
+            tape_->rebind(shorter_.tape);
+            boundFull_ = false;
+        } else {
+            bindFull(full);
+        }
         const size_t m = end - begin;
         gx_.resize(m); gy_.resize(m); gz_.resize(m); gv_.resize(m); gf_.resize(m);
         for (size_t k = 0; k < m; ++k) {
@@ -170,7 +179,6 @@ private:
             values_[order_[begin + k]] = gv_[k];
             failed_[order_[begin + k]] = gf_[k];
         }
-        tape_->rebind(full);
     }
 
     const frep::Model& model_;
@@ -178,6 +186,7 @@ private:
     frep::IntervalTrace trace_;
     frep::TapeSpecializer specializer_;
     frep::SpecializedTape shorter_;
+    bool boundFull_ = true;  // tape_ runs the model's whole tape
     std::vector<size_t> order_;
     std::vector<double> gx_, gy_, gz_, gv_;
     std::vector<std::uint8_t> gf_;
