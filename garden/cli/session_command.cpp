@@ -43,15 +43,6 @@ std::size_t differingVoxels(const voxel::Volume& a, const voxel::Volume& b) {
     return n;
 }
 
-std::string readBytes(const std::string& path, std::string& bytes) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return "cannot read " + path + ": " + std::strerror(errno);
-    std::ostringstream s;
-    s << in.rdbuf();
-    bytes = s.str();
-    return "";
-}
-
 // The journal cut at record `n` (from 1): records n and after removed, the
 // whole journal kept first as journal.hgj.before-cut-at-N, and a snapshot
 // that covers cut records removed (its grids hold them).
@@ -66,8 +57,8 @@ int cutJournal(const SessionPaths& paths, std::size_t n) {
         return 2;
     }
     std::string bytes;
-    if (std::string why = readBytes(paths.journal, bytes); !why.empty()) {
-        std::cerr << "error: " << why << "\n";
+    if (std::string why = readText(paths.journal, bytes); !why.empty()) {
+        std::cerr << "error: cannot read " << why << "\n";
         return 1;
     }
     std::string copy = paths.journal + ".before-cut-at-" + std::to_string(n);

@@ -21,15 +21,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string readText(const std::string& path, std::string& text) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return path + ": " + std::strerror(errno);
-    std::ostringstream s;
-    s << in.rdbuf();
-    text = s.str();
-    return "";
-}
-
 // What a session's making writes before session.json: a folder holding
 // only these (and temporaries) is a session cut short while being made.
 bool isMakingLeftover(const std::string& name) {
@@ -41,6 +32,15 @@ std::string gridFileName(const std::string& sculpture, std::size_t records) {
 }
 
 }  // namespace
+
+std::string readText(const std::string& path, std::string& text) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return path + ": " + std::strerror(errno);
+    std::ostringstream s;
+    s << in.rdbuf();
+    text = s.str();
+    return "";
+}
 
 SessionPaths::SessionPaths(const std::string& d)
     : dir(d),

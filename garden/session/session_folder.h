@@ -53,6 +53,9 @@ FolderKind folderKind(const std::string& dir);
 // half-made is taken for a session: session.json is written last).
 std::string makeSession(const std::string& dir, const std::string& gardenFile);
 
+// A session file's whole contents; "" or "PATH: reason".
+std::string readText(const std::string& path, std::string& text);
+
 // The version and format check of DIR/session.json; "" when it is ours.
 std::string checkSessionManifest(const SessionPaths& paths);
 

@@ -16,6 +16,7 @@
 #include "../garden/session_garden.h"
 #include "garden/app/garden_session.h"
 #include "garden/desktop/desktop_keys.h"
+#include "tests/render/headless_imgui.h"
 #include "garden/sculpt/sculpture_edits.h"
 
 namespace hg::garden {
@@ -104,13 +105,7 @@ TEST(DesktopKeys, EscClosesAnOpenDropDownInsteadOfQuitting) {
     EXPECT_TRUE(press(GLFW_KEY_F1).help);
     const DesktopKeys esc = press(GLFW_KEY_ESCAPE);
     EXPECT_TRUE(quitRequested(esc));  // no ImGui context: nothing to close
-    ImGui::CreateContext();
-    ImGuiIO& io = ImGui::GetIO();
-    io.IniFilename = nullptr;
-    io.DisplaySize = ImVec2(800, 600);
-    unsigned char* pixels = nullptr;
-    int w = 0, h = 0;
-    io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
+    createHeadlessImGui(ImVec2(800, 600));
     const auto frame = [](bool open) {
         ImGui::NewFrame();
         ImGui::Begin("panel");

@@ -17,21 +17,13 @@
 #include "polygonizer/mesh_validation.h"
 #include "polygonizer/stl_io.h"
 #include "tests/garden/session_garden.h"
+#include "tests/render/headless_imgui.h"
 
 namespace hg::garden {
 namespace {
 
 class ExportPanelTest : public test::SmallGarden {
 protected:
-    static void createHeadlessImGui() {
-        ImGui::CreateContext();
-        ImGuiIO& io = ImGui::GetIO();
-        io.IniFilename = nullptr;
-        io.DisplaySize = ImVec2(1280, 720);
-        unsigned char* pixels = nullptr;
-        int w = 0, h = 0;
-        io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
-    }
     std::unique_ptr<GardenSession> open() {
         SessionSettings settings;
         settings.maxLevel = 0;
@@ -100,7 +92,7 @@ TEST_F(ExportPanelTest, TheFileTakesTheGivenNameAndAnErrorGoesWithANewSelection)
 
     EXPECT_FALSE(panel.start(*session, session->findSculpture("lost"), ".hf", 0));
     EXPECT_NE(panel.status().find("missing"), std::string::npos);
-    createHeadlessImGui();
+    createHeadlessImGui(ImVec2(1280, 720));
     const auto frame = [&] {
         ImGui::NewFrame();
         ImGui::Begin("Garden");
