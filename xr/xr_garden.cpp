@@ -94,7 +94,7 @@ private:
 };
 
 // One run: everything that lives from the first frame to the last.
-class XrRun {
+class XrRun final : public garden::ViewSink {
 public:
     XrRun(const XrOptions& o, garden::GardenSession& s, Headset& h, garden::GardenWindow& w,
           const std::optional<garden::ReplayScript>& script, bool desktopButton)
@@ -135,7 +135,7 @@ public:
     }
 
     // Controllers go before the session they were attached to.
-    ~XrRun() { controllers_.reset(); }
+    ~XrRun() override { controllers_.reset(); }
 
     int loop() {
         bool exitAsked = false;
@@ -232,64 +232,83 @@ private:
         const float hz = headset_.displayRefreshRate();
         const double budgetMs = hz > 0.0f ? 1000.0 / static_cast<double>(hz) : minPeriodMs_;
         if (budgetMs > 0.0) session_.scheduler().setBudgetMs(budgetMs);
-        session_.beginFrame();
         const bool focused = headset_.focused();
-        garden::Hands stage = controllers_->read(headset_.space(), f.state.predictedDisplayTime, heightOffset(), focused);
-        if (focused) {
-            ++info_.focusedFrames;
-            if (script_) runScriptCommands();
-            ++scriptFrame_;
-        }
-        // The world grab moves the rig; then the hands go into the world.
-        const auto squeezing = [](const garden::HandState& h) {
-            return h.tracked && h.squeeze > 0.5f ? std::optional<glm::vec3>(h.grip.position) : std::nullopt;
+        const double dt = periodMs > 0.0 ? periodMs / 1000.0 : 1.0 / 90.0;
+        garden::FrameInput input;
+        input.dt = dt;
+        // The controllers become the frame's hands (in the world), after
+        // the script's commands, the world grab, the recentring and the
+        // hand panel have had them.
+        input.commands = [&](garden::GardenSession&, garden::Hands& world) {
+            const garden::Hands stage =
+                controllers_->read(headset_.space(), f.state.predictedDisplayTime, heightOffset(), focused);
+            if (focused) {
+                ++info_.focusedFrames;
+                if (script_) runScriptCommands();
+                ++scriptFrame_;
+            }
+            // The world grab moves the rig; then the hands go into the world.
+            const auto squeezing = [](const garden::HandState& h) {
+                return h.tracked && h.squeeze > 0.5f ? std::optional<glm::vec3>(h.grip.position) : std::nullopt;
+            };
+            setRig(grab_.update(rig(), squeezing(stage.navigation), squeezing(stage.tool)));
+            // The navigation hand's menu button recenters: where the head is
+            // now becomes the garden's start, looking its way.
+            const bool menu = stage.navigation.pressed(garden::kButtonMenu);
+            if (menu && !menuHeld_ && f.viewsValid) {
+                garden::Pose head = poseOf(f.views[0].pose, heightOffset());
+                head.position = 0.5f * (head.position + poseOf(f.views[1].pose, heightOffset()).position);
+                setRig(rig().recentered(head, startEye_, garden::NavigationSettings{}.eyeHeight, startYaw_));
+            }
+            menuHeld_ = menu;
+            world = rig().toWorld(stage);
+            world.look.x = turning_.apply(world, dt);
+            // The stick walks where the head looks (orbiting keeps its own axes).
+            if (f.viewsValid && session_.navigator().mode() != garden::NavigationMode::Orbit)
+                world.navigation.thumbstick = headRelativeStick(world.navigation.thumbstick, poseOf(f.views[0].pose, 0.0f));
+            panel_.place(world.navigation, scale_);
+            panel_.update(world.tool);
+            // Every frame, shown or not, so ImGui knows the panel's window
+            // before the first pull on it.
+            if (panelUi_.update(session_, panel_, info_.interactionProfile, user_, static_cast<float>(periodMs / 1000.0)))
+                keepSettings();
+            if (panel_.ownsTrigger()) world.tool.trigger = 0.0f;  // the trigger is the panel's
+            // The tool stick reshapes the tool; the navigator must not fly with it.
+            if (session_.tool().kind == garden::ToolSettings::Kind::Move)
+                scaleSelection(world.tool, dt);
+            else
+                adjustTool(session_.tool(), world.tool.thumbstick, dt);
+            world.tool.thumbstick = glm::vec2(0.0f);
+            toolHand_ = world.tool;
+            wasStroking_ = session_.stroking();
+            return true;
         };
-        setRig(grab_.update(rig(), squeezing(stage.navigation), squeezing(stage.tool)));
-        // The navigation hand's menu button recenters: where the head is
-        // now becomes the garden's start, looking its way.
-        const bool menu = stage.navigation.pressed(garden::kButtonMenu);
-        if (menu && !menuHeld_ && f.viewsValid) {
-            garden::Pose head = poseOf(f.views[0].pose, heightOffset());
-            head.position = 0.5f * (head.position + poseOf(f.views[1].pose, heightOffset()).position);
-            setRig(rig().recentered(head, startEye_, garden::NavigationSettings{}.eyeHeight, startYaw_));
-        }
-        menuHeld_ = menu;
-        garden::Hands world = rig().toWorld(stage);
-        world.look.x = turning_.apply(world, periodMs > 0.0 ? periodMs / 1000.0 : 1.0 / 90.0);
-        // The stick walks where the head looks (orbiting keeps its own axes).
-        if (f.viewsValid && session_.navigator().mode() != garden::NavigationMode::Orbit)
-            world.navigation.thumbstick = headRelativeStick(world.navigation.thumbstick, poseOf(f.views[0].pose, 0.0f));
-        panel_.place(world.navigation, scale_);
-        panel_.update(world.tool);
-        // Every frame, shown or not, so ImGui knows the panel's window
-        // before the first pull on it.
-        if (panelUi_.update(session_, panel_, info_.interactionProfile, user_, static_cast<float>(periodMs / 1000.0)))
-            keepSettings();
-        if (panel_.ownsTrigger()) world.tool.trigger = 0.0f;  // the trigger is the panel's
-        // The tool stick reshapes the tool; the navigator must not fly with it.
-        if (session_.tool().kind == garden::ToolSettings::Kind::Move)
-            scaleSelection(world.tool, periodMs > 0.0 ? periodMs / 1000.0 : 1.0 / 90.0);
-        else
-            adjustTool(session_.tool(), world.tool.thumbstick, periodMs > 0.0 ? periodMs / 1000.0 : 1.0 / 90.0);
-        world.tool.thumbstick = glm::vec2(0.0f);
-        const bool wasStroking = session_.stroking();
-        session_.update(world, periodMs > 0.0 ? periodMs / 1000.0 : 1.0 / 90.0);
-        if (!wasStroking && session_.stroking() && focused) controllers_->pulseToolHand();
+        eyes_ = &f;
+        const garden::FrameStats& stats = session_.frame(input, *this);
+        eyes_ = nullptr;
+        if (focused && options_.onFrame) options_.onFrame(stats, scriptFrame_ - 1);
+        ++info_.framesSubmitted;
+        if (options_.mirror) window_.swapBuffers();
+    }
 
-        garden::FrameScheduler& sch = session_.scheduler();
-        sch.beginStage(garden::Stage::Upload);
-        std::size_t pending = 0;
-        session_.stats().uploadBytes += view_.upload(session_, sch.allowanceMs(garden::Stage::Upload), pending);
-        session_.stats().uploadsPending = pending;
-        sch.beginStage(garden::Stage::Render);
+    // The frame's views (garden/app/view_sink.h): both eyes, then the frame
+    // handed to the runtime.
+    garden::ViewUpload upload(garden::GardenSession& session, double allowanceMs) override {
+        return view_.upload(session, allowanceMs);
+    }
+    garden::ViewDraw render(garden::GardenSession&) override {
+        const HeadsetFrame& f = *eyes_;
+        // A stroke begun this frame: the tool hand feels it.
+        if (!wasStroking_ && session_.stroking() && headset_.focused()) controllers_->pulseToolHand();
         const bool render = f.state.shouldRender && f.viewsValid;
         // The tool hand aims (not at the panel) with a tool in hand: where
         // its ray meets a sculpture, found once for both eyes.
-        const bool aiming = render && world.tool.tracked && !panel_.hovered() &&
+        const bool aiming = render && toolHand_.tracked && !panel_.hovered() &&
                             session_.tool().kind != garden::ToolSettings::Kind::None;
         std::optional<glm::vec3> toolHit;
         if (aiming)
-            if (const auto hit = session_.toolHit(world.tool.aim)) toolHit = hit->second;
+            if (const auto hit = session_.toolHit(toolHand_.aim)) toolHit = hit->second;
+        garden::ViewDraw drawn;
         if (render) {
             const StageRig r = rig();
             for (int eye = 0; eye < 2; ++eye) {
@@ -300,23 +319,19 @@ private:
                 const garden::Pose eyePose = poseOf(v.pose, heightOffset());
                 view_.render(session_, glm::ivec2(images.width, images.height), r.viewOf(eyePose), projectionOf(v.fov),
                              r.toWorld(eyePose.position));
-                drawTool(world.tool, aiming, toolHit);
-                drawPanel(world.tool, projectionOf(v.fov) * r.viewOf(eyePose));
+                drawTool(toolHand_, aiming, toolHit);
+                drawPanel(toolHand_, projectionOf(v.fov) * r.viewOf(eyePose));
                 if (eye == 0 && options_.mirror) mirror(target, images);
                 glBindFramebuffer(GL_FRAMEBUFFER, 0);
                 headset_.releaseEye(eye);
             }
             if (overlay_) drawPanels();
             const garden::RenderStats rs = renderer_.endFrame();
-            session_.stats().trianglesDrawn = rs.trianglesDrawn;
-            session_.stats().drawCalls = rs.drawCalls;
+            drawn = {rs.trianglesDrawn, rs.drawCalls};
             ++info_.framesRendered;
         }
         headset_.endFrame(f, render, kNearZ, kFarZ);
-        const garden::FrameStats& stats = session_.endFrame();
-        if (focused && options_.onFrame) options_.onFrame(stats, scriptFrame_ - 1);
-        ++info_.framesSubmitted;
-        if (options_.mirror) window_.swapBuffers();
+        return drawn;
     }
 
     // The move tool's stick: up and down scale the selected sculpture live,
@@ -423,6 +438,11 @@ private:
     float startYaw_ = 0.0f;
     bool menuHeld_ = false;
     bool scalingSelection_ = false;  // the move tool's stick holds a live move
+    // This frame's, for its views: the runtime's frame, the tool hand (world),
+    // and whether a stroke was under way before the frame's input.
+    const HeadsetFrame* eyes_ = nullptr;
+    garden::HandState toolHand_;
+    bool wasStroking_ = false;
     double minPeriodMs_ = 0.0;  // the smallest predicted display period seen
     XrRunInfo info_;
     std::string runtimeName_;

@@ -110,19 +110,21 @@ bool parseOptions(int argc, char** argv, Options& o) {
     return true;
 }
 
-// Between remesh() and endFrame(): counts the triangles on show (its own
-// time is taken off the frame's total afterwards), then uploads and draws
-// when there is a GL renderer behind it.
+// At the start of the upload stage: counts the triangles on show (outside
+// any stage; its own time is taken off the frame's total afterwards), then
+// uploads and draws when there is a GL renderer behind it.
 class Recorder : public FrameRenderer {
 public:
     explicit Recorder(FrameRenderer* inner) : inner_(inner) {}
-    void render(GardenSession& session) override {
+    ViewUpload upload(GardenSession& session, double allowanceMs) override {
         session.scheduler().endStage();
         const auto t0 = Clock::now();
         shown.push_back(session.trianglesShown());
         countMs.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
-        if (inner_) inner_->render(session);
+        session.scheduler().beginStage(Stage::Upload);
+        return inner_ ? inner_->upload(session, allowanceMs) : ViewUpload{};
     }
+    ViewDraw render(GardenSession& session) override { return inner_ ? inner_->render(session) : ViewDraw{}; }
     std::string screenshot(const std::string& path) override {
         return inner_ ? inner_->screenshot(path) : "no renderer";
     }

@@ -228,9 +228,7 @@ int main(int argc, char** argv) {
         garden::GardenSession session(garden::loadGarden(std::string(HG_SOURCE_DIR) + "/content/gardens/default.json"),
                                       settings);
         for (int f = 0; f < 400 && !session.idle(); ++f) {
-            session.beginFrame();
-            session.update(garden::Hands{}, 1.0 / 90.0);
-            session.endFrame();
+            session.frame(garden::FrameInput(garden::Hands{}, 1.0 / 90.0));
         }
         const int d = session.findSculpture("dryad");
         const garden::Sculpture& dryad = session.sculptures()[static_cast<std::size_t>(d)];
@@ -246,9 +244,7 @@ int main(int argc, char** argv) {
         for (int f = 0; f < 60; ++f) {
             hands.tool.aim.position = c + glm::vec3(-0.3f + 0.5f * static_cast<float>(16.0 * voxelMetres) * static_cast<float>(f),
                                                     0.2f, 3.0f);
-            session.beginFrame();
-            session.update(hands, 1.0 / 90.0);
-            frames.push_back(session.endFrame());
+            frames.push_back(session.frame(garden::FrameInput(hands, 1.0 / 90.0)));
         }
         double total = 0, worst = 0, input = 0, remesh = 0;
         int over = 0;

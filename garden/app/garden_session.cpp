@@ -203,16 +203,37 @@ void GardenSession::select(int sculpture) {
     if (selected_ < 0 && navigator_.mode() == NavigationMode::Orbit) navigator_.setMode(NavigationMode::Walk);
 }
 
+const FrameStats& GardenSession::frame(const FrameInput& in) {
+    NullViewSink none;
+    return frame(in, none);
+}
+
+const FrameStats& GardenSession::frame(const FrameInput& in, ViewSink& views) {
+    beginFrame();
+    Hands hands = in.hands;
+    if (in.commands && !in.commands(*this, hands)) return endFrame();
+    input(hands, in.dt);
+    selectLevels();
+    morph();
+    remesh();
+    uploadAndRender(views);
+    return endFrame();
+}
+
 void GardenSession::beginFrame() {
     scheduler_.beginFrame();
     scheduler_.beginStage(Stage::Input);
 }
 
-void GardenSession::update(const Hands& hands, double dt) {
-    input(hands, dt);
-    selectLevels();
-    morph();
-    remesh();
+void GardenSession::uploadAndRender(ViewSink& views) {
+    scheduler_.beginStage(Stage::Upload);
+    const ViewUpload up = views.upload(*this, scheduler_.allowanceMs(Stage::Upload));
+    stats().uploadBytes += up.bytes;
+    stats().uploadsPending = up.pending;
+    scheduler_.beginStage(Stage::Render);
+    const ViewDraw drawn = views.render(*this);
+    stats().trianglesDrawn = drawn.trianglesDrawn;
+    stats().drawCalls = drawn.drawCalls;
 }
 
 void GardenSession::input(const Hands& hands, double dt) {

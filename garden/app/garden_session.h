@@ -1,17 +1,17 @@
 // The garden while it runs, without a window (docs/design.md §6): every sculpture
 // as a volume with its LOD pyramid and remesh queue, the metamorphosis (its
 // source caches, its result and the budgeted blend), the navigator and the
-// frame scheduler. One frame is:
+// frame scheduler. One frame is one call, frame(input, views), that runs
+// the stages in their one order:
 //
-//   beginFrame(), [commands], update(hands, dt),
-//   [the app uploads and renders here], endFrame()
+//   begin, the caller's commands, input (navigation and the tools: a
+//   stroke's box is applied here, first), level selection, the morph's
+//   budgeted blend, remeshing, upload and render (through the ViewSink),
+//   end (the frame's stats closed and kept in the history).
 //
-// where update() runs the stages in their one order: input (navigation and
-// the tools: a stroke's box is applied here, first), level selection, the
-// morph's budgeted blend, remeshing.
-//
-// The desktop window, `replay` (headless or offscreen) and the tests all
-// drive this same object, so what a script does is what a user sees.
+// The desktop window, the headset, `replay` (headless or offscreen), the
+// benches and the tests all drive this same object through frame(), so what
+// a script does is what a user sees, and each stage is timed in one place.
 #pragma once
 
 #include <array>
@@ -26,6 +26,7 @@
 #include "garden/app/frame_scheduler.h"
 #include "garden/app/navigator.h"
 #include "garden/app/sculpture.h"
+#include "garden/app/view_sink.h"
 #include "garden/morph/morph_weights.h"
 #include "garden/scene/garden_file.h"
 #include "garden/sculpt/edit.h"
@@ -62,6 +63,22 @@ struct SessionSettings {
     // benchmarks run the same garden smaller or larger.
     int sculptureResolution = 0;
     int morphResolution = 0;
+};
+
+// What one frame is given: the hands (world frame), the time since the
+// last frame, and the caller's commands.
+struct FrameInput {
+    FrameInput() = default;
+    FrameInput(const Hands& h, double seconds) : hands(h), dt(seconds) {}
+
+    Hands hands;
+    double dt = 1.0 / 90.0;
+    // Run once the frame has begun and before its input stage reads the
+    // hands (timed as input): a replay step's commands, the desktop's keys,
+    // the headset's panel. They may change the hands (the panel takes the
+    // trigger it owns). False ends the frame there: no stage runs, and the
+    // frame is closed as it stands (a replay command that failed).
+    std::function<bool(GardenSession&, Hands&)> commands;
 };
 
 class GardenSession {
@@ -182,14 +199,11 @@ public:
     std::optional<std::pair<int, glm::vec3>> toolHit(const Pose& aim) const;
 
     // --- one frame -----------------------------------------------------
-    void beginFrame();
-    // The frame's stages, in order: input, selectLevels, morph, remesh.
-    void update(const Hands& hands, double dt);
-    void input(const Hands& hands, double dt);
-    void selectLevels();
-    void morph();
-    void remesh();
-    const FrameStats& endFrame();
+    // Runs a whole frame (see the top of this file) and returns its stats.
+    const FrameStats& frame(const FrameInput& input, ViewSink& views);
+    // The same with nothing to upload to or draw: headless replays, tests, benches.
+    const FrameStats& frame(const FrameInput& input);
+    // The frame under way (a sink adds what it measured itself).
     FrameStats& stats() { return scheduler_.stats(); }
 
     // The morph has nothing left to blend and no chunk waits for a mesh.
@@ -209,6 +223,15 @@ public:
     glm::mat4 view() const { return navigator_.view(); }
 
 private:
+    // The frame's stages, in order (frame() is their one caller).
+    void beginFrame();
+    void input(const Hands& hands, double dt);
+    void selectLevels();
+    void morph();
+    void remesh();
+    void uploadAndRender(ViewSink& views);
+    const FrameStats& endFrame();
+
     // The actions to undo, oldest first: an edit of a sculpture, or a move
     // with the placements before and after it.
     struct UndoEntry {

@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
+#include <functional>
 #include <iostream>
 #include <optional>
 
@@ -86,6 +87,20 @@ bool gardenPanel(GardenSession& session, glm::vec2& selector, bool headset, cons
     ImGui::End();
     return enter;
 }
+
+// The window as the frame's view sink: uploads through the garden view,
+// draws with the loop's own function (it needs the loop's state: the
+// mouse's ray, the keys, the panels).
+class WindowView final : public ViewSink {
+public:
+    WindowView(GardenView& view, std::function<ViewDraw(GardenSession&)> draw) : view_(view), draw_(std::move(draw)) {}
+    ViewUpload upload(GardenSession& session, double allowanceMs) override { return view_.upload(session, allowanceMs); }
+    ViewDraw render(GardenSession& session) override { return draw_(session); }
+
+private:
+    GardenView& view_;
+    std::function<ViewDraw(GardenSession&)> draw_;
+};
 
 std::string desktopTitle(const DesktopOptions& options) { return "Hypergarden - " + options.garden; }
 
@@ -173,79 +188,24 @@ int runDesktopOn(GardenSession& session, GardenWindow& gardenWindow, const Deskt
         selector = trianglePoint(glm::vec3(static_cast<float>(w->barycentric[0]), static_cast<float>(w->barycentric[1]),
                                            static_cast<float>(w->barycentric[2])));
     float speed = 1.0f;
-    glm::dvec2 lastMouse(0.0);
-    glfwGetCursorPos(window.handle(), &lastMouse.x, &lastMouse.y);
-    auto last = std::chrono::steady_clock::now();
-    for (int frame = 0; !window.shouldClose() && (options.frames == 0 || frame < options.frames); ++frame) {
-        pollEvents();
-        const auto now = std::chrono::steady_clock::now();
-        const double dt = std::min(0.1, std::chrono::duration<double>(now - last).count());
-        last = now;
-        const glm::ivec2 fb = window.framebufferSize();
-        session.settings().viewportHeight = std::max(fb.y, 1);
-
-        session.beginFrame();
-        DesktopInput in;
-        GLFWwindow* w = window.handle();
-        const bool keys = !overlay.wantsKeyboard(), mouse = !overlay.wantsMouse();
-        in.forward = keys && glfwGetKey(w, GLFW_KEY_W) == GLFW_PRESS;
-        in.back = keys && glfwGetKey(w, GLFW_KEY_S) == GLFW_PRESS;
-        in.left = keys && glfwGetKey(w, GLFW_KEY_A) == GLFW_PRESS;
-        in.right = keys && glfwGetKey(w, GLFW_KEY_D) == GLFW_PRESS;
-        in.up = keys && glfwGetKey(w, GLFW_KEY_E) == GLFW_PRESS;
-        in.down = keys && glfwGetKey(w, GLFW_KEY_Q) == GLFW_PRESS;
-        in.lookButton = mouse && glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS;
-        in.toolButton = mouse && glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
-        glm::dvec2 cursor;
-        glfwGetCursorPos(w, &cursor.x, &cursor.y);
-        const glm::ivec2 ws = window.size();
-        // Mouse in framebuffer pixels (HiDPI: window and framebuffer differ).
-        const glm::vec2 toFb(static_cast<float>(fb.x) / static_cast<float>(std::max(ws.x, 1)),
-                             static_cast<float>(fb.y) / static_cast<float>(std::max(ws.y, 1)));
-        in.mouse = glm::vec2(cursor) * toFb;
-        in.mouseDelta = glm::vec2(cursor - lastMouse);
-        lastMouse = cursor;
-        // Keys ImGui wants (typing in a field) are not the garden's.
-        const DesktopKeys pressed = keys ? events.keys : DesktopKeys{};
-        in.wheel = mouse ? events.wheel : 0.0f;
-        in.turn = keys && (glfwGetKey(w, GLFW_KEY_LEFT_SHIFT) == GLFW_PRESS || glfwGetKey(w, GLFW_KEY_RIGHT_SHIFT) == GLFW_PRESS);
-        in.viewport = glm::vec2(fb);
-        const float fovY = static_cast<float>(session.settings().fovY);
-        const glm::mat4 projection =
-            glm::perspective(fovY, static_cast<float>(fb.x) / static_cast<float>(std::max(fb.y, 1)), 0.05f, 500.0f);
-        const Hands hands = desktopHands(in, pressed, session, projection, speed);
-        if (quitRequested(pressed)) window.setShouldClose(true);
-        if (pressed.resetView) session.resetView();
-        if (pressed.help) showHelp = !showHelp;
-        if (pressed.detail) {
-            // Where the mouse ray meets the ground, a metre up; again: removed.
-            if (session.detail()) session.setDetail(std::nullopt);
-            else if (const auto hit = hands.tool.aim.groundHit(session.garden().ground.height))
-                session.setDetail(poly::Sphere{{hit->x, hit->y + 1.0, hit->z}, 1.0});
-        }
-        const bool shoot = pressed.screenshot;
-        events = WindowEvents{};
-
-        session.update(hands, dt);
-        FrameScheduler& f = session.scheduler();
-        f.beginStage(Stage::Upload);
-        std::size_t pending = 0;
-        session.stats().uploadBytes += view.upload(session, f.allowanceMs(Stage::Upload), pending);
-        session.stats().uploadsPending = pending;
-        f.beginStage(Stage::Render);
+    glm::ivec2 fb(1);
+    const float fovY = static_cast<float>(session.settings().fovY);
+    std::optional<Pose> aim;  // the mouse's ray, unless a panel has the mouse
+    DesktopKeys pressed;      // this frame's keys, unless a panel has the keyboard
+    bool headsetButton = false;
+    // The window's view: the garden, the tool where the mouse points, a
+    // screenshot when asked (F12), then the panels over it.
+    WindowView views(view, [&](GardenSession&) {
         view.render(session, fb, fovY);
-        // The tool where the mouse points, unless it points at a panel.
-        drawToolGizmos(renderer, session, mouse ? std::optional<Pose>(hands.tool.aim) : std::nullopt);
+        drawToolGizmos(renderer, session, aim);
         const RenderStats r = renderer.endFrame();
-        session.stats().trianglesDrawn = r.trianglesDrawn;
-        session.stats().drawCalls = r.drawCalls;
-        if (shoot) {
+        if (pressed.screenshot) {
             const std::string path = timestampedName(options.screenshotDir);
             const std::string why = writeFramebufferPng(path, fb.x, fb.y);
             std::cerr << (why.empty() ? "screenshot: " + path : "error: " + why) << "\n";
         }
         overlay.newFrame();
-        const bool headsetButton = gardenPanel(session, selector, static_cast<bool>(options.headset), headsetMessage);
+        headsetButton = gardenPanel(session, selector, static_cast<bool>(options.headset), headsetMessage);
         ImGui::Begin("Garden");  // the same window: its Export section
         exportPanel.draw(session);
         ImGui::End();
@@ -256,7 +216,69 @@ int runDesktopOn(GardenSession& session, GardenWindow& gardenWindow, const Deskt
         const float bannerWidth = std::min(640.0f, static_cast<float>(fb.x) - 20.0f);
         drawSaveBanner(session, {0.5f * (static_cast<float>(fb.x) - bannerWidth), 10.0f}, bannerWidth);
         overlay.render();
-        session.endFrame();
+        return ViewDraw{r.trianglesDrawn, r.drawCalls};
+    });
+    glm::dvec2 lastMouse(0.0);
+    glfwGetCursorPos(window.handle(), &lastMouse.x, &lastMouse.y);
+    auto last = std::chrono::steady_clock::now();
+    for (int frame = 0; !window.shouldClose() && (options.frames == 0 || frame < options.frames); ++frame) {
+        pollEvents();
+        const auto now = std::chrono::steady_clock::now();
+        const double dt = std::min(0.1, std::chrono::duration<double>(now - last).count());
+        last = now;
+        fb = window.framebufferSize();
+        session.settings().viewportHeight = std::max(fb.y, 1);
+
+        // The window's keys and mouse become this frame's hands; what they
+        // ask of the garden directly (reset the view, the detail sphere) are
+        // the frame's commands.
+        FrameInput input;
+        input.dt = dt;
+        input.commands = [&](GardenSession&, Hands& hands) {
+            DesktopInput in;
+            GLFWwindow* w = window.handle();
+            const bool keys = !overlay.wantsKeyboard(), mouse = !overlay.wantsMouse();
+            in.forward = keys && glfwGetKey(w, GLFW_KEY_W) == GLFW_PRESS;
+            in.back = keys && glfwGetKey(w, GLFW_KEY_S) == GLFW_PRESS;
+            in.left = keys && glfwGetKey(w, GLFW_KEY_A) == GLFW_PRESS;
+            in.right = keys && glfwGetKey(w, GLFW_KEY_D) == GLFW_PRESS;
+            in.up = keys && glfwGetKey(w, GLFW_KEY_E) == GLFW_PRESS;
+            in.down = keys && glfwGetKey(w, GLFW_KEY_Q) == GLFW_PRESS;
+            in.lookButton = mouse && glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS;
+            in.toolButton = mouse && glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
+            glm::dvec2 cursor;
+            glfwGetCursorPos(w, &cursor.x, &cursor.y);
+            const glm::ivec2 ws = window.size();
+            // Mouse in framebuffer pixels (HiDPI: window and framebuffer differ).
+            const glm::vec2 toFb(static_cast<float>(fb.x) / static_cast<float>(std::max(ws.x, 1)),
+                                 static_cast<float>(fb.y) / static_cast<float>(std::max(ws.y, 1)));
+            in.mouse = glm::vec2(cursor) * toFb;
+            in.mouseDelta = glm::vec2(cursor - lastMouse);
+            lastMouse = cursor;
+            // Keys ImGui wants (typing in a field) are not the garden's.
+            pressed = keys ? events.keys : DesktopKeys{};
+            in.wheel = mouse ? events.wheel : 0.0f;
+            in.turn = keys && (glfwGetKey(w, GLFW_KEY_LEFT_SHIFT) == GLFW_PRESS ||
+                               glfwGetKey(w, GLFW_KEY_RIGHT_SHIFT) == GLFW_PRESS);
+            in.viewport = glm::vec2(fb);
+            const glm::mat4 projection = glm::perspective(
+                fovY, static_cast<float>(fb.x) / static_cast<float>(std::max(fb.y, 1)), 0.05f, 500.0f);
+            hands = desktopHands(in, pressed, session, projection, speed);
+            // The tool where the mouse points, unless it points at a panel.
+            aim = mouse ? std::optional<Pose>(hands.tool.aim) : std::nullopt;
+            if (quitRequested(pressed)) window.setShouldClose(true);
+            if (pressed.resetView) session.resetView();
+            if (pressed.help) showHelp = !showHelp;
+            if (pressed.detail) {
+                // Where the mouse ray meets the ground, a metre up; again: removed.
+                if (session.detail()) session.setDetail(std::nullopt);
+                else if (const auto hit = hands.tool.aim.groundHit(session.garden().ground.height))
+                    session.setDetail(poly::Sphere{{hit->x, hit->y + 1.0, hit->z}, 1.0});
+            }
+            events = WindowEvents{};
+            return true;
+        };
+        session.frame(input, views);
         const bool lastFrame = options.frames > 0 && frame + 1 == options.frames;
         if (lastFrame && !options.exitScreenshot.empty()) {
             const std::string why = writeFramebufferPng(options.exitScreenshot, fb.x, fb.y);

@@ -87,10 +87,10 @@ bool mayShow(const glm::mat4& modelViewProjection, const double lo[3], const dou
 
 }  // namespace
 
-std::size_t GardenView::upload(GardenSession& session, double allowanceMs, std::size_t& pendingSculptures) {
+ViewUpload GardenView::upload(const GardenSession& session, double allowanceMs) {
     const auto start = std::chrono::steady_clock::now();
-    std::size_t bytes = 0;
-    pendingSculptures = 0;
+    ViewUpload done;
+    std::size_t& bytes = done.bytes;
     bool spent = false;
     const Garden& g = session.garden();
     for (std::size_t p = 0; p < g.paths.size(); ++p)
@@ -102,7 +102,7 @@ std::size_t GardenView::upload(GardenSession& session, double allowanceMs, std::
         if (uploaded_.size() <= s) uploaded_.resize(s + 1, 0);
         if (uploaded_[s] == q.shownGeneration() + 1) continue;  // nothing new on show
         if (spent) {
-            ++pendingSculptures;
+            ++done.pending;
             continue;
         }
         for (std::size_t c = 0; c < q.count(); ++c)
@@ -110,7 +110,7 @@ std::size_t GardenView::upload(GardenSession& session, double allowanceMs, std::
         uploaded_[s] = q.shownGeneration() + 1;
         spent = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count() >= allowanceMs;
     }
-    return bytes;
+    return done;
 }
 
 void GardenView::render(const GardenSession& session, glm::ivec2 viewport, float fovY) {

@@ -23,8 +23,8 @@ public:
     // Uploads the chunks whose shown mesh changed. A sculpture's chunks go
     // up together (its remesh queue shows groups at once, and so must the
     // GPU); once `allowanceMs` is spent the next sculptures wait for the
-    // next frame. Returns the bytes uploaded; counts what waits.
-    std::size_t upload(GardenSession& session, double allowanceMs, std::size_t& pendingSculptures);
+    // next frame. The bytes uploaded, and the sculptures that wait.
+    ViewUpload upload(const GardenSession& session, double allowanceMs);
 
     // Draws into the bound framebuffer of `viewport` pixels; chunks outside
     // the view frustum are not drawn.

@@ -39,13 +39,11 @@ std::unique_ptr<OffscreenGarden> OffscreenGarden::create(int width, int height, 
 OffscreenGarden::OffscreenGarden(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
 OffscreenGarden::~OffscreenGarden() = default;
 
-void OffscreenGarden::render(GardenSession& session) {
-    FrameScheduler& f = session.scheduler();
-    f.beginStage(Stage::Upload);
-    std::size_t pending = 0;
-    session.stats().uploadBytes += impl_->view.upload(session, f.allowanceMs(Stage::Upload), pending);
-    session.stats().uploadsPending = pending;
-    f.beginStage(Stage::Render);
+ViewUpload OffscreenGarden::upload(GardenSession& session, double allowanceMs) {
+    return impl_->view.upload(session, allowanceMs);
+}
+
+ViewDraw OffscreenGarden::render(GardenSession& session) {
     impl_->target.bind();
     impl_->view.render(session, {impl_->target.width(), impl_->target.height()},
                        static_cast<float>(session.settings().fovY));
@@ -53,9 +51,7 @@ void OffscreenGarden::render(GardenSession& session) {
     // The CPU cost of drawing includes waiting for llvmpipe here: a software
     // GPU; on hardware this is where the driver would queue the frame.
     glFinish();
-    session.stats().trianglesDrawn = r.trianglesDrawn;
-    session.stats().drawCalls = r.drawCalls;
-    f.endStage();
+    return {r.trianglesDrawn, r.drawCalls};
 }
 
 std::string OffscreenGarden::screenshot(const std::string& path) {

@@ -16,7 +16,8 @@ public:
     static std::unique_ptr<OffscreenGarden> create(int width, int height, std::string& error);
     ~OffscreenGarden() override;
 
-    void render(GardenSession& session) override;
+    ViewUpload upload(GardenSession& session, double allowanceMs) override;
+    ViewDraw render(GardenSession& session) override;
     std::string screenshot(const std::string& path) override;
 
 private:

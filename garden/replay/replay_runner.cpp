@@ -134,20 +134,25 @@ ReplayResult runReplay(const ReplayScript& script, GardenSession& session, Frame
         bool settled = false;
         for (int f = 0; f < step.frames; ++f) {
             std::vector<std::string> shots;
-            session.beginFrame();
+            FrameInput in;
+            in.hands = step.hands;
+            in.dt = script.timestep;
             if (f == 0)
-                for (std::size_t c = 0; c < step.commands.size(); ++c) {
-                    const std::string why = apply(step.commands[c], session, renderer, options, result, shots);
-                    if (!why.empty()) {
-                        result.error = script.file + ": $.steps[" + std::to_string(stepIndex) + "].commands[" +
-                                       std::to_string(c) + "]: " + why;
-                        session.endFrame();
-                        return result;
+                in.commands = [&](GardenSession& s, Hands&) {
+                    for (std::size_t c = 0; c < step.commands.size(); ++c) {
+                        const std::string why = apply(step.commands[c], s, renderer, options, result, shots);
+                        if (!why.empty()) {
+                            result.error = script.file + ": $.steps[" + std::to_string(stepIndex) + "].commands[" +
+                                           std::to_string(c) + "]: " + why;
+                            return false;
+                        }
                     }
-                }
-            session.update(step.hands, script.timestep);
-            if (renderer) renderer->render(session);
-            result.stats.push_back(session.endFrame());
+                    return true;
+                };
+            NullViewSink headless;
+            const FrameStats& stats = session.frame(in, renderer ? static_cast<ViewSink&>(*renderer) : headless);
+            if (!result.error.empty()) return result;
+            result.stats.push_back(stats);
             ++result.frames;
             if (renderer && options.screenshotEvery > 0 && result.frames % options.screenshotEvery == 0) {
                 char name[64];

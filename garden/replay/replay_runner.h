@@ -12,12 +12,10 @@
 
 namespace hg::garden {
 
-// What `replay --offscreen` plugs in: the upload and render stages of a
-// frame, and a screenshot of the last frame drawn.
-class FrameRenderer {
+// What `replay --offscreen` plugs in: the frame's views (upload and
+// render, garden/app/view_sink.h), and a screenshot of the last frame drawn.
+class FrameRenderer : public ViewSink {
 public:
-    virtual ~FrameRenderer() = default;
-    virtual void render(GardenSession& session) = 0;
     // "" on success, else why the file could not be written.
     virtual std::string screenshot(const std::string& path) = 0;
 };

@@ -85,9 +85,7 @@ protected:
         in.wheel = wheel;
         const Hands h = desktopHands(in, keys, *session, projection, speed);
         lastSpeed = h.speedScale;
-        session->beginFrame();
-        session->update(h, 1.0 / 90.0);
-        session->endFrame();
+        session->frame(FrameInput(h, 1.0 / 90.0));
     }
     void frame(const DesktopKeys& keys) { frame(keys, kCentre, false); }
     Sculpture& ball() { return session->sculptures()[static_cast<std::size_t>(c)]; }

@@ -39,18 +39,15 @@ TEST_F(GardenViewTest, TheSettledGardenShowsItsSculpturesAtTheirDepth) {
     session.navigator().setMode(NavigationMode::Fly);
     session.navigator().setPose({2.0f, 0.5f, 4.1547f}, 0.0f, 0.0f);
     for (int f = 0; f < 500 && !session.idle(); ++f) {
-        session.beginFrame();
-        session.update(Hands{}, 1.0 / 90.0);
-        session.endFrame();
+        session.frame(FrameInput(Hands{}, 1.0 / 90.0));
     }
     ASSERT_TRUE(session.idle());
 
     GardenView view(*renderer_);
-    std::size_t pending = 0;
-    const std::size_t bytes = view.upload(session, 1e9, pending);
-    EXPECT_GT(bytes, 0u);
-    EXPECT_EQ(pending, 0u);
-    EXPECT_EQ(view.upload(session, 1e9, pending), 0u) << "nothing changed: nothing uploaded again";
+    const ViewUpload first = view.upload(session, 1e9);
+    EXPECT_GT(first.bytes, 0u);
+    EXPECT_EQ(first.pending, 0u);
+    EXPECT_EQ(view.upload(session, 1e9).bytes, 0u) << "nothing changed: nothing uploaded again";
     target_->bind();
     view.render(session, {kWidth, kHeight}, glm::radians(kFovY));
     const RenderStats stats = renderer_->endFrame();

@@ -124,14 +124,11 @@ protected:
         session_->navigator().setMode(NavigationMode::Fly);
         session_->navigator().setPose({2.0f, 0.5f, 4.1547f}, 0.0f, 0.0f);
         for (int f = 0; f < 500 && !session_->idle(); ++f) {
-            session_->beginFrame();
-            session_->update(Hands{}, 1.0 / 90.0);
-            session_->endFrame();
+            session_->frame(FrameInput(Hands{}, 1.0 / 90.0));
         }
         ASSERT_TRUE(session_->idle());
         view_ = std::make_unique<GardenView>(*renderer_);
-        std::size_t pending = 0;
-        view_->upload(*session_, 1e9, pending);
+        view_->upload(*session_, 1e9);
         // The mouse at the image centre.
         const glm::mat4 projection = glm::perspective(glm::radians(kFovY), 1.0f, 0.05f, 500.0f);
         aim_ = rayThroughPixel({kWidth / 2.0f, kHeight / 2.0f}, {kWidth, kHeight}, session_->view(), projection);

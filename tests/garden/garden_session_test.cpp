@@ -141,9 +141,7 @@ TEST_F(GardenSessionTest, TheToolRayOnTheGroundTrianglePicksTheBlend) {
     // From above corner b's side, pointing down at (-1, 0, 0.5).
     h.tool.aim.position = glm::vec3(-1.0f, 2.0f, 0.5f);
     h.tool.aim.orientation = glm::quatLookAt(glm::vec3(0, -1, 0), glm::vec3(0, 0, -1));
-    s.beginFrame();
-    s.input(h, 1.0 / 90.0);
-    s.endFrame();
+    s.frame(FrameInput(h, 1.0 / 90.0));
     ASSERT_TRUE(s.morphWeights());
     EXPECT_NEAR(s.morphWeights()->point[0], -1.0, 1e-5);
     EXPECT_NEAR(s.morphWeights()->point[1], 0.5, 1e-5);
@@ -152,18 +150,14 @@ TEST_F(GardenSessionTest, TheToolRayOnTheGroundTrianglePicksTheBlend) {
     const auto before = s.morphWeights()->point;
     h.tool.trigger = 0.0f;
     h.tool.aim.position = glm::vec3(1.0f, 2.0f, 0.5f);
-    s.beginFrame();
-    s.input(h, 1.0 / 90.0);
-    s.endFrame();
+    s.frame(FrameInput(h, 1.0 / 90.0));
     EXPECT_EQ(s.morphWeights()->point, before);
 }
 
 TEST_F(GardenSessionTest, LevelsFollowTheViewerDuringALongReBlend) {
     GardenSession s(loadGarden(writeGarden()), test::smallSessionSettings());
     auto frame = [&s] {
-        s.beginFrame();
-        s.update(Hands{}, 1.0 / 90.0);
-        s.endFrame();
+        s.frame(FrameInput(Hands{}, 1.0 / 90.0));
     };
     const Sculpture& result = s.sculptures()[static_cast<std::size_t>(s.findSculpture("metamorphosis"))];
     auto finest = [&result] {

@@ -43,9 +43,7 @@ SessionSettings smallSettings() {
 
 void finishMorph(GardenSession& s) {
     for (int f = 0; f < 4000 && !s.idle(); ++f) {
-        s.beginFrame();
-        s.update(Hands{}, 1.0 / 90.0);
-        s.endFrame();
+        s.frame(FrameInput(Hands{}, 1.0 / 90.0));
     }
     ASSERT_TRUE(s.idle());
 }

@@ -38,9 +38,7 @@ protected:
         return n;
     }
     void frame(const Hands& h) {
-        session->beginFrame();
-        session->update(h, 1.0 / 90.0);
-        session->endFrame();
+        session->frame(FrameInput(h, 1.0 / 90.0));
     }
     // The tool hand at `from`, pointing along `dir`, trigger as given.
     static Hands hand(const glm::vec3& from, const glm::vec3& dir, bool trigger, bool secondary = false) {

@@ -24,9 +24,7 @@ class SessionSculptingTest : public test::SmallGarden {};
 
 
 void frame(GardenSession& s, const Hands& h) {
-    s.beginFrame();
-    s.update(h, 1.0 / 90.0);
-    s.endFrame();
+    s.frame(FrameInput(h, 1.0 / 90.0));
 }
 
 TEST_F(SessionSculptingTest, TheToolHandCarvesAndItsButtonsUndoAndRedoExactly) {
