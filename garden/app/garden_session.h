@@ -31,7 +31,7 @@
 #include "garden/scene/garden_file.h"
 #include "garden/sculpt/edit.h"
 #include "garden/sculpt/tool_settings.h"
-#include "garden/session/journal_sink.h"
+#include "garden/action/action_sink.h"
 #include "polygonizer/lod_selection.h"
 #include "polygonizer/remesh_queue.h"
 
@@ -183,7 +183,7 @@ public:
     // Called with every finished action (a stroke at its end, a
     // perturbation, undo, redo, discard, a morph weight change once the
     // hand lets go); the session folder appends it to its journal and says
-    // whether it is saved (garden/session/journal_sink.h). Not owned.
+    // whether it is saved (garden/action/action_sink.h). Not owned.
     void setJournal(JournalSink* journal) { journal_ = journal; }
     JournalSink* journal() const { return journal_; }
     // Plays journalled actions without journalling them again, the grids

@@ -22,7 +22,7 @@ void drawStatsPanel(const FrameHistory& history);
 // and redo. The desktop's key for each control is named beside it.
 void drawToolPanel(GardenSession& session);
 
-// While the session's work is not all on disk (garden/session/journal_sink.h):
+// While the session's work is not all on disk (garden/action/action_sink.h):
 // a banner at `topLeft`, `width` wide, red for actions held in memory after
 // a failed write (the folder, the reason, a Retry button), amber for a
 // session opened read-only (the record it cannot play, what to do).

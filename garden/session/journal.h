@@ -18,64 +18,11 @@
 #include <variant>
 #include <vector>
 
-#include "garden/scene/garden.h"
-#include "garden/sculpt/edit.h"
+#include "garden/action/action.h"
 
 namespace hg::garden {
 
 constexpr int kJournalVersion = 1;
-
-// A finished stroke: its tool, radius (model units), softness and path
-// (model frame); the segments follow from them.
-struct StrokeRecord {
-    std::string sculpture;
-    StrokeTool tool = StrokeTool::Carve;
-    double radius = 0.0;
-    double softness = 2.0;
-    std::vector<ModelPoint> path;
-    std::optional<MirrorPlane> mirror;
-};
-
-struct PerturbRecord {
-    std::string sculpture;
-    Perturbation perturbation;  // model frame
-};
-
-// Impacts as they were resolved (and their rays, to fire again).
-struct ImpactRecord {
-    std::string sculpture;
-    ImpactSeries series;
-};
-
-// A sculpture moved, turned or scaled: its new placement.
-struct MoveRecord {
-    std::string sculpture;
-    Placement placement;
-};
-
-// A perturbation's factor or extent changed: edit `edit` of the sculpture's
-// list replaced.
-struct ReplaceRecord {
-    std::string sculpture;
-    std::size_t edit = 0;
-    Perturbation perturbation;
-};
-
-struct UndoRecord {};
-struct RedoRecord {};
-struct DiscardRecord { std::string sculpture; };
-// The selector as barycentric coordinates and the balancing factors it was
-// weighed with (the blend's weights follow from both).
-struct MorphWeightsRecord {
-    std::array<double, 3> barycentric{};
-    std::array<double, 3> balance{1.0, 1.0, 1.0};
-};
-
-using JournalRecord =
-    std::variant<StrokeRecord, PerturbRecord, UndoRecord, RedoRecord, DiscardRecord, MorphWeightsRecord, MoveRecord,
-                 ImpactRecord, ReplaceRecord>;
-
-std::string journalRecordKind(const JournalRecord& r);
 
 struct JournalRead {
     std::vector<JournalRecord> records;
@@ -124,11 +71,6 @@ private:
     bool torn_ = false;           // an append failed: cut back to goodSize_ first
     std::size_t written_ = 0;
 };
-
-// One record as its line's JSON (no CRC, no newline), and back; throws
-// JsonError (garden/scene/json_reader.h) on a bad record.
-std::string journalRecordJson(const JournalRecord& r);
-JournalRecord parseJournalRecord(const std::string& json, const std::string& path);
 
 std::uint32_t crc32(const std::string& text);
 

@@ -21,7 +21,7 @@
 #include <vector>
 
 #include "garden/session/journal.h"
-#include "garden/session/journal_sink.h"
+#include "garden/action/action_sink.h"
 #include "io/folder_lock.h"
 
 namespace hg::garden {

@@ -7,7 +7,7 @@
 #include <cstddef>
 #include <string>
 
-#include "garden/session/journal.h"
+#include "garden/action/action.h"
 
 namespace hg::garden {
 

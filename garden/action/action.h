@@ -1,0 +1,77 @@
+// The actions a session is made of, in the sculpture's model frame
+// (docs/design.md §10, docs/session-format.md): what the journal holds one
+// per line, what a restore plays back, what the session's recorder is
+// handed as each action finishes. Model frame, so that playing them again
+// rebuilds the same edits (and the same grids) bit for bit.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "garden/scene/garden.h"
+#include "garden/sculpt/edit.h"
+
+namespace hg::garden {
+
+// A finished stroke: its tool, radius (model units), softness and path
+// (model frame); the segments follow from them.
+struct StrokeRecord {
+    std::string sculpture;
+    StrokeTool tool = StrokeTool::Carve;
+    double radius = 0.0;
+    double softness = 2.0;
+    std::vector<ModelPoint> path;
+    std::optional<MirrorPlane> mirror;
+};
+
+struct PerturbRecord {
+    std::string sculpture;
+    Perturbation perturbation;  // model frame
+};
+
+// Impacts as they were resolved (and their rays, to fire again).
+struct ImpactRecord {
+    std::string sculpture;
+    ImpactSeries series;
+};
+
+// A sculpture moved, turned or scaled: its new placement.
+struct MoveRecord {
+    std::string sculpture;
+    Placement placement;
+};
+
+// A perturbation's factor or extent changed: edit `edit` of the sculpture's
+// list replaced.
+struct ReplaceRecord {
+    std::string sculpture;
+    std::size_t edit = 0;
+    Perturbation perturbation;
+};
+
+struct UndoRecord {};
+struct RedoRecord {};
+struct DiscardRecord { std::string sculpture; };
+// The selector as barycentric coordinates and the balancing factors it was
+// weighed with (the blend's weights follow from both).
+struct MorphWeightsRecord {
+    std::array<double, 3> barycentric{};
+    std::array<double, 3> balance{1.0, 1.0, 1.0};
+};
+
+using JournalRecord =
+    std::variant<StrokeRecord, PerturbRecord, UndoRecord, RedoRecord, DiscardRecord, MorphWeightsRecord, MoveRecord,
+                 ImpactRecord, ReplaceRecord>;
+
+std::string journalRecordKind(const JournalRecord& r);
+
+// One action as JSON (a journal line's text without its CRC), and back;
+// throws JsonError (garden/scene/json_reader.h) on a bad record.
+std::string journalRecordJson(const JournalRecord& r);
+JournalRecord parseJournalRecord(const std::string& json, const std::string& path);
+
+}  // namespace hg::garden

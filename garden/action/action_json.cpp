@@ -1,0 +1,214 @@
+#include "garden/action/action.h"
+
+#include <cmath>
+
+#include <nlohmann/json.hpp>
+
+#include "garden/scene/json_reader.h"
+#include "garden/sculpt/edit_names.h"
+
+namespace hg::garden {
+
+namespace {
+
+nlohmann::json point(const ModelPoint& p) { return nlohmann::json::array({p[0], p[1], p[2]}); }
+
+
+// A finite number: journals hold only what the session accepted.
+double finite(const nlohmann::json& v, const std::string& path) {
+    const double d = readNumber(v, path);
+    if (!std::isfinite(d)) throw JsonError(path, "expected a finite number");
+    return d;
+}
+
+ModelPoint readPoint(const nlohmann::json& v, const std::string& path) {
+    const auto p = readVec3(v, path);
+    for (std::size_t i = 0; i < 3; ++i)
+        if (!std::isfinite(p[i])) throw JsonError(indexPath(path, i), "expected a finite number");
+    return p;
+}
+
+nlohmann::json mirrorJson(const MirrorPlane& m) { return {{"point", point(m.point)}, {"normal", point(m.normal)}}; }
+
+MirrorPlane readMirror(const nlohmann::json& v, const std::string& path) {
+    ObjectReader r(v, path, {"point", "normal"});
+    MirrorPlane m;
+    m.point = readPoint(r.required("point"), r.pathOf("point"));
+    m.normal = readPoint(r.required("normal"), r.pathOf("normal"));
+    const double n = std::sqrt(m.normal[0] * m.normal[0] + m.normal[1] * m.normal[1] + m.normal[2] * m.normal[2]);
+    if (std::fabs(n - 1.0) > 1e-6) throw JsonError(r.pathOf("normal"), "expected a unit vector");
+    r.finish();
+    return m;
+}
+
+void writePerturbation(const Perturbation& q, nlohmann::json& j) {
+    j["shape"] = quadricShapeName(q.shape);
+    j["center"] = point(q.center);
+    j["axes"] = nlohmann::json::array({point(q.axes[0]), point(q.axes[1]), point(q.axes[2])});
+    j["radii"] = point(q.radii);
+    j["strength"] = q.strength;
+    if (q.mirror) j["mirror"] = mirrorJson(*q.mirror);
+}
+
+}  // namespace
+
+std::string journalRecordKind(const JournalRecord& r) {
+    static const char* const names[] = {"stroke", "perturb", "undo", "redo", "discard", "morph", "move", "impacts", "replace"};
+    return names[r.index()];
+}
+
+std::string journalRecordJson(const JournalRecord& record) {
+    nlohmann::json j;
+    j["action"] = journalRecordKind(record);
+    if (const auto* s = std::get_if<StrokeRecord>(&record)) {
+        j["sculpture"] = s->sculpture;
+        j["tool"] = strokeToolName(s->tool);
+        j["radius"] = s->radius;
+        if (s->tool == StrokeTool::Melt) j["softness"] = s->softness;
+        nlohmann::json path = nlohmann::json::array();
+        for (const ModelPoint& p : s->path) path.push_back(point(p));
+        j["path"] = std::move(path);
+        if (s->mirror) j["mirror"] = mirrorJson(*s->mirror);
+    } else if (const auto* p = std::get_if<PerturbRecord>(&record)) {
+        j["sculpture"] = p->sculpture;
+        writePerturbation(p->perturbation, j);
+    } else if (const auto* rp = std::get_if<ReplaceRecord>(&record)) {
+        j["sculpture"] = rp->sculpture;
+        j["edit"] = rp->edit;
+        writePerturbation(rp->perturbation, j);
+    } else if (const auto* d = std::get_if<DiscardRecord>(&record)) {
+        j["sculpture"] = d->sculpture;
+    } else if (const auto* m = std::get_if<MorphWeightsRecord>(&record)) {
+        j["barycentric"] = point(m->barycentric);
+        j["balance"] = point(m->balance);
+    } else if (const auto* im = std::get_if<ImpactRecord>(&record)) {
+        j["sculpture"] = im->sculpture;
+        nlohmann::json list = nlohmann::json::array();
+        for (const Impact& hit : im->series.impacts)
+            list.push_back({{"shape", impactShapeName(hit.shape)}, {"tip", point(hit.tip)}, {"direction", point(hit.direction)},
+                            {"across", point(hit.across)}, {"size", hit.size}, {"depth", hit.depth}});
+        j["impacts"] = std::move(list);
+        nlohmann::json rays = nlohmann::json::array();
+        for (std::size_t i = 0; i < im->series.rayOrigins.size(); ++i)
+            rays.push_back({point(im->series.rayOrigins[i]), point(im->series.rayDirections[i])});
+        j["rays"] = std::move(rays);
+        j["volume"] = im->series.volume;
+    } else if (const auto* mv = std::get_if<MoveRecord>(&record)) {
+        j["sculpture"] = mv->sculpture;
+        j["position"] = point(mv->placement.position);
+        j["yaw"] = mv->placement.yawDegrees;
+        j["scale"] = mv->placement.scale;
+    }
+    return j.dump();
+}
+
+JournalRecord parseJournalRecord(const std::string& text, const std::string& path) {
+    const nlohmann::json v = parseStrictJson(text);
+    if (!v.is_object() || !v.contains("action")) throw JsonError(path, "expected an object with an \"action\"");
+    const std::string action = readString(v.at("action"), childPath(path, "action"));
+    if (action == "stroke") {
+        ObjectReader r(v, path, {"action", "sculpture", "tool", "radius", "softness", "path", "mirror"});
+        StrokeRecord s;
+        s.sculpture = readString(r.required("sculpture"), r.pathOf("sculpture"));
+        s.tool = readStrokeTool(r.required("tool"), r.pathOf("tool"));
+        s.radius = readPositive(r.required("radius"), r.pathOf("radius"));
+        if (r.has("softness")) s.softness = readPositive(r.required("softness"), r.pathOf("softness"));
+        const nlohmann::json& p = r.required("path");
+        if (!p.is_array() || p.empty()) throw JsonError(r.pathOf("path"), "expected a non-empty array of points");
+        for (std::size_t i = 0; i < p.size(); ++i) s.path.push_back(readPoint(p[i], indexPath(r.pathOf("path"), i)));
+        if (r.has("mirror")) s.mirror = readMirror(r.required("mirror"), r.pathOf("mirror"));
+        r.finish();
+        return s;
+    }
+    if (action == "perturb" || action == "replace") {
+        ObjectReader r(v, path, action == "perturb"
+                                    ? std::initializer_list<const char*>{"action", "sculpture", "shape", "center", "axes",
+                                                                         "radii", "strength", "mirror"}
+                                    : std::initializer_list<const char*>{"action", "sculpture", "edit", "shape", "center",
+                                                                         "axes", "radii", "strength", "mirror"});
+        PerturbRecord p;
+        p.sculpture = readString(r.required("sculpture"), r.pathOf("sculpture"));
+        p.perturbation.shape = readQuadricShape(r.required("shape"), r.pathOf("shape"));
+        p.perturbation.center = readPoint(r.required("center"), r.pathOf("center"));
+        const nlohmann::json& axes = r.required("axes");
+        if (!axes.is_array() || axes.size() != 3) throw JsonError(r.pathOf("axes"), "expected three axes");
+        for (std::size_t i = 0; i < 3; ++i) p.perturbation.axes[i] = readPoint(axes[i], indexPath(r.pathOf("axes"), i));
+        p.perturbation.radii = readPoint(r.required("radii"), r.pathOf("radii"));
+        for (std::size_t i = 0; i < (p.perturbation.shape == QuadricShape::Ellipsoid ? 3u : 2u); ++i)
+            if (!(p.perturbation.radii[i] > 0.0)) throw JsonError(indexPath(r.pathOf("radii"), i), "expected a positive radius");
+        p.perturbation.strength = finite(r.required("strength"), r.pathOf("strength"));
+        if (r.has("mirror")) p.perturbation.mirror = readMirror(r.required("mirror"), r.pathOf("mirror"));
+        if (action == "replace") {
+            ReplaceRecord rp{p.sculpture, static_cast<std::size_t>(readInt(r.required("edit"), r.pathOf("edit"), 0, 100000000)),
+                             p.perturbation};
+            r.finish();
+            return rp;
+        }
+        r.finish();
+        return p;
+    }
+    if (action == "undo" || action == "redo") {
+        ObjectReader r(v, path, {"action"});
+        r.finish();
+        if (action == "undo") return UndoRecord{};
+        return RedoRecord{};
+    }
+    if (action == "discard") {
+        ObjectReader r(v, path, {"action", "sculpture"});
+        DiscardRecord d{readString(r.required("sculpture"), r.pathOf("sculpture"))};
+        r.finish();
+        return d;
+    }
+    if (action == "morph") {
+        ObjectReader r(v, path, {"action", "barycentric", "balance"});
+        MorphWeightsRecord m{readPoint(r.required("barycentric"), r.pathOf("barycentric")),
+                             readPoint(r.required("balance"), r.pathOf("balance"))};
+        r.finish();
+        return m;
+    }
+    if (action == "impacts") {
+        ObjectReader r(v, path, {"action", "sculpture", "impacts", "rays", "volume"});
+        ImpactRecord rec;
+        rec.sculpture = readString(r.required("sculpture"), r.pathOf("sculpture"));
+        const nlohmann::json& list = r.required("impacts");
+        if (!list.is_array()) throw JsonError(r.pathOf("impacts"), "expected an array of impacts");
+        for (std::size_t i = 0; i < list.size(); ++i) {
+            const std::string ip = indexPath(r.pathOf("impacts"), i);
+            ObjectReader ir(list[i], ip, {"shape", "tip", "direction", "across", "size", "depth"});
+            Impact m;
+            m.shape = readImpactShape(ir.required("shape"), ir.pathOf("shape"));
+            m.tip = readPoint(ir.required("tip"), ir.pathOf("tip"));
+            m.direction = readPoint(ir.required("direction"), ir.pathOf("direction"));
+            m.across = readPoint(ir.required("across"), ir.pathOf("across"));
+            m.size = readPositive(ir.required("size"), ir.pathOf("size"));
+            m.depth = finite(ir.required("depth"), ir.pathOf("depth"));
+            ir.finish();
+            rec.series.impacts.push_back(m);
+        }
+        const nlohmann::json& rays = r.required("rays");
+        if (!rays.is_array()) throw JsonError(r.pathOf("rays"), "expected an array of [origin, direction] pairs");
+        for (std::size_t i = 0; i < rays.size(); ++i) {
+            const std::string rp = indexPath(r.pathOf("rays"), i);
+            if (!rays[i].is_array() || rays[i].size() != 2) throw JsonError(rp, "expected [origin, direction]");
+            rec.series.rayOrigins.push_back(readPoint(rays[i][0], indexPath(rp, 0)));
+            rec.series.rayDirections.push_back(readPoint(rays[i][1], indexPath(rp, 1)));
+        }
+        rec.series.volume = readPositive(r.required("volume"), r.pathOf("volume"));
+        r.finish();
+        return rec;
+    }
+    if (action == "move") {
+        ObjectReader r(v, path, {"action", "sculpture", "position", "yaw", "scale"});
+        MoveRecord m;
+        m.sculpture = readString(r.required("sculpture"), r.pathOf("sculpture"));
+        m.placement.position = readPoint(r.required("position"), r.pathOf("position"));
+        m.placement.yawDegrees = finite(r.required("yaw"), r.pathOf("yaw"));
+        m.placement.scale = readPositive(r.required("scale"), r.pathOf("scale"));
+        r.finish();
+        return m;
+    }
+    throw JsonError(childPath(path, "action"),
+                    "unknown action '" + action + "' (expected stroke, perturb, replace, impacts, undo, redo, discard, morph or move)");
+}
+
+}  // namespace hg::garden

@@ -1,0 +1,127 @@
+// The layers of the code (docs/design.md, "Layers"), checked on the source
+// tree itself: a folder may include its own headers and those of folders on
+// lower layers, never a folder on its own layer or above. So no include runs
+// upward and the folders' include graph has no cycle. The list below is the
+// one statement of the order; a new folder must be placed in it.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// Layer per folder, lowest first. Folders on one layer are siblings that
+// must not include each other.
+const std::map<std::string, int>& layers() {
+    static const std::map<std::string, int> l = {
+        {"frep", 0},           {"io", 0},
+        {"voxel", 1},
+        {"polygonizer", 2},
+        {"garden/scene", 3},
+        {"garden/sculpt", 4},  {"garden/morph", 4}, {"garden/hands", 4},
+        {"garden/sketch", 4},  {"garden/gesture", 4},
+        {"garden/action", 5},
+        {"garden/app", 6},
+        {"garden/session", 7}, {"garden/replay", 7}, {"garden/export", 7},
+        {"garden/render", 8},
+        {"garden/desktop", 9},
+        {"xr", 10},
+        {"xr/mock_runtime", 11},
+        {"garden/cli", 12},    {"cli", 12},
+    };
+    return l;
+}
+
+// The folder a source file or an include path belongs to: its directory,
+// with frep/library counted as frep (the kernel's own library of
+// primitives).
+std::string folderOf(const std::string& path) {
+    const std::string dir = fs::path(path).parent_path().generic_string();
+    if (dir.rfind("frep/", 0) == 0) return "frep";
+    return dir;
+}
+
+struct Include {
+    std::string file;  // relative to the source root
+    int line = 0;
+    std::string target;
+};
+
+std::vector<Include> projectIncludes(const fs::path& root) {
+    std::vector<Include> out;
+    const std::regex include(R"re(^\s*#\s*include\s+"([^"]+)")re");
+    for (const char* top : {"frep", "io", "voxel", "polygonizer", "garden", "xr", "cli"}) {
+        if (!fs::exists(root / top)) continue;
+        for (const auto& entry : fs::recursive_directory_iterator(root / top)) {
+            const std::string ext = entry.path().extension().string();
+            if (!entry.is_regular_file() || (ext != ".h" && ext != ".cpp")) continue;
+            std::ifstream in(entry.path());
+            std::string text;
+            int n = 0;
+            while (std::getline(in, text)) {
+                ++n;
+                std::smatch m;
+                if (std::regex_search(text, m, include) && m[1].str().find('/') != std::string::npos)
+                    out.push_back({fs::relative(entry.path(), root).generic_string(), n, m[1].str()});
+            }
+        }
+    }
+    return out;
+}
+
+TEST(IncludeLayers, EveryFolderHasALayer) {
+    const fs::path root = HG_SOURCE_DIR;
+    std::set<std::string> unplaced;
+    for (const Include& i : projectIncludes(root))
+        if (!layers().count(folderOf(i.file))) unplaced.insert(folderOf(i.file));
+    EXPECT_TRUE(unplaced.empty()) << "folders with no layer (add them to tests/layers and docs/design.md): "
+                                  << [&] {
+                                         std::string s;
+                                         for (const std::string& f : unplaced) s += f + " ";
+                                         return s;
+                                     }();
+}
+
+TEST(IncludeLayers, NoIncludeRunsUpwardOrSideways) {
+    const fs::path root = HG_SOURCE_DIR;
+    const std::vector<Include> includes = projectIncludes(root);
+    ASSERT_GT(includes.size(), 500u) << "the source tree was not found at " << root;
+    std::ostringstream wrong;
+    std::map<std::string, std::set<std::string>> graph;
+    for (const Include& i : includes) {
+        const std::string from = folderOf(i.file), to = folderOf(i.target);
+        const auto a = layers().find(from), b = layers().find(to);
+        if (a == layers().end() || b == layers().end() || from == to) continue;
+        graph[from].insert(to);
+        if (b->second >= a->second)
+            wrong << i.file << ":" << i.line << ": " << from << " (layer " << a->second << ") includes " << i.target
+                  << " (" << to << ", layer " << b->second << ")\n";
+    }
+    EXPECT_TRUE(wrong.str().empty()) << wrong.str();
+    // The graph, for the reader of a failure (and of docs/design.md).
+    std::ostringstream g;
+    for (const auto& [from, tos] : graph) {
+        g << from << " ->";
+        for (const std::string& t : tos) g << " " << t;
+        g << "\n";
+    }
+    RecordProperty("include_graph", g.str());
+}
+
+// The check itself: a made-up upward include is caught, a downward one not.
+TEST(IncludeLayers, TheOrderCatchesAnUpwardInclude) {
+    EXPECT_LT(layers().at(folderOf("voxel/volume.h")), layers().at(folderOf("garden/app/garden_session.h")));
+    EXPECT_EQ(folderOf("frep/library/convolution.h"), "frep");
+    EXPECT_EQ(layers().at("garden/session"), layers().at("garden/replay")) << "siblings share a layer";
+    EXPECT_GT(layers().at("garden/session"), layers().at("garden/app")) << "a session folder sits above the garden it saves";
+}
+
+}  // namespace
