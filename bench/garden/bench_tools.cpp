@@ -271,7 +271,7 @@ int main(int argc, char** argv) {
         std::printf("\n| garden | journalled actions | open the garden (s) | play the journal (s) | total (s) | play / open |\n");
         std::printf("|---|---:|---:|---:|---:|---:|\n");
         const std::string gardenPath = std::string(HG_SOURCE_DIR) + "/content/gardens/default.json";
-        std::vector<garden::JournalRecord> records;
+        std::vector<garden::Action> records;
         {
             garden::GardenSession probe(garden::loadGarden(gardenPath));
             std::mt19937 rng(9);
@@ -286,17 +286,17 @@ int main(int argc, char** argv) {
                 std::uniform_real_distribution<double> ux(b.lo[0], b.hi[0]), uy(b.lo[1], b.hi[1]), uz(b.lo[2], b.hi[2]);
                 const garden::ModelPoint a{ux(rng), uy(rng), uz(rng)};
                 if (made > 0 && rng() % 10 == 0) {
-                    records.push_back(garden::UndoRecord{});
+                    records.push_back(garden::UndoAction{});
                     --made;
                 } else if (rng() % 4 == 0) {
                     garden::Perturbation p;
                     p.center = a;
                     p.radii = {6 * v, 5 * v, 6 * v};
                     p.strength = 2.0;
-                    records.push_back(garden::PerturbRecord{sc.name, p});
+                    records.push_back(garden::PerturbAction{sc.name, p});
                     ++made;
                 } else {
-                    records.push_back(garden::StrokeRecord{sc.name, rng() % 2 ? garden::StrokeTool::Carve : garden::StrokeTool::Add,
+                    records.push_back(garden::StrokeAction{sc.name, rng() % 2 ? garden::StrokeTool::Carve : garden::StrokeTool::Add,
                                                            4 * v, 2.0, {a, {a[0] + 10 * v, a[1] + 4 * v, a[2]}}, std::nullopt});
                     ++made;
                 }
@@ -333,7 +333,7 @@ int main(int argc, char** argv) {
                     }
         std::mt19937 rng(17);
         std::uniform_int_distribution<std::size_t> pick(0, surface.size() - 1);
-        std::vector<garden::JournalRecord> records;
+        std::vector<garden::Action> records;
         for (int i = 0; i < 1000; ++i) {
             const garden::ModelPoint a = surface[pick(rng)];
             if (i % 4 == 3) {
@@ -341,9 +341,9 @@ int main(int argc, char** argv) {
                 p.center = a;
                 p.radii = {6 * v, 5 * v, 6 * v};
                 p.strength = 2.0;
-                records.push_back(garden::PerturbRecord{dryad.name, p});
+                records.push_back(garden::PerturbAction{dryad.name, p});
             } else {
-                records.push_back(garden::StrokeRecord{dryad.name, i % 2 ? garden::StrokeTool::Carve : garden::StrokeTool::Add,
+                records.push_back(garden::StrokeAction{dryad.name, i % 2 ? garden::StrokeTool::Carve : garden::StrokeTool::Add,
                                                        4 * v, 2.0, {a, {a[0] + 10 * v, a[1] + 4 * v, a[2]}}, std::nullopt});
             }
         }

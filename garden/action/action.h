@@ -19,7 +19,7 @@ namespace hg::garden {
 
 // A finished stroke: its tool, radius (model units), softness and path
 // (model frame); the segments follow from them.
-struct StrokeRecord {
+struct StrokeAction {
     std::string sculpture;
     StrokeTool tool = StrokeTool::Carve;
     double radius = 0.0;
@@ -28,50 +28,50 @@ struct StrokeRecord {
     std::optional<MirrorPlane> mirror;
 };
 
-struct PerturbRecord {
+struct PerturbAction {
     std::string sculpture;
     Perturbation perturbation;  // model frame
 };
 
 // Impacts as they were resolved (and their rays, to fire again).
-struct ImpactRecord {
+struct ImpactsAction {
     std::string sculpture;
     ImpactSeries series;
 };
 
 // A sculpture moved, turned or scaled: its new placement.
-struct MoveRecord {
+struct MoveAction {
     std::string sculpture;
     Placement placement;
 };
 
 // A perturbation's factor or extent changed: edit `edit` of the sculpture's
 // list replaced.
-struct ReplaceRecord {
+struct ReplaceAction {
     std::string sculpture;
     std::size_t edit = 0;
     Perturbation perturbation;
 };
 
-struct UndoRecord {};
-struct RedoRecord {};
-struct DiscardRecord { std::string sculpture; };
+struct UndoAction {};
+struct RedoAction {};
+struct DiscardAction { std::string sculpture; };
 // The selector as barycentric coordinates and the balancing factors it was
 // weighed with (the blend's weights follow from both).
-struct MorphWeightsRecord {
+struct MorphWeightsAction {
     std::array<double, 3> barycentric{};
     std::array<double, 3> balance{1.0, 1.0, 1.0};
 };
 
-using JournalRecord =
-    std::variant<StrokeRecord, PerturbRecord, UndoRecord, RedoRecord, DiscardRecord, MorphWeightsRecord, MoveRecord,
-                 ImpactRecord, ReplaceRecord>;
+using Action =
+    std::variant<StrokeAction, PerturbAction, UndoAction, RedoAction, DiscardAction, MorphWeightsAction, MoveAction,
+                 ImpactsAction, ReplaceAction>;
 
-std::string journalRecordKind(const JournalRecord& r);
+std::string actionKind(const Action& r);
 
 // One action as JSON (a journal line's text without its CRC), and back;
 // throws JsonError (garden/scene/json_reader.h) on a bad record.
-std::string journalRecordJson(const JournalRecord& r);
-JournalRecord parseJournalRecord(const std::string& json, const std::string& path);
+std::string actionJson(const Action& r);
+Action parseAction(const std::string& json, const std::string& path);
 
 }  // namespace hg::garden

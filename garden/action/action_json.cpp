@@ -52,15 +52,15 @@ void writePerturbation(const Perturbation& q, nlohmann::json& j) {
 
 }  // namespace
 
-std::string journalRecordKind(const JournalRecord& r) {
+std::string actionKind(const Action& r) {
     static const char* const names[] = {"stroke", "perturb", "undo", "redo", "discard", "morph", "move", "impacts", "replace"};
     return names[r.index()];
 }
 
-std::string journalRecordJson(const JournalRecord& record) {
+std::string actionJson(const Action& record) {
     nlohmann::json j;
-    j["action"] = journalRecordKind(record);
-    if (const auto* s = std::get_if<StrokeRecord>(&record)) {
+    j["action"] = actionKind(record);
+    if (const auto* s = std::get_if<StrokeAction>(&record)) {
         j["sculpture"] = s->sculpture;
         j["tool"] = strokeToolName(s->tool);
         j["radius"] = s->radius;
@@ -69,19 +69,19 @@ std::string journalRecordJson(const JournalRecord& record) {
         for (const ModelPoint& p : s->path) path.push_back(point(p));
         j["path"] = std::move(path);
         if (s->mirror) j["mirror"] = mirrorJson(*s->mirror);
-    } else if (const auto* p = std::get_if<PerturbRecord>(&record)) {
+    } else if (const auto* p = std::get_if<PerturbAction>(&record)) {
         j["sculpture"] = p->sculpture;
         writePerturbation(p->perturbation, j);
-    } else if (const auto* rp = std::get_if<ReplaceRecord>(&record)) {
+    } else if (const auto* rp = std::get_if<ReplaceAction>(&record)) {
         j["sculpture"] = rp->sculpture;
         j["edit"] = rp->edit;
         writePerturbation(rp->perturbation, j);
-    } else if (const auto* d = std::get_if<DiscardRecord>(&record)) {
+    } else if (const auto* d = std::get_if<DiscardAction>(&record)) {
         j["sculpture"] = d->sculpture;
-    } else if (const auto* m = std::get_if<MorphWeightsRecord>(&record)) {
+    } else if (const auto* m = std::get_if<MorphWeightsAction>(&record)) {
         j["barycentric"] = point(m->barycentric);
         j["balance"] = point(m->balance);
-    } else if (const auto* im = std::get_if<ImpactRecord>(&record)) {
+    } else if (const auto* im = std::get_if<ImpactsAction>(&record)) {
         j["sculpture"] = im->sculpture;
         nlohmann::json list = nlohmann::json::array();
         for (const Impact& hit : im->series.impacts)
@@ -93,7 +93,7 @@ std::string journalRecordJson(const JournalRecord& record) {
             rays.push_back({point(im->series.rayOrigins[i]), point(im->series.rayDirections[i])});
         j["rays"] = std::move(rays);
         j["volume"] = im->series.volume;
-    } else if (const auto* mv = std::get_if<MoveRecord>(&record)) {
+    } else if (const auto* mv = std::get_if<MoveAction>(&record)) {
         j["sculpture"] = mv->sculpture;
         j["position"] = point(mv->placement.position);
         j["yaw"] = mv->placement.yawDegrees;
@@ -102,13 +102,13 @@ std::string journalRecordJson(const JournalRecord& record) {
     return j.dump();
 }
 
-JournalRecord parseJournalRecord(const std::string& text, const std::string& path) {
+Action parseAction(const std::string& text, const std::string& path) {
     const nlohmann::json v = parseStrictJson(text);
     if (!v.is_object() || !v.contains("action")) throw JsonError(path, "expected an object with an \"action\"");
     const std::string action = readString(v.at("action"), childPath(path, "action"));
     if (action == "stroke") {
         ObjectReader r(v, path, {"action", "sculpture", "tool", "radius", "softness", "path", "mirror"});
-        StrokeRecord s;
+        StrokeAction s;
         s.sculpture = readString(r.required("sculpture"), r.pathOf("sculpture"));
         s.tool = readStrokeTool(r.required("tool"), r.pathOf("tool"));
         s.radius = readPositive(r.required("radius"), r.pathOf("radius"));
@@ -126,7 +126,7 @@ JournalRecord parseJournalRecord(const std::string& text, const std::string& pat
                                                                          "radii", "strength", "mirror"}
                                     : std::initializer_list<const char*>{"action", "sculpture", "edit", "shape", "center",
                                                                          "axes", "radii", "strength", "mirror"});
-        PerturbRecord p;
+        PerturbAction p;
         p.sculpture = readString(r.required("sculpture"), r.pathOf("sculpture"));
         p.perturbation.shape = readQuadricShape(r.required("shape"), r.pathOf("shape"));
         p.perturbation.center = readPoint(r.required("center"), r.pathOf("center"));
@@ -139,7 +139,7 @@ JournalRecord parseJournalRecord(const std::string& text, const std::string& pat
         p.perturbation.strength = finite(r.required("strength"), r.pathOf("strength"));
         if (r.has("mirror")) p.perturbation.mirror = readMirror(r.required("mirror"), r.pathOf("mirror"));
         if (action == "replace") {
-            ReplaceRecord rp{p.sculpture, static_cast<std::size_t>(readInt(r.required("edit"), r.pathOf("edit"), 0, 100000000)),
+            ReplaceAction rp{p.sculpture, static_cast<std::size_t>(readInt(r.required("edit"), r.pathOf("edit"), 0, 100000000)),
                              p.perturbation};
             r.finish();
             return rp;
@@ -150,25 +150,25 @@ JournalRecord parseJournalRecord(const std::string& text, const std::string& pat
     if (action == "undo" || action == "redo") {
         ObjectReader r(v, path, {"action"});
         r.finish();
-        if (action == "undo") return UndoRecord{};
-        return RedoRecord{};
+        if (action == "undo") return UndoAction{};
+        return RedoAction{};
     }
     if (action == "discard") {
         ObjectReader r(v, path, {"action", "sculpture"});
-        DiscardRecord d{readString(r.required("sculpture"), r.pathOf("sculpture"))};
+        DiscardAction d{readString(r.required("sculpture"), r.pathOf("sculpture"))};
         r.finish();
         return d;
     }
     if (action == "morph") {
         ObjectReader r(v, path, {"action", "barycentric", "balance"});
-        MorphWeightsRecord m{readPoint(r.required("barycentric"), r.pathOf("barycentric")),
+        MorphWeightsAction m{readPoint(r.required("barycentric"), r.pathOf("barycentric")),
                              readPoint(r.required("balance"), r.pathOf("balance"))};
         r.finish();
         return m;
     }
     if (action == "impacts") {
         ObjectReader r(v, path, {"action", "sculpture", "impacts", "rays", "volume"});
-        ImpactRecord rec;
+        ImpactsAction rec;
         rec.sculpture = readString(r.required("sculpture"), r.pathOf("sculpture"));
         const nlohmann::json& list = r.required("impacts");
         if (!list.is_array()) throw JsonError(r.pathOf("impacts"), "expected an array of impacts");
@@ -199,7 +199,7 @@ JournalRecord parseJournalRecord(const std::string& text, const std::string& pat
     }
     if (action == "move") {
         ObjectReader r(v, path, {"action", "sculpture", "position", "yaw", "scale"});
-        MoveRecord m;
+        MoveAction m;
         m.sculpture = readString(r.required("sculpture"), r.pathOf("sculpture"));
         m.placement.position = readPoint(r.required("position"), r.pathOf("position"));
         m.placement.yawDegrees = finite(r.required("yaw"), r.pathOf("yaw"));

@@ -56,7 +56,7 @@ class JournalSink {
 public:
     virtual ~JournalSink() = default;
     // A finished action (never called while a journal is being played).
-    virtual void append(const JournalRecord& record) = 0;
+    virtual void append(const Action& record) = 0;
     virtual SaveStatus saveStatus() const = 0;
     // Writes what is held in memory now (the banner's Retry); true when
     // everything is saved afterwards.

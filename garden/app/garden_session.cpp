@@ -184,10 +184,10 @@ void GardenSession::recordMorph() {
         morphDragged_ = true;  // journalled when the hand lets go
         return;
     }
-    record(MorphWeightsRecord{weights_->barycentric, weights_->balance});
+    record(MorphWeightsAction{weights_->barycentric, weights_->balance});
 }
 
-void GardenSession::record(const JournalRecord& r) {
+void GardenSession::record(const Action& r) {
     if (journal_ && !restoring_) journal_->append(r);
 }
 

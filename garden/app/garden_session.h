@@ -189,9 +189,9 @@ public:
     // Plays journalled actions without journalling them again, the grids
     // recomputed once at the end (each voxel once). "" or why a record
     // cannot be played (its number, from 1, and the reason).
-    std::string restore(const std::vector<JournalRecord>& records);
+    std::string restore(const std::vector<Action>& records);
     // The same, with the record that could not be played taken apart.
-    JournalPlayed restoreRecords(const std::vector<JournalRecord>& records);
+    JournalPlayed restoreRecords(const std::vector<Action>& records);
     ToolSettings& tool() { return tool_; }
     const ToolSettings& tool() const { return tool_; }
     // Where the tool hand's ray first meets a sculpture's surface (world):
@@ -256,7 +256,7 @@ private:
     SculptureEdits& editsOf(int sculpture);
     void showChanged(int sculpture, const voxel::IndexBox& box);
     void sculptWithHands(const Hands& hands);
-    void record(const JournalRecord& r);
+    void record(const Action& r);
     bool stepHistory(std::vector<UndoEntry>& from, std::vector<UndoEntry>& to, bool undoing);
     // `followOrbit`: an orbit of the sculpture follows it (not during a live
     // move: the camera would carry the hand's ray, and the sculpture, along).

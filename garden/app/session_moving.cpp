@@ -80,7 +80,7 @@ void GardenSession::endLiveMove() {
     entry.move = std::make_pair(from, to);
     undoOrder_.push_back(entry);
     redoOrder_.clear();
-    record(MoveRecord{s.name, to});
+    record(MoveAction{s.name, to});
 }
 
 void GardenSession::moveWithHands(const HandState& h) {

@@ -58,18 +58,18 @@ void GardenSession::discardEdits(int sculpture) {
     // (replacements go too: the edits they replaced are gone)
     undoOrder_.erase(std::remove_if(undoOrder_.begin(), undoOrder_.end(), isEdit), undoOrder_.end());
     redoOrder_.erase(std::remove_if(redoOrder_.begin(), redoOrder_.end(), isEdit), redoOrder_.end());
-    record(DiscardRecord{s.name});
+    record(DiscardAction{s.name});
 }
 
-std::string GardenSession::restore(const std::vector<JournalRecord>& records) { return restoreRecords(records).message(); }
+std::string GardenSession::restore(const std::vector<Action>& records) { return restoreRecords(records).message(); }
 
-JournalPlayed GardenSession::restoreRecords(const std::vector<JournalRecord>& records) {
+JournalPlayed GardenSession::restoreRecords(const std::vector<Action>& records) {
     restoring_ = true;
     for (Sculpture& s : sculptures_)
         if (s.edits) s.edits->setDeferred(true);
     JournalPlayed result;
     for (std::size_t n = 0; n < records.size() && result.ok(); ++n) {
-        const JournalRecord& r = records[n];
+        const Action& r = records[n];
         std::string why;
         const auto sculptureOf = [&](const std::string& name) {
             const int i = findSculpture(name);
@@ -78,7 +78,7 @@ JournalPlayed GardenSession::restoreRecords(const std::vector<JournalRecord>& re
             else if (!sculptures_[static_cast<std::size_t>(i)].edits) editsOf(i).setDeferred(true);
             return i;
         };
-        if (const auto* st = std::get_if<StrokeRecord>(&r)) {
+        if (const auto* st = std::get_if<StrokeAction>(&r)) {
             const int i = sculptureOf(st->sculpture);
             if (why.empty()) {
                 Stroke stroke;
@@ -88,27 +88,27 @@ JournalPlayed GardenSession::restoreRecords(const std::vector<JournalRecord>& re
                 stroke.path = st->path;
                 why = applyStrokeModel(i, stroke);
             }
-        } else if (const auto* p = std::get_if<PerturbRecord>(&r)) {
+        } else if (const auto* p = std::get_if<PerturbAction>(&r)) {
             const int i = sculptureOf(p->sculpture);
             if (why.empty()) why = applyPerturbationModel(i, p->perturbation);
-        } else if (std::holds_alternative<UndoRecord>(r)) {
+        } else if (std::holds_alternative<UndoAction>(r)) {
             if (!undo()) why = "nothing to undo";
-        } else if (std::holds_alternative<RedoRecord>(r)) {
+        } else if (std::holds_alternative<RedoAction>(r)) {
             if (!redo()) why = "nothing to redo";
-        } else if (const auto* d = std::get_if<DiscardRecord>(&r)) {
+        } else if (const auto* d = std::get_if<DiscardAction>(&r)) {
             const int i = sculptureOf(d->sculpture);
             if (why.empty()) discardEdits(i);
-        } else if (const auto* rp = std::get_if<ReplaceRecord>(&r)) {
+        } else if (const auto* rp = std::get_if<ReplaceAction>(&r)) {
             const int i = sculptureOf(rp->sculpture);
             if (why.empty()) why = replacePerturbationModel(i, rp->edit, rp->perturbation);
-        } else if (const auto* im = std::get_if<ImpactRecord>(&r)) {
+        } else if (const auto* im = std::get_if<ImpactsAction>(&r)) {
             const int i = sculptureOf(im->sculpture);
             if (why.empty()) why = applyImpactsModel(i, im->series);
-        } else if (const auto* mv = std::get_if<MoveRecord>(&r)) {
+        } else if (const auto* mv = std::get_if<MoveAction>(&r)) {
             const int i = findSculpture(mv->sculpture);
             if (i < 0) why = "no sculpture named '" + mv->sculpture + "'";
             else why = moveSculpture(i, mv->placement);
-        } else if (const auto* m = std::get_if<MorphWeightsRecord>(&r)) {
+        } else if (const auto* m = std::get_if<MorphWeightsAction>(&r)) {
             if (!blender_) why = "the garden has no metamorphosis";
             else {
                 weights_ = weightsFromBarycentric(m->barycentric, m->balance);
@@ -118,7 +118,7 @@ JournalPlayed GardenSession::restoreRecords(const std::vector<JournalRecord>& re
         if (why.empty()) {
             ++result.played;
         } else {
-            result.action = journalRecordKind(r);
+            result.action = actionKind(r);
             result.reason = why;
         }
     }
@@ -209,7 +209,7 @@ void GardenSession::endStroke() {
     if (!stroking()) return;
     const Sculpture& s = sculptures_[static_cast<std::size_t>(strokeSculpture_)];
     const Stroke& stroke = std::get<Stroke>(s.edits->list().edits().back().op);
-    record(StrokeRecord{s.name, stroke.tool, stroke.radius, stroke.softness, stroke.path, stroke.mirror});
+    record(StrokeAction{s.name, stroke.tool, stroke.radius, stroke.softness, stroke.path, stroke.mirror});
     strokeSculpture_ = -1;
 }
 
@@ -252,7 +252,7 @@ std::string GardenSession::applyPerturbationModel(int sculpture, const Perturbat
     showChanged(sculpture, edits.append(std::move(e)));
     undoOrder_.push_back(UndoEntry::edit(sculpture));
     redoOrder_.clear();
-    record(PerturbRecord{sculptures_[static_cast<std::size_t>(sculpture)].name, p});
+    record(PerturbAction{sculptures_[static_cast<std::size_t>(sculpture)].name, p});
     return "";
 }
 
@@ -298,7 +298,7 @@ std::string GardenSession::applyImpactsModel(int sculpture, const ImpactSeries& 
     showChanged(sculpture, edits.append(std::move(e)));
     undoOrder_.push_back(UndoEntry::edit(sculpture));
     redoOrder_.clear();
-    record(ImpactRecord{sculptures_[static_cast<std::size_t>(sculpture)].name, series});
+    record(ImpactsAction{sculptures_[static_cast<std::size_t>(sculpture)].name, series});
     return "";
 }
 
@@ -383,7 +383,7 @@ std::string GardenSession::replacePerturbationModel(int sculpture, std::size_t e
     entry.replacement = std::make_pair(before, p);
     undoOrder_.push_back(entry);
     redoOrder_.clear();
-    record(ReplaceRecord{s.name, edit, p});
+    record(ReplaceAction{s.name, edit, p});
     return "";
 }
 
@@ -413,8 +413,8 @@ bool GardenSession::stepHistory(std::vector<UndoEntry>& from, std::vector<UndoEn
             showChanged(entry.sculpture, *box);
         }
         to.push_back(entry);
-        if (undoing) record(UndoRecord{});
-        else record(RedoRecord{});
+        if (undoing) record(UndoAction{});
+        else record(RedoAction{});
         return true;
     }
     return false;
@@ -430,7 +430,7 @@ std::string GardenSession::moveSculpture(int sculpture, const Placement& placeme
     undoOrder_.push_back(entry);
     redoOrder_.clear();
     placeSculpture(sculpture, placement);
-    record(MoveRecord{s.name, placement});
+    record(MoveAction{s.name, placement});
     return "";
 }
 

@@ -127,7 +127,7 @@ int runSessionCommand(const SessionCommandOptions& options) {
         }
     }
     std::map<std::string, int> kinds;
-    for (const JournalRecord& r : journal.records) ++kinds[journalRecordKind(r)];
+    for (const Action& r : journal.records) ++kinds[actionKind(r)];
     report["journal"] = {{"records", journal.records.size()}, {"actions", kinds}};
     if (journal.damaged())
         report["journal"]["damaged_tail"] = {{"record", journal.damagedRecord}, {"byte_offset", journal.damagedOffset},
@@ -159,7 +159,7 @@ int runSessionCommand(const SessionCommandOptions& options) {
     }
     GardenSession session(std::move(load), settings);
     const std::size_t upTo = options.verify && snap.present ? std::min(snap.records, journal.records.size()) : journal.records.size();
-    const std::vector<JournalRecord> played(journal.records.begin(), journal.records.begin() + static_cast<std::ptrdiff_t>(upTo));
+    const std::vector<Action> played(journal.records.begin(), journal.records.begin() + static_cast<std::ptrdiff_t>(upTo));
     const JournalPlayed result = session.restoreRecords(played);
     std::string playError = result.message();
     if (!result.ok()) {

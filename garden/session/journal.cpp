@@ -90,7 +90,7 @@ JournalRead parseJournal(const std::string& text, const std::string& name) {
             return out;
         }
         try {
-            out.records.push_back(parseJournalRecord(json, "record " + std::to_string(number)));
+            out.records.push_back(parseAction(json, "record " + std::to_string(number)));
             out.recordOffsets.push_back(pos);
         } catch (const JsonError& e) {
             fail(std::string("the record cannot be read: ") + e.what());
@@ -133,14 +133,14 @@ std::string JournalWriter::open(const std::string& path, std::uint64_t truncateT
     return "";
 }
 
-std::string JournalWriter::append(const JournalRecord& r) {
+std::string JournalWriter::append(const Action& r) {
     if (fd_ < 0) return "the journal is not open";
     if (torn_) {
         // What a failed append left is cut first: records stay whole and in order.
         if (std::string why = io::truncateFile(fd_, goodSize_, io::WriteSite::Journal, path_); !why.empty()) return why;
         torn_ = false;
     }
-    const std::string json = journalRecordJson(r);
+    const std::string json = actionJson(r);
     char crc[16];
     std::snprintf(crc, sizeof crc, "%08x ", crc32(json));
     std::string line;

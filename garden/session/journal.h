@@ -25,7 +25,7 @@ namespace hg::garden {
 constexpr int kJournalVersion = 1;
 
 struct JournalRead {
-    std::vector<JournalRecord> records;
+    std::vector<Action> records;
     // Refused outright (unreadable, not a journal, unknown version): nothing
     // is in `records`.
     std::string error;
@@ -60,7 +60,7 @@ public:
     // record of a new (or empty) file. `truncateTo`: cut a damaged tail
     // first (the reader's goodBytes). "" on success, else why not.
     std::string open(const std::string& path, std::uint64_t truncateTo = ~std::uint64_t{0});
-    std::string append(const JournalRecord& r);
+    std::string append(const Action& r);
     bool isOpen() const { return fd_ >= 0; }
     std::size_t written() const { return written_; }
 

@@ -256,7 +256,7 @@ void SessionRecorder::setStatus(SaveStatus::State state, const std::string& reas
     if (listener_) listener_(status_);
 }
 
-void SessionRecorder::append(const JournalRecord& record) {
+void SessionRecorder::append(const Action& record) {
     backlog_.push_back(record);
     if (status_.state == SaveStatus::State::ReadOnly) {
         status_.unsaved = backlog_.size();

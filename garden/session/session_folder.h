@@ -100,7 +100,7 @@ public:
     // JournalSink: every finished action is written at once; after a
     // failure it is kept in memory with the ones after it, in order, and
     // written with the next action or retrySave().
-    void append(const JournalRecord& record) override;
+    void append(const Action& record) override;
     SaveStatus saveStatus() const override { return status_; }
     bool retrySave() override;
     // Called at each change of saveStatus() (the terminal's line).
@@ -127,7 +127,7 @@ private:
     bool writerOpen_ = false;
     GardenSession* session_ = nullptr;
     JournalPlayed restored_;
-    std::vector<JournalRecord> backlog_;  // finished, not yet on disk, in order
+    std::vector<Action> backlog_;  // finished, not yet on disk, in order
     SaveStatus status_;
     std::function<void(const SaveStatus&)> listener_;
     std::size_t records_ = 0;

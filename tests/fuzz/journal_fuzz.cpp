@@ -21,9 +21,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
     if (r.goodBytes > size) std::abort();
     if (r.damaged() && (r.damagedOffset != r.goodBytes || r.damagedRecord != r.records.size() + 1)) std::abort();
-    for (const JournalRecord& rec : r.records) {
-        const std::string json = journalRecordJson(rec);
-        if (journalRecordJson(parseJournalRecord(json, "again")) != json) std::abort();
+    for (const Action& rec : r.records) {
+        const std::string json = actionJson(rec);
+        if (actionJson(parseAction(json, "again")) != json) std::abort();
     }
     return 0;
 }

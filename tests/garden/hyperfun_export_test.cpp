@@ -285,24 +285,24 @@ TEST_F(HyperFunExportTest, TheMorphResultExportsItsBlendAndItsEditsExactly) {
 
 // Edits in the model frame of ball c (radius 0.6 about (0, 0.5, 0)): short
 // strokes of every tool and perturbations all over its surface.
-std::vector<JournalRecord> manyEdits(int n, unsigned seed) {
+std::vector<Action> manyEdits(int n, unsigned seed) {
     std::mt19937 rng(seed);
     std::uniform_real_distribution<double> u(-1.0, 1.0);
-    std::vector<JournalRecord> out;
+    std::vector<Action> out;
     for (int i = 0; i < n; ++i) {
         std::array<double, 3> d{u(rng), u(rng), u(rng)};
         const double l = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) + 1e-9;
         const double r = 0.55 + 0.1 * u(rng);
         const ModelPoint p{r * d[0] / l, 0.5 + r * d[1] / l, r * d[2] / l};
         if (i % 3 == 2) {
-            PerturbRecord rec;
+            PerturbAction rec;
             rec.sculpture = "c";
             rec.perturbation.center = p;
             rec.perturbation.radii = {0.08, 0.06, 0.07};
             rec.perturbation.strength = u(rng) > 0 ? 2.0 : -2.0;
             out.push_back(rec);
         } else {
-            StrokeRecord rec;
+            StrokeAction rec;
             rec.sculpture = "c";
             rec.tool = i % 3 == 0 ? StrokeTool::Carve : (i % 2 ? StrokeTool::Add : StrokeTool::Melt);
             rec.radius = 0.05;

@@ -15,8 +15,8 @@ namespace {
 
 class JournalTest : public test::ScratchDir {};
 
-std::vector<JournalRecord> everyKind() {
-    StrokeRecord s{"column west", StrokeTool::Melt, 0.031, 2.5, {{0.1, 0.2, 0.3}, {0.1000000000000001, -2.5e-9, 7.0}},
+std::vector<Action> everyKind() {
+    StrokeAction s{"column west", StrokeTool::Melt, 0.031, 2.5, {{0.1, 0.2, 0.3}, {0.1000000000000001, -2.5e-9, 7.0}},
                    MirrorPlane{{0.0, 0.0, 0.0}, {1.0, 0.0, 0.0}}};
     Perturbation q;
     q.shape = QuadricShape::Torus;
@@ -36,9 +36,9 @@ std::vector<JournalRecord> everyKind() {
     series.rayOrigins = {{0.5, 1.5, 0.25}};
     series.rayDirections = {{0.0, -1.0, 0.0}};
     series.volume = 3e-6;
-    return {s, PerturbRecord{"dancer", q}, UndoRecord{}, RedoRecord{}, DiscardRecord{"metamorphosis"},
-            MorphWeightsRecord{{0.2, 0.3, 0.5}, {1.1, 0.9, 1.0}}, MoveRecord{"dryad", moved}, ImpactRecord{"knot", series},
-            ReplaceRecord{"dancer", 3, q}};
+    return {s, PerturbAction{"dancer", q}, UndoAction{}, RedoAction{}, DiscardAction{"metamorphosis"},
+            MorphWeightsAction{{0.2, 0.3, 0.5}, {1.1, 0.9, 1.0}}, MoveAction{"dryad", moved}, ImpactsAction{"knot", series},
+            ReplaceAction{"dancer", 3, q}};
 }
 
 std::string slurp(const std::string& path) {
@@ -53,7 +53,7 @@ TEST_F(JournalTest, RecordsRoundTripExactly) {
     {
         JournalWriter w;
         ASSERT_EQ(w.open(path), "");
-        for (const JournalRecord& r : everyKind()) ASSERT_EQ(w.append(r), "");
+        for (const Action& r : everyKind()) ASSERT_EQ(w.append(r), "");
     }
     const JournalRead read = readJournal(path);
     ASSERT_TRUE(read.ok()) << read.error;
@@ -61,17 +61,17 @@ TEST_F(JournalTest, RecordsRoundTripExactly) {
     const auto expected = everyKind();
     ASSERT_EQ(read.records.size(), expected.size());
     for (std::size_t i = 0; i < expected.size(); ++i)
-        EXPECT_EQ(journalRecordJson(read.records[i]), journalRecordJson(expected[i])) << i;
+        EXPECT_EQ(actionJson(read.records[i]), actionJson(expected[i])) << i;
     // Doubles come back bit for bit.
-    const auto& s = std::get<StrokeRecord>(read.records[0]);
+    const auto& s = std::get<StrokeAction>(read.records[0]);
     EXPECT_EQ(s.path[1][0], 0.1000000000000001);
     EXPECT_EQ(s.path[1][1], -2.5e-9);
-    EXPECT_EQ(std::get<PerturbRecord>(read.records[1]).perturbation.center[0], 1.0 / 3.0);
+    EXPECT_EQ(std::get<PerturbAction>(read.records[1]).perturbation.center[0], 1.0 / 3.0);
     // Appending to an existing journal keeps what is there.
     {
         JournalWriter w;
         ASSERT_EQ(w.open(path), "");
-        ASSERT_EQ(w.append(UndoRecord{}), "");
+        ASSERT_EQ(w.append(UndoAction{}), "");
     }
     EXPECT_EQ(readJournal(path).records.size(), expected.size() + 1);
 }
@@ -81,7 +81,7 @@ TEST_F(JournalTest, EveryTruncationKeepsTheRecordsBeforeIt) {
     {
         JournalWriter w;
         ASSERT_EQ(w.open(path), "");
-        for (const JournalRecord& r : everyKind()) ASSERT_EQ(w.append(r), "");
+        for (const Action& r : everyKind()) ASSERT_EQ(w.append(r), "");
     }
     const std::string text = slurp(path);
     // Where each record's line starts.
@@ -109,7 +109,7 @@ TEST_F(JournalTest, AFlippedBitStopsAtItsRecord) {
     {
         JournalWriter w;
         ASSERT_EQ(w.open(path), "");
-        for (const JournalRecord& r : everyKind()) ASSERT_EQ(w.append(r), "");
+        for (const Action& r : everyKind()) ASSERT_EQ(w.append(r), "");
     }
     std::string text = slurp(path);
     std::size_t third = text.find('\n') + 1;

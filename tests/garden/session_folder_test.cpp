@@ -218,12 +218,12 @@ TEST_F(SessionFolderTest, AProcessKilledAtAnyMomentReopensWithEveryFinishedActio
         // ... and they are a prefix of the script's actions: strokes in order,
         // an undo after every ninth.
         std::size_t strokes = 0;
-        for (const JournalRecord& rec : r.records) {
-            if (const auto* st = std::get_if<StrokeRecord>(&rec)) {
+        for (const Action& rec : r.records) {
+            if (const auto* st = std::get_if<StrokeAction>(&rec)) {
                 EXPECT_EQ(st->sculpture, names[strokes % 3]);
                 ++strokes;
             } else {
-                EXPECT_TRUE(std::holds_alternative<UndoRecord>(rec));
+                EXPECT_TRUE(std::holds_alternative<UndoAction>(rec));
                 EXPECT_EQ(strokes % 9, 0u);
             }
         }

@@ -18,11 +18,11 @@ namespace {
 
 // Keeps the journalled records in memory.
 struct ListJournal : JournalSink {
-    explicit ListJournal(std::vector<JournalRecord>& list) : records(list) {}
-    void append(const JournalRecord& r) override { records.push_back(r); }
+    explicit ListJournal(std::vector<Action>& list) : records(list) {}
+    void append(const Action& r) override { records.push_back(r); }
     SaveStatus saveStatus() const override { return {}; }
     bool retrySave() override { return true; }
-    std::vector<JournalRecord>& records;
+    std::vector<Action>& records;
 };
 
 class SessionMovingTest : public test::SmallGardenSession {
@@ -34,7 +34,7 @@ protected:
     const Placement& placementOf(int i) const { return session->sculptures()[static_cast<std::size_t>(i)].placement; }
     int moves() const {
         int n = 0;
-        for (const JournalRecord& r : journal) n += std::holds_alternative<MoveRecord>(r);
+        for (const Action& r : journal) n += std::holds_alternative<MoveAction>(r);
         return n;
     }
     void frame(const Hands& h) {
@@ -51,7 +51,7 @@ protected:
         if (secondary) h.tool.buttons |= kButtonSecondary;
         return h;
     }
-    std::vector<JournalRecord> journal;
+    std::vector<Action> journal;
     ListJournal sink{journal};
 };
 
@@ -69,7 +69,7 @@ TEST_F(SessionMovingTest, ALiveMoveIsOneUndoableJournalledMove) {
     session->endLiveMove();
     EXPECT_FALSE(session->movingLive());
     ASSERT_EQ(moves(), 1);
-    const MoveRecord& m = std::get<MoveRecord>(journal.back());
+    const MoveAction& m = std::get<MoveAction>(journal.back());
     EXPECT_EQ(m.sculpture, "c");
     EXPECT_EQ(m.placement.position[0], p.position[0]);
     EXPECT_EQ(m.placement.yawDegrees, 15.0);

@@ -95,12 +95,12 @@ void expectPrefixOfScript(const JournalRead& r, std::size_t strokesInScript) {
     ASSERT_TRUE(r.ok()) << r.error;
     EXPECT_FALSE(r.damaged()) << r.damage;
     std::size_t strokes = 0;
-    for (const JournalRecord& rec : r.records) {
-        if (const auto* st = std::get_if<StrokeRecord>(&rec)) {
+    for (const Action& rec : r.records) {
+        if (const auto* st = std::get_if<StrokeAction>(&rec)) {
             EXPECT_EQ(st->sculpture, kNames[strokes % 3]) << "stroke " << strokes;
             ++strokes;
         } else {
-            EXPECT_TRUE(std::holds_alternative<UndoRecord>(rec));
+            EXPECT_TRUE(std::holds_alternative<UndoAction>(rec));
             EXPECT_EQ(strokes % 9, 0u);
         }
     }
@@ -327,7 +327,7 @@ TEST_F(SessionProcessTest, AnUnplayableRecordIsToldAndCutAtMakesTheSessionWritab
         ss << in.rdbuf();
         text = ss.str();
     }
-    const std::string redo = journalRecordJson(RedoRecord{});
+    const std::string redo = actionJson(RedoAction{});
     char crc[16];
     std::snprintf(crc, sizeof crc, "%08x ", crc32(redo));
     // After record 2: record 3 is the redo, records 4 and 5 the last two strokes.

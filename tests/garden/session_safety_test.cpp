@@ -141,7 +141,7 @@ TEST_F(SessionSafetyTest, AFailedJournalWriteKeepsTheWorkShowsItAndWritesItWhenI
                 ASSERT_TRUE(all.ok());
                 EXPECT_FALSE(all.damaged());
                 ASSERT_EQ(all.records.size(), 7u);  // six strokes and an undo, in the order made
-                EXPECT_TRUE(std::holds_alternative<UndoRecord>(all.records[5]));
+                EXPECT_TRUE(std::holds_alternative<UndoAction>(all.records[5]));
                 ASSERT_EQ(memory->restore(all.records), "");
                 expectSameGrids(*o.session, *memory);
             }
@@ -237,8 +237,8 @@ TEST_F(SessionSafetyTest, AnUnplayableRecordOpensTheSessionReadOnlyAndSaysWhatTo
     const SessionPaths paths(folder());
     {
         std::ofstream j(paths.journal, std::ios::app | std::ios::binary);
-        for (const JournalRecord& r : std::vector<JournalRecord>{RedoRecord{}}) {
-            const std::string json = journalRecordJson(r);
+        for (const Action& r : std::vector<Action>{RedoAction{}}) {
+            const std::string json = actionJson(r);
             char crc[16];
             std::snprintf(crc, sizeof crc, "%08x ", crc32(json));
             j << crc << json << "\n";
@@ -247,10 +247,10 @@ TEST_F(SessionSafetyTest, AnUnplayableRecordOpensTheSessionReadOnlyAndSaysWhatTo
     {
         // Two strokes after it, written by a session that played them.
         GardenSession other(loadGarden(paths.garden), test::smallSessionSettings());
-        std::vector<JournalRecord> more;
+        std::vector<Action> more;
         struct Keep : JournalSink {
-            std::vector<JournalRecord>* out;
-            void append(const JournalRecord& r) override { out->push_back(r); }
+            std::vector<Action>* out;
+            void append(const Action& r) override { out->push_back(r); }
             SaveStatus saveStatus() const override { return {}; }
             bool retrySave() override { return true; }
         } keep;
@@ -260,8 +260,8 @@ TEST_F(SessionSafetyTest, AnUnplayableRecordOpensTheSessionReadOnlyAndSaysWhatTo
         stroke(other, 4);
         other.setJournal(nullptr);
         std::ofstream j(paths.journal, std::ios::app | std::ios::binary);
-        for (const JournalRecord& r : more) {
-            const std::string json = journalRecordJson(r);
+        for (const Action& r : more) {
+            const std::string json = actionJson(r);
             char crc[16];
             std::snprintf(crc, sizeof crc, "%08x ", crc32(json));
             j << crc << json << "\n";

@@ -108,7 +108,7 @@ TEST_F(SaveBannerTest, AReadOnlySessionShowsItsBannerWithoutRetry) {
         ASSERT_EQ(o.session->applyStroke(o.session->findSculpture("a"), StrokeTool::Carve, {{-0.2, 0.6, -1.8}}, 0.06), "");
     }
     {
-        const std::string json = journalRecordJson(RedoRecord{});
+        const std::string json = actionJson(RedoAction{});
         char crc[16];
         std::snprintf(crc, sizeof crc, "%08x ", crc32(json));
         std::ofstream(SessionPaths(folder).journal, std::ios::app | std::ios::binary) << crc << json << "\n";
