@@ -95,6 +95,14 @@ struct ExportOptions {
 };
 int runExport(const ExportOptions& options);
 
+struct GestureCommandOptions {
+    std::string file;                 // strokes (.json, docs/gestures.md)
+    std::string weights;              // "" : content/gestures/weights.json
+    bool json = false;
+    double threshold = -1.0;          // < 0: the weights file's
+};
+int runGestureCommand(const GestureCommandOptions& options);
+
 // "0.5,1,-2" -> {0.5, 1, -2}; false when an item is not a number.
 bool parseNumberList(const std::string& text, std::vector<double>& out);
 

@@ -120,6 +120,15 @@ int main(int argc, char** argv) {
     exportCmd->add_option("--box", exportBox, "Meshes: model box x0,y0,z0,x1,y1,z1 (default: the sculpture's)");
     exportCmd->add_option("--memory-limit", exportOpts.memoryLimitMiB, "Meshes: MiB the work may use (default: 80% of available)");
 
+    GestureCommandOptions gestureOpts;
+    auto* gestureCmd = app.add_subcommand("gesture", "Classify the strokes of a file as gestures (docs/gestures.md)");
+    gestureCmd->add_option("file", gestureOpts.file, "Strokes (.json): {\"strokes\": [{\"points\": [[x, y], ...], \"label\": ...}]}")
+        ->required();
+    gestureCmd->add_flag("--json", gestureOpts.json, "Print JSON instead of text");
+    gestureCmd->add_option("--weights", gestureOpts.weights, "Weights file (default: content/gestures/weights.json)");
+    gestureCmd->add_option("--threshold", gestureOpts.threshold, "Least confidence that counts (default: the weights file's)")
+        ->check(CLI::Range(0.0, 1.0));
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -155,6 +164,7 @@ int main(int argc, char** argv) {
     }
     if (app.get_subcommands().empty()) return runGarden(gardenOpts);
     if (*sessionCmd) return runSessionCommand(sessionOpts);
+    if (*gestureCmd) return runGestureCommand(gestureOpts);
     if (*vox) {
         if (!parseNumberList(voxBox, voxOpts.box)) {
             std::cerr << "error: --box expects six numbers separated by commas: x0,y0,z0,x1,y1,z1\n";
