@@ -12,6 +12,8 @@
 #include <variant>
 #include <vector>
 
+#include <nlohmann/json_fwd.hpp>
+
 #include "garden/scene/garden.h"
 #include "garden/sculpt/edit.h"
 
@@ -73,5 +75,7 @@ std::string actionKind(const Action& r);
 // throws JsonError (garden/scene/json_reader.h) on a bad record.
 std::string actionJson(const Action& r);
 Action parseAction(const std::string& json, const std::string& path);
+// The same from JSON already read (a replay script's "action" command).
+Action readAction(const nlohmann::json& v, const std::string& path);
 
 }  // namespace hg::garden

@@ -102,8 +102,9 @@ std::string actionJson(const Action& record) {
     return j.dump();
 }
 
-Action parseAction(const std::string& text, const std::string& path) {
-    const nlohmann::json v = parseStrictJson(text);
+Action parseAction(const std::string& text, const std::string& path) { return readAction(parseStrictJson(text), path); }
+
+Action readAction(const nlohmann::json& v, const std::string& path) {
     if (!v.is_object() || !v.contains("action")) throw JsonError(path, "expected an object with an \"action\"");
     const std::string action = readString(v.at("action"), childPath(path, "action"));
     if (action == "stroke") {

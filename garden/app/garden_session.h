@@ -118,19 +118,53 @@ public:
     int selected() const { return selected_; }
     int findSculpture(const std::string& name) const;
 
+    // --- actions (garden/action/action.h, garden/app/session_actions.cpp) ---
+    // The one entry for an action, in the model frame: what a journal
+    // plays, what the tools and the replays' world commands become (below),
+    // what undo and redo step over. The grid changes in the action's box
+    // within the call (its chunks remeshed first) and the action is
+    // journalled. "" on success, else why it was refused (nothing changed).
+    std::string apply(const Action& action);
+
+    // World-frame requests (metres, the world's axes) taken into a
+    // sculpture's model frame: the edge where world coordinates end. Each
+    // gives the action, or why there is none.
+    struct ActionOrWhy {
+        std::optional<Action> action;
+        std::string why;
+    };
+    // A stroke's path and radius; the sculpture's mirror plane goes with it.
+    ActionOrWhy strokeFromWorld(int sculpture, StrokeTool tool, const std::vector<std::array<double, 3>>& worldPath,
+                                double radius, double softness = 2.0) const;
+    // A perturbation's centre and radii (its axes the world's).
+    ActionOrWhy perturbationFromWorld(int sculpture, QuadricShape shape, const std::array<double, 3>& worldCenter,
+                                      const std::array<double, 3>& radii, double strength) const;
+    // An impact tool fired along the world ray (origin, direction); sizes
+    // in metres, the compaction volume in cubic metres. The impacts that
+    // meet the sculpture are one action.
+    ActionOrWhy impactsFromWorld(int sculpture, const std::array<double, 3>& worldOrigin,
+                                 const std::array<double, 3>& worldDirection, ImpactTool tool) const;
+    // The last impact series made on `from` fired again at `to`, its rays
+    // placed the same way in `to`'s model box.
+    ActionOrWhy impactsAgain(int from, int to) const;
+    // Edit `edit` of the sculpture (a perturbation) with a new factor and
+    // extent (radii in metres): its replacement.
+    ActionOrWhy perturbationChange(int sculpture, std::size_t edit, double strength,
+                                   const std::array<double, 3>& radii) const;
+
     // --- sculpting (garden/app/session_sculpting.cpp) ------------------
-    // Every action changes the grid in its box within the call; the
-    // chunks it touched are remeshed first. "" on success, else why the
-    // action was refused (nothing changed then).
-    // An edit in world coordinates (metres): a stroke's path and radius, a
-    // perturbation's centre and radii, are taken into the sculpture's model
-    // frame here.
+    // The world-frame requests above, applied.
     std::string applyStroke(int sculpture, StrokeTool tool, const std::vector<std::array<double, 3>>& worldPath,
                             double radius, double softness = 2.0);
     std::string applyPerturbation(int sculpture, QuadricShape shape, const std::array<double, 3>& worldCenter,
                                   const std::array<double, 3>& radii, double strength);
+    std::string applyImpacts(int sculpture, const std::array<double, 3>& worldOrigin,
+                             const std::array<double, 3>& worldDirection, ImpactTool tool);
+    std::string reapplyImpacts(int from, int to);
+    std::string editPerturbation(int sculpture, std::size_t edit, double strength, const std::array<double, 3>& radii);
     // A live stroke: begun at a point, extended as the hand moves, ended on
-    // release (the stroke is in the edit list from its first point).
+    // release (the stroke is in the edit list from its first point, and
+    // journalled as one StrokeAction when it ends).
     std::string beginStroke(int sculpture, StrokeTool tool, const std::array<double, 3>& worldPoint, double radius,
                             double softness = 2.0);
     std::string extendStroke(const std::array<double, 3>& worldPoint);
@@ -140,24 +174,12 @@ public:
     // false when there is nothing to undo or redo.
     bool undo();
     bool redo();
-    // Fires an impact tool along the world ray (origin, direction); sizes in
-    // metres, the compaction volume in cubic metres. The impacts that meet
-    // the sculpture are one edit.
-    std::string applyImpacts(int sculpture, const std::array<double, 3>& worldOrigin,
-                             const std::array<double, 3>& worldDirection, ImpactTool tool);
-    // Fires the last impact series made on `from` again at `to`, its rays
-    // placed the same way in `to`'s model box.
-    std::string reapplyImpacts(int from, int to);
-    std::string applyImpactsModel(int sculpture, const ImpactSeries& series);
     // The perturbation of a sculpture under a world point (the latest whose
     // quadric holds it), by its index in the edit list; none when none does.
     std::optional<std::size_t> pickPerturbation(int sculpture, const std::array<double, 3>& worldPoint) const;
-    // A perturbation's factor and extent changed: replaced in the edit list,
-    // not stacked (undoable, journalled). Radii in metres.
-    std::string editPerturbation(int sculpture, std::size_t edit, double strength, const std::array<double, 3>& radii);
-    std::string replacePerturbationModel(int sculpture, std::size_t edit, const Perturbation& p);
-    // Moves, turns or scales a sculpture (undoable, journalled): its grid
-    // stays, in its model frame. "" or why not (a scale out of range, say).
+    // Moves, turns or scales a sculpture (a MoveAction: undoable,
+    // journalled): its grid stays, in its model frame. "" or why not (a
+    // scale out of range, say).
     std::string moveSculpture(int sculpture, const Placement& placement);
     // A move while a hand drags (garden/app/session_moving.cpp): shown at
     // once, not journalled; endLiveMove makes the drag one undoable,
@@ -171,13 +193,9 @@ public:
     // perturbations made while it is set act on both sides of it.
     void setMirror(int sculpture, std::optional<MirrorPlane> plane);
     // Removes every edit of a sculpture (the morph result's strokes, say),
-    // for good: they cannot be redone.
+    // for good: they cannot be redone (a DiscardAction).
     void discardEdits(int sculpture);
     std::size_t editCount(int sculpture) const;
-    // The same actions in the sculpture's model frame (what the journal
-    // holds).
-    std::string applyStrokeModel(int sculpture, const Stroke& stroke);
-    std::string applyPerturbationModel(int sculpture, const Perturbation& p);
 
     // --- the journal (garden/session) ------------------------------------
     // Called with every finished action (a stroke at its end, a
@@ -232,20 +250,14 @@ private:
     void uploadAndRender(ViewSink& views);
     const FrameStats& endFrame();
 
-    // The actions to undo, oldest first: an edit of a sculpture, or a move
-    // with the placements before and after it.
+    // The actions to undo, oldest first: each as it was made (an edit, a
+    // move, a replacement), with what undoing it needs beyond the edit
+    // list's own history (the placement or the perturbation before it).
     struct UndoEntry {
         int sculpture = -1;
-        std::optional<std::pair<Placement, Placement>> move;
-        // A replaced perturbation: its index and the perturbations before and after.
-        std::optional<std::size_t> replaced;
-        std::optional<std::pair<Perturbation, Perturbation>> replacement;
-
-        static UndoEntry edit(int s) {
-            UndoEntry u;
-            u.sculpture = s;
-            return u;
-        }
+        Action action;
+        std::optional<Placement> placementBefore;     // a MoveAction's
+        std::optional<Perturbation> replacedBefore;   // a ReplaceAction's
     };
     void buildSculpture(std::size_t index);
     void buildMorph();
@@ -253,6 +265,16 @@ private:
     std::array<double, 3> toModel(const Sculpture& s, const glm::vec3& world) const;
     std::string checkEditable(int sculpture) const;
     std::string startStroke(int sculpture, Stroke stroke);
+    // apply()'s cases, each on a sculpture found by the action's name.
+    std::string applyStrokeModel(int sculpture, const Stroke& stroke);
+    std::string applyPerturbationModel(int sculpture, const Perturbation& p);
+    std::string applyImpactsModel(int sculpture, const ImpactSeries& series);
+    std::string replacePerturbationModel(int sculpture, std::size_t edit, const Perturbation& p);
+    void applyMorphWeights(const MorphWeightsAction& m);
+    // The sculpture an action names: its index, or why it cannot take the
+    // action (none by that name, missing).
+    int actionSculpture(const std::string& name, std::string& why) const;
+    static bool finite3(const std::array<double, 3>& p);
     SculptureEdits& editsOf(int sculpture);
     void showChanged(int sculpture, const voxel::IndexBox& box);
     void sculptWithHands(const Hands& hands);

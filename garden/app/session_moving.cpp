@@ -76,11 +76,10 @@ void GardenSession::endLiveMove() {
     const Placement& to = s.placement;
     const Placement& from = liveMoveFrom_;
     if (to.position == from.position && to.yawDegrees == from.yawDegrees && to.scale == from.scale) return;
-    UndoEntry entry = UndoEntry::edit(sculpture);
-    entry.move = std::make_pair(from, to);
-    undoOrder_.push_back(entry);
+    const MoveAction move{s.name, to};
+    undoOrder_.push_back(UndoEntry{sculpture, move, from, std::nullopt});
     redoOrder_.clear();
-    record(MoveAction{s.name, to});
+    record(move);
 }
 
 void GardenSession::moveWithHands(const HandState& h) {

@@ -1,6 +1,7 @@
 // GardenSession's sculpting: edits applied to a sculpture's grid within the
-// call, undo and redo across sculptures, and the tool hand driving strokes
-// and perturbations (docs/design.md §6: tools read hands, never devices).
+// call (apply()'s cases, garden/app/session_actions.cpp), live strokes,
+// undo and redo across sculptures, and the tool hand driving strokes and
+// perturbations (docs/design.md §6: tools read hands, never devices).
 #include <algorithm>
 #include <cmath>
 
@@ -18,13 +19,9 @@
 
 namespace hg::garden {
 
-namespace {
-
-bool finite3(const std::array<double, 3>& p) {
+bool GardenSession::finite3(const std::array<double, 3>& p) {
     return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
 }
-
-}  // namespace
 
 std::string GardenSession::checkEditable(int sculpture) const {
     if (sculpture < 0 || sculpture >= static_cast<int>(sculptures_.size())) return "no such sculpture";
@@ -37,6 +34,8 @@ SculptureEdits& GardenSession::editsOf(int sculpture) {
     Sculpture& s = sculptures_[static_cast<std::size_t>(sculpture)];
     if (s.edits) return *s.edits;
     s.edits = std::make_unique<SculptureEdits>(*s.volume);
+    // Playing a journal: every grid is recomputed once at the end.
+    if (restoring_) s.edits->setDeferred(true);
     if (s.morphResult() && blender_) {
         // From now on the blend goes to the unedited grid and the edits are
         // applied after it, box by box (morph()): they persist when the
@@ -54,79 +53,13 @@ void GardenSession::discardEdits(int sculpture) {
     if (!s.edits) return;
     while (const auto box = s.edits->undo()) showChanged(sculpture, *box);
     s.edits->clearRedo();
-    const auto isEdit = [sculpture](const UndoEntry& u) { return u.sculpture == sculpture && !u.move; };
+    const auto isEdit = [sculpture](const UndoEntry& u) {
+        return u.sculpture == sculpture && !std::holds_alternative<MoveAction>(u.action);
+    };
     // (replacements go too: the edits they replaced are gone)
     undoOrder_.erase(std::remove_if(undoOrder_.begin(), undoOrder_.end(), isEdit), undoOrder_.end());
     redoOrder_.erase(std::remove_if(redoOrder_.begin(), redoOrder_.end(), isEdit), redoOrder_.end());
     record(DiscardAction{s.name});
-}
-
-std::string GardenSession::restore(const std::vector<Action>& records) { return restoreRecords(records).message(); }
-
-JournalPlayed GardenSession::restoreRecords(const std::vector<Action>& records) {
-    restoring_ = true;
-    for (Sculpture& s : sculptures_)
-        if (s.edits) s.edits->setDeferred(true);
-    JournalPlayed result;
-    for (std::size_t n = 0; n < records.size() && result.ok(); ++n) {
-        const Action& r = records[n];
-        std::string why;
-        const auto sculptureOf = [&](const std::string& name) {
-            const int i = findSculpture(name);
-            if (i < 0) why = "no sculpture named '" + name + "'";
-            else if (sculptures_[static_cast<std::size_t>(i)].missing()) why = "the sculpture '" + name + "' is missing";
-            else if (!sculptures_[static_cast<std::size_t>(i)].edits) editsOf(i).setDeferred(true);
-            return i;
-        };
-        if (const auto* st = std::get_if<StrokeAction>(&r)) {
-            const int i = sculptureOf(st->sculpture);
-            if (why.empty()) {
-                Stroke stroke;
-                stroke.tool = st->tool;
-                stroke.radius = st->radius;
-                stroke.softness = st->softness;
-                stroke.path = st->path;
-                why = applyStrokeModel(i, stroke);
-            }
-        } else if (const auto* p = std::get_if<PerturbAction>(&r)) {
-            const int i = sculptureOf(p->sculpture);
-            if (why.empty()) why = applyPerturbationModel(i, p->perturbation);
-        } else if (std::holds_alternative<UndoAction>(r)) {
-            if (!undo()) why = "nothing to undo";
-        } else if (std::holds_alternative<RedoAction>(r)) {
-            if (!redo()) why = "nothing to redo";
-        } else if (const auto* d = std::get_if<DiscardAction>(&r)) {
-            const int i = sculptureOf(d->sculpture);
-            if (why.empty()) discardEdits(i);
-        } else if (const auto* rp = std::get_if<ReplaceAction>(&r)) {
-            const int i = sculptureOf(rp->sculpture);
-            if (why.empty()) why = replacePerturbationModel(i, rp->edit, rp->perturbation);
-        } else if (const auto* im = std::get_if<ImpactsAction>(&r)) {
-            const int i = sculptureOf(im->sculpture);
-            if (why.empty()) why = applyImpactsModel(i, im->series);
-        } else if (const auto* mv = std::get_if<MoveAction>(&r)) {
-            const int i = findSculpture(mv->sculpture);
-            if (i < 0) why = "no sculpture named '" + mv->sculpture + "'";
-            else why = moveSculpture(i, mv->placement);
-        } else if (const auto* m = std::get_if<MorphWeightsAction>(&r)) {
-            if (!blender_) why = "the garden has no metamorphosis";
-            else {
-                weights_ = weightsFromBarycentric(m->barycentric, m->balance);
-                restartMorph();
-            }
-        }
-        if (why.empty()) {
-            ++result.played;
-        } else {
-            result.action = actionKind(r);
-            result.reason = why;
-        }
-    }
-    restoring_ = false;
-    for (std::size_t i = 0; i < sculptures_.size(); ++i)
-        if (sculptures_[i].edits)
-            for (const voxel::IndexBox& box : sculptures_[i].edits->flush()) showChanged(static_cast<int>(i), box);
-    return result;
 }
 
 void GardenSession::showChanged(int sculpture, const voxel::IndexBox& box) {
@@ -135,22 +68,6 @@ void GardenSession::showChanged(int sculpture, const voxel::IndexBox& box) {
     Sculpture& s = sculptures_[static_cast<std::size_t>(sculpture)];
     s.pyramid->update(box);
     s.queue->markChanged(box);
-}
-
-std::string GardenSession::applyStroke(int sculpture, StrokeTool tool, const std::vector<std::array<double, 3>>& worldPath,
-                                       double radius, double softness) {
-    if (worldPath.empty()) return "the stroke has no path";
-    std::string why = beginStroke(sculpture, tool, worldPath[0], radius, softness);
-    if (!why.empty()) return why;
-    for (std::size_t i = 1; i < worldPath.size(); ++i) {
-        why = extendStroke(worldPath[i]);
-        if (!why.empty()) {
-            endStroke();
-            return why;
-        }
-    }
-    endStroke();
-    return "";
 }
 
 std::string GardenSession::beginStroke(int sculpture, StrokeTool tool, const std::array<double, 3>& worldPoint,
@@ -178,7 +95,8 @@ std::string GardenSession::startStroke(int sculpture, Stroke stroke) {
     e.op = std::move(stroke);
     showChanged(sculpture, edits.append(std::move(e)));
     strokeSculpture_ = sculpture;
-    undoOrder_.push_back(UndoEntry::edit(sculpture));
+    // The entry's action is the whole stroke once it ends (endStroke).
+    undoOrder_.push_back(UndoEntry{sculpture, StrokeAction{}, std::nullopt, std::nullopt});
     redoOrder_.clear();
     return "";
 }
@@ -209,37 +127,10 @@ void GardenSession::endStroke() {
     if (!stroking()) return;
     const Sculpture& s = sculptures_[static_cast<std::size_t>(strokeSculpture_)];
     const Stroke& stroke = std::get<Stroke>(s.edits->list().edits().back().op);
-    record(StrokeAction{s.name, stroke.tool, stroke.radius, stroke.softness, stroke.path, stroke.mirror});
+    const StrokeAction done{s.name, stroke.tool, stroke.radius, stroke.softness, stroke.path, stroke.mirror};
+    if (!undoOrder_.empty()) undoOrder_.back().action = done;  // the stroke's own entry: nothing came between
+    record(done);
     strokeSculpture_ = -1;
-}
-
-std::string GardenSession::applyPerturbation(int sculpture, QuadricShape shape, const std::array<double, 3>& worldCenter,
-                                             const std::array<double, 3>& radii, double strength) {
-    if (stroking()) endStroke();
-    if (std::string why = checkEditable(sculpture); !why.empty()) return why;
-    if (!finite3(worldCenter)) return "the perturbation's centre is not a finite position";
-    const int used = shape == QuadricShape::Ellipsoid ? 3 : 2;
-    for (int i = 0; i < used; ++i)
-        if (!(std::isfinite(radii[static_cast<std::size_t>(i)]) && radii[static_cast<std::size_t>(i)] > 0.0))
-            return "the perturbation's radii must be positive numbers";
-    if (shape == QuadricShape::Torus && radii[1] >= radii[0]) return "a torus's tube radius must be under its ring radius";
-    if (!(std::isfinite(strength) && std::fabs(strength) <= 1000.0)) return "the strength must be a number in [-1000, 1000] voxels";
-    const Sculpture& s = sculptures_[static_cast<std::size_t>(sculpture)];
-    Perturbation p;
-    p.shape = shape;
-    p.center = toModel(s, toGlm(worldCenter));
-    p.radii = {radii[0] / s.scale, radii[1] / s.scale, radii[2] / s.scale};
-    p.strength = strength;
-    p.mirror = s.mirror;
-    // The quadric's axes are the world's, turned into the model frame.
-    const glm::mat3 toModelAxes = glm::mat3(glm::inverse(s.modelToWorld));
-    for (int i = 0; i < 3; ++i) {
-        glm::vec3 axis(0.0f);
-        axis[i] = 1.0f;
-        const glm::vec3 m = glm::normalize(toModelAxes * axis);
-        p.axes[static_cast<std::size_t>(i)] = {m.x, m.y, m.z};
-    }
-    return applyPerturbationModel(sculpture, p);
 }
 
 std::string GardenSession::applyPerturbationModel(int sculpture, const Perturbation& p) {
@@ -250,40 +141,11 @@ std::string GardenSession::applyPerturbationModel(int sculpture, const Perturbat
     Edit e;
     e.op = p;
     showChanged(sculpture, edits.append(std::move(e)));
-    undoOrder_.push_back(UndoEntry::edit(sculpture));
+    const PerturbAction done{sculptures_[static_cast<std::size_t>(sculpture)].name, p};
+    undoOrder_.push_back(UndoEntry{sculpture, done, std::nullopt, std::nullopt});
     redoOrder_.clear();
-    record(PerturbAction{sculptures_[static_cast<std::size_t>(sculpture)].name, p});
+    record(done);
     return "";
-}
-
-std::string GardenSession::applyImpacts(int sculpture, const std::array<double, 3>& worldOrigin,
-                                        const std::array<double, 3>& worldDirection, ImpactTool tool) {
-    if (stroking()) endStroke();
-    if (std::string why = checkEditable(sculpture); !why.empty()) return why;
-    if (!finite3(worldOrigin) || !finite3(worldDirection)) return "the impact ray is not finite";
-    const Sculpture& s = sculptures_[static_cast<std::size_t>(sculpture)];
-    // Into the model frame: lengths by the scale, volumes by its cube.
-    tool.size /= s.scale;
-    tool.volume /= s.scale * s.scale * s.scale;
-    if (tool.spread != ImpactSpread::Cone) tool.spreadSize /= s.scale;
-    SculptureEdits& edits = editsOf(sculpture);
-    if (std::string why = checkImpactTool(tool, edits.units().voxelSize); !why.empty()) return why;
-    const glm::dmat4 toModelM = glm::inverse(glm::dmat4(s.modelToWorld));
-    const glm::dvec3 o = glm::dvec3(toModelM * glm::dvec4(worldOrigin[0], worldOrigin[1], worldOrigin[2], 1.0));
-    glm::dvec3 d = glm::dvec3(toModelM * glm::dvec4(worldDirection[0], worldDirection[1], worldDirection[2], 0.0));
-    if (!(glm::length(d) > 0.0)) return "the impact ray has no direction";
-    d = glm::normalize(d);
-    ImpactSeries series;
-    series.volume = tool.volume;
-    const frep::Box3& box = s.volume->frame.modelBox;
-    for (const ImpactRay& ray : drawImpactRays({{o.x, o.y, o.z}, {d.x, d.y, d.z}}, tool)) {
-        const ImpactRay relative = raysInBox({ray}, box)[0];
-        series.rayOrigins.push_back(relative.origin);
-        series.rayDirections.push_back(relative.direction);
-        if (auto m = castImpact(*s.volume, ray, tool, edits.units())) series.impacts.push_back(*m);
-    }
-    if (series.impacts.empty()) return "no impact met the sculpture";
-    return applyImpactsModel(sculpture, series);
 }
 
 std::string GardenSession::applyImpactsModel(int sculpture, const ImpactSeries& series) {
@@ -296,39 +158,11 @@ std::string GardenSession::applyImpactsModel(int sculpture, const ImpactSeries& 
     auto& added = std::get<ImpactSeries>(e.op);
     for (Impact& m : added.impacts) m.reach = impactReach(m, edits.units());
     showChanged(sculpture, edits.append(std::move(e)));
-    undoOrder_.push_back(UndoEntry::edit(sculpture));
+    const ImpactsAction done{sculptures_[static_cast<std::size_t>(sculpture)].name, series};
+    undoOrder_.push_back(UndoEntry{sculpture, done, std::nullopt, std::nullopt});
     redoOrder_.clear();
-    record(ImpactsAction{sculptures_[static_cast<std::size_t>(sculpture)].name, series});
+    record(done);
     return "";
-}
-
-std::string GardenSession::reapplyImpacts(int from, int to) {
-    if (from < 0 || from >= static_cast<int>(sculptures_.size()) || to < 0 || to >= static_cast<int>(sculptures_.size()))
-        return "no such sculpture";
-    const Sculpture& src = sculptures_[static_cast<std::size_t>(from)];
-    const ImpactSeries* last = nullptr;
-    if (src.edits)
-        for (const Edit& e : src.edits->list().edits())
-            if (const auto* m = std::get_if<ImpactSeries>(&e.op)) last = m;
-    if (!last) return "'" + src.name + "' has no impacts to fire again";
-    if (std::string why = checkEditable(to); !why.empty()) return why;
-    const Sculpture& dst = sculptures_[static_cast<std::size_t>(to)];
-    SculptureEdits& edits = editsOf(to);
-    ImpactTool tool;
-    tool.shape = last->impacts[0].shape;
-    // The same tool in the other sculpture's model units.
-    const double k = src.scale / dst.scale;
-    tool.size = last->impacts[0].size * k;
-    tool.volume = last->volume * k * k * k;
-    ImpactSeries series = *last;
-    series.impacts.clear();
-    series.volume = tool.volume;
-    std::vector<ImpactRay> relative;
-    for (std::size_t i = 0; i < last->rayOrigins.size(); ++i) relative.push_back({last->rayOrigins[i], last->rayDirections[i]});
-    for (const ImpactRay& ray : raysFromBox(relative, dst.volume->frame.modelBox))
-        if (auto m = castImpact(*dst.volume, ray, tool, edits.units())) series.impacts.push_back(*m);
-    if (series.impacts.empty()) return "no impact met '" + dst.name + "'";
-    return applyImpactsModel(to, series);
 }
 
 std::optional<std::size_t> GardenSession::pickPerturbation(int sculpture, const std::array<double, 3>& worldPoint) const {
@@ -344,19 +178,6 @@ std::optional<std::size_t> GardenSession::pickPerturbation(int sculpture, const 
             return i;
     }
     return std::nullopt;
-}
-
-std::string GardenSession::editPerturbation(int sculpture, std::size_t edit, double strength,
-                                            const std::array<double, 3>& radii) {
-    if (std::string why = checkEditable(sculpture); !why.empty()) return why;
-    const Sculpture& s = sculptures_[static_cast<std::size_t>(sculpture)];
-    if (!s.edits || edit >= s.edits->list().size()) return "no such edit";
-    const auto* old = std::get_if<Perturbation>(&s.edits->list().edits()[edit].op);
-    if (!old) return "edit " + std::to_string(edit) + " is not a perturbation";
-    Perturbation p = *old;
-    p.strength = strength;
-    p.radii = {radii[0] / s.scale, radii[1] / s.scale, radii[2] / s.scale};
-    return replacePerturbationModel(sculpture, edit, p);
 }
 
 std::string GardenSession::replacePerturbationModel(int sculpture, std::size_t edit, const Perturbation& p) {
@@ -377,13 +198,10 @@ std::string GardenSession::replacePerturbationModel(int sculpture, std::size_t e
     e.op = p;
     Edit replaced;
     showChanged(sculpture, s.edits->replace(edit, std::move(e), replaced));
-    UndoEntry entry;
-    entry.sculpture = sculpture;
-    entry.replaced = edit;
-    entry.replacement = std::make_pair(before, p);
-    undoOrder_.push_back(entry);
+    const ReplaceAction done{s.name, edit, p};
+    undoOrder_.push_back(UndoEntry{sculpture, done, std::nullopt, before});
     redoOrder_.clear();
-    record(ReplaceAction{s.name, edit, p});
+    record(done);
     return "";
 }
 
@@ -397,15 +215,14 @@ bool GardenSession::stepHistory(std::vector<UndoEntry>& from, std::vector<UndoEn
         UndoEntry entry = from.back();
         from.pop_back();
         Sculpture& s = sculptures_[static_cast<std::size_t>(entry.sculpture)];
-        if (entry.move) {
-            // A move holds the placements before and after it.
-            placeSculpture(entry.sculpture, undoing ? entry.move->first : entry.move->second);
-        } else if (entry.replaced) {
-            if (!s.edits || *entry.replaced >= s.edits->list().size()) continue;
+        if (const auto* move = std::get_if<MoveAction>(&entry.action)) {
+            placeSculpture(entry.sculpture, undoing ? *entry.placementBefore : move->placement);
+        } else if (const auto* r = std::get_if<ReplaceAction>(&entry.action)) {
+            if (!s.edits || r->edit >= s.edits->list().size()) continue;
             Edit e;
-            e.op = undoing ? entry.replacement->first : entry.replacement->second;
+            e.op = undoing ? *entry.replacedBefore : r->perturbation;
             Edit out;
-            showChanged(entry.sculpture, s.edits->replace(*entry.replaced, std::move(e), out));
+            showChanged(entry.sculpture, s.edits->replace(r->edit, std::move(e), out));
         } else {
             if (!s.edits) continue;
             const auto box = undoing ? s.edits->undo() : s.edits->redo();
@@ -425,12 +242,11 @@ std::string GardenSession::moveSculpture(int sculpture, const Placement& placeme
     endLiveMove();
     if (std::string why = checkPlacement(sculpture, placement); !why.empty()) return why;
     Sculpture& s = sculptures_[static_cast<std::size_t>(sculpture)];
-    UndoEntry entry = UndoEntry::edit(sculpture);
-    entry.move = std::make_pair(s.placement, placement);
-    undoOrder_.push_back(entry);
+    const MoveAction done{s.name, placement};
+    undoOrder_.push_back(UndoEntry{sculpture, done, s.placement, std::nullopt});
     redoOrder_.clear();
     placeSculpture(sculpture, placement);
-    record(MoveAction{s.name, placement});
+    record(done);
     return "";
 }
 

@@ -79,6 +79,7 @@ std::string runReplayCommand(const ReplayCommand& c, GardenSession& s) {
 }
 
 std::string runSculptCommand(const SculptCommand& command, GardenSession& session) {
+    if (const auto* a = std::get_if<ActionCommand>(&command)) return session.apply(a->action);
     const auto find = [&](const std::string& name, int& index) -> std::string {
         index = session.findSculpture(name);
         return index < 0 ? "no sculpture named '" + name + "'" : "";

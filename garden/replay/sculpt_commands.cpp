@@ -68,6 +68,7 @@ SculptCommand readSculptCommand(const std::string& key, const nlohmann::json& v,
         r.finish();
         return c;
     }
+    if (key == "action") return ActionCommand{readAction(v, path)};
     if (key == "undo" || key == "redo") {
         const int times = readInt(v, path, 1, 1000000);
         if (key == "undo") return UndoCommand{times};

@@ -9,6 +9,7 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include "garden/action/action.h"
 #include "garden/sculpt/edit.h"
 #include "garden/sculpt/impacts.h"
 #include "garden/sculpt/tool_settings.h"
@@ -60,11 +61,16 @@ struct RedoCommand { int times = 1; };
 // The tool the tool hand works from now on (hand-driven sculpting).
 struct ToolCommand { ToolSettings settings; };
 
+// An action in the model frame, exactly as a session's journal holds it
+// (garden/action/action.h, docs/session-format.md): the commands above are
+// the world-frame forms that become these.
+struct ActionCommand { Action action; };
+
 using SculptCommand = std::variant<StrokeCommand, PerturbCommand, UndoCommand, RedoCommand, ToolCommand, ImpactsCommand,
-                                   ReapplyImpactsCommand, EditPerturbationCommand>;
+                                   ReapplyImpactsCommand, EditPerturbationCommand, ActionCommand>;
 
 // Reads the command under `key` (stroke, perturb, edit_perturbation,
-// impacts, reapply_impacts, undo, redo, sculpt_tool);
+// impacts, reapply_impacts, undo, redo, sculpt_tool, action);
 // throws JsonError with the JSON path of a bad value.
 SculptCommand readSculptCommand(const std::string& key, const nlohmann::json& v, const std::string& path);
 class GardenSession;

@@ -7,11 +7,7 @@
 
 namespace hg::garden {
 
-namespace {
-
 FieldUnits unitsOf(const voxel::Volume& v) { return {v.frame.voxelSize, static_cast<double>(v.frame.band)}; }
-
-}  // namespace
 
 SculptureEdits::SculptureEdits(voxel::Volume& shown)
     : shown_(shown),

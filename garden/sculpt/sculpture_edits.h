@@ -23,6 +23,9 @@ namespace hg::garden {
 // Index cells of the edit list, in voxels: about a chunk.
 constexpr int kEditIndexCellVoxels = 32;
 
+// The units an edit of a grid is measured in: its voxel and its band.
+FieldUnits unitsOf(const voxel::Volume& v);
+
 class SculptureEdits {
 public:
     // `shown` is the sculpture's grid, unedited so far; it must outlive this.

@@ -55,6 +55,14 @@ inline SessionSettings smallSessionSettings() {
     return s;
 }
 
+// A session's finished actions, kept in a list (a journal in memory).
+struct ActionList : JournalSink {
+    std::vector<Action> actions;
+    void append(const Action& a) override { actions.push_back(a); }
+    SaveStatus saveStatus() const override { return {}; }
+    bool retrySave() override { return true; }
+};
+
 // The small garden open in a session; `c` is ball c, of radius 0.6 about
 // (2, 0.5, 1.1547), its pivot (2, 0, 1.1547).
 class SmallGardenSession : public SmallGarden {

@@ -16,15 +16,6 @@
 namespace hg::garden {
 namespace {
 
-// Keeps the journalled records in memory.
-struct ListJournal : JournalSink {
-    explicit ListJournal(std::vector<Action>& list) : records(list) {}
-    void append(const Action& r) override { records.push_back(r); }
-    SaveStatus saveStatus() const override { return {}; }
-    bool retrySave() override { return true; }
-    std::vector<Action>& records;
-};
-
 class SessionMovingTest : public test::SmallGardenSession {
 protected:
     void SetUp() override {
@@ -51,8 +42,8 @@ protected:
         if (secondary) h.tool.buttons |= kButtonSecondary;
         return h;
     }
-    std::vector<Action> journal;
-    ListJournal sink{journal};
+    test::ActionList sink;
+    std::vector<Action>& journal = sink.actions;
 };
 
 TEST_F(SessionMovingTest, ALiveMoveIsOneUndoableJournalledMove) {

@@ -72,6 +72,40 @@ TEST_F(SessionSculptingTest, TheToolHandCarvesAndItsButtonsUndoAndRedoExactly) {
     EXPECT_TRUE(s.idle());
 }
 
+// A replay's "action" command is a journal's action, word for word: a
+// journalled session's actions pasted into a script rebuild its grids.
+TEST_F(SessionSculptingTest, ReplayActionCommandsAreTheJournalsActions) {
+    const std::string garden = writeGarden();
+    GardenSession s(loadGarden(garden), test::smallSessionSettings());
+    test::ActionList journal;
+    s.setJournal(&journal);
+    const int b = s.findSculpture("b");
+    ASSERT_EQ(s.applyStroke(b, StrokeTool::Carve, {{-2.1, 0.8, 1.0}, {-1.9, 0.7, 1.2}}, 0.08), "");
+    ASSERT_EQ(s.applyPerturbation(b, QuadricShape::Torus, {-2.0, 0.9, 1.15}, {0.15, 0.05, 0.0}, 2.0), "");
+    ASSERT_TRUE(s.undo());
+    std::string commands;
+    for (const Action& a : journal.actions) commands += std::string(commands.empty() ? "" : ", ") + "{\"action\": " + actionJson(a) + "}";
+    const ReplayScript script = parseReplayScript(R"({"garden": ")" + garden + R"(", "steps": [{"commands": [)" + commands +
+                                                      R"(]}, {"until_idle": true, "frames": 2000}]})",
+                                                  "actions.json", "");
+    GardenSession played(loadGarden(garden), test::smallSessionSettings());
+    const ReplayResult r = runReplay(script, played, nullptr, {});
+    ASSERT_EQ(r.error, "");
+    EXPECT_EQ(played.editCount(b), 1u);
+    EXPECT_EQ(test::differingVoxels(*s.sculptures()[static_cast<std::size_t>(b)].volume,
+                                    *played.sculptures()[static_cast<std::size_t>(b)].volume),
+              0);
+    // A bad action is reported at its JSON path.
+    try {
+        parseReplayScript(R"({"garden": "g.json", "steps": [{"commands": [
+            {"action": {"action": "stroke", "sculpture": "b", "tool": "chisel", "radius": 0.1, "path": [[0, 0, 0]]}}]}]})",
+                          "bad.json", "");
+        ADD_FAILURE() << "an unknown tool was read";
+    } catch (const JsonError& e) {
+        EXPECT_EQ(e.path(), "$.steps[0].commands[0].action.tool");
+    }
+}
+
 TEST_F(SessionSculptingTest, ReplayCommandsSculptUndoAndRedo) {
     const std::string garden = writeGarden();
     const ReplayScript script = parseReplayScript(R"({
@@ -122,6 +156,51 @@ TEST_F(SessionSculptingTest, EditsOnTheMorphResultPersistWhenTheWeightsChangeAnd
     EXPECT_EQ(s.editCount(m), 0u);
     EXPECT_FALSE(s.redo());
     EXPECT_EQ(test::differingVoxels(*r.volume, *blend), 0);
+}
+
+// Every action goes through apply() and is journalled in the model frame;
+// playing the journal in a fresh session rebuilds every grid bit for bit,
+// a mirrored stroke included (it used to come back unmirrored).
+TEST_F(SessionSculptingTest, ActionsPlayedFromTheJournalRebuildEveryGridExactly) {
+    GardenSession s(loadGarden(writeGarden()), test::smallSessionSettings());
+    test::ActionList journal;
+    s.setJournal(&journal);
+    const int c = s.findSculpture("c");
+    const int a = s.findSculpture("a");
+    s.setMirror(c, MirrorPlane{{0.0, 0.0, 0.0}, {1.0, 0.0, 0.0}});
+    ASSERT_EQ(s.applyStroke(c, StrokeTool::Carve, {{2.45, 0.9, 1.3}, {2.5, 0.6, 1.4}}, 0.1), "");
+    s.setMirror(c, std::nullopt);
+    ASSERT_EQ(s.applyPerturbation(c, QuadricShape::Ellipsoid, {2.0, 0.3, 1.7}, {0.1, 0.08, 0.1}, 2.5), "");
+    ImpactTool t;
+    t.size = 0.05;
+    t.volume = 8e-6;
+    t.count = 3;
+    ASSERT_EQ(s.applyImpacts(c, {2.0, 0.5, 4.0}, {0.0, 0.0, -1.0}, t), "");
+    ASSERT_EQ(s.reapplyImpacts(c, a), "");
+    const auto picked = s.pickPerturbation(c, {2.0, 0.3, 1.7});
+    ASSERT_TRUE(picked);
+    ASSERT_EQ(s.editPerturbation(c, *picked, -1.5, {0.12, 0.1, 0.12}), "");
+    ASSERT_TRUE(s.undo());
+    ASSERT_TRUE(s.redo());
+    ASSERT_EQ(journal.actions.size(), 7u);
+    EXPECT_TRUE(std::get<StrokeAction>(journal.actions[0]).mirror) << "the stroke's mirror plane is in its action";
+
+    GardenSession again(loadGarden(writeGarden()), test::smallSessionSettings());
+    ASSERT_EQ(again.restore(journal.actions), "");
+    for (const int i : {a, c}) {
+        const auto& mine = *s.sculptures()[static_cast<std::size_t>(i)].volume;
+        const auto& played = *again.sculptures()[static_cast<std::size_t>(i)].volume;
+        EXPECT_EQ(test::differingVoxels(mine, played), 0) << s.sculptures()[static_cast<std::size_t>(i)].name;
+    }
+    // The same actions applied one by one (what a replay's "action" does).
+    GardenSession third(loadGarden(writeGarden()), test::smallSessionSettings());
+    for (const Action& act : journal.actions) ASSERT_EQ(third.apply(act), "") << actionKind(act);
+    EXPECT_EQ(test::differingVoxels(*s.sculptures()[static_cast<std::size_t>(c)].volume,
+                                    *third.sculptures()[static_cast<std::size_t>(c)].volume),
+              0);
+    // An action naming no sculpture is refused and changes nothing.
+    EXPECT_EQ(third.apply(DiscardAction{"nobody"}), "no sculpture named 'nobody'");
+    EXPECT_EQ(third.editCount(c), 3u);
 }
 
 TEST_F(SessionSculptingTest, AMirrorPlaneAppliesEachStrokeOnBothSides) {
