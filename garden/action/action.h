@@ -65,9 +65,21 @@ struct MorphWeightsAction {
     std::array<double, 3> balance{1.0, 1.0, 1.0};
 };
 
+// A sketched outline joined to or cut from a sculpture: the points as
+// drawn and the plane's normal (model frame); the solid is inflated from
+// them when the action is applied (garden/sculpt/sketch_edit.h).
+struct SketchAction {
+    std::string sculpture;
+    SketchMode mode = SketchMode::Add;
+    std::vector<ModelPoint> points;
+    ModelPoint normal{0.0, 0.0, 1.0};
+    double thickness = 1.0;
+    std::optional<MirrorPlane> mirror;
+};
+
 using Action =
     std::variant<StrokeAction, PerturbAction, UndoAction, RedoAction, DiscardAction, MorphWeightsAction, MoveAction,
-                 ImpactsAction, ReplaceAction>;
+                 ImpactsAction, ReplaceAction, SketchAction>;
 
 std::string actionKind(const Action& r);
 

@@ -53,7 +53,8 @@ void writePerturbation(const Perturbation& q, nlohmann::json& j) {
 }  // namespace
 
 std::string actionKind(const Action& r) {
-    static const char* const names[] = {"stroke", "perturb", "undo", "redo", "discard", "morph", "move", "impacts", "replace"};
+    static const char* const names[] = {"stroke", "perturb", "undo",    "redo",    "discard",
+                                        "morph",  "move",    "impacts", "replace", "sketch"};
     return names[r.index()];
 }
 
@@ -93,6 +94,15 @@ std::string actionJson(const Action& record) {
             rays.push_back({point(im->series.rayOrigins[i]), point(im->series.rayDirections[i])});
         j["rays"] = std::move(rays);
         j["volume"] = im->series.volume;
+    } else if (const auto* k = std::get_if<SketchAction>(&record)) {
+        j["sculpture"] = k->sculpture;
+        j["mode"] = sketchModeName(k->mode);
+        nlohmann::json points = nlohmann::json::array();
+        for (const ModelPoint& q : k->points) points.push_back(point(q));
+        j["points"] = std::move(points);
+        j["normal"] = point(k->normal);
+        j["thickness"] = k->thickness;
+        if (k->mirror) j["mirror"] = mirrorJson(*k->mirror);
     } else if (const auto* mv = std::get_if<MoveAction>(&record)) {
         j["sculpture"] = mv->sculpture;
         j["position"] = point(mv->placement.position);
@@ -208,8 +218,23 @@ Action readAction(const nlohmann::json& v, const std::string& path) {
         r.finish();
         return m;
     }
-    throw JsonError(childPath(path, "action"),
-                    "unknown action '" + action + "' (expected stroke, perturb, replace, impacts, undo, redo, discard, morph or move)");
+    if (action == "sketch") {
+        ObjectReader r(v, path, {"action", "sculpture", "mode", "points", "normal", "thickness", "mirror"});
+        SketchAction k;
+        k.sculpture = readString(r.required("sculpture"), r.pathOf("sculpture"));
+        k.mode = readSketchMode(r.required("mode"), r.pathOf("mode"));
+        const nlohmann::json& points = r.required("points");
+        if (!points.is_array() || points.size() < 3) throw JsonError(r.pathOf("points"), "expected an array of 3 or more points");
+        for (std::size_t i = 0; i < points.size(); ++i) k.points.push_back(readPoint(points[i], indexPath(r.pathOf("points"), i)));
+        k.normal = readPoint(r.required("normal"), r.pathOf("normal"));
+        if (r.has("thickness")) k.thickness = readPositive(r.required("thickness"), r.pathOf("thickness"));
+        if (r.has("mirror")) k.mirror = readMirror(r.required("mirror"), r.pathOf("mirror"));
+        r.finish();
+        return k;
+    }
+    throw JsonError(childPath(path, "action"), "unknown action '" + action +
+                                                   "' (expected stroke, perturb, replace, impacts, undo, redo, discard, "
+                                                   "morph, move or sketch)");
 }
 
 }  // namespace hg::garden

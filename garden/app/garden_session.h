@@ -147,6 +147,11 @@ public:
     // The last impact series made on `from` fired again at `to`, its rays
     // placed the same way in `to`'s model box.
     ActionOrWhy impactsAgain(int from, int to) const;
+    // A sketch drawn on a plane (world points on or near it, the plane's
+    // normal), joined to the sculpture or cut from it; the mirror plane
+    // goes with it.
+    ActionOrWhy sketchFromWorld(int sculpture, SketchMode mode, const std::vector<std::array<double, 3>>& worldPoints,
+                                const std::array<double, 3>& worldNormal, double thickness = 1.0) const;
     // Edit `edit` of the sculpture (a perturbation) with a new factor and
     // extent (radii in metres): its replacement.
     ActionOrWhy perturbationChange(int sculpture, std::size_t edit, double strength,
@@ -156,6 +161,8 @@ public:
     // The world-frame requests above, applied.
     std::string applyStroke(int sculpture, StrokeTool tool, const std::vector<std::array<double, 3>>& worldPath,
                             double radius, double softness = 2.0);
+    std::string applySketch(int sculpture, SketchMode mode, const std::vector<std::array<double, 3>>& worldPoints,
+                            const std::array<double, 3>& worldNormal, double thickness = 1.0);
     std::string applyPerturbation(int sculpture, QuadricShape shape, const std::array<double, 3>& worldCenter,
                                   const std::array<double, 3>& radii, double strength);
     std::string applyImpacts(int sculpture, const std::array<double, 3>& worldOrigin,
@@ -270,6 +277,7 @@ private:
     std::string applyPerturbationModel(int sculpture, const Perturbation& p);
     std::string applyImpactsModel(int sculpture, const ImpactSeries& series);
     std::string replacePerturbationModel(int sculpture, std::size_t edit, const Perturbation& p);
+    std::string applySketchModel(int sculpture, const SketchAction& a);
     void applyMorphWeights(const MorphWeightsAction& m);
     // The sculpture an action names: its index, or why it cannot take the
     // action (none by that name, missing).

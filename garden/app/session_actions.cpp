@@ -67,6 +67,10 @@ std::string GardenSession::apply(const Action& action) {
         const int i = findSculpture(a->sculpture);
         return i < 0 ? "no sculpture named '" + a->sculpture + "'" : moveSculpture(i, a->placement);
     }
+    if (const auto* a = std::get_if<SketchAction>(&action)) {
+        const int i = actionSculpture(a->sculpture, why);
+        return why.empty() ? applySketchModel(i, *a) : why;
+    }
     if (std::holds_alternative<UndoAction>(action)) return undo() ? "" : "nothing to undo";
     if (std::holds_alternative<RedoAction>(action)) return redo() ? "" : "nothing to redo";
     const auto& m = std::get<MorphWeightsAction>(action);
@@ -205,6 +209,26 @@ ActionOrWhy GardenSession::impactsAgain(int from, int to) const {
     return {ImpactsAction{dst.name, series}, ""};
 }
 
+ActionOrWhy GardenSession::sketchFromWorld(int sculpture, SketchMode mode,
+                                           const std::vector<std::array<double, 3>>& worldPoints,
+                                           const std::array<double, 3>& worldNormal, double thickness) const {
+    if (std::string why = checkEditable(sculpture); !why.empty()) return refused(why);
+    if (worldPoints.size() < 3) return refused("a sketch needs at least 3 points");
+    if (!finite3(worldNormal)) return refused("the sketch's normal is not finite");
+    const Sculpture& s = sculptures_[static_cast<std::size_t>(sculpture)];
+    SketchAction a{s.name, mode, {}, {}, thickness, s.mirror};
+    for (const auto& p : worldPoints) {
+        if (!finite3(p)) return refused("a sketch's point is not a finite position");
+        a.points.push_back(toModel(s, toGlm(p)));
+    }
+    // A direction: turned into the model frame (the scale is uniform, and
+    // the length does not matter).
+    const glm::dvec3 n = glm::dvec3(glm::inverse(glm::dmat4(s.modelToWorld)) *
+                                    glm::dvec4(worldNormal[0], worldNormal[1], worldNormal[2], 0.0));
+    a.normal = {n.x, n.y, n.z};
+    return {a, ""};
+}
+
 ActionOrWhy GardenSession::perturbationChange(int sculpture, std::size_t edit, double strength,
                                               const std::array<double, 3>& radii) const {
     if (std::string why = checkEditable(sculpture); !why.empty()) return refused(why);
@@ -221,6 +245,11 @@ ActionOrWhy GardenSession::perturbationChange(int sculpture, std::size_t edit, d
 std::string GardenSession::applyStroke(int sculpture, StrokeTool tool, const std::vector<std::array<double, 3>>& worldPath,
                                        double radius, double softness) {
     return applied(*this, strokeFromWorld(sculpture, tool, worldPath, radius, softness));
+}
+
+std::string GardenSession::applySketch(int sculpture, SketchMode mode, const std::vector<std::array<double, 3>>& worldPoints,
+                                       const std::array<double, 3>& worldNormal, double thickness) {
+    return applied(*this, sketchFromWorld(sculpture, mode, worldPoints, worldNormal, thickness));
 }
 
 std::string GardenSession::applyPerturbation(int sculpture, QuadricShape shape, const std::array<double, 3>& worldCenter,

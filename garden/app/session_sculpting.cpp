@@ -13,6 +13,7 @@
 #include "garden/sculpt/sculpture_edits.h"
 #include "garden/sculpt/edit_field.h"
 #include "garden/sculpt/impacts.h"
+#include "garden/sculpt/sketch_edit.h"
 #include "garden/sculpt/stroke_segments.h"
 #include "garden/sculpt/surface_ray.h"
 #include "voxel/volume.h"
@@ -162,6 +163,26 @@ std::string GardenSession::applyImpactsModel(int sculpture, const ImpactSeries& 
     undoOrder_.push_back(UndoEntry{sculpture, done, std::nullopt, std::nullopt});
     redoOrder_.clear();
     record(done);
+    return "";
+}
+
+std::string GardenSession::applySketchModel(int sculpture, const SketchAction& a) {
+    if (stroking()) endStroke();
+    if (std::string why = checkEditable(sculpture); !why.empty()) return why;
+    SculptureEdits& edits = editsOf(sculpture);
+    SketchSolid solid;
+    solid.mode = a.mode;
+    solid.outline = a.points;
+    solid.normal = a.normal;
+    solid.thickness = a.thickness;
+    solid.mirror = a.mirror;
+    if (std::string why = resolveSketch(solid, edits.units()); !why.empty()) return why;
+    Edit e;
+    e.op = std::move(solid);
+    showChanged(sculpture, edits.append(std::move(e)));
+    undoOrder_.push_back(UndoEntry{sculpture, a, std::nullopt, std::nullopt});
+    redoOrder_.clear();
+    record(a);
     return "";
 }
 

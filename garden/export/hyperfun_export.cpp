@@ -58,6 +58,10 @@ std::string describeEdit(const Edit& e) {
         if (st->tool == StrokeTool::Melt) s += ", softness " + num(st->softness) + " voxels";
         s += ", " + std::to_string(st->path.size()) + " path points, " + std::to_string(st->segments.size()) +
              " convolution segments (hfConvLine)" + mirrorText(st->mirror);
+    } else if (const auto* k = std::get_if<SketchSolid>(&e.op)) {
+        s += std::string("sketch ") + (k->mode == SketchMode::Add ? "joined" : "cut") + ": an outline of " +
+             std::to_string(k->outline.size()) + " points inflated to " + std::to_string(k->solid.pieces.size()) +
+             " cone pieces along its chordal axis, thickness " + num(k->thickness) + mirrorText(k->mirror);
     } else if (const auto* m = std::get_if<ImpactSeries>(&e.op)) {
         s += std::to_string(m->impacts.size()) + " impacts";
         if (!m->impacts.empty())
@@ -70,14 +74,6 @@ std::string describeEdit(const Edit& e) {
              mirrorText(p.mirror);
     }
     return s;
-}
-
-template <class V>
-V applyEdit(const V& f, const V& x, const V& y, const V& z, const Edit& e, const std::vector<std::uint32_t>& pieces,
-            const FieldUnits& u) {
-    if (const auto* s = std::get_if<Stroke>(&e.op)) return applyStroke(f, x, y, z, *s, pieces, u);
-    if (const auto* m = std::get_if<ImpactSeries>(&e.op)) return applyImpacts(f, x, y, z, *m, pieces, u);
-    return applyPerturbation(f, x, y, z, std::get<Perturbation>(e.op), pieces, u);
 }
 
 std::string lower(std::string s) {

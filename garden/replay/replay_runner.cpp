@@ -80,6 +80,11 @@ std::string runReplayCommand(const ReplayCommand& c, GardenSession& s) {
 
 std::string runSculptCommand(const SculptCommand& command, GardenSession& session) {
     if (const auto* a = std::get_if<ActionCommand>(&command)) return session.apply(a->action);
+    if (const auto* c = std::get_if<SketchCommand>(&command)) {
+        const int s = session.findSculpture(c->sculpture);
+        if (s < 0) return "no sculpture named '" + c->sculpture + "'";
+        return session.applySketch(s, c->mode, c->points, c->normal, c->thickness);
+    }
     const auto find = [&](const std::string& name, int& index) -> std::string {
         index = session.findSculpture(name);
         return index < 0 ? "no sculpture named '" + name + "'" : "";

@@ -82,11 +82,11 @@ HandState readHand(const nlohmann::json& v, const std::string& path) {
 ReplayCommand readCommand(const nlohmann::json& v, const std::string& path) {
     if (!v.is_object() || v.size() != 1)
         throw JsonError(path, "expected an object with one command: morph, morph_weights, screenshot, detail, pose, select, "
-                              "orbit, budget_ms, stroke, perturb, edit_perturbation, impacts, reapply_impacts, undo, redo, sculpt_tool "
-                              "or action");
+                              "orbit, budget_ms, stroke, perturb, edit_perturbation, impacts, reapply_impacts, undo, redo, sculpt_tool, "
+                              "action or sketch");
     ReplayCommand c;
     for (const char* key :
-         {"stroke", "perturb", "edit_perturbation", "impacts", "reapply_impacts", "undo", "redo", "sculpt_tool", "action"})
+         {"stroke", "perturb", "edit_perturbation", "impacts", "reapply_impacts", "undo", "redo", "sculpt_tool", "action", "sketch"})
         if (v.contains(key)) {
             c.kind = ReplayCommand::Kind::Sculpt;
             c.sculpt = readSculptCommand(key, v.at(key), childPath(path, key));
@@ -94,7 +94,7 @@ ReplayCommand readCommand(const nlohmann::json& v, const std::string& path) {
         }
     ObjectReader r(v, path, {"morph", "morph_weights", "screenshot", "detail", "pose", "select", "orbit", "budget_ms",
                              "stroke", "perturb", "edit_perturbation", "impacts", "reapply_impacts", "undo", "redo",
-                             "sculpt_tool", "action"});
+                             "sculpt_tool", "action", "sketch"});
     if (const auto* m = r.optional("morph")) {
         c.kind = ReplayCommand::Kind::Morph;
         const auto xz = readVec2(*m, r.pathOf("morph"));

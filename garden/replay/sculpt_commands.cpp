@@ -69,6 +69,19 @@ SculptCommand readSculptCommand(const std::string& key, const nlohmann::json& v,
         return c;
     }
     if (key == "action") return ActionCommand{readAction(v, path)};
+    if (key == "sketch") {
+        ObjectReader r(v, path, {"sculpture", "mode", "points", "normal", "thickness"});
+        SketchCommand c;
+        c.sculpture = readString(r.required("sculpture"), r.pathOf("sculpture"));
+        c.mode = readSketchMode(r.required("mode"), r.pathOf("mode"));
+        const nlohmann::json& p = r.required("points");
+        if (!p.is_array() || p.size() < 3) throw JsonError(r.pathOf("points"), "expected an array of 3 or more [x, y, z] points");
+        for (std::size_t i = 0; i < p.size(); ++i) c.points.push_back(readVec3(p[i], indexPath(r.pathOf("points"), i)));
+        c.normal = readVec3(r.required("normal"), r.pathOf("normal"));
+        if (r.has("thickness")) c.thickness = readNumber(r.required("thickness"), r.pathOf("thickness"), 0.05, 20.0);
+        r.finish();
+        return c;
+    }
     if (key == "undo" || key == "redo") {
         const int times = readInt(v, path, 1, 1000000);
         if (key == "undo") return UndoCommand{times};

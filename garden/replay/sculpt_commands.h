@@ -42,6 +42,16 @@ struct ImpactsCommand {
     ImpactTool tool;  // as read: metres, cm^3 (converted when run)
 };
 
+// A sketch drawn on a plane (world points on or near it, its normal)
+// joined to the sculpture or cut from it.
+struct SketchCommand {
+    std::string sculpture;
+    SketchMode mode = SketchMode::Add;
+    std::vector<std::array<double, 3>> points;
+    std::array<double, 3> normal{0, 0, 1};
+    double thickness = 1.0;
+};
+
 // The last impact series made on one sculpture fired again at another.
 struct ReapplyImpactsCommand {
     std::string from, to;
@@ -67,10 +77,10 @@ struct ToolCommand { ToolSettings settings; };
 struct ActionCommand { Action action; };
 
 using SculptCommand = std::variant<StrokeCommand, PerturbCommand, UndoCommand, RedoCommand, ToolCommand, ImpactsCommand,
-                                   ReapplyImpactsCommand, EditPerturbationCommand, ActionCommand>;
+                                   ReapplyImpactsCommand, EditPerturbationCommand, ActionCommand, SketchCommand>;
 
 // Reads the command under `key` (stroke, perturb, edit_perturbation,
-// impacts, reapply_impacts, undo, redo, sculpt_tool, action);
+// impacts, reapply_impacts, undo, redo, sculpt_tool, action, sketch);
 // throws JsonError with the JSON path of a bad value.
 SculptCommand readSculptCommand(const std::string& key, const nlohmann::json& v, const std::string& path);
 class GardenSession;

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "frep/box.h"
+#include "garden/sketch/inflation.h"
 
 namespace hg::garden {
 
@@ -108,7 +109,30 @@ struct ImpactSeries {
     double volume = 0.0;
 };
 
-using EditOp = std::variant<Stroke, Perturbation, ImpactSeries>;
+enum class SketchMode { Add, Cut };
+const char* sketchModeName(SketchMode m);
+
+// A sketched outline inflated to a solid (seed 003; garden/sketch,
+// docs/sketching.md) and joined to the sculpture (max(f, G)) or cut from
+// it (min(f, -G)), G the solid's field in voxels clamped to [-band, band]:
+// the union of its cone pieces along the outline's chordal axis, each
+// about the distance into it. What the user drew is kept (the outline and
+// its plane's normal, model frame); the rest is derived from it
+// (resolveSketch, garden/sculpt/sketch_edit.h), so a journal replays it.
+struct SketchSolid {
+    SketchMode mode = SketchMode::Add;
+    std::vector<ModelPoint> outline;   // as drawn: points on or near the plane
+    ModelPoint normal{0.0, 0.0, 1.0};  // the plane's normal
+    double thickness = 1.0;            // half-thickness across the plane over the half-width in it
+    std::optional<MirrorPlane> mirror;  // the solid also on the reflected plane: pieces n..2n-1
+    // Derived: the inflated solid (pieces in plane coordinates, model
+    // units), the reflected plane, each piece's reach.
+    sketch::InflatedSolid solid;
+    std::optional<sketch::SketchPlane> mirroredPlane;
+    std::vector<frep::Box3> reach;
+};
+
+using EditOp = std::variant<Stroke, Perturbation, ImpactSeries, SketchSolid>;
 
 struct Edit {
     std::uint64_t id = 0;  // unique in the sculpture, in creation order

@@ -15,6 +15,7 @@
 #pragma once
 
 #include <cmath>
+#include <optional>
 #include <vector>
 
 #include "frep/hf_math.h"
@@ -153,6 +154,65 @@ V applyPerturbation(const V& f, const V& x, const V& y, const V& z, const Pertur
         out = out + V(p.strength) * (q * q * q);
     }
     return editops::clamp<V>(out, -u.band, u.band);
+}
+
+// One cone piece of a sketch's solid at plane coordinates (u, v) and the
+// squared, thickness-scaled normal coordinate ww: r(t) - |p - q(t)|, model
+// units (garden/sketch/inflation.h).
+template <class V>
+V sketchPieceField(const V& u, const V& v, const V& ww, const sketch::ConePiece& c) {
+    using namespace editops;
+    const double dx = c.b.x - c.a.x, dy = c.b.y - c.a.y, l2 = dx * dx + dy * dy;
+    const V eu = u - V(c.a.x), ev = v - V(c.a.y);
+    if (!(l2 > 0.0)) return V(c.ra) - vsqrt(eu * eu + ev * ev + ww);
+    const V t = clamp<V>((eu * V(dx) + ev * V(dy)) * V(1.0 / l2), 0.0, 1.0);
+    const V ex = eu - t * V(dx), ey = ev - t * V(dy);
+    return V(c.ra) + t * V(c.rb - c.ra) - vsqrt(ex * ex + ey * ey + ww);
+}
+
+// The field after a sketch's listed pieces (0..n-1 on its plane, n..2n-1 on
+// the mirrored one) joined (add) or cut: the tool field G is the max of
+// the pieces' fields in voxels, each clamped to [-band, band], so a piece
+// is exactly -band (and leaves f unchanged) outside its reach.
+template <class V>
+V applySketch(const V& f, const V& x, const V& y, const V& z, const SketchSolid& s,
+              const std::vector<std::uint32_t>& pieces, const FieldUnits& u) {
+    using namespace editops;
+    if (pieces.empty()) return f;
+    const std::size_t n = s.solid.pieces.size();
+    const double inv = 1.0 / u.voxelSize, across = 1.0 / s.solid.thickness;
+    // Plane coordinates, computed once per plane that a listed piece is on.
+    struct Coordinates {
+        V u, v, ww;
+    };
+    const auto onPlane = [&](const sketch::SketchPlane& p) {
+        const V px = x - V(p.origin.x), py = y - V(p.origin.y), pz = z - V(p.origin.z);
+        const V w = (px * V(p.normal.x) + py * V(p.normal.y) + pz * V(p.normal.z)) * V(across);
+        return Coordinates{px * V(p.u.x) + py * V(p.u.y) + pz * V(p.u.z), px * V(p.v.x) + py * V(p.v.y) + pz * V(p.v.z),
+                           w * w};
+    };
+    std::optional<Coordinates> own, reflected;
+    std::optional<V> g;
+    for (std::uint32_t i : pieces) {
+        const bool mirrored = i >= n;
+        std::optional<Coordinates>& c = mirrored ? reflected : own;
+        if (!c) c = onPlane(mirrored ? *s.mirroredPlane : s.solid.plane);
+        const V piece = clamp<V>(sketchPieceField(c->u, c->v, c->ww, s.solid.pieces[mirrored ? i - n : i]) * V(inv),
+                                 -u.band, u.band);
+        g = g ? vmax(*g, piece) : piece;
+    }
+    return s.mode == SketchMode::Add ? vmax(f, *g) : vmin(f, -*g);
+}
+
+// Any edit's listed pieces applied to the field before it: the one
+// dispatch of the grid's tape, the double reference and the export.
+template <class V>
+V applyEdit(const V& f, const V& x, const V& y, const V& z, const Edit& e, const std::vector<std::uint32_t>& pieces,
+            const FieldUnits& u) {
+    if (const auto* s = std::get_if<Stroke>(&e.op)) return applyStroke(f, x, y, z, *s, pieces, u);
+    if (const auto* m = std::get_if<ImpactSeries>(&e.op)) return applyImpacts(f, x, y, z, *m, pieces, u);
+    if (const auto* k = std::get_if<SketchSolid>(&e.op)) return applySketch(f, x, y, z, *k, pieces, u);
+    return applyPerturbation(f, x, y, z, std::get<Perturbation>(e.op), pieces, u);
 }
 
 }  // namespace hg::garden

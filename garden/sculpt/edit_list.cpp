@@ -27,19 +27,12 @@ frep::Box3 hull(const frep::Box3& a, const frep::Box3& b) {
     return r;
 }
 
-template <class V>
-V applyPick(const V& f, const V& x, const V& y, const V& z, const Edit& e, const std::vector<std::uint32_t>& pieces,
-            const FieldUnits& u) {
-    if (const auto* s = std::get_if<Stroke>(&e.op)) return applyStroke(f, x, y, z, *s, pieces, u);
-    if (const auto* m = std::get_if<ImpactSeries>(&e.op)) return applyImpacts(f, x, y, z, *m, pieces, u);
-    return applyPerturbation(f, x, y, z, std::get<Perturbation>(e.op), pieces, u);
-}
-
 }  // namespace
 
 std::size_t pieceCount(const Edit& e) {
     if (const auto* s = std::get_if<Stroke>(&e.op)) return s->segments.size();
     if (const auto* m = std::get_if<ImpactSeries>(&e.op)) return m->impacts.size();
+       if (const auto* k = std::get_if<SketchSolid>(&e.op)) return k->reach.size();
     return std::get<Perturbation>(e.op).mirror ? 2 : 1;
 }
 
@@ -81,6 +74,7 @@ frep::Box3 perturbationReach(const Perturbation& p) {
 frep::Box3 pieceReach(const Edit& e, std::size_t piece) {
     if (const auto* s = std::get_if<Stroke>(&e.op)) return s->segments[piece].reach;
     if (const auto* m = std::get_if<ImpactSeries>(&e.op)) return m->impacts[piece].reach;
+       if (const auto* k = std::get_if<SketchSolid>(&e.op)) return k->reach[piece];
     const auto& p = std::get<Perturbation>(e.op);
     return perturbationReach(piece == 0 ? p : mirrored(p));
 }
@@ -213,13 +207,13 @@ frep::Tape editTape(const EditList& list, const std::vector<EditPick>& picks) {
     frep::TapeBuilder b;
     const frep::Sym x(&b, b.x()), y(&b, b.y()), z(&b, b.z());
     frep::Sym f(&b, b.w());
-    for (const EditPick& pick : picks) f = applyPick(f, x, y, z, list.edits()[pick.edit], pick.pieces, list.units());
+    for (const EditPick& pick : picks) f = applyEdit(f, x, y, z, list.edits()[pick.edit], pick.pieces, list.units());
     return b.finish(f.on(b));
 }
 
 double editedValue(const EditList& list, double base, double x, double y, double z) {
     double f = base;
-    for (const EditPick& pick : list.all()) f = applyPick(f, x, y, z, list.edits()[pick.edit], pick.pieces, list.units());
+    for (const EditPick& pick : list.all()) f = applyEdit(f, x, y, z, list.edits()[pick.edit], pick.pieces, list.units());
     return f;
 }
 
@@ -227,6 +221,9 @@ std::string describe(const Edit& e) {
     if (const auto* m = std::get_if<ImpactSeries>(&e.op))
         return std::to_string(m->impacts.size()) + " impacts" +
                (m->impacts.empty() ? std::string() : std::string(" (") + impactShapeName(m->impacts[0].shape) + ")");
+    if (const auto* k = std::get_if<SketchSolid>(&e.op))
+        return std::string("sketch (") + sketchModeName(k->mode) + "), " + std::to_string(k->outline.size()) +
+               " outline points, " + std::to_string(k->reach.size()) + " pieces";
     if (const auto* s = std::get_if<Stroke>(&e.op))
         return std::string(strokeToolName(s->tool)) + " stroke, radius " + std::to_string(s->radius) + ", " +
                std::to_string(s->path.size()) + " path points, " + std::to_string(s->segments.size()) + " segments";

@@ -31,6 +31,8 @@ const char* strokeToolName(StrokeTool t) {
     return "?";
 }
 
+const char* sketchModeName(SketchMode m) { return m == SketchMode::Add ? "add" : "cut"; }
+
 const char* impactShapeName(ImpactShape s) {
     switch (s) {
         case ImpactShape::Sphere: return "sphere";
@@ -56,6 +58,9 @@ StrokeTool readStrokeTool(const nlohmann::json& v, const std::string& path) {
 }
 QuadricShape readQuadricShape(const nlohmann::json& v, const std::string& path) {
     return readEnum<QuadricShape>(v, path, 2, quadricShapeName);
+}
+SketchMode readSketchMode(const nlohmann::json& v, const std::string& path) {
+    return readEnum<SketchMode>(v, path, 2, sketchModeName);
 }
 ImpactShape readImpactShape(const nlohmann::json& v, const std::string& path) {
     return readEnum<ImpactShape>(v, path, 3, impactShapeName);

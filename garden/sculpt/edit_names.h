@@ -13,6 +13,7 @@ namespace hg::garden {
 
 StrokeTool readStrokeTool(const nlohmann::json& v, const std::string& path);          // carve, add, melt
 QuadricShape readQuadricShape(const nlohmann::json& v, const std::string& path);      // ellipsoid, torus
+SketchMode readSketchMode(const nlohmann::json& v, const std::string& path);          // add, cut
 ImpactShape readImpactShape(const nlohmann::json& v, const std::string& path);        // sphere, chisel, square
 ImpactSpread readImpactSpread(const nlohmann::json& v, const std::string& path);      // uniform, gaussian, cone
 const char* quadricShapeName(QuadricShape s);

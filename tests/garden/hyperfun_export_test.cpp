@@ -259,6 +259,31 @@ TEST_F(HyperFunExportTest, EveryToolMirrorAndMoveExportExactly) {
     EXPECT_LT(gridDifference(s, c, 4000), 1e-4);
 }
 
+// Sketches joined, cut and mirrored export to the same values: the export
+// writes each cone piece with the same template the grid's tape uses.
+TEST_F(HyperFunExportTest, SketchesExportExactly) {
+    GardenSession s(loadGarden(writeGarden()), smallSettings());
+    const int c = s.findSculpture("c");
+    std::vector<std::array<double, 3>> round, oval;
+    for (int i = 0; i < 48; ++i) {
+        const double t = 2.0 * 3.14159265358979323846 * i / 48;
+        round.push_back({2.0 + 0.25 * std::cos(t), 0.5 + 0.25 * std::sin(t), 1.65});
+        oval.push_back({2.0 + 0.35 * std::cos(t), 1.1, 1.1547 + 0.12 * std::sin(t)});
+    }
+    ASSERT_EQ(s.applySketch(c, SketchMode::Add, round, {0.0, 0.0, 1.0}), "");
+    ASSERT_EQ(s.applySketch(c, SketchMode::Cut, oval, {0.0, 1.0, 0.0}, 0.6), "");
+    s.setMirror(c, MirrorPlane{{0.0, 0.0, 0.0}, {1.0, 0.0, 0.0}});
+    std::vector<std::array<double, 3>> side;
+    for (const auto& p : round) side.push_back({p[0] + 0.3 + 0.4 * (p[0] - 2.0), p[1] - 0.2, p[2] - 0.1});
+    ASSERT_EQ(s.applySketch(c, SketchMode::Cut, side, {0.2, 0.0, 1.0}), "");
+    const HyperFunExport e = exportOf(s, c);
+    EXPECT_NE(e.text.find("sketch joined"), std::string::npos);
+    EXPECT_NE(e.text.find("sketch cut"), std::string::npos);
+    expectExact(s, c, 4000);
+    expectExact(s, c, 4000, 7);
+    EXPECT_LT(gridDifference(s, c, 4000), 1e-4);
+}
+
 TEST_F(HyperFunExportTest, TheMorphResultExportsItsBlendAndItsEditsExactly) {
     GardenSession s(loadGarden(writeGarden()), smallSettings());
     finishMorph(s);

@@ -1,0 +1,153 @@
+// Sketches as edits (garden/sculpt/sketch_edit.h, the SketchAction): an
+// outline drawn on a plane is inflated and joined to a sculpture or cut
+// from it, within the call, bounded and exactly local (the grid equals a
+// rebuild from every edit), undone and redone exactly, mirrored, refused
+// with a message when degenerate, journalled and replayed.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include <glm/gtc/matrix_inverse.hpp>
+
+#include "garden/app/garden_session.h"
+#include "garden/replay/replay_runner.h"
+#include "garden/replay/replay_script.h"
+#include "garden/scene/json_reader.h"
+#include "garden/sculpt/sculpture_edits.h"
+#include "garden/sculpt/sketch_edit.h"
+#include "session_garden.h"
+
+namespace hg::garden {
+namespace {
+
+class SketchEditTest : public test::SmallGarden {};
+
+// A circle of `r` metres about `centre` in the plane normal to `normal`
+// (one of the axes), drawn as `n` points.
+std::vector<std::array<double, 3>> circle(const std::array<double, 3>& centre, double r, int axis, int n = 40) {
+    std::vector<std::array<double, 3>> out;
+    const int a = (axis + 1) % 3, b = (axis + 2) % 3;
+    for (int i = 0; i < n; ++i) {
+        const double t = 2.0 * 3.14159265358979323846 * i / n;
+        std::array<double, 3> p = centre;
+        p[static_cast<std::size_t>(a)] += r * std::cos(t);
+        p[static_cast<std::size_t>(b)] += r * std::sin(t);
+        out.push_back(p);
+    }
+    return out;
+}
+
+const voxel::Volume& grid(const GardenSession& s, int i) { return *s.sculptures()[static_cast<std::size_t>(i)].volume; }
+
+TEST_F(SketchEditTest, ACircleJoinedAndAnotherCutChangeTheGridExactlyAndUndo) {
+    GardenSession s(loadGarden(writeGarden()), test::smallSessionSettings());
+    const int c = s.findSculpture("c");  // a ball of radius 0.6 about (2, 0.5, 1.1547)
+    const voxel::Volume original = grid(s, c).clone();
+    // Towards a corner of the box: a ball of 0.1 m about (0.4, 0.5, 0.4),
+    // half out of the surface.
+    ASSERT_EQ(s.applySketch(c, SketchMode::Add, circle({2.4, 0.5, 1.5547}, 0.1, 2), {0, 0, 1}), "");
+    const Sculpture& sc = s.sculptures()[static_cast<std::size_t>(c)];
+    EXPECT_EQ(s.editCount(c), 1u);
+    // Inside the new ball, beyond the old surface: now inside.
+    const voxel::Volume& v = grid(s, c);
+    const auto inside = [&](double wx, double wy, double wz) {
+        const auto m = glm::inverse(sc.modelToWorld) * glm::vec4(wx, wy, wz, 1.0f);
+        return v.value(v.frame.indexOf(0, m.x), v.frame.indexOf(1, m.y), v.frame.indexOf(2, m.z)) > 0.0f;
+    };
+    EXPECT_FALSE(original.value(original.frame.indexOf(0, 0.45), original.frame.indexOf(1, 0.5),
+                                original.frame.indexOf(2, 0.45)) > 0.0f);
+    EXPECT_TRUE(inside(2.45, 0.5, 1.1547 + 0.45));
+    EXPECT_FALSE(inside(2.55, 0.5, 1.1547 + 0.5));
+    EXPECT_EQ(test::differingVoxels(v, *sc.edits->rebuild()), 0) << "the box update is the whole rebuild";
+    // On the top: a ball of 0.2 m cut.
+    ASSERT_EQ(s.applySketch(c, SketchMode::Cut, circle({2.0, 1.1, 1.1547}, 0.2, 1), {0, 1, 0}), "");
+    EXPECT_FALSE(inside(2.0, 1.0, 1.1547));
+    EXPECT_TRUE(inside(2.0, 0.5, 1.1547));
+    EXPECT_EQ(test::differingVoxels(v, *sc.edits->rebuild()), 0);
+    const voxel::Volume both = v.clone();
+    ASSERT_TRUE(s.undo());
+    ASSERT_TRUE(s.undo());
+    EXPECT_EQ(test::differingVoxels(v, original), 0) << "undone exactly";
+    ASSERT_TRUE(s.redo());
+    ASSERT_TRUE(s.redo());
+    EXPECT_EQ(test::differingVoxels(v, both), 0) << "redone exactly";
+}
+
+TEST_F(SketchEditTest, AMirroredSketchActsOnBothSides) {
+    GardenSession s(loadGarden(writeGarden()), test::smallSessionSettings());
+    const int c = s.findSculpture("c");
+    s.setMirror(c, MirrorPlane{{0.0, 0.0, 0.0}, {1.0, 0.0, 0.0}});
+    ASSERT_EQ(s.applySketch(c, SketchMode::Cut, circle({2.4, 0.5, 1.4547}, 0.12, 2), {0, 0, 1}), "");
+    const Sculpture& sc = s.sculptures()[static_cast<std::size_t>(c)];
+    const auto& k = std::get<SketchSolid>(sc.edits->list().edits().back().op);
+    EXPECT_EQ(k.reach.size(), 2 * k.solid.pieces.size());
+    const voxel::Volume& v = grid(s, c);
+    const auto at = [&](double mx, double my, double mz) {
+        return v.value(v.frame.indexOf(0, mx), v.frame.indexOf(1, my), v.frame.indexOf(2, mz));
+    };
+    EXPECT_LT(at(0.4, 0.5, 0.3), 0.0f) << "cut where drawn";
+    EXPECT_LT(at(-0.4, 0.5, 0.3), 0.0f) << "and in the mirror";
+    EXPECT_GT(at(0.0, 0.5, 0.3), 0.0f) << "not between";
+    EXPECT_EQ(test::differingVoxels(v, *sc.edits->rebuild()), 0);
+}
+
+TEST_F(SketchEditTest, DegenerateSketchesAreRefusedAndChangeNothing) {
+    GardenSession s(loadGarden(writeGarden()), test::smallSessionSettings());
+    const int c = s.findSculpture("c");
+    EXPECT_NE(s.applySketch(c, SketchMode::Add, {{2.0, 0.5, 1.7}, {2.1, 0.5, 1.7}}, {0, 0, 1}), "");
+    // A line drawn back and forth has no area.
+    const std::string flat =
+        s.applySketch(c, SketchMode::Add, {{1.8, 0.5, 1.7}, {2.0, 0.5, 1.7}, {2.2, 0.5, 1.7}, {2.0, 0.5, 1.7}, {1.8, 0.5, 1.7}},
+                      {0, 0, 1});
+    EXPECT_NE(flat, "");
+    EXPECT_EQ(s.applySketch(c, SketchMode::Add, circle({2.0, 0.5, 1.6547}, 0.15, 2), {0, 0, 0}),
+              "the sketch's plane has no normal");
+    // A figure eight.
+    std::vector<std::array<double, 3>> eight;
+    for (int i = 0; i < 80; ++i) {
+        const double t = 2.0 * 3.14159265358979323846 * i / 80;
+        eight.push_back({2.0 + 0.3 * std::sin(t), 0.5 + 0.15 * std::sin(2.0 * t), 1.7});
+    }
+    EXPECT_NE(s.applySketch(c, SketchMode::Add, eight, {0, 0, 1}), "");
+    EXPECT_EQ(s.editCount(c), 0u);
+}
+
+TEST_F(SketchEditTest, ASketchIsJournalledAndAReplayCommandDrawsIt) {
+    const std::string garden = writeGarden();
+    const ReplayScript script = parseReplayScript(R"({"garden": ")" + garden + R"(", "steps": [{"commands": [
+        {"sketch": {"sculpture": "c", "mode": "add", "normal": [0, 0, 1],
+                    "points": [[2.15, 0.5, 1.65], [2.0, 0.65, 1.65], [1.85, 0.5, 1.65], [2.0, 0.35, 1.65]]}},
+        {"sketch": {"sculpture": "c", "mode": "cut", "normal": [0, 1, 0], "thickness": 0.5,
+                    "points": [[1.8, 1.1, 1.0], [2.2, 1.1, 1.0], [2.2, 1.1, 1.3], [1.8, 1.1, 1.3]]}}]},
+        {"until_idle": true, "frames": 2000}]})",
+                                                  "sketch.json", "");
+    GardenSession s(loadGarden(garden), test::smallSessionSettings());
+    test::ActionList journal;
+    s.setJournal(&journal);
+    const ReplayResult r = runReplay(script, s, nullptr, {});
+    ASSERT_EQ(r.error, "");
+    const int c = s.findSculpture("c");
+    EXPECT_EQ(s.editCount(c), 2u);
+    ASSERT_EQ(journal.actions.size(), 2u);
+    const auto& cut = std::get<SketchAction>(journal.actions[1]);
+    EXPECT_EQ(cut.mode, SketchMode::Cut);
+    EXPECT_EQ(cut.thickness, 0.5);
+    // Through the journal's text and back: the same grid, bit for bit.
+    std::vector<Action> read;
+    for (const Action& a : journal.actions) read.push_back(parseAction(actionJson(a), "journal"));
+    GardenSession again(loadGarden(garden), test::smallSessionSettings());
+    ASSERT_EQ(again.restore(read), "");
+    EXPECT_EQ(test::differingVoxels(grid(s, c), grid(again, c)), 0);
+    // A bad mode is refused at its JSON path.
+    try {
+        parseReplayScript(R"({"garden": "g.json", "steps": [{"commands": [{"sketch": {"sculpture": "c", "mode": "new",
+            "normal": [0, 0, 1], "points": [[0, 0, 0], [1, 0, 0], [0, 1, 0]]}}]}]})",
+                          "bad.json", "");
+        ADD_FAILURE() << "an unknown mode was read";
+    } catch (const JsonError& e) {
+        EXPECT_EQ(e.path(), "$.steps[0].commands[0].sketch.mode");
+    }
+}
+
+}  // namespace
+}  // namespace hg::garden
