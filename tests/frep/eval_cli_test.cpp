@@ -202,7 +202,7 @@ TEST_F(EvalCli, AnswersEachLineBeforeReadingTheNextWithoutLoadingOpenVdb) {
     ASSERT_EQ(::write(in[1], "0 0 0\n", 6), 6);
     EXPECT_EQ(readLine(out[0]), "1\n");
     // Still running, waiting for its next line: eval and check never load
-    // OpenVDB (it took ~40 ms of start-up), see garden/cli/full_executable.h.
+    // OpenVDB (it took ~40 ms of start-up), see cli/full_executable.h.
     std::ifstream maps("/proc/" + std::to_string(pid) + "/maps");
     std::string m((std::istreambuf_iterator<char>(maps)), std::istreambuf_iterator<char>());
     EXPECT_NE(m.find("hypergarden"), std::string::npos);

@@ -35,7 +35,7 @@ const std::map<std::string, int>& layers() {
         {"garden/desktop", 9},
         {"xr", 10},
         {"xr/mock_runtime", 11},
-        {"garden/cli", 12},    {"cli", 12},
+        {"cli", 12},
     };
     return l;
 }

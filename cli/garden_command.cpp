@@ -1,5 +1,5 @@
 // No subcommand: the desktop garden.
-#include "garden/cli/commands.h"
+#include "cli/commands.h"
 #include "garden/desktop/desktop_app.h"
 #include "xr/xr_garden.h"
 

@@ -8,9 +8,9 @@
 #include <cstdio>
 #include <iostream>
 
-#include "garden/cli/commands.h"
+#include "cli/commands.h"
 #ifdef HG_CLI_KERNEL_ONLY
-#include "garden/cli/full_executable.h"
+#include "cli/full_executable.h"
 #endif
 
 int main(int argc, char** argv) {

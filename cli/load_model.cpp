@@ -1,4 +1,4 @@
-#include "garden/cli/load_model.h"
+#include "cli/load_model.h"
 
 #include <cstdlib>
 #include <fstream>

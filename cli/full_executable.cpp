@@ -1,4 +1,4 @@
-#include "garden/cli/full_executable.h"
+#include "cli/full_executable.h"
 
 #include <unistd.h>
 

@@ -10,7 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "garden/cli/commands.h"
+#include "cli/commands.h"
 #include "garden/gesture/gesture_evaluation.h"
 #include "garden/gesture/gesture_json.h"
 #include "garden/gesture/gesture_weights.h"

@@ -11,9 +11,9 @@
 #include <optional>
 
 #include "garden/app/garden_session.h"
-#include "garden/cli/commands.h"
-#include "garden/cli/load_model.h"
-#include "garden/cli/progress_bar.h"
+#include "cli/commands.h"
+#include "cli/load_model.h"
+#include "cli/progress_bar.h"
 #include "garden/export/export_file.h"
 #include "garden/export/hyperfun_export.h"
 #include "garden/session/journal.h"

@@ -22,9 +22,9 @@
 #include "frep/eval_interval.h"
 #include "frep/interpreter.h"
 #include "frep/tape_specializer.h"
-#include "garden/cli/commands.h"
-#include "garden/cli/load_model.h"
-#include "garden/cli/point_lines.h"
+#include "cli/commands.h"
+#include "cli/load_model.h"
+#include "cli/point_lines.h"
 
 namespace hg::garden::cli {
 namespace {

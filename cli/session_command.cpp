@@ -20,7 +20,7 @@
 #include <nlohmann/json.hpp>
 
 #include "garden/app/garden_session.h"
-#include "garden/cli/commands.h"
+#include "cli/commands.h"
 #include "garden/sculpt/sculpture_edits.h"
 #include "garden/session/session_folder.h"
 #include "io/checked_write.h"

@@ -6,8 +6,8 @@
 
 #include "frep/bounds.h"
 #include "frep/parser.h"
-#include "garden/cli/commands.h"
-#include "garden/cli/load_model.h"
+#include "cli/commands.h"
+#include "cli/load_model.h"
 
 namespace hg::garden::cli {
 

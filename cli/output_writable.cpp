@@ -1,6 +1,6 @@
 #include <iostream>
 
-#include "garden/cli/load_model.h"
+#include "cli/load_model.h"
 #include "io/checked_write.h"
 
 namespace hg::garden::cli {

@@ -8,9 +8,9 @@
 #include <iostream>
 #include <memory>
 
-#include "garden/cli/commands.h"
-#include "garden/cli/load_model.h"
-#include "garden/cli/progress_bar.h"
+#include "cli/commands.h"
+#include "cli/load_model.h"
+#include "cli/progress_bar.h"
 #include "voxel/dense_field.h"
 #include "voxel/grid_stats.h"
 #include "voxel/memory_guard.h"

@@ -1,4 +1,4 @@
-#include "garden/cli/point_lines.h"
+#include "cli/point_lines.h"
 
 #include <unistd.h>
 

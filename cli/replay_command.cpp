@@ -5,7 +5,7 @@
 #include <iostream>
 
 #include "garden/app/garden_session.h"
-#include "garden/cli/commands.h"
+#include "cli/commands.h"
 #include "garden/desktop/offscreen_garden.h"
 #include "garden/replay/replay_runner.h"
 #include "garden/scene/json_reader.h"

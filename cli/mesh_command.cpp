@@ -7,8 +7,8 @@
 #include <cstdio>
 #include <iostream>
 
-#include "garden/cli/commands.h"
-#include "garden/cli/load_model.h"
+#include "cli/commands.h"
+#include "cli/load_model.h"
 #include "polygonizer/export_mesher.h"
 #include "polygonizer/mesh_validation.h"
 #include "polygonizer/stl_io.h"

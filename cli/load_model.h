@@ -8,7 +8,7 @@
 
 #include "frep/bounds.h"
 #include "frep/model.h"
-#include "garden/cli/commands.h"
+#include "cli/commands.h"
 
 namespace hg::garden::cli {
 
