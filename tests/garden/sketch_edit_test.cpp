@@ -149,5 +149,25 @@ TEST_F(SketchEditTest, ASketchIsJournalledAndAReplayCommandDrawsIt) {
     }
 }
 
+// content/replays/sketching_session.json (the README's sketching replay)
+// plays on the default garden: a leaf and a ball joined to a column, a
+// groove cut in its capital, the groove undone.
+TEST(SketchingReplay, TheContentReplayPlays) {
+    const ReplayScript script =
+        loadReplayScript(std::string(HG_SOURCE_DIR) + "/content/replays/sketching_session.json");
+    SessionSettings settings = test::smallSessionSettings();
+    settings.sculptureResolution = 48;
+    settings.morphResolution = 32;
+    settings.remeshChunksPerFrame = 0;
+    GardenSession s(loadGarden(script.garden), settings);
+    const ReplayResult r = runReplay(script, s, nullptr, {});
+    ASSERT_EQ(r.error, "");
+    const int column = s.findSculpture("column east");
+    ASSERT_GE(column, 0);
+    EXPECT_EQ(s.editCount(column), 2u) << "two joined; the cut undone (redoable)";
+    const Sculpture& sc = s.sculptures()[static_cast<std::size_t>(column)];
+    EXPECT_EQ(sc.edits->redoCount(), 1u);
+}
+
 }  // namespace
 }  // namespace hg::garden
