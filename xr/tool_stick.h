@@ -1,24 +1,22 @@
-// The tool hand's thumbstick reshapes the tool live (docs/design.md §6, §8): up
-// and down grow and shrink its size (radius, perturbation radii, impact
-// size), right and left strengthen and weaken it (perturbation strength,
-// impact compaction volume). Full tilt doubles or halves in a second;
-// sizes and strengths stay in sane ranges.
+// The tool hand's thumbstick as tool intents (garden/hands/tool_intents.h;
+// docs/design.md §6, §8): up and down grow and shrink the tool in hand (with
+// the move tool, the selected sculpture's scale), right and left strengthen
+// and weaken it. Full tilt doubles or halves in a second. The session
+// applies the intents within the one set of bounds every device shares
+// (garden/sculpt/tool_settings.h), and a push held out of the dead zone is
+// one gesture: one undo step for the selection's scale.
 #pragma once
 
 #include <glm/vec2.hpp>
 
-#include "garden/sculpt/tool_settings.h"
+#include "garden/hands/tool_intents.h"
 
 namespace hg::xr {
 
-constexpr double kMinToolSize = 0.005, kMaxToolSize = 1.0;  // metres
-constexpr double kMinToolStrength = 0.1, kMaxToolStrength = 20.0;  // voxels (perturb), cm^3 (impacts)
 constexpr float kStickDeadZone = 0.15f;
 
-void adjustTool(garden::ToolSettings& tool, glm::vec2 stick, double dt);
-
-// With the move tool the stick's up and down scale the selected sculpture
-// instead, at the same rate: the factor for this frame (1 in the dead zone).
-double selectionScaleFactor(glm::vec2 stick, double dt);
+// This frame's intents from the stick, held `dt` seconds: size and
+// strength factors (1 in the dead zone), `held` while y is out of it.
+garden::ToolIntents stickIntents(glm::vec2 stick, double dt);
 
 }  // namespace hg::xr

@@ -273,11 +273,10 @@ private:
             if (panelUi_.update(session_, panel_, info_.interactionProfile, user_, static_cast<float>(periodMs / 1000.0)))
                 keepSettings();
             if (panel_.ownsTrigger()) world.tool.trigger = 0.0f;  // the trigger is the panel's
-            // The tool stick reshapes the tool; the navigator must not fly with it.
-            if (session_.tool().kind == garden::ToolSettings::Kind::Move)
-                scaleSelection(world.tool, dt);
-            else
-                adjustTool(session_.tool(), world.tool.thumbstick, dt);
+            // The tool stick reshapes the tool (with the move tool, scales
+            // the selection) as intents the session applies; the navigator
+            // must not fly with it.
+            world.intents = stickIntents(world.tool.thumbstick, dt);
             world.tool.thumbstick = glm::vec2(0.0f);
             toolHand_ = world.tool;
             wasStroking_ = session_.stroking();
@@ -332,21 +331,6 @@ private:
         }
         headset_.endFrame(f, render, kNearZ, kFarZ);
         return drawn;
-    }
-
-    // The move tool's stick: up and down scale the selected sculpture live,
-    // one undoable move per push (not while the trigger drags it).
-    void scaleSelection(const garden::HandState& tool, double dt) {
-        const int s = session_.selected();
-        const double factor = selectionScaleFactor(tool.thumbstick, dt);
-        if (s < 0 || tool.trigger > 0.5f || factor == 1.0) {
-            if (scalingSelection_) session_.endLiveMove();
-            scalingSelection_ = false;
-            return;
-        }
-        garden::Placement p = session_.sculptures()[static_cast<std::size_t>(s)].placement;
-        p.scale = std::clamp(p.scale * factor, garden::kMinSculptureScale, garden::kMaxSculptureScale);
-        scalingSelection_ = session_.moveSculptureLive(s, p).empty();
     }
 
     // The tool in the tool hand, as the desktop draws it where the mouse
@@ -437,7 +421,6 @@ private:
     glm::vec3 startEye_{0.0f};
     float startYaw_ = 0.0f;
     bool menuHeld_ = false;
-    bool scalingSelection_ = false;  // the move tool's stick holds a live move
     // This frame's, for its views: the runtime's frame, the tool hand (world),
     // and whether a stroke was under way before the frame's input.
     const HeadsetFrame* eyes_ = nullptr;

@@ -239,6 +239,7 @@ void GardenSession::uploadAndRender(ViewSink& views) {
 void GardenSession::input(const Hands& hands, double dt) {
     scheduler_.beginStage(Stage::Input);
     navigator_.update(hands, dt);
+    applyToolIntents(hands);
     sculptWithHands(hands);
     if (tool_.kind != ToolSettings::Kind::None) return;  // the trigger sculpts
     // The tool's ray on the morph triangle drawn on the ground picks the

@@ -285,6 +285,9 @@ private:
     static bool finite3(const std::array<double, 3>& p);
     SculptureEdits& editsOf(int sculpture);
     void showChanged(int sculpture, const voxel::IndexBox& box);
+    // The hands' tool intents applied (garden/app/tool_intents.cpp), before
+    // the tools read the hands.
+    void applyToolIntents(const Hands& hands);
     void sculptWithHands(const Hands& hands);
     void record(const Action& r);
     bool stepHistory(std::vector<UndoEntry>& from, std::vector<UndoEntry>& to, bool undoing);
@@ -335,6 +338,7 @@ private:
     std::optional<MoveDrag> moveDrag_;
     int liveMove_ = -1;                // the sculpture moved live, or -1
     Placement liveMoveFrom_;           // its placement before the drag
+    bool intentScaling_ = false;       // the live move is the tool intents' selection scaling
 };
 
 }  // namespace hg::garden

@@ -187,7 +187,7 @@ int runDesktopOn(GardenSession& session, GardenWindow& gardenWindow, const Deskt
     if (const auto& w = session.morphWeights())
         selector = trianglePoint(glm::vec3(static_cast<float>(w->barycentric[0]), static_cast<float>(w->barycentric[1]),
                                            static_cast<float>(w->barycentric[2])));
-    float speed = 1.0f;
+    DesktopCarry carry;  // the walking speed, the wheel burst
     glm::ivec2 fb(1);
     const float fovY = static_cast<float>(session.settings().fovY);
     std::optional<Pose> aim;  // the mouse's ray, unless a panel has the mouse
@@ -263,7 +263,7 @@ int runDesktopOn(GardenSession& session, GardenWindow& gardenWindow, const Deskt
             in.viewport = glm::vec2(fb);
             const glm::mat4 projection = glm::perspective(
                 fovY, static_cast<float>(fb.x) / static_cast<float>(std::max(fb.y, 1)), 0.05f, 500.0f);
-            hands = desktopHands(in, pressed, session, projection, speed);
+            hands = desktopHands(in, pressed, session, projection, dt, carry);
             // The tool where the mouse points, unless it points at a panel.
             aim = mouse ? std::optional<Pose>(hands.tool.aim) : std::nullopt;
             if (quitRequested(pressed)) window.setShouldClose(true);

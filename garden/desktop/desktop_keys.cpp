@@ -5,11 +5,10 @@
 
 #include <imgui.h>
 
-#include <algorithm>
 #include <cmath>
 
 #include "garden/app/garden_session.h"
-#include "garden/app/sculpture_gizmos.h"
+#include "garden/app/tool_intents.h"
 
 namespace hg::garden {
 
@@ -61,39 +60,34 @@ bool quitRequested(const DesktopKeys& keys) {
     return keys.quit && !(ImGui::GetCurrentContext() && ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId));
 }
 
-void applyToolKeys(const DesktopKeys& keys, float& wheel, GardenSession& session) {
-    ToolSettings& tool = session.tool();
-    if (keys.tool) tool.kind = *keys.tool;
-    if (keys.reverse) tool.reverse = !tool.reverse;
-    const int selected = session.selected();
-    if (keys.mirror && selected >= 0) {
-        const Sculpture& s = session.sculptures()[static_cast<std::size_t>(selected)];
-        if (!s.missing()) session.setMirror(selected, s.mirror ? std::nullopt : std::optional<MirrorPlane>(centralMirror(s)));
+ToolIntents desktopIntents(const DesktopKeys& keys, float& wheel, const GardenSession& session, double dt,
+                           DesktopCarry& carry) {
+    ToolIntents intents;
+    if (keys.tool) intents.tool = toolChoiceOf(*keys.tool);
+    intents.reverse = keys.reverse;
+    if (keys.mirror) intents.mirror = MirrorIntent::Toggle;
+    if (keys.sizeSteps != 0) intents.size = std::pow(kToolSizeStep, keys.sizeSteps);
+    carry.sinceScaleStep += dt;
+    const ToolSettings::Kind kind = keys.tool ? *keys.tool : session.tool().kind;
+    if (kind == ToolSettings::Kind::Move && session.selected() >= 0) {
+        if (wheel != 0.0f) intents.selectionScale = std::pow(kToolSizeStep, static_cast<double>(wheel));
+        if (wheel != 0.0f || keys.sizeSteps != 0) carry.sinceScaleStep = 0.0;
+        wheel = 0.0f;
+        intents.held = carry.sinceScaleStep < kScaleBurstSeconds;
     }
-    if (tool.kind == ToolSettings::Kind::Move) {
-        const float steps = static_cast<float>(keys.sizeSteps) + (selected >= 0 ? wheel : 0.0f);
-        if (selected >= 0) wheel = 0.0f;
-        if (steps != 0.0f && selected >= 0) {
-            const Placement before = session.sculptures()[static_cast<std::size_t>(selected)].placement;
-            Placement p = before;
-            p.scale = std::clamp(p.scale * std::pow(kToolSizeStep, static_cast<double>(steps)), kMinSculptureScale,
-                                 kMaxSculptureScale);
-            if (p.scale != before.scale) session.moveSculpture(selected, p);
-        }
-        return;
-    }
-    if (keys.sizeSteps != 0) scaleToolSize(tool, std::pow(kToolSizeStep, keys.sizeSteps));
+    return intents;
 }
 
-Hands desktopHands(DesktopInput in, const DesktopKeys& keys, GardenSession& session, const glm::mat4& projection,
-                   float& speed) {
-    applyToolKeys(keys, in.wheel, session);
+Hands desktopHands(DesktopInput in, const DesktopKeys& keys, const GardenSession& session, const glm::mat4& projection,
+                   double dt, DesktopCarry& carry) {
+    const ToolIntents intents = desktopIntents(keys, in.wheel, session, dt, carry);
     in.undo = keys.undo;
     in.redo = keys.redo;
     in.flyToggle = keys.fly;
     in.orbitToggle = keys.orbit;
-    const Hands hands = mapDesktop(in, session.view(), projection, DesktopMapping{}, speed);
-    speed = hands.speedScale;
+    Hands hands = mapDesktop(in, session.view(), projection, DesktopMapping{}, carry.speed);
+    hands.intents = intents;
+    carry.speed = hands.speedScale;
     return hands;
 }
 

@@ -1,8 +1,9 @@
 // The desktop's keys (the full list is in garden/hands/desktop_hands.h): a
 // GLFW key press becomes a command, gathered between frames in DesktopKeys.
 // The frame hands undo, redo and the navigation toggles to the hands
-// (DesktopInput, mapDesktop); the tool keys change what the tool hand holds
-// and are applied to the session here.
+// (DesktopInput, mapDesktop); the tool keys and the wheel become the
+// hands' tool intents (garden/hands/tool_intents.h), which the session
+// applies as it applies the headset's (GardenSession::applyToolIntents).
 #pragma once
 
 #include <optional>
@@ -38,22 +39,36 @@ bool addKeyPress(DesktopKeys& keys, int glfwKey, int glfwMods);
 // panels (open in the last frame): then it is the panel's.
 bool quitRequested(const DesktopKeys& keys);
 
-// The size factor of one [ or ] press.
+// The size factor of one [ or ] press, and of one wheel notch scaling the
+// selection.
 constexpr double kToolSizeStep = 1.25;
+// Wheel notches and [ ] presses scaling the selection less than this apart
+// (seconds) are one burst: one live move, one undo step.
+constexpr double kScaleBurstSeconds = 0.4;
 
-// Applies the tool keys: the tool picked; its size (scaleToolSize), or with
-// the move tool the selected sculpture's scale by `wheel` notches and the
-// size steps together (one undoable move; the wheel is consumed, set to 0,
-// else left for the walking speed); reverse toggled; the selected
-// sculpture's mirror plane (centralMirror) on or off.
-void applyToolKeys(const DesktopKeys& keys, float& wheel, GardenSession& session);
+// What the desktop's hands keep from frame to frame.
+struct DesktopCarry {
+    float speed = 1.0f;                          // the walking speed scale
+    double sinceScaleStep = kScaleBurstSeconds;  // seconds since the last notch or press that scaled the selection
+};
 
-// One desktop frame's hands: the tool keys applied to the session, then
-// `in` with this frame's undo, redo, fly and orbit presses (and the wheel
-// the tool keys left) mapped onto hands (mapDesktop) with the session's
-// view and `projection`. `speed` is the walking speed scale, kept from
-// frame to frame. The window and the tests both run this.
-Hands desktopHands(DesktopInput in, const DesktopKeys& keys, GardenSession& session, const glm::mat4& projection,
-                   float& speed);
+// The tool keys and the wheel as this frame's tool intents: the tool
+// picked; [ and ] as size steps (x1.25 a press: the tool's size, or with
+// the move tool the selection's scale); with the move tool and a selection
+// the wheel's notches as selection scale steps (the wheel is consumed, set
+// to 0, else left for the walking speed); R the reverse toggled; M the
+// selected sculpture's mirror plane toggled. Steps that scale the selection
+// within kScaleBurstSeconds of each other keep the gesture `held`. `dt` is
+// the time since the last frame.
+ToolIntents desktopIntents(const DesktopKeys& keys, float& wheel, const GardenSession& session, double dt,
+                           DesktopCarry& carry);
+
+// One desktop frame's hands: `in` with this frame's undo, redo, fly and
+// orbit presses (and the wheel the tool keys left) mapped onto hands
+// (mapDesktop) with the session's view and `projection`, carrying the
+// tool keys' intents (desktopIntents). The window and the tests both run
+// this.
+Hands desktopHands(DesktopInput in, const DesktopKeys& keys, const GardenSession& session, const glm::mat4& projection,
+                   double dt, DesktopCarry& carry);
 
 }  // namespace hg::garden

@@ -6,7 +6,8 @@
 //   Q / E         down / up (thumbstick of the tool hand, y axis)
 //   right button  mouse look (drag)
 //   wheel         walking speed (each notch x1.25); with the move tool and
-//                 a selection, the selected sculpture's scale instead
+//                 a selection, the selected sculpture's scale instead (a
+//                 tool intent; notches less than 0.4 s apart: one undo)
 //   left button   tool trigger; the tool hand's aim is the ray under the mouse
 //   Shift         held: the tool hand's secondary button (the move tool
 //                 turns the sculpture instead of moving it)
@@ -15,12 +16,12 @@
 //   Ctrl+Z        undo (the tool hand's undo button)
 //   Ctrl+Shift+Z, Ctrl+Y  redo (its redo button)
 //
-// What the tool hand holds is set by keys that are not hands
-// (garden/desktop/desktop_keys.h): 0 none (the morph selector), 1 carve,
-// 2 add, 3 melt, 4 perturb, 5 impacts, 6 move; [ and ] the tool's size
-// (x1.25 a press); R reverse; M the selected sculpture's mirror plane; and
-// G the detail sphere, F9 the headset (and back), F12 a screenshot, Esc
-// quits. Keys and clicks that ImGui wants are not taken.
+// What the tool hand holds is set by keys that become the hands' tool
+// intents (garden/desktop/desktop_keys.h, garden/hands/tool_intents.h):
+// 0 none (the morph selector), 1 carve, 2 add, 3 melt, 4 perturb,
+// 5 impacts, 6 move; [ and ] the tool's size (x1.25 a press); R reverse;
+// M the selected sculpture's mirror plane. Other keys: G the detail
+// sphere, F9 the headset (and back), F12 a screenshot, Esc quits. Keys and clicks that ImGui wants are not taken.
 #pragma once
 
 #include <glm/mat4x4.hpp>

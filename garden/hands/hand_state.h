@@ -10,6 +10,8 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "garden/hands/tool_intents.h"
+
 namespace hg::garden {
 
 struct Pose {
@@ -55,6 +57,7 @@ struct Hands {
     HandState navigation;  // the other hand: moving about, grabbing the world
     glm::vec2 look{0.0f};  // radians to turn this frame (yaw right, pitch up): desktop mouse look, XR snap turn
     float speedScale = 1.0f;  // multiplies walking speed (desktop: the wheel)
+    ToolIntents intents;      // what the user asked of the tool this frame (garden/hands/tool_intents.h)
 };
 
 }  // namespace hg::garden

@@ -51,38 +51,40 @@ bool chooseEnum(const char* label, E& value, const char* const (&names)[N], cons
     return true;
 }
 
-void strokeParameters(ToolSettings& t, const ToolWidgetLook& look) {
-    sliderDouble(keyed("radius (m)  [ ]", "radius (m)", look), t.radius, kMinToolRadius, 1.0, "%.3f", look, true);
-    if (t.kind == Kind::Melt) sliderDouble("softness (voxels)", t.softness, 0.25, 16.0, "%.2f", look, true);
+bool strokeParameters(ToolSettings& t, const ToolWidgetLook& look) {
+    bool changed = sliderDouble(keyed("radius (m)  [ ]", "radius (m)", look), t.radius, kMinToolSize, kMaxToolSize, "%.3f", look, true);
+    if (t.kind == Kind::Melt) changed |= sliderDouble("softness (voxels)", t.softness, 0.25, 16.0, "%.2f", look, true);
+    return changed;
 }
 
-void perturbParameters(ToolSettings& t, const ToolWidgetLook& look) {
+bool perturbParameters(ToolSettings& t, const ToolWidgetLook& look) {
     constexpr const char* shapes[] = {"ellipsoid", "torus"};
-    chooseEnum("shape", t.shape, shapes, look);
+    bool changed = chooseEnum("shape", t.shape, shapes, look);
     // The radii per axis in one row: dragged a millimetre a pixel, or typed
-    // (Ctrl+click).
-    const double lo = 0.005, hi = 2.0;
+    // (Ctrl+click); times the scale, each within the tools' size bounds.
+    const double lo = kMinToolSize / t.perturbScale, hi = kMaxToolSize / t.perturbScale;
     ImGui::SetNextItemWidth(look.fieldWidth);
     if (t.shape == QuadricShape::Ellipsoid) {
-        ImGui::DragScalarN("radii x y z (m)", ImGuiDataType_Double, t.radii.data(), 3, 0.001f, &lo, &hi, "%.3f",
+        changed |= ImGui::DragScalarN("radii x y z (m)", ImGuiDataType_Double, t.radii.data(), 3, 0.001f, &lo, &hi, "%.3f",
                             ImGuiSliderFlags_AlwaysClamp);
     } else {
-        ImGui::DragScalarN("ring R, tube r (m)", ImGuiDataType_Double, t.radii.data(), 2, 0.001f, &lo, &hi, "%.3f",
+        changed |= ImGui::DragScalarN("ring R, tube r (m)", ImGuiDataType_Double, t.radii.data(), 2, 0.001f, &lo, &hi, "%.3f",
                             ImGuiSliderFlags_AlwaysClamp);
         if (t.radii[1] >= t.radii[0]) ImGui::TextColored(ImVec4(1, 0.5f, 0.3f, 1), "the tube must be thinner than the ring");
     }
-    sliderDouble("strength (voxels)", t.strength, 0.1, 50.0, "%.2f", look, true);
-    sliderDouble(keyed("scale  [ ]", "scale", look), t.perturbScale, kMinPerturbScale, kMaxPerturbScale, "%.2f", look, true);
+    changed |= sliderDouble("strength (voxels)", t.strength, kMinPerturbStrength, kMaxPerturbStrength, "%.2f", look, true);
+    changed |= sliderDouble(keyed("scale  [ ]", "scale", look), t.perturbScale, kMinPerturbScale, kMaxPerturbScale, "%.2f", look, true);
     const bool pulls = t.perturbStrength() > 0;
     ImGui::TextDisabled("%s", pulls ? keyed("pulls (R: pushes)", "pulls", look) : keyed("pushes (R: pulls)", "pushes", look));
+    return changed;
 }
 
-void impactParameters(ToolSettings& t, const ToolWidgetLook& look) {
+bool impactParameters(ToolSettings& t, const ToolWidgetLook& look) {
     constexpr const char* shapes[] = {"sphere", "V chisel", "square punch"};
     constexpr const char* spreads[] = {"uniform disc", "gaussian", "cone"};
     chooseEnum("impact", t.impactShape, shapes, look);
-    sliderDouble(keyed("size (m)  [ ]", "size (m)", look), t.impactSize, kMinImpactSize, kMaxImpactSize, "%.3f", look, true);
-    sliderDouble("compaction (cm3)", t.compactionCm3, 0.01, 100.0, "%.2f", look, true);
+    bool changed = sliderDouble(keyed("size (m)  [ ]", "size (m)", look), t.impactSize, kMinImpactSize, kMaxImpactSize, "%.3f", look, true);
+    changed |= sliderDouble("compaction (cm3)", t.compactionCm3, kMinCompactionCm3, kMaxCompactionCm3, "%.2f", look, true);
     chooseEnum("spread", t.spread, spreads, look);
     if (t.spread == ImpactSpread::Cone) sliderDouble("half-angle (deg)", t.spreadSize, 0.5, 60.0, "%.1f", look);
     else
@@ -94,6 +96,7 @@ void impactParameters(ToolSettings& t, const ToolWidgetLook& look) {
     const std::uint64_t step = 1;
     ImGui::SetNextItemWidth(look.fieldWidth);
     ImGui::InputScalar("seed", ImGuiDataType_U64, &t.seed, look.choiceWidth > 0.0f ? &step : nullptr);
+    return changed;
 }
 
 }  // namespace
@@ -122,15 +125,19 @@ bool chooseOne(const char* label, int& index, const char* const names[], int cou
 }
 
 void toolParameters(ToolSettings& t, const ToolWidgetLook& look) {
+    bool changed = false;
     switch (t.kind) {
         case Kind::Carve:
         case Kind::Add:
-        case Kind::Melt: strokeParameters(t, look); break;
-        case Kind::Perturb: perturbParameters(t, look); break;
-        case Kind::Impacts: impactParameters(t, look); break;
+        case Kind::Melt: changed = strokeParameters(t, look); break;
+        case Kind::Perturb: changed = perturbParameters(t, look); break;
+        case Kind::Impacts: changed = impactParameters(t, look); break;
         case Kind::Move:
         case Kind::None: break;
     }
+    // Whatever was typed or dragged stays within the bounds the keys, the
+    // wheel and the headset's stick keep too (garden/sculpt/tool_settings.h).
+    if (changed) clampToolSettings(t);
     // Melt and impacts have no reverse.
     if (t.kind == Kind::Carve || t.kind == Kind::Add || t.kind == Kind::Perturb)
         ImGui::Checkbox(keyed("reverse (R)", "reverse", look), &t.reverse);

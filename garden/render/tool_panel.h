@@ -28,6 +28,8 @@ struct ToolWidgetLook {
 // perturb: shape, radii, strength, scale; impacts: shape, size,
 // compaction, spread and its size, count, seed) and its reverse; nothing
 // for the morph (none) and move tools, whose hints differ per device.
+// Values the user sets are kept within the tools' one set of bounds
+// (clampToolSettings, garden/sculpt/tool_settings.h).
 void toolParameters(ToolSettings& tool, const ToolWidgetLook& look);
 
 // The selected sculpture: its name, mirror plane, edit count with a button

@@ -141,7 +141,7 @@ ReplayResult runReplay(const ReplayScript& script, GardenSession& session, Frame
         for (int f = 0; f < step.frames; ++f) {
             std::vector<std::string> shots;
             FrameInput in;
-            in.hands = step.hands;
+            in.hands = stepHands(step, f);
             in.dt = script.timestep;
             if (f == 0)
                 in.commands = [&](GardenSession& s, Hands&) {

@@ -1,5 +1,6 @@
 #include "garden/replay/replay_script.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -79,6 +80,47 @@ HandState readHand(const nlohmann::json& v, const std::string& path) {
     return h;
 }
 
+// A name from a list, or an error naming the nearest and every choice.
+template <class T>
+T readChoice(const nlohmann::json& v, const std::string& path, const std::vector<std::pair<std::string, T>>& names) {
+    const std::string name = readString(v, path);
+    std::vector<std::string> known;
+    for (const auto& [n, t] : names) {
+        if (n == name) return t;
+        known.push_back(n);
+    }
+    std::string all;
+    for (std::size_t i = 0; i < known.size(); ++i) all += (i == 0 ? "" : i + 1 == known.size() ? " or " : ", ") + known[i];
+    const std::string near = nearMiss(name, known);
+    throw JsonError(path, "unknown '" + name + "'" + (near.empty() ? "" : " (did you mean '" + near + "'?)") + "; expected " + all);
+}
+
+// The step's tool intents, for the whole step (stepHands spreads them over its frames).
+ToolIntents readIntents(const nlohmann::json& v, const std::string& path) {
+    ObjectReader r(v, path, {"tool", "size", "strength", "reverse", "mirror", "selection_scale", "held"});
+    ToolIntents in;
+    if (const auto* t = r.optional("tool")) {
+        // The names of toolKindName (garden/sculpt/tool_settings.h).
+        in.tool = readChoice(*t, r.pathOf("tool"),
+                             std::vector<std::pair<std::string, ToolChoice>>{
+                                 {"none", ToolChoice::None}, {"carve", ToolChoice::Carve}, {"add", ToolChoice::Add},
+                                 {"melt", ToolChoice::Melt}, {"perturb", ToolChoice::Perturb},
+                                 {"impacts", ToolChoice::Impacts}, {"move", ToolChoice::Move}});
+    }
+    constexpr double lo = 1e-3, hi = 1e3;  // factors for a whole step
+    if (const auto* f = r.optional("size")) in.size = readNumber(*f, r.pathOf("size"), lo, hi);
+    if (const auto* f = r.optional("strength")) in.strength = readNumber(*f, r.pathOf("strength"), lo, hi);
+    if (const auto* f = r.optional("selection_scale")) in.selectionScale = readNumber(*f, r.pathOf("selection_scale"), lo, hi);
+    if (const auto* b = r.optional("reverse")) in.reverse = readBool(*b, r.pathOf("reverse"));
+    if (const auto* m = r.optional("mirror"))
+        in.mirror = readChoice(*m, r.pathOf("mirror"),
+                               std::vector<std::pair<std::string, MirrorIntent>>{
+                                   {"toggle", MirrorIntent::Toggle}, {"on", MirrorIntent::On}, {"off", MirrorIntent::Off}});
+    if (const auto* b = r.optional("held")) in.held = readBool(*b, r.pathOf("held"));
+    r.finish();
+    return in;
+}
+
 ReplayCommand readCommand(const nlohmann::json& v, const std::string& path) {
     if (!v.is_object() || v.size() != 1)
         throw JsonError(path, "expected an object with one command: morph, morph_weights, screenshot, detail, pose, select, "
@@ -139,7 +181,7 @@ ReplayCommand readCommand(const nlohmann::json& v, const std::string& path) {
 }
 
 ReplayStep readStep(const nlohmann::json& v, const std::string& path) {
-    ObjectReader r(v, path, {"frames", "until_idle", "tool", "navigation", "look", "speed_scale", "commands"});
+    ObjectReader r(v, path, {"frames", "until_idle", "tool", "navigation", "look", "speed_scale", "intents", "commands"});
     ReplayStep s;
     if (const auto* f = r.optional("frames")) s.frames = readInt(*f, r.pathOf("frames"), 1, 1000000);
     if (const auto* u = r.optional("until_idle")) s.untilIdle = readBool(*u, r.pathOf("until_idle"));
@@ -152,6 +194,7 @@ ReplayStep readStep(const nlohmann::json& v, const std::string& path) {
     }
     if (const auto* sp = r.optional("speed_scale"))
         s.hands.speedScale = static_cast<float>(readNumber(*sp, r.pathOf("speed_scale"), 0.01, 100.0));
+    if (const auto* in = r.optional("intents")) s.hands.intents = readIntents(*in, r.pathOf("intents"));
     if (const auto* c = r.optional("commands")) {
         if (!c->is_array()) throw JsonError(r.pathOf("commands"), "expected an array of commands");
         for (std::size_t i = 0; i < c->size(); ++i) s.commands.push_back(readCommand((*c)[i], indexPath(r.pathOf("commands"), i)));
@@ -161,6 +204,22 @@ ReplayStep readStep(const nlohmann::json& v, const std::string& path) {
 }
 
 }  // namespace
+
+Hands stepHands(const ReplayStep& step, int frame) {
+    Hands h = step.hands;
+    const ToolIntents& whole = step.hands.intents;
+    ToolIntents& in = h.intents;
+    if (frame > 0) {
+        in.tool.reset();
+        in.reverse = false;
+        in.mirror = MirrorIntent::Keep;
+    }
+    const double share = 1.0 / static_cast<double>(std::max(step.frames, 1));
+    in.size = std::pow(whole.size, share);
+    in.strength = std::pow(whole.strength, share);
+    in.selectionScale = std::pow(whole.selectionScale, share);
+    return h;
+}
 
 int ReplayScript::totalFrames() const {
     int n = 0;

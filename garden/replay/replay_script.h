@@ -40,7 +40,7 @@ struct ReplayStep {
     // Run until the morph update and every remesh queue are drained (at
     // most `frames` frames, then the replay fails: something never settles).
     bool untilIdle = false;
-    Hands hands;                          // held for every frame of the step
+    Hands hands;                          // held for every frame of the step (but its intents: stepHands)
     std::vector<ReplayCommand> commands;  // run at the step's first frame, in order
 };
 
@@ -54,6 +54,14 @@ struct ReplayScript {
 
     int totalFrames() const;  // an upper bound: until_idle steps count their maximum
 };
+
+// The hands of frame `frame` (from 0) of a step: the step's hands, with
+// its tool intents spread over its frames: the tool choice, reverse and
+// mirror at the first frame only, each factor (size, strength, selection
+// scale) as its frames-th root every frame, so that the whole step
+// multiplies by the factor; `held` on every frame. A scale over a step is
+// one gesture: one undo step.
+Hands stepHands(const ReplayStep& step, int frame);
 
 // Throws JsonError (garden/scene/json_reader.h) at the first problem, with
 // its JSON path.

@@ -5,25 +5,68 @@
 
 namespace hg::garden {
 
+namespace {
+
+// `v` times `factor`, stopping at the bound it moves towards; a value
+// already past that bound stays (a step never moves it farther out, nor
+// jumps it the other way).
+double stepWithin(double v, double factor, double lo, double hi) {
+    if (std::isnan(factor) || factor == 1.0) return v;
+    if (factor > 1.0) return v >= hi ? v : std::min(v * factor, hi);
+    return v <= lo ? v : std::max(v * factor, lo);
+}
+
+// The perturbation's radii in use: three for an ellipsoid, R and r for a torus.
+std::size_t radiiInUse(const ToolSettings& tool) { return tool.shape == QuadricShape::Torus ? 2 : 3; }
+
+}  // namespace
+
 void scaleToolSize(ToolSettings& tool, double factor) {
     using K = ToolSettings::Kind;
-    if (std::isnan(factor)) return;  // clamping would keep the NaN
     switch (tool.kind) {
         case K::Carve:
         case K::Add:
-        case K::Melt:
-            tool.radius = std::clamp(tool.radius * factor, kMinToolRadius, kMaxToolRadius);
+        case K::Melt: tool.radius = stepWithin(tool.radius, factor, kMinToolSize, kMaxToolSize); break;
+        case K::Perturb: {
+            // The scale within its own bounds and those that keep every live
+            // radius a size: the radii grow and shrink together.
+            double lo = kMinPerturbScale, hi = kMaxPerturbScale;
+            for (std::size_t a = 0; a < radiiInUse(tool); ++a) {
+                const double r = tool.radii[a];
+                if (!(r > 0.0)) continue;
+                lo = std::max(lo, kMinToolSize / r);
+                hi = std::min(hi, kMaxToolSize / r);
+            }
+            tool.perturbScale = stepWithin(tool.perturbScale, factor, lo, hi);
             break;
-        case K::Perturb:
-            tool.perturbScale = std::clamp(tool.perturbScale * factor, kMinPerturbScale, kMaxPerturbScale);
-            break;
-        case K::Impacts:
-            tool.impactSize = std::clamp(tool.impactSize * factor, kMinImpactSize, kMaxImpactSize);
-            break;
+        }
+        case K::Impacts: tool.impactSize = stepWithin(tool.impactSize, factor, kMinImpactSize, kMaxImpactSize); break;
         case K::None:
-        case K::Move:
-            break;
+        case K::Move: break;
     }
+}
+
+void scaleToolStrength(ToolSettings& tool, double factor) {
+    using K = ToolSettings::Kind;
+    if (tool.kind == K::Perturb) {
+        const double k = stepWithin(std::fabs(tool.strength), factor, kMinPerturbStrength, kMaxPerturbStrength);
+        tool.strength = std::copysign(k, tool.strength);
+    } else if (tool.kind == K::Impacts) {
+        tool.compactionCm3 = stepWithin(tool.compactionCm3, factor, kMinCompactionCm3, kMaxCompactionCm3);
+    }
+}
+
+void clampToolSettings(ToolSettings& tool) {
+    const auto clampFinite = [](double& v, double lo, double hi) { v = std::isnan(v) ? lo : std::clamp(v, lo, hi); };
+    clampFinite(tool.radius, kMinToolSize, kMaxToolSize);
+    clampFinite(tool.perturbScale, kMinPerturbScale, kMaxPerturbScale);
+    for (std::size_t a = 0; a < radiiInUse(tool); ++a)
+        clampFinite(tool.radii[a], kMinToolSize / tool.perturbScale, kMaxToolSize / tool.perturbScale);
+    double k = std::fabs(tool.strength);
+    clampFinite(k, kMinPerturbStrength, kMaxPerturbStrength);
+    tool.strength = std::copysign(k, tool.strength);
+    clampFinite(tool.impactSize, kMinImpactSize, kMaxImpactSize);
+    clampFinite(tool.compactionCm3, kMinCompactionCm3, kMaxCompactionCm3);
 }
 
 const char* toolKindName(ToolSettings::Kind kind) {

@@ -39,16 +39,39 @@ struct ToolSettings {
     double perturbStrength() const { return reverse ? -strength : strength; }
 };
 
-// The bounds scaleToolSize keeps sizes in.
-constexpr double kMinToolRadius = 1e-3, kMaxToolRadius = 5.0;          // metres
+// The one set of bounds every device and panel keeps the tool in (the
+// desktop's keys and wheel, the headset's stick, both panels' sliders,
+// replay intents): sizes in metres, strengths in their units.
+//  * every size: the stroke radius, each of the perturbation's live radii
+//    (radii times the scale), the impact size (at most kMaxImpactSize);
+constexpr double kMinToolSize = 1e-3, kMaxToolSize = 5.0;
+constexpr double kMinImpactSize = kMinToolSize, kMaxImpactSize = 1.0;
+//  * the perturbation's scale, which multiplies its radii;
 constexpr double kMinPerturbScale = 0.05, kMaxPerturbScale = 20.0;
-constexpr double kMinImpactSize = 1e-3, kMaxImpactSize = 1.0;          // metres
+//  * the perturbation's strength, voxels, either sign (the sign pulls or pushes);
+constexpr double kMinPerturbStrength = 0.1, kMaxPerturbStrength = 50.0;
+//  * the impacts' compaction volume, cubic centimetres.
+constexpr double kMinCompactionCm3 = 0.01, kMaxCompactionCm3 = 100.0;
 
-// The tool's size times `factor` (the desktop's [ and ] keys, x1.25 a
-// press): the stroke radius, the perturbation's scale or the impact size,
-// as the tool in hand uses; clamped to the bounds above. None and Move
-// have no size.
+// The tool's size times `factor` (a size step: the desktop's [ and ], the
+// headset's stick up and down): the stroke radius, the perturbation's
+// scale (its radii together, their ratio kept) or the impact size, as the
+// tool in hand uses. A step stops exactly at a bound and never moves a
+// size away from its bounds (one set by a script outside them stays until
+// a step takes it in); a NaN factor does nothing. None and move have no
+// size (the move tool's size step scales the selection instead,
+// GardenSession::applyToolIntents).
 void scaleToolSize(ToolSettings& tool, double factor);
+
+// The tool's strength times `factor` (the headset's stick right and left):
+// the perturbation's strength (its sign kept) or the impacts' compaction
+// volume, bounded as sizes are. Other tools have no strength.
+void scaleToolStrength(ToolSettings& tool, double factor);
+
+// Every bounded setting brought into the bounds above: what the panels'
+// sliders call after the user sets absolute values. Raw perturbation radii
+// are kept so that times the scale they lie in the size bounds.
+void clampToolSettings(ToolSettings& tool);
 
 // "none", "carve", "add", "melt", "perturb", "impacts", "move".
 const char* toolKindName(ToolSettings::Kind kind);

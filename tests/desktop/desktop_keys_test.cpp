@@ -1,7 +1,8 @@
 // The desktop's keys (garden/desktop/desktop_keys.*): GLFW presses become
-// the documented commands; the tool keys change the session's ToolSettings
-// and the selected sculpture; Ctrl+Z and Ctrl+Shift+Z undo and redo a real
-// stroke made with the mouse; a move drag with the mouse is one undo.
+// the documented commands; the tool keys and the wheel become tool intents
+// that change the session's ToolSettings and the selected sculpture; Ctrl+Z
+// and Ctrl+Shift+Z undo and redo a real stroke made with the mouse; a move
+// drag with the mouse is one undo, and so is a burst of wheel notches.
 #include <gtest/gtest.h>
 
 #define GLFW_INCLUDE_NONE
@@ -83,17 +84,23 @@ protected:
         in.mouse = mouse;
         in.toolButton = leftButton;
         in.wheel = wheel;
-        const Hands h = desktopHands(in, keys, *session, projection, speed);
+        const Hands h = desktopHands(in, keys, *session, projection, kDt, carry);
         lastSpeed = h.speedScale;
-        session->frame(FrameInput(h, 1.0 / 90.0));
+        session->frame(FrameInput(h, kDt));
     }
     void frame(const DesktopKeys& keys) { frame(keys, kCentre, false); }
+    // Half a second of frames with nothing pressed: longer than a burst.
+    void pause() {
+        for (int f = 0; f < 45; ++f) frame({});
+    }
     Sculpture& ball() { return session->sculptures()[static_cast<std::size_t>(c)]; }
 
     static constexpr glm::vec2 kViewport{1280.0f, 720.0f};
     static constexpr glm::vec2 kCentre{640.0f, 360.0f};
     glm::mat4 projection{1.0f};
-    float speed = 1.0f, lastSpeed = 1.0f;
+    static constexpr double kDt = 1.0 / 90.0;
+    DesktopCarry carry;
+    float lastSpeed = 1.0f;
 };
 
 // Esc quits, except when it was pressed to close a panel's drop-down;
@@ -249,7 +256,9 @@ TEST_F(DesktopKeysSession, AMoveDragWithTheMouseIsOneUndo) {
     frame({}, kCentre, false, 1.0f);
     EXPECT_DOUBLE_EQ(ball().placement.scale, start.scale * 1.25);
     EXPECT_EQ(lastSpeed, 1.0f);
+    pause();  // the burst ends: the next press is another move
     frame(press(GLFW_KEY_LEFT_BRACKET));
+    pause();
     EXPECT_DOUBLE_EQ(ball().placement.scale, start.scale);
     frame(press(GLFW_KEY_Z, GLFW_MOD_CONTROL));
     EXPECT_DOUBLE_EQ(ball().placement.scale, start.scale * 1.25);
@@ -262,6 +271,72 @@ TEST_F(DesktopKeysSession, AMoveDragWithTheMouseIsOneUndo) {
     frame(press(GLFW_KEY_Z, GLFW_MOD_CONTROL));
     EXPECT_EQ(ball().placement.position, start.position);
     EXPECT_FALSE(session->undo());
+}
+
+// The keys and the wheel become intents, not changes to the session: the
+// tool picked, [ and ] as size factors, R and M as toggles; the wheel is a
+// selection scale only with the move tool and a selection, else the
+// walking speed.
+TEST_F(DesktopKeysSession, KeysAndTheWheelBecomeToolIntents) {
+    float wheel = 2.0f;
+    DesktopCarry carry;
+    DesktopKeys keys = press(GLFW_KEY_4);
+    addKeyPress(keys, GLFW_KEY_LEFT_BRACKET, 0);
+    addKeyPress(keys, GLFW_KEY_R, 0);
+    addKeyPress(keys, GLFW_KEY_M, 0);
+    ToolIntents i = desktopIntents(keys, wheel, *session, kDt, carry);
+    EXPECT_EQ(i.tool, ToolChoice::Perturb);
+    EXPECT_DOUBLE_EQ(i.size, 1.0 / kToolSizeStep);
+    EXPECT_TRUE(i.reverse);
+    EXPECT_EQ(i.mirror, MirrorIntent::Toggle);
+    EXPECT_EQ(i.selectionScale, 1.0);
+    EXPECT_FALSE(i.held);
+    EXPECT_EQ(wheel, 2.0f) << "the wheel is left for the walking speed";
+    EXPECT_EQ(session->tool().kind, Kind::None) << "an intent changes nothing by itself";
+    i = desktopIntents(DesktopKeys{}, wheel, *session, kDt, carry);
+    EXPECT_FALSE(i.any());
+    // The move tool picked this frame, with a selection: the wheel scales it.
+    session->select(c);
+    i = desktopIntents(press(GLFW_KEY_6), wheel, *session, kDt, carry);
+    EXPECT_DOUBLE_EQ(i.selectionScale, kToolSizeStep * kToolSizeStep);
+    EXPECT_EQ(wheel, 0.0f) << "consumed";
+    EXPECT_TRUE(i.held);
+}
+
+// A burst of wheel notches (less than kScaleBurstSeconds apart) is one
+// gesture: one journalled move, one undo step, like one push of the
+// headset's stick; notches farther apart are steps of their own.
+TEST_F(DesktopKeysSession, ABurstOfWheelNotchesIsOneUndo) {
+    test::ActionList journal;
+    session->setJournal(&journal);
+    const double start = ball().placement.scale;
+    frame(press(GLFW_KEY_6));
+    session->select(c);
+    for (int notch = 0; notch < 4; ++notch) {
+        frame({}, kCentre, false, 1.0f);
+        for (int f = 0; f < 10; ++f) frame({});  // 0.11 s between notches
+    }
+    EXPECT_DOUBLE_EQ(ball().placement.scale, start * std::pow(1.25, 4));
+    EXPECT_TRUE(journal.actions.empty()) << "the burst goes on";
+    pause();
+    EXPECT_EQ(journal.actions.size(), 1u);
+    // Two notches half a second apart: two steps.
+    frame({}, kCentre, false, -1.0f);
+    pause();
+    frame({}, kCentre, false, -1.0f);
+    pause();
+    EXPECT_EQ(journal.actions.size(), 3u);
+    EXPECT_DOUBLE_EQ(ball().placement.scale, start * 1.25 * 1.25);
+    frame(press(GLFW_KEY_Z, GLFW_MOD_CONTROL));
+    frame({});
+    frame(press(GLFW_KEY_Z, GLFW_MOD_CONTROL));
+    EXPECT_DOUBLE_EQ(ball().placement.scale, start * std::pow(1.25, 4));
+    frame({});
+    frame(press(GLFW_KEY_Z, GLFW_MOD_CONTROL));
+    EXPECT_DOUBLE_EQ(ball().placement.scale, start) << "the burst of four notches, one undo";
+    EXPECT_FALSE(session->undo());
+    EXPECT_EQ(lastSpeed, 1.0f) << "the walking speed never saw the wheel";
+    session->setJournal(nullptr);
 }
 
 TEST_F(DesktopKeysSession, DraggingTheOrbitedSculptureDoesNotCarryTheCameraAlong) {

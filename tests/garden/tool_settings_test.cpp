@@ -10,6 +10,13 @@
 //    while inside the bounds;
 //  * any number of presses, or any factor, stops exactly at a bound, and
 //    the next press the other way leaves it by one step;
+//  * the perturbation's size step scales its radii together (the ratio
+//    kept) and stops where its largest or smallest live radius meets a
+//    size bound;
+//  * scaleToolStrength steps the perturbation's strength (sign kept) or
+//    the compaction volume within their bounds; a step never moves a value
+//    set outside the bounds farther out;
+//  * clampToolSettings brings every bounded setting inside;
 //  * toolKindName's names, one per kind, all different.
 #include <gtest/gtest.h>
 
@@ -43,7 +50,7 @@ double* sizeOf(ToolSettings& t) { return &(t.*sizeMember(t.kind)); }
 std::pair<double, double> boundsOf(Kind k) {
     if (k == Kind::Perturb) return {kMinPerturbScale, kMaxPerturbScale};
     if (k == Kind::Impacts) return {kMinImpactSize, kMaxImpactSize};
-    return {kMinToolRadius, kMaxToolRadius};
+    return {kMinToolSize, kMaxToolSize};
 }
 
 // Every setting but `except` (the scaled size, or null) is the same in a and b.
@@ -71,13 +78,13 @@ void expectSameOtherwise(const ToolSettings& a, const ToolSettings& b, double To
 TEST(ToolSettings, DefaultsLieInsideTheBoundsAndDeriveTheLiveQuadric) {
     const ToolSettings t;
     EXPECT_EQ(t.kind, Kind::None);
-    EXPECT_GE(t.radius, kMinToolRadius);
-    EXPECT_LE(t.radius, kMaxToolRadius);
+    EXPECT_GE(t.radius, kMinToolSize);
+    EXPECT_LE(t.radius, kMaxToolSize);
     EXPECT_GE(t.perturbScale, kMinPerturbScale);
     EXPECT_LE(t.perturbScale, kMaxPerturbScale);
     EXPECT_GE(t.impactSize, kMinImpactSize);
     EXPECT_LE(t.impactSize, kMaxImpactSize);
-    EXPECT_LT(kMinToolRadius, kMaxToolRadius);
+    EXPECT_LT(kMinToolSize, kMaxToolSize);
     EXPECT_LT(kMinPerturbScale, kMaxPerturbScale);
     EXPECT_LT(kMinImpactSize, kMaxImpactSize);
 
@@ -183,6 +190,92 @@ TEST(ToolSettings, SizesStopExactlyAtTheBounds) {
         for (double f : {kStep, 1.0 / kStep, 1e9, 0.0}) scaleToolSize(t, f);
         expectSameOtherwise(t, before, nullptr);
     }
+}
+
+TEST(ToolSettings, APerturbationsRadiiScaleTogetherWithinTheSizeBounds) {
+    ToolSettings t;
+    t.kind = Kind::Perturb;
+    t.radii = {0.5, 0.05, 0.01};
+    const auto ratio = [&t] { return t.perturbRadii()[0] / t.perturbRadii()[2]; };
+    const double r0 = ratio();
+    for (int i = 0; i < 200; ++i) scaleToolSize(t, kStep);
+    EXPECT_DOUBLE_EQ(t.perturbRadii()[0], kMaxToolSize) << "the largest radius meets the bound first";
+    EXPECT_LT(t.perturbScale, kMaxPerturbScale);
+    EXPECT_DOUBLE_EQ(ratio(), r0);
+    for (int i = 0; i < 200; ++i) scaleToolSize(t, 1.0 / kStep);
+    EXPECT_DOUBLE_EQ(t.perturbRadii()[2], kMinToolSize) << "the smallest radius meets the bound first";
+    EXPECT_GT(t.perturbScale, kMinPerturbScale);
+    EXPECT_DOUBLE_EQ(ratio(), r0);
+    EXPECT_EQ(t.radii, (std::array<double, 3>{0.5, 0.05, 0.01})) << "the radii themselves stay";
+    // A torus uses R and r only: its third radius bounds nothing.
+    t.shape = QuadricShape::Torus;
+    t.radii = {0.1, 0.01, 1e-9};
+    t.perturbScale = 1.0;
+    for (int i = 0; i < 200; ++i) scaleToolSize(t, 1.0 / kStep);
+    EXPECT_DOUBLE_EQ(t.perturbScale, kMinToolSize / 0.01);
+}
+
+TEST(ToolSettings, StrengthStepsKeepTheSignAndTheBounds) {
+    ToolSettings t;
+    t.kind = Kind::Perturb;
+    t.strength = -4.0;
+    scaleToolStrength(t, 0.5);
+    EXPECT_EQ(t.strength, -2.0) << "a push stays a push";
+    for (int i = 0; i < 100; ++i) scaleToolStrength(t, 2.0);
+    EXPECT_EQ(t.strength, -kMaxPerturbStrength);
+    for (int i = 0; i < 100; ++i) scaleToolStrength(t, 0.5);
+    EXPECT_EQ(t.strength, -kMinPerturbStrength);
+    const double compaction = t.compactionCm3;
+    EXPECT_EQ(compaction, ToolSettings{}.compactionCm3) << "the perturbation's step leaves the impacts' volume";
+    t.kind = Kind::Impacts;
+    for (int i = 0; i < 100; ++i) scaleToolStrength(t, 2.0);
+    EXPECT_EQ(t.compactionCm3, kMaxCompactionCm3);
+    for (int i = 0; i < 100; ++i) scaleToolStrength(t, 0.5);
+    EXPECT_EQ(t.compactionCm3, kMinCompactionCm3);
+    EXPECT_EQ(t.strength, -kMinPerturbStrength);
+    // Strokes have no strength.
+    for (Kind k : {Kind::None, Kind::Carve, Kind::Add, Kind::Melt, Kind::Move}) {
+        ToolSettings s;
+        s.kind = k;
+        const ToolSettings before = s;
+        scaleToolStrength(s, 4.0);
+        expectSameOtherwise(s, before, nullptr);
+    }
+    // A value a script set outside the bounds: a step towards them moves
+    // it in, a step away leaves it.
+    ToolSettings far;
+    far.kind = Kind::Carve;
+    far.radius = 20.0;
+    scaleToolSize(far, kStep);
+    EXPECT_EQ(far.radius, 20.0);
+    scaleToolSize(far, 0.5);
+    EXPECT_EQ(far.radius, 10.0);
+}
+
+TEST(ToolSettings, ClampBringsEverySettingInside) {
+    ToolSettings t;
+    t.radius = 9.0;
+    t.perturbScale = 50.0;
+    t.radii = {1.0, 1e-6, 0.01};
+    t.strength = -200.0;
+    t.impactSize = 3.0;
+    t.compactionCm3 = 1e-5;
+    clampToolSettings(t);
+    EXPECT_EQ(t.radius, kMaxToolSize);
+    EXPECT_EQ(t.perturbScale, kMaxPerturbScale);
+    for (double r : t.perturbRadii()) {
+        EXPECT_GE(r, kMinToolSize * (1 - 1e-12));
+        EXPECT_LE(r, kMaxToolSize * (1 + 1e-12));
+    }
+    EXPECT_DOUBLE_EQ(t.perturbRadii()[2], 0.2) << "a radius inside stays";
+    EXPECT_EQ(t.strength, -kMaxPerturbStrength);
+    EXPECT_EQ(t.impactSize, kMaxImpactSize);
+    EXPECT_EQ(t.compactionCm3, kMinCompactionCm3);
+    ToolSettings d;
+    clampToolSettings(d);
+    EXPECT_EQ(d.radius, ToolSettings{}.radius) << "the defaults are inside";
+    EXPECT_EQ(d.radii, ToolSettings{}.radii);
+    EXPECT_EQ(d.strength, ToolSettings{}.strength);
 }
 
 TEST(ToolSettings, EachKindHasItsOwnName) {
