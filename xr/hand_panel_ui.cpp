@@ -49,7 +49,7 @@ constexpr float kTextRow = kFontLine + kSpacingY;
 constexpr float kToggleStep = 130.0f;
 constexpr garden::ToolWidgetLook kLook{220.0f, false, 104.0f};
 
-constexpr const char* kLabels[] = {"morph", "carve", "add", "melt", "perturb", "impacts", "move", "undo", "redo"};
+constexpr const char* kLabels[] = {"morph", "carve", "add", "melt", "perturb", "impacts", "move", "sketch", "undo", "redo"};
 static_assert(std::size(kLabels) == static_cast<std::size_t>(PanelButton::Count));
 constexpr const char* kPageLabels[] = {"tool", "sculpture", "settings"};
 constexpr const char* kSnapLabels[] = {"15 deg", "30 deg", "45 deg", "90 deg"};
@@ -83,6 +83,7 @@ Kind toolOf(PanelButton b) {
         case PanelButton::Perturb: return Kind::Perturb;
         case PanelButton::Impacts: return Kind::Impacts;
         case PanelButton::Move: return Kind::Move;
+        case PanelButton::Sketch: return Kind::Sketch;
         default: return Kind::None;
     }
 }

@@ -196,6 +196,11 @@ public:
     std::string moveSculptureLive(int sculpture, const Placement& placement);
     void endLiveMove();
     bool movingLive() const { return liveMove_ >= 0; }
+    // The sketch tool's outline while the button is held (world points on
+    // its plane, garden/app/session_sketching.cpp), for the gizmo; empty
+    // otherwise. The last sketch's refusal ("" after one that was made).
+    const std::vector<glm::vec3>& sketchPath() const { return sketch_.points; }
+    const std::string& sketchMessage() const { return sketchMessage_; }
     // The sculpture's mirror plane (model frame; none: off): strokes and
     // perturbations made while it is set act on both sides of it.
     void setMirror(int sculpture, std::optional<MirrorPlane> plane);
@@ -296,6 +301,7 @@ private:
     void placeSculpture(int sculpture, const Placement& placement, bool followOrbit = true);
     std::string checkPlacement(int sculpture, const Placement& placement) const;
     void moveWithHands(const HandState& h);
+    void sketchWithHands(const HandState& h);
     void recordMorph();
 
     GardenLoad load_;
@@ -336,6 +342,15 @@ private:
         double startAngle = 0.0;  // radians about +y, turning only
     };
     std::optional<MoveDrag> moveDrag_;
+    // The sketch tool's outline under way: its sculpture, its plane (a
+    // point and the normal facing the hand where it began) and the points.
+    struct SketchDraw {
+        int sculpture = -1;
+        glm::vec3 origin{0.0f}, normal{0.0f, 0.0f, 1.0f};
+        std::vector<glm::vec3> points;
+    };
+    SketchDraw sketch_;
+    std::string sketchMessage_;
     int liveMove_ = -1;                // the sculpture moved live, or -1
     Placement liveMoveFrom_;           // its placement before the drag
     bool intentScaling_ = false;       // the live move is the tool intents' selection scaling

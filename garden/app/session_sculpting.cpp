@@ -325,6 +325,10 @@ void GardenSession::sculptWithHands(const Hands& hands) {
         moveWithHands(h);
         return;
     }
+    if (tool_.kind == ToolSettings::Kind::Sketch || sketch_.sculpture >= 0) {
+        sketchWithHands(h);
+        if (tool_.kind == ToolSettings::Kind::Sketch) return;
+    }
     if (moveDrag_) {  // the tool changed during a drag
         moveDrag_.reset();
         endLiveMove();

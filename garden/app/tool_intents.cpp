@@ -31,6 +31,7 @@ ToolSettings::Kind toolKindOf(ToolChoice c) {
         case ToolChoice::Perturb: return K::Perturb;
         case ToolChoice::Impacts: return K::Impacts;
         case ToolChoice::Move: return K::Move;
+        case ToolChoice::Sketch: return K::Sketch;
     }
     return K::None;
 }
@@ -45,6 +46,7 @@ ToolChoice toolChoiceOf(ToolSettings::Kind k) {
         case K::Perturb: return ToolChoice::Perturb;
         case K::Impacts: return ToolChoice::Impacts;
         case K::Move: return ToolChoice::Move;
+        case K::Sketch: return ToolChoice::Sketch;
     }
     return ToolChoice::None;
 }

@@ -16,8 +16,8 @@ namespace {
 
 std::optional<ToolSettings::Kind> toolOfDigit(int digit) {
     using K = ToolSettings::Kind;
-    constexpr K kinds[] = {K::None, K::Carve, K::Add, K::Melt, K::Perturb, K::Impacts, K::Move};
-    if (digit < 0 || digit > 6) return std::nullopt;
+    constexpr K kinds[] = {K::None, K::Carve, K::Add, K::Melt, K::Perturb, K::Impacts, K::Move, K::Sketch};
+    if (digit < 0 || digit > 7) return std::nullopt;
     return kinds[digit];
 }
 

@@ -19,7 +19,7 @@
 // What the tool hand holds is set by keys that become the hands' tool
 // intents (garden/desktop/desktop_keys.h, garden/hands/tool_intents.h):
 // 0 none (the morph selector), 1 carve, 2 add, 3 melt, 4 perturb,
-// 5 impacts, 6 move; [ and ] the tool's size (x1.25 a press); R reverse;
+// 5 impacts, 6 move, 7 sketch; [ and ] the tool's size (x1.25 a press); R reverse;
 // M the selected sculpture's mirror plane. Other keys: G the detail
 // sphere, F9 the headset (and back), F12 a screenshot, Esc quits. Keys and clicks that ImGui wants are not taken.
 #pragma once

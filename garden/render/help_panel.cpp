@@ -23,7 +23,7 @@ constexpr KeyRow kRows[] = {
     {"O", "orbit the selected sculpture"},
     {"G", "full detail around where the mouse points, or off"},
     {"left button", "use the tool where the mouse points (no tool: pick the blend on the ground triangle)"},
-    {"0 1 2 3 4 5 6", "tool: none, carve, add, melt, perturb, impacts, move"},
+    {"0 1 2 3 4 5 6 7", "tool: none, carve, add, melt, perturb, impacts, move, sketch"},
     {"[ / ]", "the tool's size smaller / larger"},
     {"R", "reverse (carve <-> add, pull <-> push)"},
     {"M", "the selected sculpture's mirror plane on / off"},

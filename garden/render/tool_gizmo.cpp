@@ -78,6 +78,7 @@ glm::vec4 toolColor(const ToolSettings& tool) {
         case K::Perturb: return tool.perturbStrength() > 0 ? glm::vec4(1.0f, 0.9f, 0.2f, 1) : glm::vec4(0.75f, 0.4f, 1.0f, 1);
         case K::Impacts: return {1.0f, 0.3f, 0.8f, 1};
         case K::Move: return {1.0f, 0.9f, 0.3f, 1};
+        case K::Sketch: return tool.reverse ? glm::vec4(1.0f, 0.4f, 0.15f, 1) : glm::vec4(0.3f, 0.9f, 0.35f, 1);
         case K::None: break;
     }
     return {1, 1, 1, 1};
@@ -138,6 +139,7 @@ std::vector<GizmoLines> toolGizmo(const ToolSettings& tool, const glm::vec3& at,
         }
         case K::None:
         case K::Move:
+        case K::Sketch:
             break;
     }
     return out;
@@ -219,6 +221,8 @@ void drawToolGizmos(Renderer& renderer, const GardenSession& session, const std:
     if (aim && hit && tool.kind != ToolSettings::Kind::None && tool.kind != ToolSettings::Kind::Move)
         for (GizmoLines& l : toolGizmo(tool, *hit, aim->position, aim->forward(), session.navigator().eye()))
             lines.push_back(std::move(l));
+    // The outline being sketched, as drawn so far.
+    if (session.sketchPath().size() >= 2) addSeeThrough(lines, session.sketchPath(), toolColor(tool), LineMode::Strip);
     // Depth-tested lines first, then what shows over everything.
     for (const GizmoLines& l : lines)
         if (!l.overEverything) renderer.drawLines(l.points, l.color, l.mode, true);

@@ -17,9 +17,10 @@ namespace {
 using Kind = ToolSettings::Kind;
 
 // The tools in key order: key 0 is none, 1..6 the rest.
-constexpr Kind kTools[] = {Kind::None, Kind::Carve, Kind::Add, Kind::Melt, Kind::Perturb, Kind::Impacts, Kind::Move};
-constexpr const char* kToolLabels[] = {"morph (0)", "carve (1)", "add (2)", "melt (3)", "perturb (4)", "impacts (5)",
-                                       "move (6)"};
+constexpr Kind kTools[] = {Kind::None,    Kind::Carve,   Kind::Add,  Kind::Melt,
+                           Kind::Perturb, Kind::Impacts, Kind::Move, Kind::Sketch};
+constexpr const char* kToolLabels[] = {"morph (0)",   "carve (1)",   "add (2)",  "melt (3)",
+                                       "perturb (4)", "impacts (5)", "move (6)", "sketch (7)"};
 constexpr const char* kToolTips[] = {
     "no tool: the left button picks the blend of the three key sculptures on the ground triangle",
     "carve: remove material along the stroke (R: add instead)",
@@ -27,7 +28,9 @@ constexpr const char* kToolTips[] = {
     "melt: a soft, rounded carve along the stroke",
     "perturb: push the surface out with a bump (R: pull it in)",
     "impacts: age the surface with a series of hits fired at it",
-    "move: select a sculpture, drag it on the ground, turn it on its ring, [ ] to scale"};
+    "move: select a sculpture, drag it on the ground, turn it on its ring, [ ] to scale",
+    "sketch: hold the button on a sculpture and draw an outline; on release it is inflated and joined to the "
+    "sculpture (R: cut from it)"};
 constexpr ToolWidgetLook kDesktopLook{};
 
 // The label with the desktop's keys, or without them.
@@ -133,13 +136,14 @@ void toolParameters(ToolSettings& t, const ToolWidgetLook& look) {
         case Kind::Perturb: changed = perturbParameters(t, look); break;
         case Kind::Impacts: changed = impactParameters(t, look); break;
         case Kind::Move:
+        case Kind::Sketch:
         case Kind::None: break;
     }
     // Whatever was typed or dragged stays within the bounds the keys, the
     // wheel and the headset's stick keep too (garden/sculpt/tool_settings.h).
     if (changed) clampToolSettings(t);
     // Melt and impacts have no reverse.
-    if (t.kind == Kind::Carve || t.kind == Kind::Add || t.kind == Kind::Perturb)
+    if (t.kind == Kind::Carve || t.kind == Kind::Add || t.kind == Kind::Perturb || t.kind == Kind::Sketch)
         ImGui::Checkbox(keyed("reverse (R)", "reverse", look), &t.reverse);
 }
 
@@ -194,6 +198,11 @@ void drawToolPanel(GardenSession& session) {
                                 "[ ] or the wheel: scale");
         else if (t.kind == Kind::None)
             ImGui::TextDisabled("the left button picks the blend\non the ground triangle");
+        else if (t.kind == Kind::Sketch) {
+            ImGui::TextDisabled("hold the button on a sculpture\nand draw round; let go: %s", t.reverse ? "cut" : "joined");
+            if (!session.sketchMessage().empty())
+                ImGui::TextColored(ImVec4(1.0f, 0.6f, 0.3f, 1.0f), "%s", session.sketchMessage().c_str());
+        }
 
         ImGui::TableSetColumnIndex(2);
         selectionSection(session, kDesktopLook);

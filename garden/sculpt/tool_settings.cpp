@@ -42,7 +42,8 @@ void scaleToolSize(ToolSettings& tool, double factor) {
         }
         case K::Impacts: tool.impactSize = stepWithin(tool.impactSize, factor, kMinImpactSize, kMaxImpactSize); break;
         case K::None:
-        case K::Move: break;
+        case K::Move:
+        case K::Sketch: break;
     }
 }
 
@@ -79,6 +80,7 @@ const char* toolKindName(ToolSettings::Kind kind) {
         case K::Perturb: return "perturb";
         case K::Impacts: return "impacts";
         case K::Move: return "move";
+        case K::Sketch: return "sketch";
     }
     return "none";
 }

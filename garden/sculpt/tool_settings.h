@@ -11,9 +11,11 @@ namespace hg::garden {
 
 // The tool the tool hand works (docs/design.md §6); sizes in metres of the world.
 struct ToolSettings {
-    enum class Kind { None, Carve, Add, Melt, Perturb, Impacts, Move };
+    enum class Kind { None, Carve, Add, Melt, Perturb, Impacts, Move, Sketch };
     // None: the trigger picks the morph on the ground; Move: it selects,
-    // moves and turns a sculpture (garden/app/session_moving.cpp).
+    // moves and turns a sculpture (garden/app/session_moving.cpp); Sketch:
+    // held, it draws an outline from a point on a sculpture, inflated and
+    // joined (reverse: cut) on release (garden/app/session_sketching.cpp).
     Kind kind = Kind::None;
     double radius = 0.05;        // carve, add, melt: the tool radius
     double softness = 2.0;       // melt: voxels
@@ -73,7 +75,7 @@ void scaleToolStrength(ToolSettings& tool, double factor);
 // are kept so that times the scale they lie in the size bounds.
 void clampToolSettings(ToolSettings& tool);
 
-// "none", "carve", "add", "melt", "perturb", "impacts", "move".
+// "none", "carve", "add", "melt", "perturb", "impacts", "move", "sketch".
 const char* toolKindName(ToolSettings::Kind kind);
 
 }  // namespace hg::garden

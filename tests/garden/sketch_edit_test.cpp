@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include <glm/gtc/matrix_inverse.hpp>
+#include <glm/gtc/quaternion.hpp>
 
 #include "garden/app/garden_session.h"
 #include "garden/replay/replay_runner.h"
@@ -147,6 +148,64 @@ TEST_F(SketchEditTest, ASketchIsJournalledAndAReplayCommandDrawsIt) {
     } catch (const JsonError& e) {
         EXPECT_EQ(e.path(), "$.steps[0].commands[0].sketch.mode");
     }
+}
+
+// The sketch tool: held on a sculpture, the hand's ray draws on the plane
+// facing it; released, the outline is joined (reverse: cut), one action.
+TEST_F(SketchEditTest, TheSketchToolDrawsWithTheToolHand) {
+    GardenSession s(loadGarden(writeGarden()), test::smallSessionSettings());
+    test::ActionList journal;
+    s.setJournal(&journal);
+    const int c = s.findSculpture("c");  // ball of 0.6 about (2, 0.5, 1.1547): its front at z 1.7547
+    s.tool().kind = ToolSettings::Kind::Sketch;
+    const glm::vec3 eye(2.0f, 0.5f, 4.0f);
+    Hands h;
+    h.tool.tracked = true;
+    h.tool.aim.position = eye;
+    const auto aimAt = [&](const glm::vec3& p) {
+        h.tool.aim.orientation = glm::quatLookAt(glm::normalize(p - eye), glm::vec3(0, 1, 0));
+    };
+    const auto frame = [&] { s.frame(FrameInput(h, 1.0 / 90.0)); };
+    // Pressed off every sculpture: nothing starts, and it says so.
+    aimAt({0.0f, 3.0f, 0.0f});
+    h.tool.trigger = 1.0f;
+    frame();
+    EXPECT_EQ(s.sketchMessage(), "start a sketch on a sculpture");
+    EXPECT_TRUE(s.sketchPath().empty());
+    h.tool.trigger = 0.0f;
+    frame();
+    // A circle of 0.15 m on the ball's front, drawn round once.
+    const int n = 40;
+    for (int i = 0; i <= n; ++i) {
+        const float t = 2.0f * 3.14159265f * static_cast<float>(i) / n;
+        aimAt({2.0f + 0.15f * std::cos(t), 0.5f + 0.15f * std::sin(t), 1.74f});
+        h.tool.trigger = 1.0f;
+        frame();
+    }
+    EXPECT_GT(s.sketchPath().size(), 30u) << "the outline so far, for the gizmo";
+    EXPECT_EQ(s.editCount(c), 0u) << "nothing until the button is let go";
+    h.tool.trigger = 0.0f;
+    frame();
+    EXPECT_EQ(s.sketchMessage(), "");
+    EXPECT_TRUE(s.sketchPath().empty());
+    ASSERT_EQ(s.editCount(c), 1u);
+    ASSERT_EQ(journal.actions.size(), 1u);
+    const auto& a = std::get<SketchAction>(journal.actions[0]);
+    EXPECT_EQ(a.mode, SketchMode::Add);
+    EXPECT_NEAR(a.normal[2], 1.0, 1e-2) << "the plane faces the hand";
+    // Reversed: a cut.
+    s.tool().reverse = true;
+    for (int i = 0; i <= n; ++i) {
+        const float t = 2.0f * 3.14159265f * static_cast<float>(i) / n;
+        aimAt({2.2f + 0.1f * std::cos(t), 0.5f + 0.1f * std::sin(t), 1.7f});
+        h.tool.trigger = 1.0f;
+        frame();
+    }
+    h.tool.trigger = 0.0f;
+    frame();
+    ASSERT_EQ(journal.actions.size(), 2u);
+    EXPECT_EQ(std::get<SketchAction>(journal.actions[1]).mode, SketchMode::Cut);
+    EXPECT_EQ(s.editCount(c), 2u);
 }
 
 // content/replays/sketching_session.json (the README's sketching replay)

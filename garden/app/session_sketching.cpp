@@ -1,0 +1,63 @@
+// The sketch tool (seed 003; docs/sketching.md): the tool hand's button,
+// pressed while its ray meets a sculpture, starts an outline on the plane
+// through that point facing the hand (on the desktop the mouse ray's
+// origin is the eye, so the plane faces the viewer); while it is held the
+// ray's point on that plane is added; on release the outline becomes one
+// SketchAction, joined to the sculpture (reverse: cut from it). The same
+// for the desktop's mouse and the headset's tool hand: both are hands.
+#include "garden/app/garden_session.h"
+
+#include <glm/geometric.hpp>
+
+namespace hg::garden {
+
+namespace {
+
+// Points closer than this to the last one (metres) add nothing: the
+// outline is resampled anyway, and a still hand should not pile them up.
+constexpr float kSketchStep = 0.002f;
+
+}  // namespace
+
+void GardenSession::sketchWithHands(const HandState& h) {
+    const bool held = h.tracked && h.trigger > 0.5f && tool_.kind == ToolSettings::Kind::Sketch;
+    if (sketch_.sculpture < 0) {
+        if (!held) {
+            toolArmed_ = true;
+            return;
+        }
+        if (!toolArmed_) return;  // one sketch per press
+        toolArmed_ = false;
+        const auto hit = toolHit(h.aim);
+        if (!hit) {
+            sketchMessage_ = "start a sketch on a sculpture";
+            return;
+        }
+        sketch_.sculpture = hit->first;
+        sketch_.origin = hit->second;
+        sketch_.normal = -h.aim.forward();
+        sketch_.points = {hit->second};
+        return;
+    }
+    if (held) {
+        // Where the ray meets the plane, in front of the hand.
+        const glm::vec3 d = h.aim.forward();
+        const float along = glm::dot(d, sketch_.normal);
+        if (std::abs(along) < 1e-4f) return;  // the ray runs along the plane
+        const float t = glm::dot(sketch_.origin - h.aim.position, sketch_.normal) / along;
+        if (!(t > 0.0f)) return;
+        const glm::vec3 p = h.aim.position + t * d;
+        if (glm::length(p - sketch_.points.back()) >= kSketchStep) sketch_.points.push_back(p);
+        return;
+    }
+    // Released: the outline becomes an action (or a refusal that says why).
+    toolArmed_ = true;
+    SketchDraw done = std::move(sketch_);
+    sketch_ = SketchDraw{};
+    std::vector<std::array<double, 3>> points;
+    for (const glm::vec3& p : done.points) points.push_back({p.x, p.y, p.z});
+    sketchMessage_ = applySketch(done.sculpture, tool_.reverse ? SketchMode::Cut : SketchMode::Add, points,
+                                 {done.normal.x, done.normal.y, done.normal.z});
+}
+
+}  // namespace hg::garden
