@@ -61,7 +61,9 @@ TEST_F(GestureCliTest, JsonHasTheSameAnswers) {
     // A threshold of 1 turns every answer to none.
     const ::hg::test::CommandRun strict = ::hg::test::runHypergarden("gesture --json --threshold 1 " + path("strokes.json"));
     ASSERT_EQ(strict.status, 0) << strict.output;
-    for (const auto& s : nlohmann::json::parse(strict.output)["strokes"]) EXPECT_EQ(s["label"], "none");
+    // Named: a range-for over parse(...)["strokes"] would outlive the parsed temporary.
+    const nlohmann::json strictJson = nlohmann::json::parse(strict.output);
+    for (const auto& s : strictJson.at("strokes")) EXPECT_EQ(s["label"], "none");
 }
 
 TEST_F(GestureCliTest, TheCommittedHandLikeSetMeetsTheTargets) {
