@@ -283,6 +283,10 @@ private:
     std::string applyImpactsModel(int sculpture, const ImpactSeries& series);
     std::string replacePerturbationModel(int sculpture, std::size_t edit, const Perturbation& p);
     std::string applySketchModel(int sculpture, const SketchAction& a);
+    // A whole edit appended to a sculpture's list (shown, undoable as
+    // `done`, redo cleared, journalled): what every finished edit but a
+    // live stroke goes through.
+    void appendEdit(int sculpture, Edit e, const Action& done);
     void applyMorphWeights(const MorphWeightsAction& m);
     // The sculpture an action names: its index, or why it cannot take the
     // action (none by that name, missing).

@@ -141,11 +141,7 @@ std::string GardenSession::applyPerturbationModel(int sculpture, const Perturbat
     if (p.radii[0] < 0.5 * edits.units().voxelSize) return "the perturbation is smaller than half a voxel";
     Edit e;
     e.op = p;
-    showChanged(sculpture, edits.append(std::move(e)));
-    const PerturbAction done{sculptures_[static_cast<std::size_t>(sculpture)].name, p};
-    undoOrder_.push_back(UndoEntry{sculpture, done, std::nullopt, std::nullopt});
-    redoOrder_.clear();
-    record(done);
+    appendEdit(sculpture, std::move(e), PerturbAction{sculptures_[static_cast<std::size_t>(sculpture)].name, p});
     return "";
 }
 
@@ -158,11 +154,7 @@ std::string GardenSession::applyImpactsModel(int sculpture, const ImpactSeries& 
     e.op = series;
     auto& added = std::get<ImpactSeries>(e.op);
     for (Impact& m : added.impacts) m.reach = impactReach(m, edits.units());
-    showChanged(sculpture, edits.append(std::move(e)));
-    const ImpactsAction done{sculptures_[static_cast<std::size_t>(sculpture)].name, series};
-    undoOrder_.push_back(UndoEntry{sculpture, done, std::nullopt, std::nullopt});
-    redoOrder_.clear();
-    record(done);
+    appendEdit(sculpture, std::move(e), ImpactsAction{sculptures_[static_cast<std::size_t>(sculpture)].name, series});
     return "";
 }
 
@@ -179,11 +171,15 @@ std::string GardenSession::applySketchModel(int sculpture, const SketchAction& a
     if (std::string why = resolveSketch(solid, edits.units()); !why.empty()) return why;
     Edit e;
     e.op = std::move(solid);
-    showChanged(sculpture, edits.append(std::move(e)));
-    undoOrder_.push_back(UndoEntry{sculpture, a, std::nullopt, std::nullopt});
-    redoOrder_.clear();
-    record(a);
+    appendEdit(sculpture, std::move(e), a);
     return "";
+}
+
+void GardenSession::appendEdit(int sculpture, Edit e, const Action& done) {
+    showChanged(sculpture, editsOf(sculpture).append(std::move(e)));
+    undoOrder_.push_back(UndoEntry{sculpture, done, std::nullopt, std::nullopt});
+    redoOrder_.clear();
+    record(done);
 }
 
 std::optional<std::size_t> GardenSession::pickPerturbation(int sculpture, const std::array<double, 3>& worldPoint) const {
