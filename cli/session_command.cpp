@@ -172,6 +172,7 @@ int runSessionCommand(const SessionCommandOptions& options) {
     nlohmann::json sculptures = nlohmann::json::array();
     for (std::size_t i = 0; i < session.sculptures().size(); ++i) {
         const Sculpture& s = session.sculptures()[i];
+        if (s.removed) continue;
         nlohmann::json j = {{"name", s.name}, {"edits", session.editCount(static_cast<int>(i))}};
         if (s.missing()) j["missing"] = s.error;
         if (s.edits) {

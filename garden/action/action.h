@@ -77,9 +77,23 @@ struct SketchAction {
     std::optional<MirrorPlane> mirror;
 };
 
+// A sculpture brought into the garden: a HyperFun file opened from the
+// window or `garden add`, a replay's {"add": ...}, a sketch in mode `new`
+// (its inflated solid written as HyperFun). The program's text is held
+// whole, so the journal plays it back whatever becomes of the file.
+struct AddAction {
+    std::string sculpture;            // its name, unique among the garden's sculptures
+    std::string source;               // the HyperFun program
+    std::string origin;               // where it came from (the file as named, "sketch"): messages, the export's label
+    std::string body;                 // "": my_model, else the first body
+    std::optional<frep::Box3> box;    // the model box; none: found from the model (voxel::resolveModelBox)
+    int resolution = 128;             // voxels along the model box's longest side
+    Placement placement;
+};
+
 using Action =
     std::variant<StrokeAction, PerturbAction, UndoAction, RedoAction, DiscardAction, MorphWeightsAction, MoveAction,
-                 ImpactsAction, ReplaceAction, SketchAction>;
+                 ImpactsAction, ReplaceAction, SketchAction, AddAction>;
 
 std::string actionKind(const Action& r);
 

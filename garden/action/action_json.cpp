@@ -6,12 +6,14 @@
 
 #include "garden/scene/json_reader.h"
 #include "garden/sculpt/edit_names.h"
+#include "voxel/volume_frame.h"
 
 namespace hg::garden {
 
 namespace {
 
 nlohmann::json point(const ModelPoint& p) { return nlohmann::json::array({p[0], p[1], p[2]}); }
+nlohmann::json corner(const double (&p)[3]) { return nlohmann::json::array({p[0], p[1], p[2]}); }
 
 
 // A finite number: journals hold only what the session accepted.
@@ -50,11 +52,25 @@ void writePerturbation(const Perturbation& q, nlohmann::json& j) {
     if (q.mirror) j["mirror"] = mirrorJson(*q.mirror);
 }
 
+void writePlacement(const Placement& p, nlohmann::json& j) {
+    j["position"] = point(p.position);
+    j["yaw"] = p.yawDegrees;
+    j["scale"] = p.scale;
+}
+
+Placement readPlacement(ObjectReader& r) {
+    Placement p;
+    p.position = readPoint(r.required("position"), r.pathOf("position"));
+    p.yawDegrees = finite(r.required("yaw"), r.pathOf("yaw"));
+    p.scale = readPositive(r.required("scale"), r.pathOf("scale"));
+    return p;
+}
+
 }  // namespace
 
 std::string actionKind(const Action& r) {
     static const char* const names[] = {"stroke", "perturb", "undo",    "redo",    "discard",
-                                        "morph",  "move",    "impacts", "replace", "sketch"};
+                                        "morph",  "move",    "impacts", "replace", "sketch", "add"};
     return names[r.index()];
 }
 
@@ -105,9 +121,15 @@ std::string actionJson(const Action& record) {
         if (k->mirror) j["mirror"] = mirrorJson(*k->mirror);
     } else if (const auto* mv = std::get_if<MoveAction>(&record)) {
         j["sculpture"] = mv->sculpture;
-        j["position"] = point(mv->placement.position);
-        j["yaw"] = mv->placement.yawDegrees;
-        j["scale"] = mv->placement.scale;
+        writePlacement(mv->placement, j);
+    } else if (const auto* ad = std::get_if<AddAction>(&record)) {
+        j["sculpture"] = ad->sculpture;
+        j["source"] = ad->source;
+        j["origin"] = ad->origin;
+        if (!ad->body.empty()) j["body"] = ad->body;
+        if (ad->box) j["box"] = {corner(ad->box->lo), corner(ad->box->hi)};
+        j["resolution"] = ad->resolution;
+        writePlacement(ad->placement, j);
     }
     return j.dump();
 }
@@ -212,11 +234,36 @@ Action readAction(const nlohmann::json& v, const std::string& path) {
         ObjectReader r(v, path, {"action", "sculpture", "position", "yaw", "scale"});
         MoveAction m;
         m.sculpture = readString(r.required("sculpture"), r.pathOf("sculpture"));
-        m.placement.position = readPoint(r.required("position"), r.pathOf("position"));
-        m.placement.yawDegrees = finite(r.required("yaw"), r.pathOf("yaw"));
-        m.placement.scale = readPositive(r.required("scale"), r.pathOf("scale"));
+        m.placement = readPlacement(r);
         r.finish();
         return m;
+    }
+    if (action == "add") {
+        ObjectReader r(v, path, {"action", "sculpture", "source", "origin", "body", "box", "resolution", "position", "yaw",
+                                 "scale"});
+        AddAction a;
+        a.sculpture = readString(r.required("sculpture"), r.pathOf("sculpture"));
+        a.source = readString(r.required("source"), r.pathOf("source"));
+        a.origin = readString(r.required("origin"), r.pathOf("origin"));
+        if (r.has("body")) a.body = readString(r.required("body"), r.pathOf("body"));
+        if (r.has("box")) {
+            const nlohmann::json& b = r.required("box");
+            if (!b.is_array() || b.size() != 2) throw JsonError(r.pathOf("box"), "expected [lo, hi]");
+            const ModelPoint lo = readPoint(b[0], indexPath(r.pathOf("box"), 0));
+            const ModelPoint hi = readPoint(b[1], indexPath(r.pathOf("box"), 1));
+            frep::Box3 box;
+            for (std::size_t i = 0; i < 3; ++i) {
+                if (!(lo[i] < hi[i])) throw JsonError(r.pathOf("box"), "expected lo < hi on every axis");
+                box.lo[i] = lo[i];
+                box.hi[i] = hi[i];
+            }
+            a.box = box;
+        }
+        a.resolution = readInt(r.required("resolution"), r.pathOf("resolution"), voxel::kMinResolution,
+                               voxel::kMaxResolution);
+        a.placement = readPlacement(r);
+        r.finish();
+        return a;
     }
     if (action == "sketch") {
         ObjectReader r(v, path, {"action", "sculpture", "mode", "points", "normal", "thickness", "mirror"});
@@ -234,7 +281,7 @@ Action readAction(const nlohmann::json& v, const std::string& path) {
     }
     throw JsonError(childPath(path, "action"), "unknown action '" + action +
                                                    "' (expected stroke, perturb, replace, impacts, undo, redo, discard, "
-                                                   "morph, move or sketch)");
+                                                   "morph, move, sketch or add)");
 }
 
 }  // namespace hg::garden

@@ -69,7 +69,7 @@ GardenSession::~GardenSession() = default;
 
 int GardenSession::findSculpture(const std::string& name) const {
     for (std::size_t i = 0; i < sculptures_.size(); ++i)
-        if (sculptures_[i].name == name) return static_cast<int>(i);
+        if (sculptures_[i].name == name && !sculptures_[i].removed) return static_cast<int>(i);
     return -1;
 }
 
@@ -80,7 +80,8 @@ std::array<double, 3> GardenSession::toModel(const Sculpture& s, const glm::vec3
 
 // Builds the pyramid, layout and queue of a sampled sculpture, at the levels
 // the start pose selects.
-static void attachMeshing(Sculpture& s, const SessionSettings& settings) {
+void GardenSession::attachMeshing(Sculpture& s) const {
+    const SessionSettings& settings = settings_;
     s.pyramid = std::make_unique<poly::LodPyramid>(*s.volume, settings.maxLevel + 1);
     s.layout = std::make_unique<poly::ChunkLayout>(s.volume->frame, settings.chunkSize);
     s.queue = std::make_unique<poly::RemeshQueue>(*s.pyramid, *s.layout,
@@ -96,7 +97,7 @@ void GardenSession::buildSculpture(std::size_t index) {
     Sculpture& s = sculptures_[index];
     s.name = spec.name;
     s.source.kind = SculptureSource::Kind::HyperFun;
-    s.source.spec = &spec;
+    s.source.spec = static_cast<int>(index);
     s.placement = spec.placement;
     s.material = spec.material;
     s.modelToWorld = placementMatrix(spec.placement);
@@ -117,7 +118,7 @@ void GardenSession::buildSculpture(std::size_t index) {
         return;
     }
     s.volume = std::make_unique<voxel::Volume>(std::move(*r.volume));
-    attachMeshing(s, settings_);
+    attachMeshing(s);
 }
 
 void GardenSession::buildMorph() {
@@ -144,7 +145,7 @@ void GardenSession::buildMorph() {
     sources_ = std::make_unique<MorphSources>(std::move(*built.sources));
     balance_ = morphBalance(*g.morph, *sources_);
     result.volume = std::make_unique<voxel::Volume>(makeMorphVolume(*sources_));
-    attachMeshing(result, settings_);
+    attachMeshing(result);
     morphIndex_ = static_cast<int>(sculptures_.size());
     sculptures_.push_back(std::move(result));
     blender_ = std::make_unique<MorphBlender>(*sources_, *sculptures_.back().volume);
@@ -197,7 +198,10 @@ void GardenSession::restartMorph() {
 }
 
 void GardenSession::select(int sculpture) {
-    selected_ = sculpture >= 0 && sculpture < static_cast<int>(sculptures_.size()) ? sculpture : -1;
+    selected_ = sculpture >= 0 && sculpture < static_cast<int>(sculptures_.size()) &&
+                        !sculptures_[static_cast<std::size_t>(sculpture)].removed
+                    ? sculpture
+                    : -1;
     navigator_.setOrbitTarget(selected_ >= 0 ? std::optional<glm::vec3>(sculptures_[static_cast<std::size_t>(selected_)].worldCentre())
                                              : std::nullopt);
     if (selected_ < 0 && navigator_.mode() == NavigationMode::Orbit) navigator_.setMode(NavigationMode::Walk);
@@ -264,7 +268,7 @@ void GardenSession::input(const Hands& hands, double dt) {
 void GardenSession::selectLevels() {
     scheduler_.beginStage(Stage::Lod);
     for (Sculpture& s : sculptures_) {
-        if (s.missing()) continue;
+        if (!s.onShow()) continue;
         const std::array<double, 3> eye = toModel(s, navigator_.eye());
         s.queue->setViewer(eye);
         // New levels go to a queue once it has shown the last ones, or at
@@ -321,7 +325,7 @@ void GardenSession::remesh() {
     // Nearest sculpture first: its chunks matter most on screen.
     std::vector<std::pair<float, std::size_t>> order;
     for (std::size_t i = 0; i < sculptures_.size(); ++i)
-        if (!sculptures_[i].missing() && sculptures_[i].queue->pending() > 0)
+        if (sculptures_[i].onShow() && sculptures_[i].queue->pending() > 0)
             order.emplace_back(glm::length(sculptures_[i].worldCentre() - navigator_.eye()), i);
     std::sort(order.begin(), order.end());
     bool meshed = false;
@@ -354,7 +358,7 @@ const FrameStats& GardenSession::endFrame() {
 std::size_t GardenSession::remeshPending() const {
     std::size_t n = 0;
     for (const Sculpture& s : sculptures_)
-        if (!s.missing()) n += s.queue->pending();
+        if (s.onShow()) n += s.queue->pending();
     return n;
 }
 
@@ -363,7 +367,7 @@ std::uint64_t GardenSession::morphRemaining() const { return blender_ ? blender_
 std::size_t GardenSession::trianglesShown() const {
     std::size_t n = 0;
     for (const Sculpture& s : sculptures_) {
-        if (s.missing()) continue;
+        if (!s.onShow()) continue;
         for (std::size_t c = 0; c < s.queue->count(); ++c)
             if (const auto m = s.queue->mesh(c)) n += m->triangleCount();
     }

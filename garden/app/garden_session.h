@@ -43,6 +43,8 @@ struct MorphSources;
 // The scales a sculpture may be given, metres per model unit.
 constexpr double kMinSculptureScale = 1e-3;
 constexpr double kMaxSculptureScale = 1e3;
+// "" when the placement is finite and its scale within those bounds, else why not.
+std::string checkPlacementValues(const Placement& placement);
 
 struct SessionSettings {
     SchedulerSettings scheduler;
@@ -152,6 +154,20 @@ public:
     // goes with it.
     ActionOrWhy sketchFromWorld(int sculpture, SketchMode mode, const std::vector<std::array<double, 3>>& worldPoints,
                                 const std::array<double, 3>& worldNormal, double thickness = 1.0) const;
+    // A sculpture from a HyperFun file, added to the garden (an AddAction
+    // holding the file's text): `name` "" takes the file's stem (made
+    // unique); refused with the parser's messages when the file is broken.
+    ActionOrWhy addFromFile(const std::string& path, const std::string& name, const Placement& placement,
+                            int resolution = 128, const std::string& body = "") const;
+    // A sketch in mode `new`: its inflated solid as a new sculpture named
+    // `name` ("" : "sketch", made unique) standing where it was drawn.
+    ActionOrWhy sketchNewFromWorld(const std::string& name, const std::vector<std::array<double, 3>>& worldPoints,
+                                   const std::array<double, 3>& worldNormal, double thickness = 1.0) const;
+    // `wanted` if no sculpture has that name, else the first free `wanted-N`.
+    std::string uniqueName(const std::string& wanted) const;
+    // A point on the ground `distance` metres ahead of the viewer: where
+    // the window puts a sculpture it adds.
+    std::array<double, 3> placeInView(double distance) const;
     // Edit `edit` of the sculpture (a perturbation) with a new factor and
     // extent (radii in metres): its replacement.
     ActionOrWhy perturbationChange(int sculpture, std::size_t edit, double strength,
@@ -169,6 +185,8 @@ public:
                              const std::array<double, 3>& worldDirection, ImpactTool tool);
     std::string reapplyImpacts(int from, int to);
     std::string editPerturbation(int sculpture, std::size_t edit, double strength, const std::array<double, 3>& radii);
+    std::string addSculptureFile(const std::string& path, const std::string& name, const Placement& placement,
+                                 int resolution = 128, const std::string& body = "");
     // A live stroke: begun at a point, extended as the hand moves, ended on
     // release (the stroke is in the edit list from its first point, and
     // journalled as one StrokeAction when it ends).
@@ -272,6 +290,9 @@ private:
         std::optional<Perturbation> replacedBefore;   // a ReplaceAction's
     };
     void buildSculpture(std::size_t index);
+    // The pyramid, layout and queue of a sampled sculpture, its coarsest level meshed.
+    void attachMeshing(Sculpture& s) const;
+    std::string applyAddModel(const AddAction& a);
     void buildMorph();
     void restartMorph();
     std::array<double, 3> toModel(const Sculpture& s, const glm::vec3& world) const;

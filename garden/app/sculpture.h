@@ -29,9 +29,11 @@ class SculptureEdits;
 struct SculptureSource {
     enum class Kind { HyperFun, Morph };
     Kind kind = Kind::HyperFun;
-    // HyperFun: the garden file's entry (file, body, a[], box, resolution)
-    // and the program read from it (null when the file is missing or broken).
-    const SculptureSpec* spec = nullptr;
+    // HyperFun: the garden's entry (file, body, a[], box, resolution) by its
+    // index in Garden::sculptures and GardenLoad::sculptures (an index: a
+    // sculpture added while the garden runs appends to both), and the
+    // program read from it (null when the file is missing or broken).
+    int spec = -1;
     std::shared_ptr<const frep::Program> program;
     // Morph: the garden's triangle of sources; the weights live in the session.
     const MorphSpec* morph = nullptr;
@@ -61,6 +63,11 @@ struct Sculpture {
     Sculpture& operator=(Sculpture&&) noexcept;
 
     bool missing() const { return !error.empty(); }
+    // Its adding was undone (AddAction): not shown, picked, edited or found
+    // by name; its caches stay so that redo shows it at once.
+    bool removed = false;
+    // In the garden with a grid: what is drawn, picked and meshed.
+    bool onShow() const { return !removed && !missing(); }
     bool morphResult() const { return source.kind == SculptureSource::Kind::Morph; }
     glm::vec3 worldCentre() const;
 };

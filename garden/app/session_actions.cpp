@@ -71,6 +71,7 @@ std::string GardenSession::apply(const Action& action) {
         const int i = actionSculpture(a->sculpture, why);
         return why.empty() ? applySketchModel(i, *a) : why;
     }
+    if (const auto* a = std::get_if<AddAction>(&action)) return applyAddModel(*a);
     if (std::holds_alternative<UndoAction>(action)) return undo() ? "" : "nothing to undo";
     if (std::holds_alternative<RedoAction>(action)) return redo() ? "" : "nothing to redo";
     const auto& m = std::get<MorphWeightsAction>(action);

@@ -44,8 +44,7 @@ std::optional<double> angleAbout(const glm::vec3& pivot, const glm::vec3& p) {
 
 }  // namespace
 
-std::string GardenSession::checkPlacement(int sculpture, const Placement& placement) const {
-    if (sculpture < 0 || sculpture >= static_cast<int>(sculptures_.size())) return "no such sculpture";
+std::string checkPlacementValues(const Placement& placement) {
     for (double c : placement.position)
         if (!std::isfinite(c)) return "the position is not a finite point";
     if (!std::isfinite(placement.yawDegrees)) return "the yaw is not a finite angle";
@@ -53,6 +52,11 @@ std::string GardenSession::checkPlacement(int sculpture, const Placement& placem
         return "the scale must be in [" + std::to_string(kMinSculptureScale) + ", " + std::to_string(kMaxSculptureScale) +
                "] metres per model unit";
     return "";
+}
+
+std::string GardenSession::checkPlacement(int sculpture, const Placement& placement) const {
+    if (sculpture < 0 || sculpture >= static_cast<int>(sculptures_.size())) return "no such sculpture";
+    return checkPlacementValues(placement);
 }
 
 std::string GardenSession::moveSculptureLive(int sculpture, const Placement& placement) {

@@ -27,6 +27,7 @@ bool GardenSession::finite3(const std::array<double, 3>& p) {
 std::string GardenSession::checkEditable(int sculpture) const {
     if (sculpture < 0 || sculpture >= static_cast<int>(sculptures_.size())) return "no such sculpture";
     const Sculpture& s = sculptures_[static_cast<std::size_t>(sculpture)];
+    if (s.removed) return "the sculpture '" + s.name + "' was removed";
     if (s.missing()) return "the sculpture '" + s.name + "' is missing: " + s.error;
     return "";
 }
@@ -234,6 +235,9 @@ bool GardenSession::stepHistory(std::vector<UndoEntry>& from, std::vector<UndoEn
         Sculpture& s = sculptures_[static_cast<std::size_t>(entry.sculpture)];
         if (const auto* move = std::get_if<MoveAction>(&entry.action)) {
             placeSculpture(entry.sculpture, undoing ? *entry.placementBefore : move->placement);
+        } else if (std::holds_alternative<AddAction>(entry.action)) {
+            s.removed = undoing;
+            if (undoing && selected_ == entry.sculpture) select(-1);
         } else if (const auto* r = std::get_if<ReplaceAction>(&entry.action)) {
             if (!s.edits || r->edit >= s.edits->list().size()) continue;
             Edit e;
@@ -297,7 +301,7 @@ std::optional<std::pair<int, glm::vec3>> GardenSession::toolHit(const Pose& aim)
     double bestT = 1e300;
     for (std::size_t i = 0; i < sculptures_.size(); ++i) {
         const Sculpture& s = sculptures_[i];
-        if (s.missing()) continue;
+        if (!s.onShow()) continue;
         const glm::dmat4 toModelM = glm::inverse(glm::dmat4(s.modelToWorld));
         const glm::dvec3 o = glm::dvec3(toModelM * glm::dvec4(glm::dvec3(aim.position), 1.0));
         const glm::dvec3 d = glm::dvec3(toModelM * glm::dvec4(glm::dvec3(aim.forward()), 0.0));

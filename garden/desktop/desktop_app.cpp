@@ -55,6 +55,7 @@ bool gardenPanel(GardenSession& session, glm::vec2& selector, bool headset, cons
     if (ImGui::BeginListBox("##sculptures", ImVec2(300, 6 * ImGui::GetTextLineHeightWithSpacing()))) {
         for (std::size_t i = 0; i < session.sculptures().size(); ++i) {
             const Sculpture& s = session.sculptures()[i];
+            if (s.removed) continue;
             if (s.missing()) {
                 ImGui::TextColored(ImVec4(1, 0.35f, 0.3f, 1), "%s (missing)", s.name.c_str());
                 if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", s.error.c_str());

@@ -97,7 +97,7 @@ ViewUpload GardenView::upload(const GardenSession& session, double allowanceMs) 
         if (!renderer_.has(pathId(p))) bytes += renderer_.upload(pathId(p), 1, pathMesh(g.paths[p], g.ground.height));
     for (std::size_t s = 0; s < session.sculptures().size(); ++s) {
         const Sculpture& st = session.sculptures()[s];
-        if (st.missing()) continue;
+        if (!st.onShow()) continue;
         const poly::RemeshQueue& q = *st.queue;
         if (uploaded_.size() <= s) uploaded_.resize(s + 1, 0);
         if (uploaded_[s] == q.shownGeneration() + 1) continue;  // nothing new on show
@@ -141,6 +141,7 @@ void GardenView::render(const GardenSession& session, glm::ivec2 viewport, const
     const auto& sculptures = session.sculptures();
     for (std::size_t s = 0; s < sculptures.size(); ++s) {
         const Sculpture& st = sculptures[s];
+        if (st.removed) continue;
         if (st.missing()) {
             renderer_.drawLines(cubeEdges(st.modelToWorld, static_cast<float>(st.scale)), glm::vec4(0.9f, 0.1f, 0.1f, 1.0f),
                                 LineMode::Segments);

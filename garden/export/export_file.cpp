@@ -37,6 +37,7 @@ std::string prepareExport(const GardenSession& session, int index, const std::st
     if (index < 0 || static_cast<std::size_t>(index) >= session.sculptures().size())
         return "no sculpture with index " + std::to_string(index);
     const Sculpture& s = session.sculptures()[static_cast<std::size_t>(index)];
+    if (s.removed) return "sculpture '" + s.name + "' was removed";
     if (s.missing()) return "sculpture '" + s.name + "' is missing: " + s.error;
     if (options.resolution < 0) return "the resolution must be positive";
     if (!s.volume) return "sculpture '" + s.name + "' has no grid to take its model box from";

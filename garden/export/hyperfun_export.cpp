@@ -173,10 +173,11 @@ struct BodyWriter {
     }
 };
 
+// `index` into the garden's sculptures (Sculpture::source.spec).
 const frep::Model& modelOf(const GardenSession& session, std::size_t index) {
     const SculptureLoad& l = session.load().sculptures.at(index);
     if (!l.model)
-        throw std::runtime_error("sculpture '" + session.garden().sculptures[index].name + "' has no program");
+        throw std::runtime_error("sculpture '" + session.garden().sculptures.at(index).name + "' has no program");
     return *l.model;
 }
 
@@ -225,6 +226,7 @@ HyperFunExport exportOrThrow(const GardenSession& session, int index) {
     if (index < 0 || index >= static_cast<int>(session.sculptures().size()))
         throw std::runtime_error("no sculpture with index " + std::to_string(index));
     const Sculpture& s = session.sculptures()[static_cast<std::size_t>(index)];
+    if (s.removed) throw std::runtime_error("sculpture '" + s.name + "' was removed");
     if (s.missing()) throw std::runtime_error("sculpture '" + s.name + "' is missing: " + s.error);
     if (!s.volume) throw std::runtime_error("sculpture '" + s.name + "' has no grid");
     const bool edited = s.edits && !s.edits->list().empty();
@@ -262,8 +264,8 @@ HyperFunExport exportOrThrow(const GardenSession& session, int index) {
         w.st.comment("the morph's blend (clamped to +-band)");
         f = HfText::assign(w.st, "hg_morph(x, a)");
     } else {
-        const frep::Model& m = modelOf(session, static_cast<std::size_t>(index));
-        const SculptureSpec& spec = *s.source.spec;
+        const frep::Model& m = modelOf(session, static_cast<std::size_t>(s.source.spec));
+        const SculptureSpec& spec = session.garden().sculptures.at(static_cast<std::size_t>(s.source.spec));
         // Unedited and without a[]: the source body itself is my_model.
         const bool itself = !edited && m.parameters().empty();
         std::string callee;

@@ -82,8 +82,19 @@ std::string runSculptCommand(const SculptCommand& command, GardenSession& sessio
     if (const auto* a = std::get_if<ActionCommand>(&command)) return session.apply(a->action);
     if (const auto* c = std::get_if<SketchCommand>(&command)) {
         const int s = session.findSculpture(c->sculpture);
+        if (c->newSculpture) {
+            const auto a = session.sketchNewFromWorld(c->sculpture, c->points, c->normal, c->thickness);
+            return a.action ? session.apply(*a.action) : a.why;
+        }
         if (s < 0) return "no sculpture named '" + c->sculpture + "'";
         return session.applySketch(s, c->mode, c->points, c->normal, c->thickness);
+    }
+    if (const auto* c = std::get_if<AddCommand>(&command)) {
+        Placement p;
+        p.position = c->position ? *c->position : session.placeInView(3.0);
+        p.yawDegrees = c->yaw;
+        p.scale = c->scale;
+        return session.addSculptureFile(c->file, c->name, p, c->resolution, c->body);
     }
     const auto find = [&](const std::string& name, int& index) -> std::string {
         index = session.findSculpture(name);

@@ -125,10 +125,10 @@ ReplayCommand readCommand(const nlohmann::json& v, const std::string& path) {
     if (!v.is_object() || v.size() != 1)
         throw JsonError(path, "expected an object with one command: morph, morph_weights, screenshot, detail, pose, select, "
                               "orbit, budget_ms, stroke, perturb, edit_perturbation, impacts, reapply_impacts, undo, redo, sculpt_tool, "
-                              "action or sketch");
+                              "action, sketch or add");
     ReplayCommand c;
     for (const char* key :
-         {"stroke", "perturb", "edit_perturbation", "impacts", "reapply_impacts", "undo", "redo", "sculpt_tool", "action", "sketch"})
+         {"stroke", "perturb", "edit_perturbation", "impacts", "reapply_impacts", "undo", "redo", "sculpt_tool", "action", "sketch", "add"})
         if (v.contains(key)) {
             c.kind = ReplayCommand::Kind::Sculpt;
             c.sculpt = readSculptCommand(key, v.at(key), childPath(path, key));
@@ -136,7 +136,7 @@ ReplayCommand readCommand(const nlohmann::json& v, const std::string& path) {
         }
     ObjectReader r(v, path, {"morph", "morph_weights", "screenshot", "detail", "pose", "select", "orbit", "budget_ms",
                              "stroke", "perturb", "edit_perturbation", "impacts", "reapply_impacts", "undo", "redo",
-                             "sculpt_tool", "action", "sketch"});
+                             "sculpt_tool", "action", "sketch", "add"});
     if (const auto* m = r.optional("morph")) {
         c.kind = ReplayCommand::Kind::Morph;
         const auto xz = readVec2(*m, r.pathOf("morph"));
@@ -248,6 +248,12 @@ ReplayScript parseReplayScript(const std::string& text, const std::string& file,
     if (!steps.is_array() || steps.empty()) throw JsonError(r.pathOf("steps"), "expected a non-empty array of steps");
     for (std::size_t i = 0; i < steps.size(); ++i) s.steps.push_back(readStep(steps[i], indexPath(r.pathOf("steps"), i)));
     r.finish();
+    // Files the script brings in are named relative to it, like its garden.
+    for (ReplayStep& step : s.steps)
+        for (ReplayCommand& c : step.commands)
+            if (auto* add = std::get_if<AddCommand>(&c.sculpt); add && !folder.empty() &&
+                                                              !std::filesystem::path(add->file).is_absolute())
+                add->file = (std::filesystem::path(folder) / add->file).lexically_normal().string();
     return s;
 }
 

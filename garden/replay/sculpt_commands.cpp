@@ -4,6 +4,7 @@
 
 #include "garden/scene/json_reader.h"
 #include "garden/sculpt/edit_names.h"
+#include "voxel/volume_frame.h"
 
 namespace hg::garden {
 
@@ -73,12 +74,29 @@ SculptCommand readSculptCommand(const std::string& key, const nlohmann::json& v,
         ObjectReader r(v, path, {"sculpture", "mode", "points", "normal", "thickness"});
         SketchCommand c;
         c.sculpture = readString(r.required("sculpture"), r.pathOf("sculpture"));
-        c.mode = readSketchMode(r.required("mode"), r.pathOf("mode"));
+        const nlohmann::json& mode = r.required("mode");
+        c.newSculpture = mode.is_string() && mode.get<std::string>() == "new";
+        if (!c.newSculpture) c.mode = readSketchMode(mode, r.pathOf("mode"));
         const nlohmann::json& p = r.required("points");
         if (!p.is_array() || p.size() < 3) throw JsonError(r.pathOf("points"), "expected an array of 3 or more [x, y, z] points");
         for (std::size_t i = 0; i < p.size(); ++i) c.points.push_back(readVec3(p[i], indexPath(r.pathOf("points"), i)));
         c.normal = readVec3(r.required("normal"), r.pathOf("normal"));
         if (r.has("thickness")) c.thickness = readNumber(r.required("thickness"), r.pathOf("thickness"), 0.05, 20.0);
+        r.finish();
+        return c;
+    }
+    if (key == "add") {
+        ObjectReader r(v, path, {"file", "name", "position", "yaw", "scale", "resolution", "body"});
+        AddCommand c;
+        c.file = readString(r.required("file"), r.pathOf("file"));
+        if (r.has("name")) c.name = readString(r.required("name"), r.pathOf("name"));
+        if (r.has("position")) c.position = readVec3(r.required("position"), r.pathOf("position"));
+        if (r.has("yaw")) c.yaw = readNumber(r.required("yaw"), r.pathOf("yaw"), -3600.0, 3600.0);
+        if (r.has("scale")) c.scale = readNumber(r.required("scale"), r.pathOf("scale"), 1e-3, 1e3);
+        if (r.has("resolution"))
+            c.resolution = readInt(r.required("resolution"), r.pathOf("resolution"), voxel::kMinResolution,
+                                   voxel::kMaxResolution);
+        if (r.has("body")) c.body = readString(r.required("body"), r.pathOf("body"));
         r.finish();
         return c;
     }

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
@@ -43,13 +44,28 @@ struct ImpactsCommand {
 };
 
 // A sketch drawn on a plane (world points on or near it, its normal)
-// joined to the sculpture or cut from it.
+// joined to the sculpture or cut from it, or (`newSculpture`, mode "new")
+// made a new sculpture of that name.
 struct SketchCommand {
     std::string sculpture;
     SketchMode mode = SketchMode::Add;
+    bool newSculpture = false;
     std::vector<std::array<double, 3>> points;
     std::array<double, 3> normal{0, 0, 1};
     double thickness = 1.0;
+};
+
+// A HyperFun file brought into the garden as a new sculpture (the
+// window's "add a sculpture"); `file` is resolved against the script's
+// folder; no position: on the ground 3 m ahead of the viewer.
+struct AddCommand {
+    std::string file;
+    std::string name;                               // "": the file's stem
+    std::optional<std::array<double, 3>> position;  // metres
+    double yaw = 0.0;                               // degrees
+    double scale = 1.0;                             // metres per model unit
+    int resolution = 128;
+    std::string body;
 };
 
 // The last impact series made on one sculpture fired again at another.
@@ -77,7 +93,7 @@ struct ToolCommand { ToolSettings settings; };
 struct ActionCommand { Action action; };
 
 using SculptCommand = std::variant<StrokeCommand, PerturbCommand, UndoCommand, RedoCommand, ToolCommand, ImpactsCommand,
-                                   ReapplyImpactsCommand, EditPerturbationCommand, ActionCommand, SketchCommand>;
+                                   ReapplyImpactsCommand, EditPerturbationCommand, ActionCommand, SketchCommand, AddCommand>;
 
 // Reads the command under `key` (stroke, perturb, edit_perturbation,
 // impacts, reapply_impacts, undo, redo, sculpt_tool, action, sketch);

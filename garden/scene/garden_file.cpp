@@ -351,20 +351,31 @@ Garden parseGarden(const std::string& text, const std::string& file, const std::
     return g;
 }
 
-SculptureLoad loadSculpture(const SculptureSpec& spec) {
+namespace {
+
+SculptureLoad sculptureFrom(ModelFile mf, const SculptureSpec& spec) {
     SculptureLoad s;
-    ModelFile mf = loadModelFile(spec.file, spec.body, spec.a);
     s.program = std::move(mf.program);
     s.error = std::move(mf.error);
     if (!mf.model) return s;
     int aSize = mf.model->body().aSize();
     if (spec.a.size() > static_cast<std::size_t>(aSize)) {
-        s.error = spec.file + ": error: " + std::to_string(spec.a.size()) + " values given for a[], but body '" +
+        s.error = (spec.file.empty() ? spec.fileAsWritten : spec.file) + ": error: " + std::to_string(spec.a.size()) + " values given for a[], but body '" +
                   mf.model->body().spelling + "' declares a[" + std::to_string(aSize) + "]\n";
         return s;
     }
     s.model = std::move(mf.model);
     return s;
+}
+
+}  // namespace
+
+SculptureLoad loadSculpture(const SculptureSpec& spec) {
+    return sculptureFrom(loadModelFile(spec.file, spec.body, spec.a), spec);
+}
+
+SculptureLoad sculptureFromText(const SculptureSpec& spec, const std::string& text) {
+    return sculptureFrom(modelFromText(text, spec.fileAsWritten, spec.body, spec.a), spec);
 }
 
 GardenLoad loadGarden(const std::string& path) {

@@ -48,5 +48,8 @@ GardenLoad loadGarden(const std::string& path);
 // files give an error, not an exception). Used by loadGarden, and again when
 // a file changed on disk.
 SculptureLoad loadSculpture(const SculptureSpec& spec);
+// The same from the program's text instead of spec.file (a sculpture added
+// to a running session, garden/app/session_adding.cpp).
+SculptureLoad sculptureFromText(const SculptureSpec& spec, const std::string& text);
 
 }  // namespace hg::garden

@@ -14,16 +14,29 @@ int findBodyOrExplain(const frep::Program& program, const std::string& name, con
     return -1;
 }
 
-ModelFile loadModelFile(const std::string& path, const std::string& body, const std::vector<double>& a) {
+namespace {
+
+ModelFile modelFrom(frep::ParseResult parsed, const std::string& label, const std::string& body,
+                    const std::vector<double>& a) {
     ModelFile mf;
-    frep::ParseResult parsed = frep::parseFile(path);
     for (const auto& d : parsed.errors) mf.error += frep::formatDiagnostic(d);
     if (!parsed.ok()) return mf;
     mf.program = std::make_shared<const frep::Program>(std::move(*parsed.program));
-    int index = findBodyOrExplain(*mf.program, body, path, mf.error);
+    int index = findBodyOrExplain(*mf.program, body, label, mf.error);
     if (index < 0) return mf;
     mf.model.emplace(mf.program, index, a);
     return mf;
+}
+
+}  // namespace
+
+ModelFile loadModelFile(const std::string& path, const std::string& body, const std::vector<double>& a) {
+    return modelFrom(frep::parseFile(path), path, body, a);
+}
+
+ModelFile modelFromText(const std::string& text, const std::string& label, const std::string& body,
+                        const std::vector<double>& a) {
+    return modelFrom(frep::parseProgram(text, label), label, body, a);
 }
 
 }  // namespace hg::garden

@@ -25,6 +25,11 @@ struct ModelFile {
 
 // `body` "": `my_model`, else the first body (HyperFun's default).
 ModelFile loadModelFile(const std::string& path, const std::string& body, const std::vector<double>& a);
+// The same from the program's text; `label` names it in messages (a file as
+// the user gave it, "sketch"): a sculpture added to a running session
+// keeps its text in the journal, not a path (docs/session-format.md).
+ModelFile modelFromText(const std::string& text, const std::string& label, const std::string& body,
+                        const std::vector<double>& a);
 
 // The body named `name` (case-insensitive), or the default body for "".
 // Returns -1 and sets `why` ("FILE: error: no body named 'x'; the file

@@ -321,7 +321,7 @@ std::string SessionRecorder::snapshot() {
     for (const Sculpture& s : session_->sculptures()) {
         // The morph result's grid follows its blend, which runs over frames:
         // its edits are in the journal, its grid is not snapshotted.
-        if (!s.edits || s.missing() || s.morphResult()) continue;
+        if (!s.edits || !s.onShow() || s.morphResult()) continue;
         const std::string file = gridFileName(s.name, records_);
         const std::string path = (fs::path(paths_.snapshots) / file).string();
         std::string bytes;

@@ -141,7 +141,7 @@ TEST_F(SketchEditTest, ASketchIsJournalledAndAReplayCommandDrawsIt) {
     EXPECT_EQ(test::differingVoxels(grid(s, c), grid(again, c)), 0);
     // A bad mode is refused at its JSON path.
     try {
-        parseReplayScript(R"({"garden": "g.json", "steps": [{"commands": [{"sketch": {"sculpture": "c", "mode": "new",
+        parseReplayScript(R"({"garden": "g.json", "steps": [{"commands": [{"sketch": {"sculpture": "c", "mode": "grow",
             "normal": [0, 0, 1], "points": [[0, 0, 0], [1, 0, 0], [0, 1, 0]]}}]}]})",
                           "bad.json", "");
         ADD_FAILURE() << "an unknown mode was read";
