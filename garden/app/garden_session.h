@@ -370,7 +370,8 @@ private:
     // The sketch tool's outline under way: its sculpture, its plane (a
     // point and the normal facing the hand where it began) and the points.
     struct SketchDraw {
-        int sculpture = -1;
+        bool drawing = false;
+        int sculpture = -1;  // -1: begun in the air, a new sculpture
         glm::vec3 origin{0.0f}, normal{0.0f, 0.0f, 1.0f};
         std::vector<glm::vec3> points;
     };

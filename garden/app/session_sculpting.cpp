@@ -325,7 +325,7 @@ void GardenSession::sculptWithHands(const Hands& hands) {
         moveWithHands(h);
         return;
     }
-    if (tool_.kind == ToolSettings::Kind::Sketch || sketch_.sculpture >= 0) {
+    if (tool_.kind == ToolSettings::Kind::Sketch || sketch_.drawing) {
         sketchWithHands(h);
         if (tool_.kind == ToolSettings::Kind::Sketch) return;
     }

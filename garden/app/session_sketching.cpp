@@ -3,8 +3,10 @@
 // through that point facing the hand (on the desktop the mouse ray's
 // origin is the eye, so the plane faces the viewer); while it is held the
 // ray's point on that plane is added; on release the outline becomes one
-// SketchAction, joined to the sculpture (reverse: cut from it). The same
-// for the desktop's mouse and the headset's tool hand: both are hands.
+// SketchAction, joined to the sculpture (reverse: cut from it). Begun in
+// the air, the plane stands kAirSketchDistance along the ray and the
+// outline becomes a new sculpture (an AddAction, mode `new`). The same for
+// the desktop's mouse and the headset's tool hand: both are hands.
 #include "garden/app/garden_session.h"
 
 #include <glm/geometric.hpp>
@@ -16,12 +18,15 @@ namespace {
 // Points closer than this to the last one (metres) add nothing: the
 // outline is resampled anyway, and a still hand should not pile them up.
 constexpr float kSketchStep = 0.002f;
+// Metres along the ray to the plane of a sketch begun in the air: within
+// reach of a hand in the headset, a sculpture's size away on the desktop.
+constexpr float kAirSketchDistance = 1.5f;
 
 }  // namespace
 
 void GardenSession::sketchWithHands(const HandState& h) {
     const bool held = h.tracked && h.trigger > 0.5f && tool_.kind == ToolSettings::Kind::Sketch;
-    if (sketch_.sculpture < 0) {
+    if (!sketch_.drawing) {
         if (!held) {
             toolArmed_ = true;
             return;
@@ -29,14 +34,11 @@ void GardenSession::sketchWithHands(const HandState& h) {
         if (!toolArmed_) return;  // one sketch per press
         toolArmed_ = false;
         const auto hit = toolHit(h.aim);
-        if (!hit) {
-            sketchMessage_ = "start a sketch on a sculpture";
-            return;
-        }
-        sketch_.sculpture = hit->first;
-        sketch_.origin = hit->second;
+        sketch_.drawing = true;
+        sketch_.sculpture = hit ? hit->first : -1;
+        sketch_.origin = hit ? hit->second : h.aim.position + kAirSketchDistance * h.aim.forward();
         sketch_.normal = -h.aim.forward();
-        sketch_.points = {hit->second};
+        sketch_.points = {sketch_.origin};
         return;
     }
     if (held) {
@@ -56,6 +58,12 @@ void GardenSession::sketchWithHands(const HandState& h) {
     sketch_ = SketchDraw{};
     std::vector<std::array<double, 3>> points;
     for (const glm::vec3& p : done.points) points.push_back({p.x, p.y, p.z});
+    if (done.sculpture < 0) {
+        const ActionOrWhy a = sketchNewFromWorld("", points, {done.normal.x, done.normal.y, done.normal.z});
+        sketchMessage_ = a.action ? apply(*a.action) : a.why;
+        if (sketchMessage_.empty()) select(static_cast<int>(sculptures_.size()) - 1);
+        return;
+    }
     sketchMessage_ = applySketch(done.sculpture, tool_.reverse ? SketchMode::Cut : SketchMode::Add, points,
                                  {done.normal.x, done.normal.y, done.normal.z});
 }

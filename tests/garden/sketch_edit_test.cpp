@@ -166,14 +166,18 @@ TEST_F(SketchEditTest, TheSketchToolDrawsWithTheToolHand) {
         h.tool.aim.orientation = glm::quatLookAt(glm::normalize(p - eye), glm::vec3(0, 1, 0));
     };
     const auto frame = [&] { s.frame(FrameInput(h, 1.0 / 90.0)); };
-    // Pressed off every sculpture: nothing starts, and it says so.
+    // Pressed off every sculpture and let go at once: a sketch in the air
+    // of one point, refused with the reason; nothing is made.
+    const std::size_t count = s.sculptures().size();
     aimAt({0.0f, 3.0f, 0.0f});
     h.tool.trigger = 1.0f;
     frame();
-    EXPECT_EQ(s.sketchMessage(), "start a sketch on a sculpture");
-    EXPECT_TRUE(s.sketchPath().empty());
+    EXPECT_EQ(s.sketchPath().size(), 1u);
     h.tool.trigger = 0.0f;
     frame();
+    EXPECT_NE(s.sketchMessage().find("3 points"), std::string::npos) << s.sketchMessage();
+    EXPECT_TRUE(s.sketchPath().empty());
+    EXPECT_EQ(s.sculptures().size(), count);
     // A circle of 0.15 m on the ball's front, drawn round once.
     const int n = 40;
     for (int i = 0; i <= n; ++i) {
@@ -226,6 +230,55 @@ TEST(SketchingReplay, TheContentReplayPlays) {
     EXPECT_EQ(s.editCount(column), 2u) << "two joined; the cut undone (redoable)";
     const Sculpture& sc = s.sculptures()[static_cast<std::size_t>(column)];
     EXPECT_EQ(sc.edits->redoCount(), 1u);
+}
+
+}  // namespace
+}  // namespace hg::garden
+
+namespace hg::garden {
+namespace {
+
+// Begun in the air, the outline lies on a plane 1.5 m along the ray and
+// becomes a new sculpture there, selected, one journalled AddAction.
+TEST_F(SketchEditTest, ASketchBegunInTheAirMakesANewSculpture) {
+    GardenSession s(loadGarden(writeGarden()), test::smallSessionSettings());
+    test::ActionList journal;
+    s.setJournal(&journal);
+    s.tool().kind = ToolSettings::Kind::Sketch;
+    const glm::vec3 eye(0.0f, 1.5f, 8.0f);
+    Hands h;
+    h.tool.tracked = true;
+    h.tool.aim.position = eye;
+    const std::size_t count = s.sculptures().size();
+    // A circle of 0.2 m about (0, 1.5, 6.5), seen from the eye.
+    for (int i = 0; i <= 40; ++i) {
+        const float t = 2.0f * 3.14159265f * static_cast<float>(i) / 40.0f;
+        const glm::vec3 p(0.2f * std::cos(t), 1.5f + 0.2f * std::sin(t), 6.5f);
+        h.tool.aim.orientation = glm::quatLookAt(glm::normalize(p - eye), glm::vec3(0, 1, 0));
+        h.tool.trigger = 1.0f;
+        s.frame(FrameInput(h, 1.0 / 90.0));
+    }
+    h.tool.trigger = 0.0f;
+    s.frame(FrameInput(h, 1.0 / 90.0));
+    ASSERT_EQ(s.sketchMessage(), "");
+    ASSERT_EQ(s.sculptures().size(), count + 1);
+    const int made = static_cast<int>(count);
+    EXPECT_EQ(s.selected(), made);
+    EXPECT_EQ(s.sculptures()[count].name, "sketch");
+    ASSERT_EQ(journal.actions.size(), 1u);
+    EXPECT_TRUE(std::holds_alternative<AddAction>(journal.actions[0]));
+    // It stands where it was drawn: the tool's ray through the circle's
+    // centre meets it about 0.2 m before the plane.
+    Pose aim;
+    aim.position = eye;
+    aim.orientation = glm::quatLookAt(glm::vec3(0, 0, -1), glm::vec3(0, 1, 0));
+    const auto hit = s.toolHit(aim);
+    ASSERT_TRUE(hit);
+    EXPECT_EQ(hit->first, made);
+    EXPECT_NEAR(hit->second.z, 6.7f, 0.03f);
+    // Undo takes it away again.
+    ASSERT_TRUE(s.undo());
+    EXPECT_EQ(s.findSculpture("sketch"), -1);
 }
 
 }  // namespace
