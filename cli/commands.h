@@ -58,6 +58,8 @@ struct ReplayCommandOptions {
 };
 
 struct GardenOptions {
+    std::string model;                // a .hf file opened as a garden of that one sculpture ("" : none)
+    std::size_t extraArgs = 0;        // more words after it (an error)
     std::string garden;               // the garden file
     bool gardenGiven = false;         // named on the command line (not the default)
     int width = 1280, height = 720;
@@ -112,5 +114,16 @@ int runVoxelize(const VoxelizeOptions& options);
 int runMesh(const MeshOptions& options);
 int runReplay(const ReplayCommandOptions& options);
 int runGarden(const GardenOptions& options);
+
+// `hypergarden garden add GARDEN.json FILE.hf`: the model added to the garden file.
+struct GardenAddOptions {
+    std::string garden;
+    std::string file;
+    std::string name;
+    std::string body;
+    int resolution = 128;
+    double size = 1.5;
+};
+int runGardenAdd(const GardenAddOptions& options);
 
 }  // namespace hg::garden::cli

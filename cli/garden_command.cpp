@@ -1,11 +1,77 @@
-// No subcommand: the desktop garden.
+// No subcommand: the desktop garden (of a garden file, or of one .hf file);
+// and `garden add`, which adds a sculpture to a garden file.
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
 #include "cli/commands.h"
 #include "garden/desktop/desktop_app.h"
+#include "garden/scene/garden_making.h"
+#include "garden/scene/json_reader.h"
+#include "io/checked_write.h"
 #include "xr/xr_garden.h"
 
 namespace hg::garden::cli {
 
-int runGarden(const GardenOptions& options) {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::vector<std::string> kCommands = {"check", "eval", "voxelize", "mesh", "replay", "session",
+                                            "export", "garden", "gesture"};
+
+// A garden file for `hypergarden FILE.hf` in a folder of its own under the
+// temporary directory (the sculpture's file is named by its absolute path),
+// or "" after saying why not.
+std::string gardenForModel(const std::string& model, std::size_t extraArgs) {
+    if (fs::path(model).extension() == ".hf" && extraArgs > 0) {
+        std::cerr << "error: one HyperFun file opens as a garden; the words after '" << model << "' are not expected\n";
+        return "";
+    }
+    if (fs::path(model).extension() != ".hf") {
+        std::cerr << "error: '" << model << "' is neither a command nor a HyperFun file (.hf)";
+        const std::string near = nearMiss(model, kCommands);
+        if (!near.empty()) std::cerr << " (did you mean '" << near << "'?)";
+        std::cerr << "\nRun hypergarden --help for the commands.\n";
+        return "";
+    }
+    ModelToPlace m;
+    m.file = model;
+    std::string error;
+    const std::string text = gardenOfOneModel(m, error);
+    if (text.empty()) {
+        std::cerr << error;
+        if (error.empty() || error.back() != '\n') std::cerr << '\n';
+        return "";
+    }
+    const fs::path dir = fs::temp_directory_path() /
+                         ("hypergarden-" + fs::path(model).stem().string() + "-" + std::to_string(::getpid()));
+    std::error_code ec;
+    fs::create_directories(dir, ec);
+    const std::string path = (dir / "garden.json").string();
+    if (std::string why = io::writeFileAtomically(path, text, io::WriteSite::SessionFile); !why.empty()) {
+        std::cerr << "error: " << why << '\n';
+        return "";
+    }
+    return path;
+}
+
+}  // namespace
+
+int runGarden(const GardenOptions& given) {
+    GardenOptions options = given;
+    if (!options.model.empty()) {
+        if (options.gardenGiven) {
+            std::cerr << "error: give a garden (--garden) or a HyperFun file, not both\n";
+            return 2;
+        }
+        options.garden = gardenForModel(options.model, options.extraArgs);
+        if (options.garden.empty()) return 2;
+        options.gardenGiven = true;
+    }
     xr::XrOptions x;
     x.garden = options.garden;
     x.gardenGiven = options.gardenGiven;
@@ -35,6 +101,36 @@ int runGarden(const GardenOptions& options) {
     d.frames = options.frames;
     d.exitScreenshot = options.exitScreenshot;
     return runDesktopGarden(d);
+}
+
+int runGardenAdd(const GardenAddOptions& options) {
+    std::ifstream in(options.garden, std::ios::binary);
+    if (!in) {
+        std::cerr << options.garden << ": cannot open the garden file\n";
+        return 1;
+    }
+    std::ostringstream text;
+    text << in.rdbuf();
+    ModelToPlace m;
+    m.file = options.file;
+    m.name = options.name;
+    m.body = options.body;
+    m.resolution = options.resolution;
+    m.size = options.size;
+    std::string error;
+    const std::string out = gardenWithModel(text.str(), options.garden, m, error);
+    if (out.empty()) {
+        std::cerr << error;
+        if (error.empty() || error.back() != '\n') std::cerr << '\n';
+        return 1;
+    }
+    if (std::string why = io::writeFileAtomically(options.garden, out, io::WriteSite::SessionFile); !why.empty()) {
+        std::cerr << "error: " << why << " (the garden file is unchanged)\n";
+        return 1;
+    }
+    std::cout << "added '" << (m.name.empty() ? fs::path(m.file).stem().string() : m.name) << "' to " << options.garden
+              << '\n';
+    return 0;
 }
 
 }  // namespace hg::garden::cli

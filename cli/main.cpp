@@ -37,6 +37,10 @@ int main(int argc, char** argv) {
     app.add_flag("--seated", gardenOpts.seated,
                  "With --xr: seated use (heights raised by the settings' offset, 0.5 m unless changed)");
     app.add_flag("--smooth-turn", gardenOpts.smoothTurn, "With --xr: turn smoothly instead of in snaps (for this run)");
+    // A vector, so that a mistyped command and its arguments are one
+    // mistake with a suggestion, not "argument not expected".
+    std::vector<std::string> modelArgs;
+    app.add_option("model", modelArgs, "A HyperFun file (.hf) to open as a garden of that one sculpture");
 
     ModelOptions checkOpts;
     auto* check = app.add_subcommand("check", "Parse a HyperFun file, list its bodies, evaluation path and model box");
@@ -120,6 +124,19 @@ int main(int argc, char** argv) {
     exportCmd->add_option("--box", exportBox, "Meshes: model box x0,y0,z0,x1,y1,z1 (default: the sculpture's)");
     exportCmd->add_option("--memory-limit", exportOpts.memoryLimitMiB, "Meshes: MiB the work may use (default: 80% of available)");
 
+    GardenAddOptions addOpts;
+    auto* gardenCmd = app.add_subcommand("garden", "Change a garden file");
+    gardenCmd->require_subcommand(1);
+    auto* gardenAdd = gardenCmd->add_subcommand("add", "Add a HyperFun file to a garden as a sculpture");
+    gardenAdd->add_option("garden", addOpts.garden, "Garden file (.json)")->required();
+    gardenAdd->add_option("file", addOpts.file, "HyperFun file (.hf)")->required();
+    gardenAdd->add_option("--name", addOpts.name, "The sculpture's name (default: the file's stem)");
+    gardenAdd->add_option("--body", addOpts.body, "The body to use (default: my_model, else the first)");
+    gardenAdd->add_option("--resolution", addOpts.resolution, "Voxels along the model box's longest side (default 128)")
+        ->check(CLI::Range(4, 2048));
+    gardenAdd->add_option("--size", addOpts.size, "Metres along the model box's longest side (default 1.5)")
+        ->check(CLI::Range(0.01, 100.0));
+
     GestureCommandOptions gestureOpts;
     auto* gestureCmd = app.add_subcommand("gesture", "Classify the strokes of a file as gestures (docs/gestures.md)");
     gestureCmd->add_option("file", gestureOpts.file, "Strokes (.json): {\"strokes\": [{\"points\": [[x, y], ...], \"label\": ...}]}")
@@ -135,6 +152,10 @@ int main(int argc, char** argv) {
         return app.exit(e);
     }
     gardenOpts.gardenGiven = gardenOption->count() > 0;
+    if (!modelArgs.empty()) {
+        gardenOpts.model = modelArgs[0];
+        gardenOpts.extraArgs = modelArgs.size() - 1;
+    }
     if (!parseNumberList(checkA, checkOpts.parameters) || !parseNumberList(evalA, evalOpts.model.parameters) ||
         !parseNumberList(voxA, voxOpts.model.parameters) || !parseNumberList(meshA, meshOpts.model.parameters)) {
         std::cerr << "error: --a expects numbers separated by commas, for example --a 0.5,1\n";
@@ -164,6 +185,7 @@ int main(int argc, char** argv) {
     }
     if (app.get_subcommands().empty()) return runGarden(gardenOpts);
     if (*sessionCmd) return runSessionCommand(sessionOpts);
+    if (*gardenCmd) return runGardenAdd(addOpts);
     if (*gestureCmd) return runGestureCommand(gestureOpts);
     if (*vox) {
         if (!parseNumberList(voxBox, voxOpts.box)) {

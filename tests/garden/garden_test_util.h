@@ -3,8 +3,10 @@
 #pragma once
 
 #include <gtest/gtest.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -73,5 +75,26 @@ inline MorphSources threeSources(const ThreeModels& m, int resolution) {
     EXPECT_TRUE(r.sources.has_value()) << r.error;
     return std::move(*r.sources);
 }
+
+#ifdef HG_HYPERGARDEN_EXE
+struct ShellRun {
+    int status = -1;
+    std::string output;  // stdout and stderr together
+};
+
+// A shell command line (the hypergarden executable as $HG), its status and output.
+inline ShellRun shell(const std::string& command) {
+    ShellRun r;
+    const std::string cmd = "HG='" + std::string(HG_HYPERGARDEN_EXE) + "'; " + command + " 2>&1";
+    FILE* pipe = ::popen(cmd.c_str(), "r");
+    if (!pipe) return r;
+    char buf[4096];
+    std::size_t n;
+    while ((n = std::fread(buf, 1, sizeof buf, pipe)) > 0) r.output.append(buf, n);
+    const int st = ::pclose(pipe);
+    r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+    return r;
+}
+#endif
 
 }  // namespace hg::garden::test

@@ -31,25 +31,8 @@ namespace hg::garden {
 namespace {
 
 namespace fs = std::filesystem;
-
-struct ShellRun {
-    int status = -1;
-    std::string output;  // stdout and stderr together
-};
-
-// A shell command line (the executable as $HG), its status and output.
-ShellRun shell(const std::string& command) {
-    ShellRun r;
-    const std::string cmd = "HG='" + std::string(HG_HYPERGARDEN_EXE) + "'; " + command + " 2>&1";
-    FILE* pipe = ::popen(cmd.c_str(), "r");
-    if (!pipe) return r;
-    char buf[4096];
-    std::size_t n;
-    while ((n = std::fread(buf, 1, sizeof buf, pipe)) > 0) r.output.append(buf, n);
-    const int st = ::pclose(pipe);
-    r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-    return r;
-}
+using test::shell;
+using test::ShellRun;
 
 const char* const kNames[] = {"a", "b", "c"};
 

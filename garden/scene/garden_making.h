@@ -1,0 +1,33 @@
+// Gardens made or extended from the command line (docs/garden-format.md,
+// "Bringing work in"): `hypergarden FILE.hf` opens a garden of that one
+// sculpture, `hypergarden garden add GARDEN.json FILE.hf` adds an entry to a
+// garden file. Both size the model to the garden (its box's longest side
+// `size` metres, standing on the ground) and check the result by reading it
+// back as a garden before anything is written.
+#pragma once
+
+#include <string>
+
+namespace hg::garden {
+
+struct ModelToPlace {
+    std::string file;         // the .hf file, as the user named it
+    std::string name;         // "": the file's stem
+    std::string body;         // "": my_model, else the first body
+    int resolution = 128;     // voxels along the model box's longest side
+    double size = 1.5;        // metres along the model box's longest side
+};
+
+// A whole garden file's text holding `model` alone, at the origin, with the
+// visitor's start framing it; "" with `error` set when the file does not
+// load (the parser's messages) or has no box.
+std::string gardenOfOneModel(const ModelToPlace& model, std::string& error);
+
+// `gardenText` (the file at `gardenPath`) with `model` added beside the
+// sculptures already there (3 m past the furthest along +x), its file
+// written relative to the garden's folder; keys keep their order. "" with
+// `error` set for a broken model, a taken name or a garden that does not read.
+std::string gardenWithModel(const std::string& gardenText, const std::string& gardenPath, const ModelToPlace& model,
+                            std::string& error);
+
+}  // namespace hg::garden
