@@ -43,6 +43,8 @@ struct MorphSources;
 // The scales a sculpture may be given, metres per model unit.
 constexpr double kMinSculptureScale = 1e-3;
 constexpr double kMaxSculptureScale = 1e3;
+// The longest side, in metres, of a sculpture added without a scale.
+constexpr double kAddedSize = 1.5;
 // "" when the placement is finite and its scale within those bounds, else why not.
 std::string checkPlacementValues(const Placement& placement);
 
@@ -157,6 +159,8 @@ public:
     // A sculpture from a HyperFun file, added to the garden (an AddAction
     // holding the file's text): `name` "" takes the file's stem (made
     // unique); refused with the parser's messages when the file is broken.
+    // A placement with scale 0 sizes the model to kAddedSize metres and
+    // stands it on the ground at the placement's x and z.
     ActionOrWhy addFromFile(const std::string& path, const std::string& name, const Placement& placement,
                             int resolution = 128, const std::string& body = "") const;
     // A sketch in mode `new`: its inflated solid as a new sculpture named

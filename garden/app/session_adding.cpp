@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "garden/app/garden_session.h"
+#include "garden/scene/garden_making.h"
 #include "garden/scene/model_file.h"
 #include "garden/scene/to_glm.h"
 #include "garden/sculpt/sketch_edit.h"
@@ -65,6 +66,16 @@ ActionOrWhy GardenSession::addFromFile(const std::string& path, const std::strin
     // action that cannot be played.
     const ModelFile mf = modelFromText(a.source, a.origin, a.body, {});
     if (!mf.ok()) return refused(mf.error);
+    if (!(placement.scale > 0.0)) {
+        // Sized to the garden, standing on the ground where it was put.
+        SizedModel sized;
+        if (std::string why = sizeModel(*mf.model, kAddedSize, placement.position[0], placement.position[2], sized);
+            !why.empty())
+            return refused(path + ": " + why);
+        a.placement.scale = sized.scale;
+        a.placement.position = {sized.position[0], load_.garden->ground.height + sized.position[1], sized.position[2]};
+        a.box = sized.box;
+    }
     return {a, ""};
 }
 

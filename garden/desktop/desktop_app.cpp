@@ -16,6 +16,7 @@
 
 #include "garden/app/garden_session.h"
 #include "garden/desktop/desktop_keys.h"
+#include "garden/desktop/add_panel.h"
 #include "garden/desktop/export_panel.h"
 #include "garden/desktop/garden_view.h"
 #include "garden/desktop/garden_window.h"
@@ -42,7 +43,8 @@ std::string timestampedName(const std::string& dir) {
 // The side panel: the garden, what is missing, the morph selector.
 // `headset`: the Headset button is shown (true when pressed), with the
 // last headset message under it.
-bool gardenPanel(GardenSession& session, glm::vec2& selector, bool headset, const std::string& headsetMessage) {
+bool gardenPanel(GardenSession& session, glm::vec2& selector, bool headset, const std::string& headsetMessage,
+                 AddPanel& addPanel) {
     // Top right: the stats panel takes the top left.
     ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x - 10.0f, 10.0f), ImGuiCond_FirstUseEver, ImVec2(1.0f, 0.0f));
     ImGui::Begin("Garden", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
@@ -79,6 +81,7 @@ bool gardenPanel(GardenSession& session, glm::vec2& selector, bool headset, cons
     }
     bool lod = session.settings().lod;
     if (ImGui::Checkbox("level of detail", &lod)) session.settings().lod = lod;
+    addPanel.draw(session);
     bool enter = false;
     if (headset) {
         enter = ImGui::Button("Headset (F9)");
@@ -182,6 +185,7 @@ int runDesktopOn(GardenSession& session, GardenWindow& gardenWindow, const Deskt
     events = WindowEvents{};
     // Exports go next to the session, or into the working folder without one.
     ExportPanel exportPanel(options.session);
+    AddPanel addPanel;
     std::string headsetMessage;
 
     glm::vec2 selector = trianglePoint(glm::vec3(1.0f / 3.0f));
@@ -206,7 +210,7 @@ int runDesktopOn(GardenSession& session, GardenWindow& gardenWindow, const Deskt
             std::cerr << (why.empty() ? "screenshot: " + path : "error: " + why) << "\n";
         }
         overlay.newFrame();
-        headsetButton = gardenPanel(session, selector, static_cast<bool>(options.headset), headsetMessage);
+        headsetButton = gardenPanel(session, selector, static_cast<bool>(options.headset), headsetMessage, addPanel);
         ImGui::Begin("Garden");  // the same window: its Export section
         exportPanel.draw(session);
         ImGui::End();

@@ -18,35 +18,20 @@ namespace {
 namespace fs = std::filesystem;
 using ojson = nlohmann::ordered_json;
 
-// The model's box and the placement that makes its longest side `size`
-// metres, centred over (x, z) with its lowest point on the ground.
-struct Sized {
-    frep::Box3 box;
-    double scale = 1.0;
-    std::array<double, 3> position{};
-};
-
-bool sizeModel(const ModelToPlace& m, double x, double z, Sized& out, std::string& error) {
+bool sizeModelFile(const ModelToPlace& m, double x, double z, SizedModel& out, std::string& error) {
     const ModelFile mf = loadModelFile(m.file, m.body, {});
     if (!mf.ok()) {
         error = mf.error;
         return false;
     }
-    voxel::ModelBox found;
-    if (std::string why = voxel::resolveModelBox(*mf.model, std::nullopt, found); !why.empty()) {
+    if (std::string why = sizeModel(*mf.model, m.size, x, z, out); !why.empty()) {
         error = m.file + ": " + why;
         return false;
     }
-    out.box = found.box;
-    double longest = 0.0;
-    for (int i = 0; i < 3; ++i) longest = std::max(longest, out.box.hi[i] - out.box.lo[i]);
-    out.scale = std::clamp(m.size / longest, 1e-3, 1e3);
-    out.position = {x - 0.5 * (out.box.lo[0] + out.box.hi[0]) * out.scale, -out.box.lo[1] * out.scale,
-                    z - 0.5 * (out.box.lo[2] + out.box.hi[2]) * out.scale};
     return true;
 }
 
-ojson entry(const ModelToPlace& m, const std::string& name, const std::string& file, const Sized& s) {
+ojson entry(const ModelToPlace& m, const std::string& name, const std::string& file, const SizedModel& s) {
     ojson e;
     e["name"] = name;
     e["file"] = file;
@@ -72,9 +57,21 @@ bool readsBack(const std::string& text, const std::string& path, std::string& er
 
 }  // namespace
 
+std::string sizeModel(const frep::Model& model, double size, double x, double z, SizedModel& out) {
+    voxel::ModelBox found;
+    if (std::string why = voxel::resolveModelBox(model, std::nullopt, found); !why.empty()) return why;
+    out.box = found.box;
+    double longest = 0.0;
+    for (int i = 0; i < 3; ++i) longest = std::max(longest, out.box.hi[i] - out.box.lo[i]);
+    out.scale = std::clamp(size / longest, 1e-3, 1e3);
+    out.position = {x - 0.5 * (out.box.lo[0] + out.box.hi[0]) * out.scale, -out.box.lo[1] * out.scale,
+                    z - 0.5 * (out.box.lo[2] + out.box.hi[2]) * out.scale};
+    return "";
+}
+
 std::string gardenOfOneModel(const ModelToPlace& model, std::string& error) {
-    Sized s;
-    if (!sizeModel(model, 0.0, 0.0, s, error)) return "";
+    SizedModel s;
+    if (!sizeModelFile(model, 0.0, 0.0, s, error)) return "";
     ojson g;
     g["version"] = 1;
     g["name"] = stem(model);
@@ -108,8 +105,8 @@ std::string gardenWithModel(const std::string& gardenText, const std::string& ga
             if (e.contains("placement") && e["placement"].contains("position"))
                 furthest = std::max(furthest, e["placement"]["position"][0].get<double>());
         }
-    Sized s;
-    if (!sizeModel(model, furthest + 3.0, 0.0, s, error)) return "";
+    SizedModel s;
+    if (!sizeModelFile(model, furthest + 3.0, 0.0, s, error)) return "";
     const fs::path folder = fs::absolute(gardenPath).parent_path();
     const std::string file = fs::absolute(model.file).lexically_normal().lexically_relative(folder).generic_string();
     g["sculptures"].push_back(entry(model, name, file, s));

@@ -6,9 +6,25 @@
 // back as a garden before anything is written.
 #pragma once
 
+#include <array>
 #include <string>
 
+#include "frep/box.h"
+
+namespace hg::frep { class Model; }
+
 namespace hg::garden {
+
+// Where a model stands when it is sized to the garden: its box, the
+// scale that makes the box's longest side `size` metres, and the position
+// that centres it over (x, z) with its lowest point on the ground (y = 0).
+struct SizedModel {
+    frep::Box3 box;
+    double scale = 1.0;
+    std::array<double, 3> position{};
+};
+// "" on success, else why the model has no box.
+std::string sizeModel(const frep::Model& model, double size, double x, double z, SizedModel& out);
 
 struct ModelToPlace {
     std::string file;         // the .hf file, as the user named it

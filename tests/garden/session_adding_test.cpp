@@ -95,7 +95,7 @@ TEST_F(SessionAddingTest, BrokenFilesAndTakenNamesAreRefusedWithNothingChanged) 
               std::string::npos);
     EXPECT_NE(session->addSculptureFile(writeCube(), "c", at(0.0, 4.0)).find("already"), std::string::npos);
     Placement bad = at(0.0, 4.0);
-    bad.scale = 0.0;
+    bad.scale = 5000.0;  // beyond kMaxSculptureScale (0 would mean: sized to the garden)
     EXPECT_NE(session->addSculptureFile(writeCube(), "", bad), "");
     EXPECT_EQ(session->sculptures().size(), before);
     // A second file with a taken stem gets a free name.
