@@ -22,6 +22,7 @@ RemeshQueue::RemeshQueue(const LodPyramid& pyramid, const ChunkLayout& layout, c
 
 void RemeshQueue::markDirty(std::size_t chunk) {
     Slot& s = slots_[chunk];
+    if (!s.dirty) ++dirty_;
     s.dirty = true;
     ++s.stamp;  // a mesh staged before this no longer counts
 }
@@ -64,10 +65,6 @@ void RemeshQueue::setPriority(std::size_t chunk, int priority) { slots_[chunk].p
 
 void RemeshQueue::clearPriorities() {
     for (Slot& s : slots_) s.priority = 0;
-}
-
-std::size_t RemeshQueue::pending() const {
-    return static_cast<std::size_t>(std::count_if(slots_.begin(), slots_.end(), [](const Slot& s) { return s.dirty; }));
 }
 
 // Dirty chunks without a current staged mesh: explicit priority, then
@@ -165,9 +162,12 @@ std::size_t RemeshQueue::showCompleteGroups() {
         if (!complete) continue;
         for (std::size_t i : members) {
             Slot& s = slots_[i];
+            if (s.shown) shownTriangles_ -= s.shown->triangleCount();
             s.shown = std::move(s.staged);
+            shownTriangles_ += s.shown->triangleCount();
             s.shownLod = s.stagedLod;
             s.dirty = false;
+            --dirty_;
             ++s.version;
             ++shown;
         }

@@ -67,7 +67,11 @@ public:
     // Grows whenever any chunk's shown mesh changes: a renderer that saw
     // this value has nothing new to upload.
     std::uint64_t shownGeneration() const { return shownGeneration_; }
-    std::size_t pending() const;
+    // Dirty chunks (meshed or not, not yet shown), and the triangles of
+    // every shown mesh: counted as they change, so a garden of thousands
+    // of chunks asks for them every frame at no cost.
+    std::size_t pending() const { return dirty_; }
+    std::size_t shownTriangles() const { return shownTriangles_; }
     std::size_t count() const { return slots_.size(); }
 
 private:
@@ -89,6 +93,8 @@ private:
     std::vector<Slot> slots_;
     std::array<double, 3> viewer_{};
     std::uint64_t shownGeneration_ = 0;
+    std::size_t dirty_ = 0;
+    std::size_t shownTriangles_ = 0;
 };
 
 }  // namespace hg::poly

@@ -85,6 +85,7 @@ static void attachMeshing(Sculpture& s, const SessionSettings& settings) {
     s.layout = std::make_unique<poly::ChunkLayout>(s.volume->frame, settings.chunkSize);
     s.queue = std::make_unique<poly::RemeshQueue>(*s.pyramid, *s.layout,
                                                   std::vector<int>(s.layout->count(), settings.maxLevel));
+    s.uniformLevel = settings.maxLevel;
     // The coarsest level at once (cheap: a few cells per chunk), so the
     // garden opens with every sculpture on show; finer levels then stream
     // in within the frame budget.
@@ -275,22 +276,31 @@ void GardenSession::selectLevels() {
         // still follow the viewer.
         if (s.queue->pending() > 0 && ++s.framesSinceLevels < kLevelRefreshFrames) continue;
         s.framesSinceLevels = 0;
-        std::vector<int> levels(s.layout->count(), 0);
-        if (settings_.lod) {
-            poly::Camera cam;
-            cam.position = eye;
-            cam.fovY = settings_.fovY;
-            cam.viewportHeight = settings_.viewportHeight;
-            poly::LodSettings lod;
-            lod.pixelError = settings_.pixelError;
-            lod.maxLevel = settings_.maxLevel;
-            if (detail_) {
-                const glm::vec3 c(static_cast<float>(detail_->center[0]), static_cast<float>(detail_->center[1]),
-                                  static_cast<float>(detail_->center[2]));
-                lod.detail = poly::Sphere{toModel(s, c), detail_->radius / s.scale};
-            }
-            levels = poly::selectLevels(*s.layout, cam, lod);
+        // The sculpture first (poly::uniformLevel): one level for all its
+        // chunks when its bound says so, and nothing to do when that is the
+        // level it has; its chunks are visited only when their levels differ.
+        poly::Camera cam;
+        cam.position = eye;
+        cam.fovY = settings_.fovY;
+        cam.viewportHeight = settings_.viewportHeight;
+        poly::LodSettings lod;
+        lod.pixelError = settings_.pixelError;
+        lod.maxLevel = settings_.maxLevel;
+        if (detail_) {
+            const glm::vec3 c(static_cast<float>(detail_->center[0]), static_cast<float>(detail_->center[1]),
+                              static_cast<float>(detail_->center[2]));
+            lod.detail = poly::Sphere{toModel(s, c), detail_->radius / s.scale};
         }
+        const std::optional<int> uniform = settings_.lod ? poly::uniformLevel(*s.layout, cam, lod) : 0;
+        if (uniform && *uniform == s.uniformLevel) continue;
+        std::vector<int> levels;
+        if (uniform) {
+            levels.assign(s.layout->count(), *uniform);
+        } else {
+            levels = poly::selectLevelsPerChunk(*s.layout, cam, lod);
+            stats().lodChunksVisited += s.layout->count();
+        }
+        s.uniformLevel = uniform ? *uniform : -1;
         s.queue->setLevels(levels);
     }
 }
@@ -362,11 +372,8 @@ std::uint64_t GardenSession::morphRemaining() const { return blender_ ? blender_
 
 std::size_t GardenSession::trianglesShown() const {
     std::size_t n = 0;
-    for (const Sculpture& s : sculptures_) {
-        if (s.missing()) continue;
-        for (std::size_t c = 0; c < s.queue->count(); ++c)
-            if (const auto m = s.queue->mesh(c)) n += m->triangleCount();
-    }
+    for (const Sculpture& s : sculptures_)
+        if (!s.missing()) n += s.queue->shownTriangles();
     return n;
 }
 

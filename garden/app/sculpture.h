@@ -54,6 +54,7 @@ struct Sculpture {
     std::unique_ptr<poly::ChunkLayout> layout;
     std::unique_ptr<poly::RemeshQueue> queue;
     int framesSinceLevels = 0;         // frames since the queue last took new levels
+    int uniformLevel = -1;             // the one level the queue's chunks last took, or -1 when they differ
 
     Sculpture();
     ~Sculpture();
