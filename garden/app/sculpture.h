@@ -61,7 +61,11 @@ struct Sculpture {
     Sculpture(Sculpture&&) noexcept;
     Sculpture& operator=(Sculpture&&) noexcept;
 
+    bool loading = false;              // sampled in the background (progressive loading): no caches yet
+
     bool missing() const { return !error.empty(); }
+    // The grid and its meshing caches are there: neither missing nor loading.
+    bool hasGrid() const { return !missing() && !loading; }
     bool morphResult() const { return source.kind == SculptureSource::Kind::Morph; }
     glm::vec3 worldCentre() const;
 };

@@ -28,6 +28,7 @@ std::string GardenSession::checkEditable(int sculpture) const {
     if (sculpture < 0 || sculpture >= static_cast<int>(sculptures_.size())) return "no such sculpture";
     const Sculpture& s = sculptures_[static_cast<std::size_t>(sculpture)];
     if (s.missing()) return "the sculpture '" + s.name + "' is missing: " + s.error;
+    if (s.loading) return "the sculpture '" + s.name + "' is still loading";
     return "";
 }
 
@@ -297,7 +298,7 @@ std::optional<std::pair<int, glm::vec3>> GardenSession::toolHit(const Pose& aim)
     double bestT = 1e300;
     for (std::size_t i = 0; i < sculptures_.size(); ++i) {
         const Sculpture& s = sculptures_[i];
-        if (s.missing()) continue;
+        if (!s.hasGrid()) continue;
         const glm::dmat4 toModelM = glm::inverse(glm::dmat4(s.modelToWorld));
         const glm::dvec3 o = glm::dvec3(toModelM * glm::dvec4(glm::dvec3(aim.position), 1.0));
         const glm::dvec3 d = glm::dvec3(toModelM * glm::dvec4(glm::dvec3(aim.forward()), 0.0));

@@ -207,6 +207,7 @@ std::string statsJson(const ReplayScript& script, const ReplayResult& result) {
                           {"morph_samples", f.morphSamples}, {"morph_pending", f.morphPending},
                           {"chunks_meshed", f.chunksMeshed}, {"chunks_shown", f.chunksShown},
                           {"remesh_pending", f.remeshPending}, {"lod_chunks_visited", f.lodChunksVisited},
+                          {"sculptures_loading", f.sculpturesLoading},
                           {"upload_bytes", f.uploadBytes},
                           {"uploads_pending", f.uploadsPending}, {"triangles_shown", f.trianglesShown},
                           {"triangles_drawn", f.trianglesDrawn},
