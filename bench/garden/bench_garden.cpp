@@ -29,7 +29,9 @@
 //     scheduler's time per frame), then a scripted walk (--scale-frames frames down the
 //     middle aisle at 1.5 m/s, looking left and right): mean, p95, p99 and
 //     max CPU ms per stage and in all, chunks the LOD stage tested,
-//     triangles shown, peak resident memory of the row.
+//     triangles shown, the most new mesh bytes a frame showed (what a
+//     renderer uploads; --upload-bytes sets the session's per-frame
+//     budget), peak resident memory of the row.
 //
 // Prints Markdown tables; --json FILE writes the rows too.
 //
@@ -37,7 +39,7 @@
 //       [--offscreen] [--viewport WxH] [--max-frames N] [--remesh-chunks N]
 //       [--walk-speed S] [--samples N,N,...] [--resolutions R,R]
 //       [--scale N,N,...] [--scale-resolution R] [--scale-frames N]
-//       [--scale-load start|progressive]
+//       [--scale-load start|progressive] [--upload-bytes N]
 //
 // Row names for --filter: morph/128/1600 ... morph/256/1000000,
 // nav/keys/lod, nav/keys/nolod, nav/all/lod, nav/all/nolod, scale/48,
@@ -90,6 +92,7 @@ struct Options {
     int scaleResolution = 64;
     int scaleFrames = 1000;
     bool scaleProgressive = true;
+    std::size_t uploadBytes = 0;  // SessionSettings::uploadBytesPerFrame (0: no limit)
 };
 
 template <class T>
@@ -122,6 +125,7 @@ bool parseOptions(int argc, char** argv, Options& o) {
         else if (a == "--scale" && hasValue) o.scaleCounts = parseList<int>(argv[++i]);
         else if (a == "--scale-resolution" && hasValue) o.scaleResolution = std::max(16, std::atoi(argv[++i]));
         else if (a == "--scale-frames" && hasValue) o.scaleFrames = std::max(10, std::atoi(argv[++i]));
+        else if (a == "--upload-bytes" && hasValue) o.uploadBytes = std::strtoull(argv[++i], nullptr, 10);
         else if (a == "--scale-load" && hasValue) {
             const std::string how = argv[++i];
             if (how != "start" && how != "progressive") {
@@ -136,7 +140,7 @@ bool parseOptions(int argc, char** argv, Options& o) {
         std::fprintf(stderr,
                      "       [--offscreen] [--viewport WxH] [--max-frames N] [--remesh-chunks N] [--walk-speed S]\n"
                      "       [--samples N,N,...] [--resolutions R,R] [--scale N,N,...] [--scale-resolution R]\n"
-                     "       [--scale-frames N] [--scale-load start|progressive]\n");
+                     "       [--scale-frames N] [--scale-load start|progressive] [--upload-bytes N]\n");
         return false;
     }
     return true;
@@ -674,8 +678,8 @@ void scaleTable(const Options& o, nlohmann::json& json) {
                 kSpacing, o.scaleResolution, o.scaleProgressive ? "in the background, nearest first" : "before the first frame",
                 o.scaleFrames);
     std::printf("| sculptures | chunks | first frame (s) | loading at first frame | settled (s) | input | lod | remesh | total | frames over 11.1 ms | "
-                "chunks tested by LOD (mean) | triangles shown (mean) | peak memory (MiB) |\n");
-    std::printf("|---:|---:|---:|---:|---:|---|---|---|---|---:|---:|---:|---:|\n");
+                "chunks tested by LOD (mean) | triangles shown (mean) | new mesh KiB per frame (max) | peak memory (MiB) |\n");
+    std::printf("|---:|---:|---:|---:|---:|---|---|---|---|---:|---:|---:|---:|---:|\n");
     for (int n : o.scaleCounts) {
         const std::string name = "scale/" + std::to_string(n);
         if (!o.bench.matches(name)) continue;
@@ -694,6 +698,7 @@ void scaleTable(const Options& o, nlohmann::json& json) {
         settings.viewportHeight = o.height;
         settings.remeshChunksPerFrame = o.remeshChunks;
         settings.progressiveLoading = o.scaleProgressive;
+        settings.uploadBytesPerFrame = o.uploadBytes;
         Scene scene;
         scene.session = std::make_unique<GardenSession>(std::move(load), settings);
         scene.recorder = std::make_unique<Recorder>(nullptr);
@@ -723,7 +728,7 @@ void scaleTable(const Options& o, nlohmann::json& json) {
         }
         std::array<std::vector<double>, kStageCount> perStage;
         std::vector<double> totals, visited, shown;
-        std::size_t over = 0;
+        std::size_t over = 0, bytesMax = 0;
         for (std::size_t i = 0; i < run.frames.size(); ++i) {
             const FrameStats& f = run.frames[i];
             for (std::size_t k = 0; k < kStageCount; ++k) perStage[k].push_back(f.stageMs[k]);
@@ -731,6 +736,7 @@ void scaleTable(const Options& o, nlohmann::json& json) {
             visited.push_back(static_cast<double>(f.lodChunksVisited));
             shown.push_back(i < run.shown.size() ? static_cast<double>(run.shown[i]) : 0.0);
             over += f.totalMs > 11.1 ? 1 : 0;
+            bytesMax = std::max(bytesMax, f.meshBytesShown);
         }
         auto cell = [](const Spread& s) {
             char b[80];
@@ -741,11 +747,12 @@ void scaleTable(const Options& o, nlohmann::json& json) {
         for (const Sculpture& st : scene.session->sculptures())
             if (st.layout) chunks += st.layout->count();
         const double peakMiB = static_cast<double>(peakResidentBytes()) / (1024.0 * 1024.0);
-        std::printf("| %d | %zu | %.2f | %zu | %.1f (%zu frames) | %s | %s | %s | %s | %zu of %zu | %.0f | %.0f | %.0f |\n", n,
+        std::printf("| %d | %zu | %.2f | %zu | %.1f (%zu frames) | %s | %s | %s | %s | %zu of %zu | %.0f | %.0f | %.0f | %.0f |\n", n,
                     chunks, firstFrame, loadingAtFirst, settled, settleFrames, cell(spread(perStage[static_cast<std::size_t>(Stage::Input)])).c_str(),
                     cell(spread(perStage[static_cast<std::size_t>(Stage::Lod)])).c_str(),
                     cell(spread(perStage[static_cast<std::size_t>(Stage::Remesh)])).c_str(), cell(spread(totals)).c_str(),
-                    over, run.frames.size(), spread(visited).mean, spread(shown).mean, peakMiB);
+                    over, run.frames.size(), spread(visited).mean, spread(shown).mean, static_cast<double>(bytesMax) / 1024.0,
+                    peakMiB);
         std::fflush(stdout);
         nlohmann::json stages = nlohmann::json::object();
         for (int k = 0; k < kStageCount; ++k)
@@ -753,6 +760,7 @@ void scaleTable(const Options& o, nlohmann::json& json) {
         json["scale"].push_back({{"name", name}, {"sculptures", n}, {"resolution", o.scaleResolution},
                                  {"chunks", chunks}, {"first_frame_s", firstFrame}, {"settled_s", settled},
                                  {"progressive", o.scaleProgressive}, {"loading_at_first_frame", loadingAtFirst},
+                                 {"upload_bytes_per_frame", o.uploadBytes}, {"mesh_bytes_shown_max", bytesMax},
                                  {"settle_frames", settleFrames}, {"walk_frames", run.frames.size()},
                                  {"stage_ms", stages}, {"total_ms", spreadJson(spread(totals))},
                                  {"frames_over_budget", over}, {"lod_chunks_visited", spreadJson(spread(visited))},
@@ -776,7 +784,8 @@ int main(int argc, char** argv) {
                            {"navigation_ratio", nlohmann::json::array()}, {"scale", nlohmann::json::array()}};
     json["options"] = {{"offscreen", o.offscreen}, {"viewport", {o.width, o.height}}, {"max_frames", o.maxFrames},
                        {"remesh_chunks", o.remeshChunks}, {"walk_speed", o.walkSpeed}, {"repeat", o.bench.repeat},
-                       {"scale_resolution", o.scaleResolution}, {"scale_frames", o.scaleFrames}};
+                       {"scale_resolution", o.scaleResolution}, {"scale_frames", o.scaleFrames},
+                       {"upload_bytes", o.uploadBytes}};
     morphTable(o, json);
     navigationTable(o, json);
     scaleTable(o, json);

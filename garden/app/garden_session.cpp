@@ -392,8 +392,13 @@ void GardenSession::remesh() {
     std::sort(order.begin(), order.end());
     bool meshed = false;
     std::size_t chunksLeft = settings_.remeshChunksPerFrame;
+    const std::size_t byteLimit = settings_.uploadBytesPerFrame;
     for (const auto& [distance, i] : order) {
         poly::RemeshBudget budget;
+        if (byteLimit > 0) {
+            budget.showBytes = byteLimit - std::min(byteLimit, stats().meshBytesShown);
+            budget.oversized = stats().groupsShown == 0;  // one group too large for the limit, alone
+        }
         if (settings_.remeshChunksPerFrame > 0) {
             if (chunksLeft == 0) break;
             budget.chunks = chunksLeft;
@@ -404,6 +409,8 @@ void GardenSession::remesh() {
         const poly::RemeshReport r = sculptures_[i].queue->process(budget);
         stats().chunksMeshed += r.meshed;
         stats().chunksShown += r.shown;
+        stats().meshBytesShown += r.bytesShown;
+        stats().groupsShown += r.groupsShown;
         meshed = meshed || r.meshed > 0;
         chunksLeft -= std::min(chunksLeft, r.meshed);
     }

@@ -70,6 +70,11 @@ struct SessionSettings {
     // before the session opens. Until then a sculpture is loading(): no
     // grid, not editable. Off: every sculpture is sampled in the constructor.
     bool progressiveLoading = false;
+    // New meshes shown per frame, in bytes (0: no limit): what the upload
+    // stage then moves to the GPU, spread over frames instead of a burst.
+    // Groups of touching chunks are shown whole (a split would show a
+    // crack), so a group larger than this is shown alone in its frame.
+    std::size_t uploadBytesPerFrame = 0;
 };
 
 // What one frame is given: the hands (world frame), the time since the

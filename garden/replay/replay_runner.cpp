@@ -208,7 +208,7 @@ std::string statsJson(const ReplayScript& script, const ReplayResult& result) {
                           {"chunks_meshed", f.chunksMeshed}, {"chunks_shown", f.chunksShown},
                           {"remesh_pending", f.remeshPending}, {"lod_chunks_visited", f.lodChunksVisited},
                           {"sculptures_loading", f.sculpturesLoading},
-                          {"upload_bytes", f.uploadBytes},
+                          {"mesh_bytes_shown", f.meshBytesShown}, {"upload_bytes", f.uploadBytes},
                           {"uploads_pending", f.uploadsPending}, {"triangles_shown", f.trianglesShown},
                           {"triangles_drawn", f.trianglesDrawn},
                           {"draw_calls", f.drawCalls}});
