@@ -70,4 +70,10 @@ void ChunkLayout::modelBox(std::size_t i, double lo[3], double hi[3]) const {
     }
 }
 
+void ChunkLayout::modelBounds(double lo[3], double hi[3]) const {
+    double unused[3];
+    modelBox(0, lo, unused);
+    modelBox(count() - 1, unused, hi);  // chunks are numbered x fastest: the last is the high corner's
+}
+
 }  // namespace hg::poly

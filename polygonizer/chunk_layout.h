@@ -33,6 +33,8 @@ public:
     // The chunk's voxels (index space) and its extent in the model frame.
     voxel::IndexBox voxels(std::size_t index) const;
     void modelBox(std::size_t index, double lo[3], double hi[3]) const;
+    // The extent of every chunk together (the union of their model boxes).
+    void modelBounds(double lo[3], double hi[3]) const;
     const voxel::VolumeFrame& frame() const { return frame_; }
 
 private:

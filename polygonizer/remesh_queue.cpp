@@ -11,6 +11,10 @@
 
 namespace hg::poly {
 
+std::size_t meshBytes(const Mesh& m) {
+    return (m.positions.size() + m.normals.size()) * sizeof(float) + m.indices.size() * sizeof(std::uint32_t);
+}
+
 RemeshQueue::RemeshQueue(const LodPyramid& pyramid, const ChunkLayout& layout, const std::vector<int>& levels)
     : pyramid_(pyramid), layout_(layout), slots_(layout.count()) {
     const std::vector<ChunkLod> lods = chunkLods(layout, levels);
@@ -22,6 +26,7 @@ RemeshQueue::RemeshQueue(const LodPyramid& pyramid, const ChunkLayout& layout, c
 
 void RemeshQueue::markDirty(std::size_t chunk) {
     Slot& s = slots_[chunk];
+    if (!s.dirty) ++dirty_;
     s.dirty = true;
     ++s.stamp;  // a mesh staged before this no longer counts
 }
@@ -64,10 +69,6 @@ void RemeshQueue::setPriority(std::size_t chunk, int priority) { slots_[chunk].p
 
 void RemeshQueue::clearPriorities() {
     for (Slot& s : slots_) s.priority = 0;
-}
-
-std::size_t RemeshQueue::pending() const {
-    return static_cast<std::size_t>(std::count_if(slots_.begin(), slots_.end(), [](const Slot& s) { return s.dirty; }));
 }
 
 // Dirty chunks without a current staged mesh: explicit priority, then
@@ -123,7 +124,7 @@ RemeshReport RemeshQueue::process(const RemeshBudget& budget) {
         next += take;
         lastBatchMs = elapsedMs() - before;
     }
-    report.shown = showCompleteGroups();
+    showCompleteGroups(budget, report);
     if (report.shown > 0) ++shownGeneration_;
     report.pending = pending();
     report.seconds = elapsedMs() / 1000.0;
@@ -131,10 +132,9 @@ RemeshReport RemeshQueue::process(const RemeshBudget& budget) {
 }
 
 // Groups of dirty chunks touching each other (26 neighbours), shown when
-// every member has a current staged mesh.
-std::size_t RemeshQueue::showCompleteGroups() {
+// every member has a current staged mesh and their bytes fit the budget.
+void RemeshQueue::showCompleteGroups(const RemeshBudget& budget, RemeshReport& report) {
     std::vector<int> group(slots_.size(), -1);
-    std::size_t shown = 0;
     std::vector<std::size_t> members, stack;
     int groups = 0;
     for (std::size_t seed = 0; seed < slots_.size(); ++seed) {
@@ -163,16 +163,27 @@ std::size_t RemeshQueue::showCompleteGroups() {
         }
         ++groups;
         if (!complete) continue;
+        if (budget.showBytes != std::numeric_limits<std::size_t>::max()) {
+            std::size_t bytes = 0;
+            for (std::size_t i : members) bytes += meshBytes(*slots_[i].staged);
+            const bool fits = report.bytesShown + bytes <= budget.showBytes;
+            const bool alone = budget.oversized && report.groupsShown == 0;
+            if (!fits && !alone) continue;
+        }
+        ++report.groupsShown;
         for (std::size_t i : members) {
             Slot& s = slots_[i];
+            if (s.shown) shownTriangles_ -= s.shown->triangleCount();
             s.shown = std::move(s.staged);
+            shownTriangles_ += s.shown->triangleCount();
+            report.bytesShown += meshBytes(*s.shown);
             s.shownLod = s.stagedLod;
             s.dirty = false;
+            --dirty_;
             ++s.version;
-            ++shown;
+            ++report.shown;
         }
     }
-    return shown;
 }
 
 }  // namespace hg::poly

@@ -22,6 +22,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -32,12 +33,24 @@ namespace hg::poly {
 struct RemeshBudget {
     double milliseconds = 0.0;  // 0: no time limit
     std::size_t chunks = 0;     // 0: no count limit
+    // New meshes shown, in bytes (meshBytes; the default: no limit): what
+    // a renderer will upload after this call. Complete groups are shown while their
+    // bytes fit; a group is never split (that would show a crack), so one
+    // larger than the limit is shown alone, when `oversized` allows it (the
+    // caller has shown nothing else this frame). The rest stay staged.
+    std::size_t showBytes = std::numeric_limits<std::size_t>::max();
+    bool oversized = true;
 };
+
+// Bytes of a mesh as uploaded: positions, normals and indices.
+std::size_t meshBytes(const Mesh& m);
 
 struct RemeshReport {
     std::size_t meshed = 0;     // chunks meshed in this call
     std::vector<std::size_t> chunks;  // which, in the order they were taken
     std::size_t shown = 0;      // chunks whose new mesh became visible
+    std::size_t groupsShown = 0;
+    std::size_t bytesShown = 0; // meshBytes of the meshes shown
     std::size_t pending = 0;    // dirty chunks left (meshed or not, not yet shown)
     std::size_t triangles = 0;  // triangles meshed in this call
     double seconds = 0.0;
@@ -67,7 +80,11 @@ public:
     // Grows whenever any chunk's shown mesh changes: a renderer that saw
     // this value has nothing new to upload.
     std::uint64_t shownGeneration() const { return shownGeneration_; }
-    std::size_t pending() const;
+    // Dirty chunks (meshed or not, not yet shown), and the triangles of
+    // every shown mesh: counted as they change, so a garden of thousands
+    // of chunks asks for them every frame at no cost.
+    std::size_t pending() const { return dirty_; }
+    std::size_t shownTriangles() const { return shownTriangles_; }
     std::size_t count() const { return slots_.size(); }
 
 private:
@@ -82,13 +99,15 @@ private:
 
     void markDirty(std::size_t chunk);
     std::vector<std::size_t> order() const;
-    std::size_t showCompleteGroups();
+    void showCompleteGroups(const RemeshBudget& budget, RemeshReport& report);
 
     const LodPyramid& pyramid_;
     const ChunkLayout& layout_;
     std::vector<Slot> slots_;
     std::array<double, 3> viewer_{};
     std::uint64_t shownGeneration_ = 0;
+    std::size_t dirty_ = 0;
+    std::size_t shownTriangles_ = 0;
 };
 
 }  // namespace hg::poly

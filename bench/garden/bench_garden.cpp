@@ -19,15 +19,31 @@
 //     and for the whole default garden (ten); the garden is settled first,
 //     then the walk is timed. Mean, 95th percentile and max CPU ms per frame
 //     per stage, chunks remeshed, triangles shown (and drawn, offscreen).
+//  3. Scale (issue 25): generated gardens of N copies of the default
+//     garden's sculptures on a grid 3 m apart (garden/scene/scale_garden.h),
+//     N = 48, 200, 1,000 at --scale-resolution (64^3 by default: these
+//     machines have 2 cores), headless, the sculptures sampled in the
+//     background nearest first (--scale-load progressive, the default) or
+//     all before the first frame (start). Time to the first frame and to a
+//     settled garden at the start pose (frames at most 90 a second, the
+//     scheduler's time per frame), then a scripted walk (--scale-frames frames down the
+//     middle aisle at 1.5 m/s, looking left and right): mean, p95, p99 and
+//     max CPU ms per stage and in all, chunks the LOD stage tested,
+//     triangles shown, the most new mesh bytes a frame showed (what a
+//     renderer uploads; --upload-bytes sets the session's per-frame
+//     budget), peak resident memory of the row.
 //
 // Prints Markdown tables; --json FILE writes the rows too.
 //
 //   ./build/release/bench/bench_garden [--json FILE] [--filter NAME] [--repeat N]
 //       [--offscreen] [--viewport WxH] [--max-frames N] [--remesh-chunks N]
 //       [--walk-speed S] [--samples N,N,...] [--resolutions R,R]
+//       [--scale N,N,...] [--scale-resolution R] [--scale-frames N]
+//       [--scale-load start|progressive] [--upload-bytes N]
 //
 // Row names for --filter: morph/128/1600 ... morph/256/1000000,
-// nav/keys/lod, nav/keys/nolod, nav/all/lod, nav/all/nolod.
+// nav/keys/lod, nav/keys/nolod, nav/all/lod, nav/all/nolod, scale/48,
+// scale/200, scale/1000.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -38,6 +54,7 @@
 #include <memory>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -48,6 +65,7 @@
 #include "garden/replay/replay_runner.h"
 #include "garden/replay/replay_script.h"
 #include "garden/scene/json_reader.h"
+#include "garden/scene/scale_garden.h"
 
 #ifdef HG_BENCH_OFFSCREEN
 #include "garden/desktop/offscreen_garden.h"
@@ -70,6 +88,11 @@ struct Options {
     double walkSpeed = 1.0;
     std::vector<std::uint64_t> samples{1600, 6400, 25600, 64000, 250000, 1000000};
     std::vector<int> resolutions{128, 256};
+    std::vector<int> scaleCounts{48, 200, 1000};
+    int scaleResolution = 64;
+    int scaleFrames = 1000;
+    bool scaleProgressive = true;
+    std::size_t uploadBytes = 0;  // SessionSettings::uploadBytesPerFrame (0: no limit)
 };
 
 template <class T>
@@ -99,12 +122,25 @@ bool parseOptions(int argc, char** argv, Options& o) {
         else if (a == "--walk-speed" && hasValue) o.walkSpeed = std::clamp(std::atof(argv[++i]), 0.1, 20.0);
         else if (a == "--samples" && hasValue) o.samples = parseList<std::uint64_t>(argv[++i]);
         else if (a == "--resolutions" && hasValue) o.resolutions = parseList<int>(argv[++i]);
+        else if (a == "--scale" && hasValue) o.scaleCounts = parseList<int>(argv[++i]);
+        else if (a == "--scale-resolution" && hasValue) o.scaleResolution = std::max(16, std::atoi(argv[++i]));
+        else if (a == "--scale-frames" && hasValue) o.scaleFrames = std::max(10, std::atoi(argv[++i]));
+        else if (a == "--upload-bytes" && hasValue) o.uploadBytes = std::strtoull(argv[++i], nullptr, 10);
+        else if (a == "--scale-load" && hasValue) {
+            const std::string how = argv[++i];
+            if (how != "start" && how != "progressive") {
+                std::fprintf(stderr, "--scale-load: start or progressive\n");
+                return false;
+            }
+            o.scaleProgressive = how == "progressive";
+        }
         else rest.push_back(argv[i]);
     }
     if (!bench::parseBenchArgs(static_cast<int>(rest.size()), rest.data(), o.bench)) {
         std::fprintf(stderr,
                      "       [--offscreen] [--viewport WxH] [--max-frames N] [--remesh-chunks N] [--walk-speed S]\n"
-                     "       [--samples N,N,...] [--resolutions R,R]\n");
+                     "       [--samples N,N,...] [--resolutions R,R] [--scale N,N,...] [--scale-resolution R]\n"
+                     "       [--scale-frames N] [--scale-load start|progressive] [--upload-bytes N]\n");
         return false;
     }
     return true;
@@ -579,6 +615,160 @@ void navigationTable(const Options& o, nlohmann::json& json) {
     std::printf("\n");
 }
 
+
+// --- 3. scale --------------------------------------------------------------------
+
+// The process' peak resident set (VmHWM), and its reset (Linux: writing 5
+// to clear_refs), so that each row reports its own peak.
+std::uint64_t peakResidentBytes() {
+    std::ifstream in("/proc/self/status");
+    std::string line;
+    while (std::getline(in, line))
+        if (line.rfind("VmHWM:", 0) == 0) return std::strtoull(line.c_str() + 6, nullptr, 10) * 1024;
+    return 0;
+}
+void resetPeakResident() { std::ofstream("/proc/self/clear_refs") << "5"; }
+
+double percentile(std::vector<double> v, double p) {
+    if (v.empty()) return 0.0;
+    std::sort(v.begin(), v.end());
+    const double n = static_cast<double>(v.size());
+    return v[std::min(v.size() - 1, static_cast<std::size_t>(std::max(1.0, std::ceil(p * n))) - 1)];
+}
+
+struct Spread {
+    double mean = 0.0, p95 = 0.0, p99 = 0.0, max = 0.0;
+};
+Spread spread(const std::vector<double>& v) {
+    Spread s;
+    if (v.empty()) return s;
+    for (double x : v) {
+        s.mean += x;
+        s.max = std::max(s.max, x);
+    }
+    s.mean /= static_cast<double>(v.size());
+    s.p95 = percentile(v, 0.95);
+    s.p99 = percentile(v, 0.99);
+    return s;
+}
+nlohmann::json spreadJson(const Spread& s) { return {{"mean", s.mean}, {"p95", s.p95}, {"p99", s.p99}, {"max", s.max}}; }
+
+// The walk: down the aisle between the middle columns, from the start
+// (two rows before the grid) at 1.5 m/s, turning the head 35 degrees left
+// and right every 8 s, one pose per frame.
+ReplayScript scaleWalk(const Options& o, int count, double spacing) {
+    ReplayScript s = baseScript(o);
+    const double x = scaleGardenColumns(count) % 2 ? 0.5 * spacing : 0.0;
+    for (int f = 0; f < o.scaleFrames; ++f) {
+        const double t = f * s.timestep;
+        ReplayStep step;
+        step.commands = {poseCommand(x, 1.7, 2.0 * spacing - 1.5 * t, 35.0 * std::sin(2.0 * M_PI * t / 8.0), -8.0)};
+        s.steps.push_back(step);
+    }
+    return s;
+}
+
+void scaleTable(const Options& o, nlohmann::json& json) {
+    bool anyRow = false;
+    for (int n : o.scaleCounts) anyRow = anyRow || o.bench.matches("scale/" + std::to_string(n));
+    if (!anyRow) return;
+    constexpr double kSpacing = 3.0;
+    std::printf("Scale: N copies of the default garden's sculptures on a grid %.0f m apart at %d^3, headless, sampled %s; "
+                "the walk: %d frames down the middle aisle at 1.5 m/s. CPU ms per frame: mean / p95 / p99 / max.\n\n",
+                kSpacing, o.scaleResolution, o.scaleProgressive ? "in the background, nearest first" : "before the first frame",
+                o.scaleFrames);
+    std::printf("| sculptures | chunks | first frame (s) | loading at first frame | settled (s) | input | lod | remesh | total | frames over 11.1 ms | "
+                "chunks tested by LOD (mean) | triangles shown (mean) | new mesh KiB per frame (max) | peak memory (MiB) |\n");
+    std::printf("|---:|---:|---:|---:|---:|---|---|---|---|---:|---:|---:|---:|---:|\n");
+    for (int n : o.scaleCounts) {
+        const std::string name = "scale/" + std::to_string(n);
+        if (!o.bench.matches(name)) continue;
+        resetPeakResident();
+        ScaleGardenSpec spec;
+        spec.count = n;
+        spec.spacing = kSpacing;
+        spec.resolution = o.scaleResolution;
+        const auto t0 = Clock::now();
+        GardenLoad load = loadScaleGarden(defaultGarden(), spec);
+        if (!load.ok()) {
+            std::fprintf(stderr, "%s: %s\n", name.c_str(), load.error.c_str());
+            continue;
+        }
+        SessionSettings settings;
+        settings.viewportHeight = o.height;
+        settings.remeshChunksPerFrame = o.remeshChunks;
+        settings.progressiveLoading = o.scaleProgressive;
+        settings.uploadBytesPerFrame = o.uploadBytes;
+        Scene scene;
+        scene.session = std::make_unique<GardenSession>(std::move(load), settings);
+        scene.recorder = std::make_unique<Recorder>(nullptr);
+        // The first frame, then frames at 90 Hz at most (a display's pace:
+        // sampling goes on in the background meanwhile) until settled.
+        ReplayScript first = baseScript(o);
+        first.steps.resize(1);
+        ReplayResult r = runReplay(first, *scene.session, scene.recorder.get(), ReplayOptions{});
+        const double firstFrame = std::chrono::duration<double>(Clock::now() - t0).count();
+        std::size_t settleFrames = 1;
+        const std::size_t loadingAtFirst = r.stats.empty() ? 0 : r.stats.back().sculpturesLoading;
+        for (; r.ok() && !scene.session->idle() && settleFrames < static_cast<std::size_t>(o.maxFrames); ++settleFrames) {
+            const auto f0 = Clock::now();
+            scene.session->frame(FrameInput{}, *scene.recorder);
+            std::this_thread::sleep_until(f0 + std::chrono::microseconds(11111));
+        }
+        scene.recorder->clear();
+        const double settled = std::chrono::duration<double>(Clock::now() - t0).count();
+        if (!r.ok() || !scene.session->idle()) {
+            std::fprintf(stderr, "%s: %s\n", name.c_str(), r.ok() ? "not settled within --max-frames" : r.error.c_str());
+            continue;
+        }
+        Run run = timedRun(scene, scaleWalk(o, n, kSpacing));
+        if (!run.error.empty()) {
+            std::fprintf(stderr, "%s: %s\n", name.c_str(), run.error.c_str());
+            continue;
+        }
+        std::array<std::vector<double>, kStageCount> perStage;
+        std::vector<double> totals, visited, shown;
+        std::size_t over = 0, bytesMax = 0;
+        for (std::size_t i = 0; i < run.frames.size(); ++i) {
+            const FrameStats& f = run.frames[i];
+            for (std::size_t k = 0; k < kStageCount; ++k) perStage[k].push_back(f.stageMs[k]);
+            totals.push_back(f.totalMs);
+            visited.push_back(static_cast<double>(f.lodChunksVisited));
+            shown.push_back(i < run.shown.size() ? static_cast<double>(run.shown[i]) : 0.0);
+            over += f.totalMs > 11.1 ? 1 : 0;
+            bytesMax = std::max(bytesMax, f.meshBytesShown);
+        }
+        auto cell = [](const Spread& s) {
+            char b[80];
+            std::snprintf(b, sizeof b, "%.2f / %.2f / %.2f / %.1f", s.mean, s.p95, s.p99, s.max);
+            return std::string(b);
+        };
+        std::size_t chunks = 0;
+        for (const Sculpture& st : scene.session->sculptures())
+            if (st.layout) chunks += st.layout->count();
+        const double peakMiB = static_cast<double>(peakResidentBytes()) / (1024.0 * 1024.0);
+        std::printf("| %d | %zu | %.2f | %zu | %.1f (%zu frames) | %s | %s | %s | %s | %zu of %zu | %.0f | %.0f | %.0f | %.0f |\n", n,
+                    chunks, firstFrame, loadingAtFirst, settled, settleFrames, cell(spread(perStage[static_cast<std::size_t>(Stage::Input)])).c_str(),
+                    cell(spread(perStage[static_cast<std::size_t>(Stage::Lod)])).c_str(),
+                    cell(spread(perStage[static_cast<std::size_t>(Stage::Remesh)])).c_str(), cell(spread(totals)).c_str(),
+                    over, run.frames.size(), spread(visited).mean, spread(shown).mean, static_cast<double>(bytesMax) / 1024.0,
+                    peakMiB);
+        std::fflush(stdout);
+        nlohmann::json stages = nlohmann::json::object();
+        for (int k = 0; k < kStageCount; ++k)
+            stages[stageName(static_cast<Stage>(k))] = spreadJson(spread(perStage[static_cast<std::size_t>(k)]));
+        json["scale"].push_back({{"name", name}, {"sculptures", n}, {"resolution", o.scaleResolution},
+                                 {"chunks", chunks}, {"first_frame_s", firstFrame}, {"settled_s", settled},
+                                 {"progressive", o.scaleProgressive}, {"loading_at_first_frame", loadingAtFirst},
+                                 {"upload_bytes_per_frame", o.uploadBytes}, {"mesh_bytes_shown_max", bytesMax},
+                                 {"settle_frames", settleFrames}, {"walk_frames", run.frames.size()},
+                                 {"stage_ms", stages}, {"total_ms", spreadJson(spread(totals))},
+                                 {"frames_over_budget", over}, {"lod_chunks_visited", spreadJson(spread(visited))},
+                                 {"triangles_shown", spreadJson(spread(shown))}, {"peak_resident_bytes", peakResidentBytes()}});
+    }
+    std::printf("\n");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -591,11 +781,14 @@ int main(int argc, char** argv) {
     }
 #endif
     nlohmann::json json = {{"morph", nlohmann::json::array()}, {"navigation", nlohmann::json::array()},
-                           {"navigation_ratio", nlohmann::json::array()}};
+                           {"navigation_ratio", nlohmann::json::array()}, {"scale", nlohmann::json::array()}};
     json["options"] = {{"offscreen", o.offscreen}, {"viewport", {o.width, o.height}}, {"max_frames", o.maxFrames},
-                       {"remesh_chunks", o.remeshChunks}, {"walk_speed", o.walkSpeed}, {"repeat", o.bench.repeat}};
+                       {"remesh_chunks", o.remeshChunks}, {"walk_speed", o.walkSpeed}, {"repeat", o.bench.repeat},
+                       {"scale_resolution", o.scaleResolution}, {"scale_frames", o.scaleFrames},
+                       {"upload_bytes", o.uploadBytes}};
     morphTable(o, json);
     navigationTable(o, json);
+    scaleTable(o, json);
     if (!o.bench.jsonPath.empty()) std::ofstream(o.bench.jsonPath) << json.dump(2) << "\n";
     return 0;
 }

@@ -25,6 +25,10 @@ struct FrameStats {
     std::size_t chunksMeshed = 0;
     std::size_t chunksShown = 0;
     std::size_t remeshPending = 0;              // dirty chunks left, all sculptures
+    std::size_t lodChunksVisited = 0;           // chunks whose level the LOD stage tested
+    std::size_t sculpturesLoading = 0;          // still being sampled (progressive loading)
+    std::size_t meshBytesShown = 0;             // new meshes shown this frame (poly::meshBytes)
+    std::size_t groupsShown = 0;                // groups of touching chunks they came in
     std::size_t uploadBytes = 0;
     std::size_t uploadsPending = 0;
     std::size_t trianglesShown = 0;             // in the meshes on show (drawn or not)

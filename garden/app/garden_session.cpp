@@ -7,6 +7,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "garden/app/sculpture_loader.h"
 #include "garden/morph/garden_morph.h"
 #include "garden/morph/morph_blend.h"
 #include "garden/morph/morph_sources.h"
@@ -51,6 +52,14 @@ void GardenSession::resetView() {
     navigator_.setPose(eye, std::atan2(dir.x, -dir.z), std::asin(std::clamp(dir.y, -1.0f, 1.0f)));
 }
 
+static voxel::VolumeRequest volumeRequest(const SculptureSpec& spec) {
+    voxel::VolumeRequest request;
+    request.box = spec.box;
+    request.resolution = spec.resolution;
+    request.band = spec.band;
+    return request;
+}
+
 GardenSession::GardenSession(GardenLoad load, SessionSettings settings)
     : load_(std::move(load)), settings_(settings), scheduler_(settings.scheduler) {
     if (settings_.sculptureResolution > 0)
@@ -59,10 +68,29 @@ GardenSession::GardenSession(GardenLoad load, SessionSettings settings)
     const Garden& g = *load_.garden;
     resetView();
     sculptures_.resize(g.sculptures.size());
+    std::vector<std::size_t> now, later;
+    for (std::size_t i = 0; i < g.sculptures.size(); ++i) {
+        describeSculpture(i);
+        if (sculptures_[i].missing()) continue;
+        const bool morphSource = g.morph && std::find(g.morph->sourceIndex.begin(), g.morph->sourceIndex.end(), i) !=
+                                                g.morph->sourceIndex.end();
+        // Progressive: only the morph's sources now (the blend needs their grids).
+        (settings_.progressiveLoading && !morphSource ? later : now).push_back(i);
+    }
     // Sculptures are independent: built side by side (each one's box
     // estimate runs on one thread), each into its own slot.
-    tbb::parallel_for(std::size_t{0}, g.sculptures.size(), [this](std::size_t i) { buildSculpture(i); });
+    tbb::parallel_for(std::size_t{0}, now.size(), [this, &now](std::size_t k) { sampleSculpture(now[k]); });
     buildMorph();
+    if (!later.empty()) {
+        std::vector<SculptureLoader::Job> jobs;
+        for (std::size_t i : later) {
+            sculptures_[i].loading = true;
+            const glm::vec3 at = sculptures_[i].worldCentre();
+            jobs.push_back({i, std::make_shared<const frep::Model>(*load_.sculptures[i].model), volumeRequest(g.sculptures[i]), {at.x, at.y, at.z}});
+        }
+        const glm::vec3 eye = navigator_.eye();
+        loader_ = std::make_unique<SculptureLoader>(std::move(jobs), std::array<double, 3>{eye.x, eye.y, eye.z});
+    }
 }
 
 GardenSession::~GardenSession() = default;
@@ -86,13 +114,14 @@ void GardenSession::attachMeshing(Sculpture& s) const {
     s.layout = std::make_unique<poly::ChunkLayout>(s.volume->frame, settings.chunkSize);
     s.queue = std::make_unique<poly::RemeshQueue>(*s.pyramid, *s.layout,
                                                   std::vector<int>(s.layout->count(), settings.maxLevel));
+    s.uniformLevel = settings.maxLevel;
     // The coarsest level at once (cheap: a few cells per chunk), so the
     // garden opens with every sculpture on show; finer levels then stream
     // in within the frame budget.
     s.queue->process(poly::RemeshBudget{});
 }
 
-void GardenSession::buildSculpture(std::size_t index) {
+void GardenSession::describeSculpture(std::size_t index) {
     const SculptureSpec& spec = load_.garden->sculptures[index];
     Sculpture& s = sculptures_[index];
     s.name = spec.name;
@@ -104,22 +133,49 @@ void GardenSession::buildSculpture(std::size_t index) {
     s.scale = spec.placement.scale;
     const SculptureLoad& l = load_.sculptures[index];
     s.source.program = l.program;
-    if (!l.ok()) {
-        s.error = l.error.empty() ? "the sculpture could not be loaded" : l.error;
+    if (!l.ok()) s.error = l.error.empty() ? "the sculpture could not be loaded" : l.error;
+}
+
+void GardenSession::sampleSculpture(std::size_t index) {
+    voxel::VoxelizeResult r = voxel::voxelize(*load_.sculptures[index].model, volumeRequest(load_.garden->sculptures[index]));
+    attachGrid(index, r.volume ? std::make_unique<voxel::Volume>(std::move(*r.volume)) : nullptr, r.error);
+}
+
+void GardenSession::attachGrid(std::size_t index, std::unique_ptr<voxel::Volume> volume, const std::string& error) {
+    Sculpture& s = sculptures_[index];
+    s.loading = false;
+    if (!volume) {
+        s.error = error.empty() ? "the sculpture could not be sampled" : error;
         return;
     }
-    voxel::VolumeRequest request;
-    request.box = spec.box;
-    request.resolution = spec.resolution;
-    request.band = spec.band;
-    voxel::VoxelizeResult r = voxel::voxelize(*l.model, request);
-    if (!r.volume) {
-        s.error = r.error;
-        return;
-    }
-    s.volume = std::make_unique<voxel::Volume>(std::move(*r.volume));
+    s.volume = std::move(volume);
     attachMeshing(s);
 }
+
+void GardenSession::attachLoaded() {
+    if (!loader_) return;
+    const glm::vec3 eye = navigator_.eye();
+    loader_->setViewer({eye.x, eye.y, eye.z});
+    // At least one grid a frame (its coarse meshes come with it), more
+    // while half the remesh allowance lasts: the rest is for finer levels.
+    const double until = scheduler_.elapsedMs() + 0.5 * scheduler_.allowanceMs(Stage::Remesh);
+    for (std::size_t n = 0;; ++n) {
+        if (n > 0 && scheduler_.elapsedMs() >= until) break;
+        std::vector<SculptureLoader::Loaded> got = loader_->take(1);
+        if (got.empty()) break;
+        attachGrid(got[0].sculpture, std::move(got[0].volume), got[0].error);
+    }
+    if (loader_->remaining() == 0) loader_.reset();
+}
+
+void GardenSession::finishLoading() {
+    if (!loader_) return;
+    loader_->wait();
+    for (SculptureLoader::Loaded& l : loader_->take()) attachGrid(l.sculpture, std::move(l.volume), l.error);
+    loader_.reset();
+}
+
+std::size_t GardenSession::sculpturesLoading() const { return loader_ ? loader_->remaining() : 0; }
 
 void GardenSession::buildMorph() {
     const Garden& g = *load_.garden;
@@ -279,22 +335,31 @@ void GardenSession::selectLevels() {
         // still follow the viewer.
         if (s.queue->pending() > 0 && ++s.framesSinceLevels < kLevelRefreshFrames) continue;
         s.framesSinceLevels = 0;
-        std::vector<int> levels(s.layout->count(), 0);
-        if (settings_.lod) {
-            poly::Camera cam;
-            cam.position = eye;
-            cam.fovY = settings_.fovY;
-            cam.viewportHeight = settings_.viewportHeight;
-            poly::LodSettings lod;
-            lod.pixelError = settings_.pixelError;
-            lod.maxLevel = settings_.maxLevel;
-            if (detail_) {
-                const glm::vec3 c(static_cast<float>(detail_->center[0]), static_cast<float>(detail_->center[1]),
-                                  static_cast<float>(detail_->center[2]));
-                lod.detail = poly::Sphere{toModel(s, c), detail_->radius / s.scale};
-            }
-            levels = poly::selectLevels(*s.layout, cam, lod);
+        // The sculpture first (poly::uniformLevel): one level for all its
+        // chunks when its bound says so, and nothing to do when that is the
+        // level it has; its chunks are visited only when their levels differ.
+        poly::Camera cam;
+        cam.position = eye;
+        cam.fovY = settings_.fovY;
+        cam.viewportHeight = settings_.viewportHeight;
+        poly::LodSettings lod;
+        lod.pixelError = settings_.pixelError;
+        lod.maxLevel = settings_.maxLevel;
+        if (detail_) {
+            const glm::vec3 c(static_cast<float>(detail_->center[0]), static_cast<float>(detail_->center[1]),
+                              static_cast<float>(detail_->center[2]));
+            lod.detail = poly::Sphere{toModel(s, c), detail_->radius / s.scale};
         }
+        const std::optional<int> uniform = settings_.lod ? poly::uniformLevel(*s.layout, cam, lod) : 0;
+        if (uniform && *uniform == s.uniformLevel) continue;
+        std::vector<int> levels;
+        if (uniform) {
+            levels.assign(s.layout->count(), *uniform);
+        } else {
+            levels = poly::selectLevelsPerChunk(*s.layout, cam, lod);
+            stats().lodChunksVisited += s.layout->count();
+        }
+        s.uniformLevel = uniform ? *uniform : -1;
         s.queue->setLevels(levels);
     }
 }
@@ -322,6 +387,7 @@ void GardenSession::morph() {
 
 void GardenSession::remesh() {
     scheduler_.beginStage(Stage::Remesh);
+    attachLoaded();
     // Nearest sculpture first: its chunks matter most on screen.
     std::vector<std::pair<float, std::size_t>> order;
     for (std::size_t i = 0; i < sculptures_.size(); ++i)
@@ -330,8 +396,13 @@ void GardenSession::remesh() {
     std::sort(order.begin(), order.end());
     bool meshed = false;
     std::size_t chunksLeft = settings_.remeshChunksPerFrame;
+    const std::size_t byteLimit = settings_.uploadBytesPerFrame;
     for (const auto& [distance, i] : order) {
         poly::RemeshBudget budget;
+        if (byteLimit > 0) {
+            budget.showBytes = byteLimit - std::min(byteLimit, stats().meshBytesShown);
+            budget.oversized = stats().groupsShown == 0;  // one group too large for the limit, alone
+        }
         if (settings_.remeshChunksPerFrame > 0) {
             if (chunksLeft == 0) break;
             budget.chunks = chunksLeft;
@@ -342,6 +413,8 @@ void GardenSession::remesh() {
         const poly::RemeshReport r = sculptures_[i].queue->process(budget);
         stats().chunksMeshed += r.meshed;
         stats().chunksShown += r.shown;
+        stats().meshBytesShown += r.bytesShown;
+        stats().groupsShown += r.groupsShown;
         meshed = meshed || r.meshed > 0;
         chunksLeft -= std::min(chunksLeft, r.meshed);
     }
@@ -352,6 +425,7 @@ const FrameStats& GardenSession::endFrame() {
     st.remeshPending = remeshPending();
     st.trianglesShown = trianglesShown();
     st.morphPending = morphRemaining();
+    st.sculpturesLoading = sculpturesLoading();
     return scheduler_.endFrame();
 }
 
@@ -366,15 +440,14 @@ std::uint64_t GardenSession::morphRemaining() const { return blender_ ? blender_
 
 std::size_t GardenSession::trianglesShown() const {
     std::size_t n = 0;
-    for (const Sculpture& s : sculptures_) {
-        if (!s.onShow()) continue;
-        for (std::size_t c = 0; c < s.queue->count(); ++c)
-            if (const auto m = s.queue->mesh(c)) n += m->triangleCount();
-    }
+    for (const Sculpture& s : sculptures_)
+        if (s.onShow()) n += s.queue->shownTriangles();
     return n;
 }
 
-bool GardenSession::idle() const { return (!blender_ || blender_->done()) && remeshPending() == 0; }
+bool GardenSession::idle() const {
+    return (!blender_ || blender_->done()) && remeshPending() == 0 && sculpturesLoading() == 0;
+}
 
 const voxel::Volume* GardenSession::morphResult() const {
     return morphIndex_ >= 0 ? sculptures_[static_cast<std::size_t>(morphIndex_)].volume.get() : nullptr;

@@ -38,6 +38,7 @@
 namespace hg::garden {
 
 class MorphBlender;
+class SculptureLoader;
 struct MorphSources;
 
 // The scales a sculpture may be given, metres per model unit.
@@ -67,6 +68,17 @@ struct SessionSettings {
     // benchmarks run the same garden smaller or larger.
     int sculptureResolution = 0;
     int morphResolution = 0;
+    // The garden opens at once and sculptures are sampled in the background,
+    // nearest to the viewer first, each shown coarse as soon as its grid is
+    // in (garden/app/sculpture_loader.h); the morph's sources are sampled
+    // before the session opens. Until then a sculpture is loading(): no
+    // grid, not editable. Off: every sculpture is sampled in the constructor.
+    bool progressiveLoading = false;
+    // New meshes shown per frame, in bytes (0: no limit): what the upload
+    // stage then moves to the GPU, spread over frames instead of a burst.
+    // Groups of touching chunks are shown whole (a split would show a
+    // crack), so a group larger than this is shown alone in its frame.
+    std::size_t uploadBytesPerFrame = 0;
 };
 
 // What one frame is given: the hands (world frame), the time since the
@@ -88,7 +100,8 @@ struct FrameInput {
 class GardenSession {
 public:
     // Samples every sculpture (those that fail become missing) and the
-    // morph's sources; throws nothing for a broken sculpture.
+    // morph's sources, or with progressiveLoading starts sampling them;
+    // throws nothing for a broken sculpture.
     GardenSession(GardenLoad load, SessionSettings settings = {});
     ~GardenSession();
     GardenSession(const GardenSession&) = delete;
@@ -258,8 +271,13 @@ public:
     // The frame under way (a sink adds what it measured itself).
     FrameStats& stats() { return scheduler_.stats(); }
 
-    // The morph has nothing left to blend and no chunk waits for a mesh.
+    // The morph has nothing left to blend, no chunk waits for a mesh and
+    // no sculpture is loading.
     bool idle() const;
+    // Sculptures still being sampled (progressive loading), and a wait until
+    // every one is in (what needs the whole garden: a journal to play).
+    std::size_t sculpturesLoading() const;
+    void finishLoading();
     std::size_t remeshPending() const;
     // Triangles of the meshes on show, over every sculpture.
     std::size_t trianglesShown() const;
@@ -293,7 +311,13 @@ private:
         std::optional<Placement> placementBefore;     // a MoveAction's
         std::optional<Perturbation> replacedBefore;   // a ReplaceAction's
     };
-    void buildSculpture(std::size_t index);
+    // A sculpture from the garden file (name, placement, source; missing
+    // when its file is), then sampled and given its meshing caches.
+    void describeSculpture(std::size_t index);
+    void sampleSculpture(std::size_t index);
+    void attachGrid(std::size_t index, std::unique_ptr<voxel::Volume> volume, const std::string& error);
+    // Progressive loading: grids the loader finished, attached within the frame.
+    void attachLoaded();
     // The pyramid, layout and queue of a sampled sculpture, its coarsest level meshed.
     void attachMeshing(Sculpture& s) const;
     std::string applyAddModel(const AddAction& a);
@@ -384,6 +408,9 @@ private:
     int liveMove_ = -1;                // the sculpture moved live, or -1
     Placement liveMoveFrom_;           // its placement before the drag
     bool intentScaling_ = false;       // the live move is the tool intents' selection scaling
+    // Progressive loading (null when nothing is left to sample). Last: it
+    // reads load_'s models and stops before they go.
+    std::unique_ptr<SculptureLoader> loader_;
 };
 
 }  // namespace hg::garden

@@ -56,18 +56,23 @@ struct Sculpture {
     std::unique_ptr<poly::ChunkLayout> layout;
     std::unique_ptr<poly::RemeshQueue> queue;
     int framesSinceLevels = 0;         // frames since the queue last took new levels
+    int uniformLevel = -1;             // the one level the queue's chunks last took, or -1 when they differ
 
     Sculpture();
     ~Sculpture();
     Sculpture(Sculpture&&) noexcept;
     Sculpture& operator=(Sculpture&&) noexcept;
 
+    bool loading = false;              // sampled in the background (progressive loading): no caches yet
+
     bool missing() const { return !error.empty(); }
     // Its adding was undone (AddAction): not shown, picked, edited or found
     // by name; its caches stay so that redo shows it at once.
     bool removed = false;
     // In the garden with a grid: what is drawn, picked and meshed.
-    bool onShow() const { return !removed && !missing(); }
+    bool onShow() const { return !removed && hasGrid(); }
+    // The grid and its meshing caches are there: neither missing nor loading.
+    bool hasGrid() const { return !missing() && !loading; }
     bool morphResult() const { return source.kind == SculptureSource::Kind::Morph; }
     glm::vec3 worldCentre() const;
 };

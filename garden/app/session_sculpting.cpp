@@ -29,6 +29,7 @@ std::string GardenSession::checkEditable(int sculpture) const {
     const Sculpture& s = sculptures_[static_cast<std::size_t>(sculpture)];
     if (s.removed) return "the sculpture '" + s.name + "' was removed";
     if (s.missing()) return "the sculpture '" + s.name + "' is missing: " + s.error;
+    if (s.loading) return "the sculpture '" + s.name + "' is still loading";
     return "";
 }
 

@@ -147,6 +147,7 @@ void GardenView::render(const GardenSession& session, glm::ivec2 viewport, const
                                 LineMode::Segments);
             continue;
         }
+        if (!st.hasGrid()) continue;  // still loading
         const RenderMaterial m = renderMaterial(st.material);
         const glm::mat4 mvp = v.projection * v.view * st.modelToWorld;
         for (std::size_t c = 0; c < st.queue->count(); ++c) {

@@ -217,7 +217,9 @@ std::string statsJson(const ReplayScript& script, const ReplayResult& result) {
         frames.push_back({{"frame", f.frame}, {"total_ms", f.totalMs}, {"budget_ms", f.budgetMs}, {"stages_ms", stages},
                           {"morph_samples", f.morphSamples}, {"morph_pending", f.morphPending},
                           {"chunks_meshed", f.chunksMeshed}, {"chunks_shown", f.chunksShown},
-                          {"remesh_pending", f.remeshPending}, {"upload_bytes", f.uploadBytes},
+                          {"remesh_pending", f.remeshPending}, {"lod_chunks_visited", f.lodChunksVisited},
+                          {"sculptures_loading", f.sculpturesLoading},
+                          {"mesh_bytes_shown", f.meshBytesShown}, {"upload_bytes", f.uploadBytes},
                           {"uploads_pending", f.uploadsPending}, {"triangles_shown", f.trianglesShown},
                           {"triangles_drawn", f.trianglesDrawn},
                           {"draw_calls", f.drawCalls}});

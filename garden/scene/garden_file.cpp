@@ -379,26 +379,40 @@ SculptureLoad sculptureFromText(const SculptureSpec& spec, const std::string& te
 }
 
 GardenLoad loadGarden(const std::string& path) {
-    GardenLoad load;
     std::ifstream in(path, std::ios::binary);
     if (!in) {
+        GardenLoad load;
         load.errorReason = std::string("cannot open the garden file: ") + std::strerror(errno);
         load.error = path + ": " + load.errorReason;
         return load;
     }
     std::ostringstream text;
     text << in.rdbuf();
+    return loadGardenText(text.str(), path);
+}
+
+GardenLoad loadGardenText(const std::string& text, const std::string& path) {
+    GardenLoad load;
     std::string folder = std::filesystem::path(path).parent_path().string();
     if (folder.empty()) folder = ".";
     try {
-        load.garden = parseGarden(text.str(), path, folder);
+        load.garden = parseGarden(text, path, folder);
     } catch (const JsonError& e) {
         load.errorPath = e.path();
         load.errorReason = e.reason();
         load.error = path + ": " + e.what();
         return load;
     }
-    for (const auto& spec : load.garden->sculptures) load.sculptures.push_back(loadSculpture(spec));
+    // Sculptures with the same file, body and a[] share one parse (a
+    // generated garden of a thousand copies reads each file once).
+    std::map<std::string, std::size_t> first;
+    for (const auto& spec : load.garden->sculptures) {
+        std::ostringstream key;
+        key << spec.file << '\n' << spec.body;
+        for (double a : spec.a) key << ' ' << a;
+        const auto [it, fresh] = first.emplace(key.str(), load.sculptures.size());
+        load.sculptures.push_back(fresh ? loadSculpture(spec) : load.sculptures[it->second]);
+    }
     if (const auto& m = load.garden->morph) {
         for (std::size_t i = 0; i < 3; ++i)
             if (!load.sculptures[m->sourceIndex[i]].ok()) {

@@ -43,6 +43,9 @@ Garden parseGarden(const std::string& text, const std::string& file, const std::
 // Reads `path`, parses it, and loads every sculpture's HyperFun body (frep
 // parser and compiler; no sampling).
 GardenLoad loadGarden(const std::string& path);
+// The same from the file's text (`path` names it in messages and resolves
+// its relative sculpture files): a generated garden.
+GardenLoad loadGardenText(const std::string& text, const std::string& path);
 
 // The sculpture's model from its file, body and a[] (missing or broken
 // files give an error, not an exception). Used by loadGarden, and again when

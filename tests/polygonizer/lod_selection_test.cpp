@@ -2,6 +2,7 @@
 // neighbours differ by at most one level (for many cameras, near, far and
 // inside), the nearest chunk is at full detail and a far camera sees all
 // coarse, and the detail sphere and the tool force full detail around them.
+// The hierarchical selection equals the per-chunk one.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -94,6 +95,51 @@ TEST(LodSelection, DetailSphereAndToolForceFullDetail) {
     EXPECT_GT(forced, 1);
     // Away from both, the far camera keeps chunks coarse.
     EXPECT_EQ(*std::max_element(levels.begin(), levels.end()), s.maxLevel);
+}
+
+// The hierarchical selection (the layout's bound first) against every chunk
+// tested: a camera walking from inside the model to 600 units away on
+// several lines, with and without a detail sphere, always gets the same
+// levels; far cameras take the shortcut, near ones do not.
+TEST(LodSelection, HierarchicalSelectionEqualsPerChunkSelectionOnACameraSweep) {
+    for (int size : {16, 32}) {
+        ChunkLayout layout(frame(256), size);
+        int uniform = 0, perChunk = 0;
+        for (const std::array<double, 3>& dir : {std::array<double, 3>{0, 0, 1}, {0.6, 0.1, -0.8}, {-1, 0.3, 0.2}}) {
+            for (double t = 0.0; t < 600.0; t = t * 1.07 + 0.05) {
+                Camera cam;
+                cam.position = {dir[0] * t, 1.0 + dir[1] * t, dir[2] * t};
+                cam.viewportHeight = 1080;
+                for (bool sphere : {false, true}) {
+                    LodSettings s;
+                    s.maxLevel = size == 32 ? 3 : 2;
+                    if (sphere) s.detail = Sphere{{0.9, 1.9, 0.4}, 0.3};
+                    const std::vector<int> flat = selectLevelsPerChunk(layout, cam, s);
+                    ASSERT_EQ(selectLevels(layout, cam, s), flat) << "camera at distance " << t;
+                    if (const std::optional<int> l = uniformLevel(layout, cam, s)) {
+                        ++uniform;
+                        for (int f : flat) ASSERT_EQ(f, *l) << "camera at distance " << t;
+                    } else {
+                        ++perChunk;
+                    }
+                }
+            }
+        }
+        EXPECT_GT(uniform, 20) << "far cameras select for the whole layout at once";
+        EXPECT_GT(perChunk, 20) << "near cameras and the detail sphere visit the chunks";
+    }
+}
+
+TEST(LodSelection, NoUniformLevelWhereASphereReachesTheLayout) {
+    ChunkLayout layout(frame(256), 32);
+    Camera cam;
+    cam.position = {0, 1, -400};
+    LodSettings s;
+    ASSERT_EQ(uniformLevel(layout, cam, s), s.maxLevel);
+    s.tool = Sphere{{1.05, 1.0, 0.0}, 0.1};  // just outside the model box, within reach of its last chunks
+    EXPECT_EQ(uniformLevel(layout, cam, s), std::nullopt);
+    s.tool = Sphere{{5.0, 1.0, 0.0}, 0.1};
+    EXPECT_EQ(uniformLevel(layout, cam, s), s.maxLevel);
 }
 
 TEST(ChunkLayout, ChunksCoverTheIndexBoxAlignedWithLeaves) {

@@ -115,6 +115,7 @@ TEST(RemeshQueue, BudgetsHoldAndHalfDoneUpdatesShowTheOldClosedSurface) {
     q.setViewer(cam.position);
     q.setLevels(selectLevels(layout, cam, s));
     ASSERT_GT(q.pending(), 0u);
+    const std::vector<ChunkLod> want = chunkLods(layout, selectLevels(layout, cam, s));
     int calls = 0;
     while (q.pending() > 0 && calls < 1000) {
         RemeshReport r = q.process(RemeshBudget{0.0, 2});
@@ -122,6 +123,14 @@ TEST(RemeshQueue, BudgetsHoldAndHalfDoneUpdatesShowTheOldClosedSurface) {
         ++calls;
         MeshReport now = validateMesh(weldByPosition(shownUnion(q)));
         ASSERT_EQ(now.boundaryEdges, 0u) << "after call " << calls;
+        // The running counts agree with the slots.
+        std::size_t triangles = 0, unchanged = 0;
+        for (std::size_t i = 0; i < q.count(); ++i) {
+            if (q.mesh(i)) triangles += q.mesh(i)->triangleCount();
+            unchanged += q.shownLod(i) == want[i] ? 1 : 0;
+        }
+        ASSERT_EQ(q.shownTriangles(), triangles) << "after call " << calls;
+        ASSERT_GE(q.pending(), q.count() - unchanged) << "a chunk not yet at its level is pending";
     }
     EXPECT_GT(calls, 1);
     EXPECT_EQ(q.pending(), 0u);

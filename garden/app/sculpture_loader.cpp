@@ -1,0 +1,74 @@
+#include "garden/app/sculpture_loader.h"
+
+#include <algorithm>
+#include <chrono>
+
+#include "frep/model.h"
+
+namespace hg::garden {
+
+SculptureLoader::SculptureLoader(std::vector<Job> jobs, const std::array<double, 3>& viewer)
+    : waiting_(std::move(jobs)), remaining_(waiting_.size()), viewer_(viewer), worker_([this] { run(); }) {}
+
+SculptureLoader::~SculptureLoader() {
+    stop_ = true;
+    worker_.join();
+}
+
+void SculptureLoader::setViewer(const std::array<double, 3>& viewer) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    viewer_ = viewer;
+}
+
+void SculptureLoader::run() {
+    for (;;) {
+        Job job;
+        {
+            std::lock_guard<std::mutex> lock(mutex_);
+            if (stop_ || waiting_.empty()) return;
+            auto distance = [this](const Job& j) {
+                double s = 0.0;
+                for (std::size_t a = 0; a < 3; ++a) s += (j.where[a] - viewer_[a]) * (j.where[a] - viewer_[a]);
+                return s;
+            };
+            const auto next = std::min_element(waiting_.begin(), waiting_.end(),
+                                               [&](const Job& a, const Job& b) { return distance(a) < distance(b); });
+            job = *next;
+            waiting_.erase(next);
+        }
+        Loaded done;
+        done.sculpture = job.sculpture;
+        voxel::VoxelizeResult r = voxel::voxelize(*job.model, job.request);
+        if (r.volume) done.volume = std::make_unique<voxel::Volume>(std::move(*r.volume));
+        else done.error = r.error;
+        std::lock_guard<std::mutex> lock(mutex_);
+        finished_.push_back(std::move(done));
+    }
+}
+
+std::vector<SculptureLoader::Loaded> SculptureLoader::take(std::size_t max) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    const std::size_t n = max == 0 ? finished_.size() : std::min(max, finished_.size());
+    std::vector<Loaded> out(std::make_move_iterator(finished_.begin()),
+                            std::make_move_iterator(finished_.begin() + static_cast<std::ptrdiff_t>(n)));
+    finished_.erase(finished_.begin(), finished_.begin() + static_cast<std::ptrdiff_t>(n));
+    remaining_ -= n;
+    return out;
+}
+
+std::size_t SculptureLoader::remaining() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return remaining_;
+}
+
+void SculptureLoader::wait() {
+    for (;;) {
+        {
+            std::lock_guard<std::mutex> lock(mutex_);
+            if (waiting_.empty() && finished_.size() == remaining_) return;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+}
+
+}  // namespace hg::garden

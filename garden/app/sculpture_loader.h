@@ -1,0 +1,69 @@
+// Sculptures sampled off the frame (issue 25; docs/design.md §6, "Progressive
+// loading"): one background thread voxelizes the sculptures it was given,
+// always the one nearest the viewer next, while the garden runs; the frame
+// takes the finished grids (GardenSession attaches a coarse mesh at once
+// and the finer levels stream in through the remesh queue). A grid sampled
+// here is the grid the session would sample at start: voxelize() is
+// deterministic.
+#pragma once
+
+#include <array>
+#include <atomic>
+#include <cstddef>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "voxel/sampler.h"
+
+namespace hg::frep { class Model; }
+
+namespace hg::garden {
+
+class SculptureLoader {
+public:
+    struct Job {
+        std::size_t sculpture = 0;      // the session's index
+        // Shared, not pointed into the garden's load: sculptures added
+        // while others load grow that vector (session_adding.cpp).
+        std::shared_ptr<const frep::Model> model;
+        voxel::VolumeRequest request;
+        std::array<double, 3> where{};  // world position, for the nearest-first order
+    };
+    struct Loaded {
+        std::size_t sculpture = 0;
+        std::unique_ptr<voxel::Volume> volume;  // null: the sampling failed
+        std::string error;
+    };
+
+    // Starts sampling at once, nearest to `viewer` first.
+    SculptureLoader(std::vector<Job> jobs, const std::array<double, 3>& viewer);
+    // Stops after the sculpture under way.
+    ~SculptureLoader();
+    SculptureLoader(const SculptureLoader&) = delete;
+    SculptureLoader& operator=(const SculptureLoader&) = delete;
+
+    // Where the viewer is now: the next sculpture sampled is the nearest.
+    void setViewer(const std::array<double, 3>& viewer);
+    // Up to `max` finished grids (0: all there are), in the order sampled.
+    std::vector<Loaded> take(std::size_t max = 0);
+    // Sculptures not yet taken (sampling, waiting or finished).
+    std::size_t remaining() const;
+    // Blocks until every sculpture is sampled.
+    void wait();
+
+private:
+    void run();
+
+    mutable std::mutex mutex_;
+    std::vector<Job> waiting_;
+    std::vector<Loaded> finished_;
+    std::size_t remaining_ = 0;
+    std::array<double, 3> viewer_{};
+    std::atomic<bool> stop_{false};
+    std::thread worker_;  // last: started once everything above is set
+};
+
+}  // namespace hg::garden

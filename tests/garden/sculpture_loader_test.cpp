@@ -1,0 +1,116 @@
+// Progressive loading (SessionSettings::progressiveLoading, garden/app/
+// sculpture_loader.h): the generated 48-sculpture garden shows its first
+// frame while sculptures are still loading, the nearest sculpture comes
+// first, every sculpture loads in the end, and the grids are the grids a
+// session that samples everything at start makes, voxel for voxel.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <chrono>
+#include <limits>
+#include <thread>
+
+#include <glm/geometric.hpp>
+
+#include "garden/app/garden_session.h"
+#include "garden/scene/scale_garden.h"
+
+namespace hg::garden {
+namespace {
+
+GardenLoad scaleGarden(int count) {
+    ScaleGardenSpec spec;
+    spec.count = count;
+    spec.resolution = 24;
+    return loadScaleGarden(std::string(HG_SOURCE_DIR) + "/content/gardens/default.json", spec);
+}
+
+SessionSettings loadingSettings(bool progressive) {
+    SessionSettings s;
+    s.chunkSize = 16;
+    s.maxLevel = 1;
+    s.remeshChunksPerFrame = 64;
+    s.progressiveLoading = progressive;
+    return s;
+}
+
+// Frames as a window runs them: sampling goes on in the background while
+// frames pass, so a frame that finds nothing new waits a millisecond.
+void nextFrame(GardenSession& session) {
+    session.frame(FrameInput{});
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+}
+
+void loadAll(GardenSession& session) {
+    while (session.sculpturesLoading() > 0) nextFrame(session);
+}
+
+TEST(ProgressiveLoading, TheFirstFrameComesBeforeTheSculpturesNearestFirstAndAllLoad) {
+    GardenLoad load = scaleGarden(48);
+    ASSERT_TRUE(load.ok()) << load.error;
+    GardenSession session(std::move(load), loadingSettings(true));
+    const FrameStats& first = session.frame(FrameInput{});
+    EXPECT_GT(first.sculpturesLoading, 0u) << "the garden opened before its sculptures were sampled";
+    EXPECT_FALSE(session.idle());
+    // The sculpture nearest the viewer is the first to arrive.
+    std::size_t nearest = 0;
+    float best = std::numeric_limits<float>::max();
+    for (std::size_t i = 0; i < session.sculptures().size(); ++i) {
+        const float d = glm::length(session.sculptures()[i].worldCentre() - session.navigator().eye());
+        if (d < best) best = d, nearest = i;
+    }
+    auto anyGrid = [&] {
+        return std::any_of(session.sculptures().begin(), session.sculptures().end(), [](const Sculpture& s) { return s.hasGrid(); });
+    };
+    while (!anyGrid()) nextFrame(session);
+    ASSERT_TRUE(session.sculptures()[nearest].hasGrid()) << session.sculptures()[nearest].name;
+    EXPECT_GT(session.sculptures()[nearest].queue->shownTriangles(), 0u) << "a sculpture shows its coarse mesh as it arrives";
+    loadAll(session);
+    EXPECT_EQ(session.frame(FrameInput{}).sculpturesLoading, 0u);
+    for (const Sculpture& s : session.sculptures()) {
+        EXPECT_TRUE(s.hasGrid()) << s.name << ": " << s.error;
+        EXPECT_FALSE(s.loading);
+    }
+}
+
+TEST(ProgressiveLoading, GridsEqualThoseSampledAtStart) {
+    GardenLoad a = scaleGarden(10), b = scaleGarden(10);
+    ASSERT_TRUE(a.ok() && b.ok());
+    GardenSession progressive(std::move(a), loadingSettings(true));
+    GardenSession atStart(std::move(b), loadingSettings(false));
+    EXPECT_EQ(atStart.sculpturesLoading(), 0u);
+    loadAll(progressive);
+    ASSERT_EQ(progressive.sculptures().size(), atStart.sculptures().size());
+    for (std::size_t n = 0; n < atStart.sculptures().size(); ++n) {
+        const voxel::Volume& p = *progressive.sculptures()[n].volume;
+        const voxel::Volume& q = *atStart.sculptures()[n].volume;
+        const voxel::IndexBox& box = q.frame.indexBox;
+        for (int a = 0; a < 3; ++a) {
+            ASSERT_EQ(p.frame.indexBox.lo[a], box.lo[a]);
+            ASSERT_EQ(p.frame.indexBox.hi[a], box.hi[a]);
+        }
+        for (int k = box.lo[2]; k <= box.hi[2]; ++k)
+            for (int j = box.lo[1]; j <= box.hi[1]; ++j)
+                for (int i = box.lo[0]; i <= box.hi[0]; ++i) {
+                    ASSERT_EQ(p.value(i, j, k), q.value(i, j, k)) << atStart.sculptures()[n].name;
+                    ASSERT_EQ(p.active(i, j, k), q.active(i, j, k)) << atStart.sculptures()[n].name;
+                }
+    }
+}
+
+TEST(ProgressiveLoading, ALoadingSculptureIsNotEditableAndFinishLoadingBringsAll) {
+    GardenLoad load = scaleGarden(30);
+    ASSERT_TRUE(load.ok()) << load.error;
+    GardenSession session(std::move(load), loadingSettings(true));
+    const Sculpture& last = session.sculptures().back();  // the farthest row: sampled last
+    ASSERT_TRUE(last.loading);
+    const std::string why = session.applyPerturbation(static_cast<int>(session.sculptures().size()) - 1, QuadricShape::Ellipsoid,
+                                                      {0.0, 1.0, 0.0}, {0.2, 0.2, 0.2}, 2.0);
+    EXPECT_NE(why.find("still loading"), std::string::npos) << why;
+    session.finishLoading();
+    EXPECT_EQ(session.sculpturesLoading(), 0u);
+    for (const Sculpture& s : session.sculptures()) EXPECT_TRUE(s.hasGrid()) << s.name;
+}
+
+}  // namespace
+}  // namespace hg::garden
