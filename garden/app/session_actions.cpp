@@ -85,6 +85,9 @@ std::string GardenSession::apply(const Action& action) {
 std::string GardenSession::restore(const std::vector<Action>& records) { return restoreRecords(records).message(); }
 
 JournalPlayed GardenSession::restoreRecords(const std::vector<Action>& records) {
+    // Actions name sculptures that must have their grids: a journal waits
+    // for progressive loading to finish.
+    if (!records.empty()) finishLoading();
     restoring_ = true;
     for (Sculpture& s : sculptures_)
         if (s.edits) s.edits->setDeferred(true);

@@ -58,6 +58,10 @@ bool gardenPanel(GardenSession& session, glm::vec2& selector, bool headset, cons
         for (std::size_t i = 0; i < session.sculptures().size(); ++i) {
             const Sculpture& s = session.sculptures()[i];
             if (s.removed) continue;
+            if (s.loading) {
+                ImGui::TextDisabled("%s (loading)", s.name.c_str());
+                continue;
+            }
             if (s.missing()) {
                 ImGui::TextColored(ImVec4(1, 0.35f, 0.3f, 1), "%s (missing)", s.name.c_str());
                 if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", s.error.c_str());
@@ -68,6 +72,8 @@ bool gardenPanel(GardenSession& session, glm::vec2& selector, bool headset, cons
         }
         ImGui::EndListBox();
     }
+    if (const std::size_t n = session.sculpturesLoading())
+        ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "loading %zu sculpture%s, nearest first", n, n == 1 ? "" : "s");
     ImGui::TextDisabled("O orbits the selection, G puts the detail sphere where the mouse points");
     if (session.hasMorph()) {
         const MorphSpec& m = *session.garden().morph;
@@ -150,6 +156,9 @@ int runDesktopGarden(const DesktopOptions& options) {
         SessionSettings settings;
         settings.scheduler.budgetMs = options.budgetMs;
         settings.viewportHeight = window.window().framebufferSize().y;
+        // The window opens at once; sculptures arrive nearest first and the
+        // Garden panel says how many are still coming.
+        settings.progressiveLoading = true;
         OpenedSession opened = openLoadedOrSession(
             std::move(load), {options.session, options.garden, options.gardenGiven, "hypergarden (desktop)"}, settings);
         if (!opened.error.empty()) {

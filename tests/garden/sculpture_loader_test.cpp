@@ -112,5 +112,26 @@ TEST(ProgressiveLoading, ALoadingSculptureIsNotEditableAndFinishLoadingBringsAll
     for (const Sculpture& s : session.sculptures()) EXPECT_TRUE(s.hasGrid()) << s.name;
 }
 
+// A journal played into a session that loads progressively (the desktop
+// window's) waits for the grids, so its actions on far sculptures play.
+TEST(ProgressiveLoading, AJournalPlaysIntoALoadingSession) {
+    GardenLoad load = scaleGarden(30);
+    ASSERT_TRUE(load.ok()) << load.error;
+    const std::string name = load.garden->sculptures.back().name;
+    const Placement at = load.garden->sculptures.back().placement;
+    std::vector<Action> journal;
+    Perturbation p;
+    p.center = {0.0, 0.5, 0.0};
+    p.radii = {0.2, 0.2, 0.2};
+    p.strength = 2.0;
+    journal.push_back(PerturbAction{name, p});
+    journal.push_back(MoveAction{name, Placement{{at.position[0] + 1.0, 0.0, at.position[2]}, 10.0, at.scale}});
+    GardenSession session(std::move(load), loadingSettings(true));
+    ASSERT_TRUE(session.sculptures().back().loading);
+    ASSERT_EQ(session.restore(journal), "");
+    EXPECT_EQ(session.editCount(session.findSculpture(name)), 1u);
+    EXPECT_EQ(session.sculpturesLoading(), 0u);
+}
+
 }  // namespace
 }  // namespace hg::garden
