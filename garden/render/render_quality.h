@@ -1,0 +1,18 @@
+// What the renderer spends on the picture: anti-aliasing, shadows, ambient
+// occlusion, render scale and exposure, each switchable (docs/rendering.md).
+#pragma once
+
+namespace hg::garden {
+
+struct RenderQuality {
+    int msaaSamples = 4;             // 1: no multisampling; clamped to what the driver offers
+    bool shadows = true;             // the sun's (the first directional light's) shadow map
+    int shadowMapSize = 2048;        // texels on a side
+    bool ambientOcclusion = true;    // screen-space, from the depth buffer
+    int aoSamples = 12;              // hemisphere samples per pixel (4..32)
+    bool aoHalfResolution = false;   // AO computed at half width and height, then upsampled
+    float aoRadius = 0.25f;          // metres: the largest hollow that darkens
+    float exposure = 1.0f;           // linear scale before tone mapping
+};
+
+}  // namespace hg::garden
