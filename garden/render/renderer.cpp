@@ -19,6 +19,7 @@
 #include "garden/render/shaders.h"
 #include "garden/render/shadow_pass.h"
 #include "garden/render/shapes.h"
+#include "garden/render/sky_pass.h"
 
 namespace hg::garden {
 
@@ -93,6 +94,7 @@ Renderer::Renderer()
       targets_(std::make_unique<SceneTargets>()),
       shadow_(std::make_unique<ShadowPass>()),
       occlusion_(std::make_unique<OcclusionPass>()),
+      sky_(std::make_unique<SkyPass>()),
       post_(std::make_unique<PostProcess>()),
       timers_(std::make_unique<GpuTimers>()) {
     auto lit = [](const ShaderProgram& p) {
@@ -432,6 +434,7 @@ void Renderer::renderScene(bool shadowed) {
         else
             drawChunkNow(d);
     }
+    sky_->draw(view_);
     timers_->end();
 }
 

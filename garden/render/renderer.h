@@ -71,7 +71,7 @@ struct View {
     glm::mat4 projection{1.0f};
     glm::vec3 eye{0.0f};                               // world position of the camera (specular)
     glm::ivec2 viewport{1, 1};                         // pixels of the bound framebuffer
-    glm::vec4 clearColor{0.62f, 0.74f, 0.86f, 1.0f};  // sRGB sky
+    glm::vec4 clearColor{0.62f, 0.74f, 0.86f, 1.0f};  // sRGB sky at the horizon (deeper overhead)
     std::vector<DirectionalLight> lights;              // at most kMaxLights
     std::vector<PointLight> pointLights;               // at most kMaxPointLights
     glm::vec3 ambient{0.2f, 0.2f, 0.2f};               // linear
@@ -108,6 +108,7 @@ class PostProcess;
 class GpuTimers;
 class ShadowPass;
 class OcclusionPass;
+class SkyPass;
 
 class Renderer {
 public:
@@ -239,6 +240,7 @@ private:
     std::unique_ptr<SceneTargets> targets_;
     std::unique_ptr<ShadowPass> shadow_;
     std::unique_ptr<OcclusionPass> occlusion_;
+    std::unique_ptr<SkyPass> sky_;
     std::unique_ptr<PostProcess> post_;
     std::unique_ptr<GpuTimers> timers_;
 

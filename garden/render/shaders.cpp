@@ -122,6 +122,25 @@ uniform float uSpacing;
 uniform float uLineWidth;   // pixels
 uniform int uMajorEvery;
 out vec4 fragColor;
+// Value noise in world space: the lawn looks the same from anywhere.
+float hash(vec2 p) {
+    p = fract(p * vec2(123.34, 456.21));
+    p += dot(p, p + 45.32);
+    return fract(p.x * p.y);
+}
+float noise(vec2 p) {
+    vec2 i = floor(p), f = fract(p);
+    vec2 u = f * f * (3.0 - 2.0 * f);
+    return mix(mix(hash(i), hash(i + vec2(1.0, 0.0)), u.x), mix(hash(i + vec2(0.0, 1.0)), hash(i + 1.0), u.x), u.y);
+}
+// Lawn: patches a few metres and under a metre across, and tufts of a few
+// centimetres that fade to their mean where they shrink below a pixel.
+float lawn(vec2 p) {
+    float n = 0.55 * noise(p / 3.1) + 0.3 * noise(p / 0.7 + 17.0);
+    float w = max(fwidth(p.x), fwidth(p.y));
+    n += 0.15 * mix(noise(p / 0.035 + 3.0), 0.5, smoothstep(0.01, 0.03, w));
+    return n;
+}
 // 1 on a line of the grid with the given spacing, 0 between, anti-aliased
 // over a pixel; fades out where cells shrink to a few pixels (no moire).
 float grid(vec2 coord, float width) {
@@ -134,7 +153,10 @@ void main() {
     vec2 coord = vWorld.xz / uSpacing;
     float line = grid(coord, uLineWidth);
     if (uMajorEvery > 1) line = max(line, grid(coord / float(uMajorEvery), 2.0 * uLineWidth));
-    vec3 base = mix(toLinear(uGroundColor), toLinear(uLineColor), line);
+    float n = lawn(vWorld.xz);
+    // Lighter, yellower where the grass is dry; darker and greener where lush.
+    vec3 grass = toLinear(uGroundColor) * (0.7 + 0.6 * n) * mix(vec3(1.0), vec3(1.12, 1.06, 0.78), smoothstep(0.55, 0.8, n));
+    vec3 base = mix(grass, toLinear(uLineColor), line);
     fragColor = shade(base, vec3(0.0, 1.0, 0.0), vWorld, 0.0, 1.0);
 }
 )";
