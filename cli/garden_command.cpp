@@ -1,6 +1,7 @@
 // No subcommand: the desktop garden.
 #include "cli/commands.h"
 #include "garden/desktop/desktop_app.h"
+#include "garden/render/render_quality.h"
 #include "xr/xr_garden.h"
 
 namespace hg::garden::cli {
@@ -24,6 +25,7 @@ int runGarden(const GardenOptions& options) {
     d.budgetMs = options.budgetMs;
     d.screenshotDir = options.screenshotDir;
     d.session = options.session;
+    d.quality = qualityOf(parseQualityPreset(options.quality).value_or(QualityPreset::High));
     // F9 takes the open garden into the headset and back.
     d.headset = xr::headsetFromDesktop(x);
     if (options.xr) {

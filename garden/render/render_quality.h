@@ -2,6 +2,9 @@
 // occlusion, render scale and exposure, each switchable (docs/rendering.md).
 #pragma once
 
+#include <optional>
+#include <string>
+
 namespace hg::garden {
 
 struct RenderQuality {
@@ -14,5 +17,18 @@ struct RenderQuality {
     float aoRadius = 0.25f;          // metres: the largest hollow that darkens
     float exposure = 1.0f;           // linear scale before tone mapping
 };
+
+}  // namespace hg::garden
+
+namespace hg::garden {
+
+// low: no multisampling, shadows or occlusion (the old look, for software
+// rendering); medium: 2x MSAA, a 1024 shadow map, 8 occlusion samples at
+// half resolution; high: the defaults above with 16 samples.
+enum class QualityPreset { Low, Medium, High };
+
+RenderQuality qualityOf(QualityPreset preset);
+// "low", "medium" or "high"; nothing for another word.
+std::optional<QualityPreset> parseQualityPreset(const std::string& name);
 
 }  // namespace hg::garden

@@ -313,6 +313,21 @@ TEST_F(LookTest, TheLawnVariesInWorldSpace) {
     EXPECT_GT(first.g, first.r) << "green";
 }
 
+TEST(RenderQualityTest, PresetsSwitchTheEffectsAndParseByName) {
+    EXPECT_EQ(parseQualityPreset("low"), QualityPreset::Low);
+    EXPECT_EQ(parseQualityPreset("medium"), QualityPreset::Medium);
+    EXPECT_EQ(parseQualityPreset("high"), QualityPreset::High);
+    EXPECT_FALSE(parseQualityPreset("ultra").has_value());
+    const RenderQuality low = qualityOf(QualityPreset::Low), medium = qualityOf(QualityPreset::Medium),
+                        high = qualityOf(QualityPreset::High);
+    EXPECT_EQ(low.msaaSamples, 1);
+    EXPECT_FALSE(low.shadows || low.ambientOcclusion);
+    EXPECT_LT(medium.shadowMapSize, high.shadowMapSize);
+    EXPECT_LT(medium.aoSamples, high.aoSamples);
+    EXPECT_TRUE(medium.aoHalfResolution && !high.aoHalfResolution);
+    EXPECT_LT(medium.msaaSamples, high.msaaSamples);
+}
+
 TEST_F(LookTest, EachPassReportsItsGpuTime) {
     renderer_->upload(1, 1, uvSphereMesh(1.0f, 48, 24));
     const View view = makeView({0, 2, 5}, {0, 0.5f, 0});
