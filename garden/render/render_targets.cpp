@@ -18,6 +18,18 @@ void checkFramebuffer(const char* what) {
     throw GlError(std::string(what) + " framebuffer incomplete (status " + hex + ")");
 }
 
+gl::Texture makeTexture2D(GLenum internalFormat, glm::ivec2 size, GLenum format, GLenum type, GLint filter,
+                          GLint wrap) {
+    gl::Texture t = gl::Texture::create();
+    glBindTexture(GL_TEXTURE_2D, t.get());
+    glTexImage2D(GL_TEXTURE_2D, 0, static_cast<GLint>(internalFormat), size.x, size.y, 0, format, type, nullptr);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filter);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, wrap);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, wrap);
+    return t;
+}
+
 void SceneTargets::ensure(glm::ivec2 size, int samples) {
     size = glm::max(size, glm::ivec2(1));
     GLint maxColor = 1, maxDepth = 1;
@@ -49,13 +61,7 @@ void ScalarTarget::ensure(glm::ivec2 wanted) {
     wanted = glm::max(wanted, glm::ivec2(1));
     if (fbo && wanted == size) return;
     fbo = gl::Framebuffer::create();
-    texture = gl::Texture::create();
-    glBindTexture(GL_TEXTURE_2D, texture.get());
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, wanted.x, wanted.y, 0, GL_RED, GL_UNSIGNED_BYTE, nullptr);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    texture = makeTexture2D(GL_R8, wanted, GL_RED, GL_UNSIGNED_BYTE, GL_LINEAR, GL_CLAMP_TO_EDGE);
     glBindTexture(GL_TEXTURE_2D, 0);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo.get());
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture.get(), 0);

@@ -41,4 +41,9 @@ struct ScalarTarget {
 // Throws GlError naming `what` when the bound framebuffer is incomplete.
 void checkFramebuffer(const char* what);
 
+// A 2D texture without mipmaps of `size`, filtered and wrapped the same
+// both ways; left bound to GL_TEXTURE_2D for further parameters.
+gl::Texture makeTexture2D(GLenum internalFormat, glm::ivec2 size, GLenum format, GLenum type, GLint filter,
+                          GLint wrap);
+
 }  // namespace hg::garden

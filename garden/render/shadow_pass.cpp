@@ -37,18 +37,13 @@ ShadowPass::ShadowPass() : program_("shadow depth", kDepthVertex, kDepthFragment
 void ShadowPass::ensure(int size) {
     if (fbo_ && size == size_) return;
     fbo_ = gl::Framebuffer::create();
-    depth_ = gl::Texture::create();
-    glBindTexture(GL_TEXTURE_2D, depth_.get());
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24, size, size, 0, GL_DEPTH_COMPONENT, GL_FLOAT, nullptr);
     // Linear filtering of a compared texture: each tap is itself a 2 x 2
-    // PCF, so 3 x 3 taps give smooth edges.
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    // PCF, so 3 x 3 taps give smooth edges. Outside the fitted box nothing
+    // casts: the border is the far plane.
+    depth_ = makeTexture2D(GL_DEPTH_COMPONENT24, glm::ivec2(size), GL_DEPTH_COMPONENT, GL_FLOAT, GL_LINEAR,
+                           GL_CLAMP_TO_BORDER);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
-    // Outside the fitted box nothing casts: the border is the far plane.
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
     const float border[4] = {1.0f, 1.0f, 1.0f, 1.0f};
     glTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, border);
     glBindTexture(GL_TEXTURE_2D, 0);
