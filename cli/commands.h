@@ -55,6 +55,7 @@ struct ReplayCommandOptions {
     int resolution = 0;               // every sculpture and the morph at this resolution (0: the garden's)
     bool noLod = false;               // every chunk at level 0
     std::string session;              // play into this session folder ("" : none)
+    std::string quality = "high";     // --quality low|medium|high (offscreen rendering)
 };
 
 struct GardenOptions {
@@ -69,6 +70,7 @@ struct GardenOptions {
     std::string exitScreenshot;       // with frames: a PNG of the last frame
     std::string screenshotDir = ".";
     std::string session;              // open (or create) this session folder ("" : none)
+    std::string quality = "auto";     // --quality auto|low|medium|high
     bool xr = false;                  // in a headset through OpenXR (docs/xr.md)
     std::string xrScript;             // with xr: a replay script's commands at their frames
     bool leftHanded = false;          // with xr: the left hand holds the tool

@@ -9,6 +9,7 @@
 
 #include "cli/commands.h"
 #include "garden/desktop/desktop_app.h"
+#include "garden/render/render_quality.h"
 #include "garden/scene/garden_making.h"
 #include "garden/scene/json_reader.h"
 #include "io/checked_write.h"
@@ -90,6 +91,9 @@ int runGarden(const GardenOptions& given) {
     d.budgetMs = options.budgetMs;
     d.screenshotDir = options.screenshotDir;
     d.session = options.session;
+    // "auto" (no preset) is decided once the window knows its GL renderer.
+    if (const auto preset = parseQualityPreset(options.quality)) d.quality = qualityOf(*preset);
+    else d.autoQuality = true;
     // F9 takes the open garden into the headset and back.
     d.headset = xr::headsetFromDesktop(x);
     if (options.xr) {

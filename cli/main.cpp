@@ -26,6 +26,10 @@ int main(int argc, char** argv) {
     app.add_flag("--no-vsync", gardenOpts.noVsync, "Do not wait for the display's refresh");
     app.add_option("--budget-ms", gardenOpts.budgetMs, "Frame budget in milliseconds (default 11.1, 90 Hz)");
     app.add_option("--frames", gardenOpts.frames, "Close after this many frames (default: when the window closes)");
+    app.add_option("--quality", gardenOpts.quality,
+                   "Picture: auto (default: low on software rendering, else high), low, medium or high "
+                   "(docs/rendering.md)")
+        ->check(CLI::IsMember({"auto", "low", "medium", "high"}));
     app.add_option("--screenshot-dir", gardenOpts.screenshotDir, "Where F12 screenshots go (default: .)");
     app.add_option("--exit-screenshot", gardenOpts.exitScreenshot, "With --frames: a PNG of the last frame, overlay included");
     app.add_option("--session", gardenOpts.session,
@@ -98,6 +102,8 @@ int main(int argc, char** argv) {
     replay->add_option("--remesh-chunks", replayOpts.remeshChunks, "Chunks remeshed per frame (default 16; 0: time budget)");
     replay->add_option("--res", replayOpts.resolution, "Every sculpture and the morph at this resolution");
     replay->add_flag("--no-lod", replayOpts.noLod, "Every chunk at full detail");
+    replay->add_option("--quality", replayOpts.quality, "Offscreen: low, medium or high (default; docs/rendering.md)")
+        ->check(CLI::IsMember({"low", "medium", "high"}));
     replay->add_option("--session", replayOpts.session,
                        "Play into this session folder (made from the script's garden when new)");
     SessionCommandOptions sessionOpts;

@@ -7,6 +7,7 @@
 #include "garden/app/garden_session.h"
 #include "cli/commands.h"
 #include "garden/desktop/offscreen_garden.h"
+#include "garden/render/render_quality.h"
 #include "garden/replay/replay_runner.h"
 #include "garden/scene/json_reader.h"
 #include "garden/session/open_session.h"
@@ -70,6 +71,7 @@ int runReplay(const ReplayCommandOptions& options) {
             std::cerr << "error: " << why << "\n";
             return 1;
         }
+        offscreen->setQuality(qualityOf(parseQualityPreset(options.quality).value_or(QualityPreset::High)));
     }
     ReplayOptions ro;
     ro.screenshotEvery = options.screenshotEvery;

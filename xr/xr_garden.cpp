@@ -319,6 +319,8 @@ private:
                 view_.render(session_, glm::ivec2(images.width, images.height), r.viewOf(eyePose), projectionOf(v.fov),
                              r.toWorld(eyePose.position));
                 drawTool(toolHand_, aiming, toolHit);
+                // The eye's picture is rendered before the panel goes over it.
+                renderer_.finishView();
                 drawPanel(toolHand_, projectionOf(v.fov) * r.viewOf(eyePose));
                 if (eye == 0 && options_.mirror) mirror(target, images);
                 glBindFramebuffer(GL_FRAMEBUFFER, 0);

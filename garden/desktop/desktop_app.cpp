@@ -189,6 +189,7 @@ int runDesktopOn(GardenSession& session, GardenWindow& gardenWindow, const Deskt
     Overlay& overlay = *gardenWindow.overlay();
     bool showHelp = true;  // the key list, open for a first look; F1 toggles it
     Renderer& renderer = gardenWindow.renderer();
+    renderer.setQuality(options.autoQuality ? qualityOf(rendererPreset(GlWindow::glVersionString())) : options.quality);
     GardenView& view = gardenWindow.view();
     WindowEvents& events = gardenWindow.events();
     events = WindowEvents{};

@@ -10,6 +10,8 @@
 #include <functional>
 #include <string>
 
+#include "garden/render/render_quality.h"
+
 namespace hg::garden {
 
 class GardenSession;
@@ -35,6 +37,8 @@ struct DesktopOptions {
     int frames = 0;             // stop after this many frames (0: until closed); smoke tests
     std::string exitScreenshot; // a PNG of the last frame, overlay included ("" : none)
     std::string session;        // a session folder (made from `garden` when new); "" : none
+    RenderQuality quality;      // --quality: what the renderer spends on the picture
+    bool autoQuality = false;   // instead: low on a software renderer, else high (rendererPreset)
     HeadsetEntry headset;       // F9 and the Headset button (empty: the desktop only)
     // Called at the end of every desktop frame with its index; true asks
     // for the headset as F9 does (tests, scripts).

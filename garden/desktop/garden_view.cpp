@@ -132,7 +132,7 @@ void GardenView::render(const GardenSession& session, glm::ivec2 viewport, const
 
     GroundStyle ground;
     ground.color = glm::vec3(g.ground.material.color[0], g.ground.material.color[1], g.ground.material.color[2]);
-    ground.lineColor = ground.color * 0.7f;
+    ground.lineColor = ground.color * 0.8f;  // a faint survey grid over the lawn, for scale
     ground.halfExtent = static_cast<float>(std::max(g.ground.size[0], g.ground.size[1]) * 0.5);
     renderer_.drawGround(ground);
 

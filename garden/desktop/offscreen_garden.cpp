@@ -54,6 +54,8 @@ ViewDraw OffscreenGarden::render(GardenSession& session) {
     return {r.trianglesDrawn, r.drawCalls};
 }
 
+void OffscreenGarden::setQuality(const RenderQuality& quality) { impl_->renderer.setQuality(quality); }
+
 std::string OffscreenGarden::screenshot(const std::string& path) {
     impl_->target.bind();
     return writePng(path, impl_->target.width(), impl_->target.height(), impl_->target.readColor());

@@ -6,6 +6,7 @@
 #include <memory>
 #include <string>
 
+#include "garden/render/render_quality.h"
 #include "garden/replay/replay_runner.h"
 
 namespace hg::garden {
@@ -19,6 +20,8 @@ public:
     ViewUpload upload(GardenSession& session, double allowanceMs) override;
     ViewDraw render(GardenSession& session) override;
     std::string screenshot(const std::string& path) override;
+    // What the renderer spends on the picture (replay --quality).
+    void setQuality(const RenderQuality& quality);
 
 private:
     struct Impl;

@@ -60,6 +60,10 @@ struct TextureTag {
     static GLuint create() { GLuint n = 0; glGenTextures(1, &n); return n; }
     static void destroy(GLuint n) { glDeleteTextures(1, &n); }
 };
+struct QueryTag {
+    static GLuint create() { GLuint n = 0; glGenQueries(1, &n); return n; }
+    static void destroy(GLuint n) { glDeleteQueries(1, &n); }
+};
 struct ShaderTag {
     static void destroy(GLuint n) { glDeleteShader(n); }
 };
@@ -72,6 +76,7 @@ using VertexArray = Handle<VertexArrayTag>;
 using Framebuffer = Handle<FramebufferTag>;
 using Renderbuffer = Handle<RenderbufferTag>;
 using Texture = Handle<TextureTag>;
+using Query = Handle<QueryTag>;
 using Shader = Handle<ShaderTag>;
 using Program = Handle<ProgramTag>;
 

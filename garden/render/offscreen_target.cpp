@@ -5,6 +5,7 @@
 #include <string>
 
 #include "garden/render/gl_context.h"
+#include "garden/render/render_targets.h"
 
 namespace hg::garden {
 namespace {
@@ -35,13 +36,8 @@ auto readFrom(GLuint fbo, Read read) {
 OffscreenTarget::OffscreenTarget(int width, int height) : width_(width), height_(height) {
     if (width <= 0 || height <= 0) throw GlError("offscreen target size must be positive");
     fbo_ = gl::Framebuffer::create();
-    color_ = gl::Texture::create();
+    color_ = makeTexture2D(GL_RGBA8, {width, height}, GL_RGBA, GL_UNSIGNED_BYTE, GL_LINEAR, GL_CLAMP_TO_EDGE);
     depth_ = gl::Renderbuffer::create();
-
-    glBindTexture(GL_TEXTURE_2D, color_.get());
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glBindTexture(GL_TEXTURE_2D, 0);
 
     glBindRenderbuffer(GL_RENDERBUFFER, depth_.get());

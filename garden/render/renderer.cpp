@@ -12,8 +12,14 @@
 #include <stdexcept>
 #include <string>
 
+#include "garden/render/gpu_timers.h"
+#include "garden/render/occlusion_pass.h"
+#include "garden/render/post_process.h"
+#include "garden/render/render_targets.h"
 #include "garden/render/shaders.h"
+#include "garden/render/shadow_pass.h"
 #include "garden/render/shapes.h"
+#include "garden/render/sky_pass.h"
 
 namespace hg::garden {
 
@@ -56,12 +62,41 @@ void checkMesh(const poly::Mesh& mesh) {
 
 void setMat4(GLint location, const glm::mat4& m) { glUniformMatrix4fv(location, 1, GL_FALSE, glm::value_ptr(m)); }
 
+glm::vec3 srgbToLinear(const glm::vec3& c) {
+    glm::vec3 out;
+    for (int i = 0; i < 3; ++i)
+        out[i] = c[i] <= 0.04045f ? c[i] / 12.92f : std::pow((c[i] + 0.055f) / 1.055f, 2.4f);
+    return out;
+}
+
+// The texture unit the lit programs read the shadow map from.
+constexpr GLint kShadowUnit = 3;
+// Metres between the 3 x 3 shadow taps: a penumbra of about 5 cm.
+constexpr float kPenumbraStep = 0.02f;
+
 }  // namespace
+
+float RenderStats::gpuMs() const {
+    float sum = 0.0f;
+    bool any = false;
+    for (float ms : {gpuShadowMs, gpuSceneMs, gpuOcclusionMs, gpuPostMs})
+        if (ms >= 0.0f) {
+            sum += ms;
+            any = true;
+        }
+    return any ? sum : -1.0f;
+}
 
 Renderer::Renderer()
     : meshProgram_("mesh", shaders::kMeshVertex, shaders::kMeshFragment),
       groundProgram_("ground", shaders::kGroundVertex, shaders::kGroundFragment),
-      flatProgram_("flat", shaders::kFlatVertex, shaders::kFlatFragment) {
+      flatProgram_("flat", shaders::kFlatVertex, shaders::kFlatFragment),
+      targets_(std::make_unique<SceneTargets>()),
+      shadow_(std::make_unique<ShadowPass>()),
+      occlusion_(std::make_unique<OcclusionPass>()),
+      sky_(std::make_unique<SkyPass>()),
+      post_(std::make_unique<PostProcess>()),
+      timers_(std::make_unique<GpuTimers>()) {
     auto lit = [](const ShaderProgram& p) {
         return LitUniforms{p.uniform("uEye"),         p.uniform("uAmbient"),       p.uniform("uLightCount"),
                            p.uniform("uLightDir"),    p.uniform("uLightColor"),    p.uniform("uPointCount"),
@@ -69,6 +104,14 @@ Renderer::Renderer()
     };
     meshLit_ = lit(meshProgram_);
     groundLit_ = lit(groundProgram_);
+    auto shadowed = [](const ShaderProgram& p) {
+        p.use();
+        glUniform1i(p.uniform("uShadowMap"), kShadowUnit);
+        return ShadowUniforms{p.uniform("uShadows"), p.uniform("uShadowMatrix"), p.uniform("uShadowOffset"),
+                              p.uniform("uShadowTexel")};
+    };
+    meshShadow_ = shadowed(meshProgram_);
+    groundShadow_ = shadowed(groundProgram_);
     const ShaderProgram& m = meshProgram_;
     mesh_ = {m.uniform("uModel"),     m.uniform("uNormalMatrix"), m.uniform("uViewProjection"),
              m.uniform("uBaseColor"), m.uniform("uSpecular"),     m.uniform("uShininess"),
@@ -167,6 +210,13 @@ std::size_t Renderer::upload(ChunkId id, std::uint64_t version, const poly::Mesh
     glBindVertexArray(0);
     glBindBuffer(GL_ARRAY_BUFFER, 0);
 
+    c.lo = glm::vec3(mesh.positions[0], mesh.positions[1], mesh.positions[2]);
+    c.hi = c.lo;
+    for (std::size_t i = 0; i + 2 < mesh.positions.size(); i += 3) {
+        const glm::vec3 p(mesh.positions[i], mesh.positions[i + 1], mesh.positions[i + 2]);
+        c.lo = glm::min(c.lo, p);
+        c.hi = glm::max(c.hi, p);
+    }
     c.bytes = static_cast<std::size_t>(positionBytes + normalBytes + indexBytes);
     residentBytes_ += c.bytes;
     stats_.bytesUploaded += c.bytes;
@@ -196,36 +246,18 @@ void Renderer::beginFrame(const View& view) {
     if (view.pointLights.size() > static_cast<std::size_t>(kMaxPointLights))
         throw std::invalid_argument("at most " + std::to_string(kMaxPointLights) + " point lights, got " +
                                     std::to_string(view.pointLights.size()));
+    finishView();
+    GLint bound = 0;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &bound);
+    output_ = static_cast<GLuint>(bound);
     view_ = view;
-
-    glViewport(0, 0, view.viewport.x, view.viewport.y);
-    glDisable(GL_SCISSOR_TEST);
-    glDisable(GL_BLEND);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDepthMask(GL_TRUE);
-    glEnable(GL_CULL_FACE);
-    glCullFace(GL_BACK);
-    glFrontFace(GL_CCW);
-    glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    glClearColor(view.clearColor.r, view.clearColor.g, view.clearColor.b, view.clearColor.a);
-    glClearDepth(1.0);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-
-    const glm::mat4 viewProjection = view.projection * view.view;
-    meshProgram_.use();
-    setMat4(mesh_.viewProjection, viewProjection);
-    setLighting(meshLit_);
-    groundProgram_.use();
-    setMat4(ground_.viewProjection, viewProjection);
-    setLighting(groundLit_);
-    flatProgram_.use();
-    setMat4(flat_.view, view.view);
-    setMat4(flat_.projection, view.projection);
+    viewOpen_ = true;
+    sceneDraws_.clear();
+    flatDraws_.clear();
+    linePoints_.clear();
 }
 
-void Renderer::setLighting(const LitUniforms& u) const {
+void Renderer::setLighting(const LitUniforms& u, const ShadowUniforms& s, bool shadowed) const {
     glm::vec3 directions[kMaxLights]{};
     glm::vec3 colors[kMaxLights]{};
     const int count = static_cast<int>(view_.lights.size());
@@ -255,6 +287,16 @@ void Renderer::setLighting(const LitUniforms& u) const {
     glUniform3fv(u.pointPosition, kMaxPointLights, glm::value_ptr(positions[0]));
     glUniform3fv(u.pointColor, kMaxPointLights, glm::value_ptr(pointColors[0]));
     glUniform1fv(u.pointRange, kMaxPointLights, ranges);
+
+    glUniform1i(s.enabled, shadowed ? 1 : 0);
+    if (shadowed) {
+        setMat4(s.matrix, shadow_->worldToTexture());
+        glUniform1f(s.offset, 1.5f * shadow_->texelWorld());
+        // PCF taps a fixed distance apart on the ground, not a texel: the
+        // penumbra stays visible however tight the map's fit.
+        const float side = shadow_->texelWorld() * static_cast<float>(shadow_->size());
+        glUniform1f(s.texel, std::max(1.0f / static_cast<float>(shadow_->size()), kPenumbraStep / side));
+    }
 }
 
 bool Renderer::drawChunk(ChunkId id, const glm::mat4& model, const RenderMaterial& material) {
@@ -262,10 +304,180 @@ bool Renderer::drawChunk(ChunkId id, const glm::mat4& model, const RenderMateria
     if (found == chunks_.end()) return false;
     const ChunkBuffers& c = found->second;
     if (c.indexCount == 0) return true;
+    SceneDraw d;
+    d.id = id;
+    d.model = model;
+    d.material = material;
+    sceneDraws_.push_back(d);
+    stats_.drawCalls += 1;
+    stats_.trianglesDrawn += static_cast<std::size_t>(c.indexCount / 3);
+    return true;
+}
 
+void Renderer::drawGround(const GroundStyle& ground) {
+    SceneDraw d;
+    d.ground = true;
+    d.groundStyle = ground;
+    sceneDraws_.push_back(d);
+    stats_.drawCalls += 1;
+    stats_.trianglesDrawn += 2;
+}
+
+void Renderer::drawLines(const std::vector<glm::vec3>& points, const glm::vec4& color, LineMode mode,
+                         bool depthTested) {
+    if (points.size() < 2) return;
+    FlatDraw d;
+    d.primitive = mode == LineMode::Segments ? GL_LINES : mode == LineMode::Strip ? GL_LINE_STRIP : GL_LINE_LOOP;
+    d.first = static_cast<GLsizei>(linePoints_.size());
+    d.count = static_cast<GLsizei>(points.size());
+    d.color = color;
+    d.depthTested = depthTested;
+    linePoints_.insert(linePoints_.end(), points.begin(), points.end());
+    flatDraws_.push_back(d);
+    stats_.drawCalls += 1;
+}
+
+void Renderer::drawSphere(const glm::vec3& center, float radius, const glm::vec4& color, bool wireframe) {
+    if (!(radius > 0.0f)) return;
+    if (!wireframe) {
+        FlatDraw d;
+        d.primitive = GL_TRIANGLES;
+        d.sphere = true;
+        d.count = sphereIndexCount_;
+        d.model = glm::scale(glm::translate(glm::mat4(1.0f), center), glm::vec3(radius));
+        d.color = color;
+        flatDraws_.push_back(d);
+        stats_.drawCalls += 1;
+        stats_.trianglesDrawn += static_cast<std::size_t>(sphereIndexCount_ / 3);
+        return;
+    }
+    const glm::vec3 x(1, 0, 0), y(0, 1, 0), z(0, 0, 1);
+    drawLines(circlePoints(center, radius, x, y, kCircleSegments), color, LineMode::Loop);
+    drawLines(circlePoints(center, radius, y, z, kCircleSegments), color, LineMode::Loop);
+    drawLines(circlePoints(center, radius, z, x, kCircleSegments), color, LineMode::Loop);
+    // The outline seen from the eye: the circle where the view cone touches
+    // the sphere, nearer the eye than the centre and a little smaller.
+    const glm::vec3 toEye = view_.eye - center;
+    const float d = glm::length(toEye);
+    if (d > radius) {
+        const glm::vec3 w = toEye / d;
+        const glm::vec3 helper = std::fabs(w.y) < 0.9f ? y : x;
+        const glm::vec3 u = glm::normalize(glm::cross(helper, w));
+        const glm::vec3 v = glm::cross(w, u);
+        const float offset = radius * radius / d;
+        const float r = std::sqrt(radius * radius - offset * offset);
+        drawLines(circlePoints(center + offset * w, r, u, v, kCircleSegments), color, LineMode::Loop);
+    }
+}
+
+// --- rendering a recorded view ------------------------------------------------
+
+bool Renderer::renderShadows() {
+    if (!quality_.shadows || view_.lights.empty()) return false;
+    std::vector<ShadowCaster> casters;
+    glm::vec3 lo(1e30f), hi(-1e30f);
+    for (const SceneDraw& d : sceneDraws_) {
+        if (d.ground) continue;  // the ground only receives
+        auto found = chunks_.find(d.id);
+        if (found == chunks_.end() || found->second.indexCount == 0) continue;
+        const ChunkBuffers& c = found->second;
+        casters.push_back({c.vao.get(), c.indexCount, d.model});
+        for (int i = 0; i < 8; ++i) {
+            const glm::vec3 corner((i & 1) ? c.hi.x : c.lo.x, (i & 2) ? c.hi.y : c.lo.y, (i & 4) ? c.hi.z : c.lo.z);
+            const glm::vec3 w = glm::vec3(d.model * glm::vec4(corner, 1.0f));
+            lo = glm::min(lo, w);
+            hi = glm::max(hi, w);
+        }
+    }
+    if (casters.empty()) return false;
+    timers_->begin(GpuPass::Shadow);
+    stats_.shadowDrawCalls += shadow_->render(casters, lo, hi, view_.lights.front().direction, quality_.shadowMapSize);
+    timers_->end();
+    return true;
+}
+
+void Renderer::renderScene(bool shadowed) {
+    timers_->begin(GpuPass::Scene);
+    glBindFramebuffer(GL_FRAMEBUFFER, targets_->framebuffer());
+    glViewport(0, 0, view_.viewport.x, view_.viewport.y);
+    glDisable(GL_SCISSOR_TEST);
+    glDisable(GL_BLEND);
+    glEnable(GL_MULTISAMPLE);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glEnable(GL_CULL_FACE);
+    glCullFace(GL_BACK);
+    glFrontFace(GL_CCW);
+    glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    // Alpha 0: nothing of the sky is for occlusion to dim.
+    const glm::vec3 sky = srgbToLinear(glm::vec3(view_.clearColor));
+    glClearColor(sky.r, sky.g, sky.b, 0.0f);
+    glClearDepth(1.0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+
+    glActiveTexture(GL_TEXTURE0 + kShadowUnit);
+    glBindTexture(GL_TEXTURE_2D, shadowed ? shadow_->texture() : 0);
+    glActiveTexture(GL_TEXTURE0);
+    const glm::mat4 viewProjection = view_.projection * view_.view;
     meshProgram_.use();
-    setMat4(mesh_.model, model);
-    const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(model)));
+    setMat4(mesh_.viewProjection, viewProjection);
+    setLighting(meshLit_, meshShadow_, shadowed);
+    groundProgram_.use();
+    setMat4(ground_.viewProjection, viewProjection);
+    setLighting(groundLit_, groundShadow_, shadowed);
+
+    for (const SceneDraw& d : sceneDraws_) {
+        if (d.ground)
+            drawGroundNow(d.groundStyle);
+        else
+            drawChunkNow(d);
+    }
+    sky_->draw(view_);
+    timers_->end();
+}
+
+void Renderer::finishView() {
+    if (!viewOpen_) return;
+    viewOpen_ = false;
+    timers_->nextView();
+    targets_->ensure(view_.viewport, quality_.msaaSamples);
+
+    const bool shadowed = renderShadows();
+    renderScene(shadowed);
+    GLuint occlusion = 0;
+    if (quality_.ambientOcclusion) {
+        timers_->begin(GpuPass::Occlusion);
+        occlusion = occlusion_->render(*targets_, view_.projection, quality_);
+        timers_->end();
+    }
+
+    timers_->begin(GpuPass::Post);
+    glBindFramebuffer(GL_FRAMEBUFFER, output_);
+    glViewport(0, 0, view_.viewport.x, view_.viewport.y);
+    post_->composite(*targets_, occlusion, quality_.exposure);
+    if (!flatDraws_.empty()) {
+        flatProgram_.use();
+        setMat4(flat_.view, view_.view);
+        setMat4(flat_.projection, view_.projection);
+        glBindBuffer(GL_ARRAY_BUFFER, streamVbo_.get());
+        // Orphan and refill: the previous view's points may still be in flight.
+        glBufferData(GL_ARRAY_BUFFER, byteSize(linePoints_), linePoints_.data(), GL_STREAM_DRAW);
+        glBindBuffer(GL_ARRAY_BUFFER, 0);
+        for (const FlatDraw& d : flatDraws_) drawFlatNow(d);
+    }
+    timers_->end();
+}
+
+void Renderer::drawChunkNow(const SceneDraw& d) {
+    auto found = chunks_.find(d.id);
+    if (found == chunks_.end() || found->second.indexCount == 0) return;  // dropped since recorded
+    const ChunkBuffers& c = found->second;
+    const RenderMaterial& material = d.material;
+    meshProgram_.use();
+    setMat4(mesh_.model, d.model);
+    const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(d.model)));
     glUniformMatrix3fv(mesh_.normalMatrix, 1, GL_FALSE, glm::value_ptr(normalMatrix));
     glUniform3fv(mesh_.baseColor, 1, glm::value_ptr(material.baseColor));
     glUniform1f(mesh_.specular, material.specular);
@@ -274,13 +486,9 @@ bool Renderer::drawChunk(ChunkId id, const glm::mat4& model, const RenderMateria
     glBindVertexArray(c.vao.get());
     glDrawElements(GL_TRIANGLES, c.indexCount, GL_UNSIGNED_INT, byteOffset(0));
     glBindVertexArray(0);
-
-    stats_.drawCalls += 1;
-    stats_.trianglesDrawn += static_cast<std::size_t>(c.indexCount / 3);
-    return true;
 }
 
-void Renderer::drawGround(const GroundStyle& ground) {
+void Renderer::drawGroundNow(const GroundStyle& ground) {
     const float h = ground.halfExtent;
     // Two triangles counter-clockwise seen from above (+y), so culling
     // hides the plane from below.
@@ -304,77 +512,41 @@ void Renderer::drawGround(const GroundStyle& ground) {
     glDrawArrays(GL_TRIANGLES, 0, 6);
     glBindVertexArray(0);
     glDisable(GL_POLYGON_OFFSET_FILL);
-    stats_.drawCalls += 1;
-    stats_.trianglesDrawn += 2;
 }
 
-void Renderer::drawFlat(GLenum primitive, GLuint vao, GLsizei count, bool indexed, const glm::mat4& model,
-                        const glm::vec4& color, bool depthTested) {
-    flatProgram_.use();
-    setMat4(flat_.model, model);
-    glUniform4fv(flat_.color, 1, glm::value_ptr(color));
-    const bool blend = color.a < 1.0f;
+void Renderer::drawFlatNow(const FlatDraw& d) {
+    setMat4(flat_.model, d.model);
+    glUniform4fv(flat_.color, 1, glm::value_ptr(d.color));
+    const bool blend = d.color.a < 1.0f;
     if (blend) {
         glEnable(GL_BLEND);
         glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
         glDepthMask(GL_FALSE);  // a translucent shell must not hide what is behind it
     }
-    if (!depthTested) glDisable(GL_DEPTH_TEST);
-    glBindVertexArray(vao);
-    if (indexed)
-        glDrawElements(primitive, count, GL_UNSIGNED_INT, byteOffset(0));
-    else
-        glDrawArrays(primitive, 0, count);
+    if (!d.depthTested) glDisable(GL_DEPTH_TEST);
+    if (d.sphere) {
+        glBindVertexArray(sphereVao_.get());
+        glDrawElements(d.primitive, d.count, GL_UNSIGNED_INT, byteOffset(0));
+    } else {
+        glBindVertexArray(streamVao_.get());
+        glDrawArrays(d.primitive, d.first, d.count);
+    }
     glBindVertexArray(0);
-    if (!depthTested) glEnable(GL_DEPTH_TEST);
+    if (!d.depthTested) glEnable(GL_DEPTH_TEST);
     if (blend) {
         glDisable(GL_BLEND);
         glDepthMask(GL_TRUE);
     }
-    stats_.drawCalls += 1;
-}
-
-void Renderer::drawLines(const std::vector<glm::vec3>& points, const glm::vec4& color, LineMode mode,
-                         bool depthTested) {
-    if (points.size() < 2) return;
-    glBindBuffer(GL_ARRAY_BUFFER, streamVbo_.get());
-    // Orphan and refill: the previous call's points may still be in flight.
-    glBufferData(GL_ARRAY_BUFFER, byteSize(points), points.data(), GL_STREAM_DRAW);
-    glBindBuffer(GL_ARRAY_BUFFER, 0);
-    const GLenum primitive = mode == LineMode::Segments ? GL_LINES : mode == LineMode::Strip ? GL_LINE_STRIP : GL_LINE_LOOP;
-    drawFlat(primitive, streamVao_.get(), static_cast<GLsizei>(points.size()), false, glm::mat4(1.0f), color,
-             depthTested);
-}
-
-void Renderer::drawSphere(const glm::vec3& center, float radius, const glm::vec4& color, bool wireframe) {
-    if (!(radius > 0.0f)) return;
-    if (!wireframe) {
-        const glm::mat4 model = glm::scale(glm::translate(glm::mat4(1.0f), center), glm::vec3(radius));
-        drawFlat(GL_TRIANGLES, sphereVao_.get(), sphereIndexCount_, true, model, color, true);
-        stats_.trianglesDrawn += static_cast<std::size_t>(sphereIndexCount_ / 3);
-        return;
-    }
-    const glm::vec3 x(1, 0, 0), y(0, 1, 0), z(0, 0, 1);
-    drawLines(circlePoints(center, radius, x, y, kCircleSegments), color, LineMode::Loop);
-    drawLines(circlePoints(center, radius, y, z, kCircleSegments), color, LineMode::Loop);
-    drawLines(circlePoints(center, radius, z, x, kCircleSegments), color, LineMode::Loop);
-    // The outline seen from the eye: the circle where the view cone touches
-    // the sphere, nearer the eye than the centre and a little smaller.
-    const glm::vec3 toEye = view_.eye - center;
-    const float d = glm::length(toEye);
-    if (d > radius) {
-        const glm::vec3 w = toEye / d;
-        const glm::vec3 helper = std::fabs(w.y) < 0.9f ? y : x;
-        const glm::vec3 u = glm::normalize(glm::cross(helper, w));
-        const glm::vec3 v = glm::cross(w, u);
-        const float offset = radius * radius / d;
-        const float r = std::sqrt(radius * radius - offset * offset);
-        drawLines(circlePoints(center + offset * w, r, u, v, kCircleSegments), color, LineMode::Loop);
-    }
 }
 
 RenderStats Renderer::endFrame() {
+    finishView();
     RenderStats done = stats_;
+    const auto& ms = timers_->latest();
+    done.gpuShadowMs = ms[static_cast<std::size_t>(GpuPass::Shadow)];
+    done.gpuSceneMs = ms[static_cast<std::size_t>(GpuPass::Scene)];
+    done.gpuOcclusionMs = ms[static_cast<std::size_t>(GpuPass::Occlusion)];
+    done.gpuPostMs = ms[static_cast<std::size_t>(GpuPass::Post)];
     stats_ = RenderStats{};
     return done;
 }

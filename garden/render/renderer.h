@@ -5,11 +5,17 @@
 //
 // Colours. RenderMaterial, ground, line, sphere and clear colours are sRGB display
 // values (what a colour picker shows); light colours and the ambient term
-// are linear intensities. Shading runs in linear space and the shaders
-// encode the result to sRGB before it is written to the plain RGBA8
-// framebuffer. Lines and the sphere are unlit and written as given.
+// are linear intensities. The scene is lit in linear HDR into the
+// renderer's own multisampled target, shadowed by the sun, darkened by
+// ambient occlusion, tone mapped and encoded to sRGB into the framebuffer
+// that was bound at beginFrame (docs/rendering.md). Lines and the sphere
+// are unlit and drawn over it as given.
 //
-// A frame: beginFrame (clears the bound framebuffer), draws, endFrame.
+// A view: beginFrame records the framebuffer bound then; draws are
+// recorded; finishView renders them all (the shadow map needs every caster
+// before the first lit pixel) into that framebuffer. endFrame finishes the
+// open view, if any, and returns the frame's stats (one frame may hold
+// several views: the headset's two eyes).
 // Chunk uploads may happen between frames (the scheduler's upload stage
 // runs before the render stage); their bytes count towards the stats that
 // endFrame returns. The Renderer needs its GL context current whenever one
@@ -23,10 +29,12 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <unordered_map>
 #include <vector>
 
 #include "garden/render/gl_objects.h"
+#include "garden/render/render_quality.h"
 #include "garden/render/shader_program.h"
 #include "polygonizer/mesh.h"
 
@@ -63,7 +71,7 @@ struct View {
     glm::mat4 projection{1.0f};
     glm::vec3 eye{0.0f};                               // world position of the camera (specular)
     glm::ivec2 viewport{1, 1};                         // pixels of the bound framebuffer
-    glm::vec4 clearColor{0.62f, 0.74f, 0.86f, 1.0f};  // sRGB sky
+    glm::vec4 clearColor{0.62f, 0.74f, 0.86f, 1.0f};  // sRGB sky at the horizon (deeper overhead)
     std::vector<DirectionalLight> lights;              // at most kMaxLights
     std::vector<PointLight> pointLights;               // at most kMaxPointLights
     glm::vec3 ambient{0.2f, 0.2f, 0.2f};               // linear
@@ -82,9 +90,25 @@ enum class LineMode { Segments, Strip, Loop };
 
 struct RenderStats {
     std::size_t trianglesDrawn = 0;
-    std::size_t drawCalls = 0;
+    std::size_t drawCalls = 0;        // scene, lines and sphere: one per draw asked for
+    std::size_t shadowDrawCalls = 0;  // the casters drawn again into the shadow map
     std::size_t bytesUploaded = 0;
+    // GPU milliseconds per pass of the latest view the GPU has finished
+    // (GL timer queries, read without waiting: a view or a few behind); -1
+    // where a pass did not run or no result is in yet.
+    float gpuShadowMs = -1.0f;
+    float gpuSceneMs = -1.0f;
+    float gpuOcclusionMs = -1.0f;
+    float gpuPostMs = -1.0f;
+    float gpuMs() const;  // the measured passes together; -1 when none is
 };
+
+class SceneTargets;
+class PostProcess;
+class GpuTimers;
+class ShadowPass;
+class OcclusionPass;
+class SkyPass;
 
 class Renderer {
 public:
@@ -107,10 +131,14 @@ public:
     std::size_t chunkCount() const { return chunks_.size(); }
     std::size_t residentBytes() const { return residentBytes_; }
 
+    // --- quality -------------------------------------------------------------
+    void setQuality(const RenderQuality& quality) { quality_ = quality; }
+    const RenderQuality& quality() const { return quality_; }
+
     // --- a frame -------------------------------------------------------------
-    // Sets the viewport and GL state (depth test, back-face culling, no
-    // blending), clears colour and depth. Throws std::invalid_argument for
-    // more than kMaxLights directional or kMaxPointLights point lights.
+    // Starts a view into the framebuffer bound now, of view.viewport pixels
+    // (finishing an open one first). Throws std::invalid_argument for more
+    // than kMaxLights directional or kMaxPointLights point lights.
     void beginFrame(const View& view);
     // Draws an uploaded chunk with `model` (rotation, translation, uniform or
     // not scale: normals use the inverse transpose). False when `id` has no
@@ -126,8 +154,14 @@ public:
     // after the opaque geometry).
     void drawSphere(const glm::vec3& center, float radius, const glm::vec4& color, bool wireframe);
 
+    // Renders the recorded view into its framebuffer (colour and depth);
+    // afterwards other drawing (panels) may follow there. Nothing when no
+    // view is open.
+    void finishView();
+
     const RenderStats& stats() const { return stats_; }
-    // The frame's stats (uploads since the last endFrame included); resets them.
+    // Finishes the open view; the frame's stats (uploads since the last
+    // endFrame included); resets them.
     RenderStats endFrame();
 
 private:
@@ -139,20 +173,47 @@ private:
         GLsizei indexCount = 0;
         bool hasNormals = false;
         std::size_t bytes = 0;
+        glm::vec3 lo{0.0f}, hi{0.0f};  // model-space bounds, for fitting the shadow map
     };
     struct LitUniforms {
         GLint eye, ambient, lightCount, lightDir, lightColor, pointCount, pointPosition, pointColor, pointRange;
     };
+    struct ShadowUniforms {
+        GLint enabled, matrix, offset, texel;
+    };
 
-    // Frame lighting for the bound program whose locations are `u`.
-    void setLighting(const LitUniforms& u) const;
-    void drawFlat(GLenum primitive, GLuint vao, GLsizei count, bool indexed, const glm::mat4& model,
-                  const glm::vec4& color, bool depthTested);
+    // A lit draw waiting for finishView: a chunk, or the ground.
+    struct SceneDraw {
+        bool ground = false;
+        ChunkId id = 0;
+        glm::mat4 model{1.0f};
+        RenderMaterial material;
+        GroundStyle groundStyle;
+    };
+    // An unlit draw after the composite: lines (points from `first` in the
+    // view's line points) or the solid sphere.
+    struct FlatDraw {
+        GLenum primitive = GL_LINES;
+        bool sphere = false;
+        GLsizei first = 0, count = 0;
+        glm::mat4 model{1.0f};
+        glm::vec4 color{1.0f};
+        bool depthTested = true;
+    };
+
+    // Frame lighting and the shadow for the bound program whose locations are `u`.
+    void setLighting(const LitUniforms& u, const ShadowUniforms& s, bool shadowed) const;
+    bool renderShadows();
+    void renderScene(bool shadowed);
+    void drawChunkNow(const SceneDraw& d);
+    void drawGroundNow(const GroundStyle& ground);
+    void drawFlatNow(const FlatDraw& d);
 
     ShaderProgram meshProgram_;
     ShaderProgram groundProgram_;
     ShaderProgram flatProgram_;
     LitUniforms meshLit_{}, groundLit_{};
+    ShadowUniforms meshShadow_{}, groundShadow_{};
     struct {
         GLint model, normalMatrix, viewProjection, baseColor, specular, shininess, hasNormals;
     } mesh_{};
@@ -175,7 +236,20 @@ private:
     gl::Buffer sphereEbo_;
     GLsizei sphereIndexCount_ = 0;
 
+    RenderQuality quality_;
+    std::unique_ptr<SceneTargets> targets_;
+    std::unique_ptr<ShadowPass> shadow_;
+    std::unique_ptr<OcclusionPass> occlusion_;
+    std::unique_ptr<SkyPass> sky_;
+    std::unique_ptr<PostProcess> post_;
+    std::unique_ptr<GpuTimers> timers_;
+
     View view_;
+    bool viewOpen_ = false;
+    GLuint output_ = 0;  // the framebuffer bound at beginFrame
+    std::vector<SceneDraw> sceneDraws_;
+    std::vector<FlatDraw> flatDraws_;
+    std::vector<glm::vec3> linePoints_;
     RenderStats stats_;
 };
 

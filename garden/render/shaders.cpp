@@ -2,8 +2,10 @@
 
 namespace hg::garden::shaders {
 
-// Shared by the lit programs: the frame's lights and the sRGB transfer.
+// Shared by the lit programs: the frame's lights, the sun's shadow and the
+// split of the light into what ambient occlusion may dim (alpha) and not.
 #define HG_LIGHTING_GLSL                                                              \
+    HG_SRGB_GLSL                                                                      \
     "uniform vec3 uEye;\n"                                                            \
     "uniform vec3 uAmbient;\n"                                                        \
     "uniform int uLightCount;\n"                                                      \
@@ -13,12 +15,32 @@ namespace hg::garden::shaders {
     "uniform vec3 uPointPosition[8];\n"                                               \
     "uniform vec3 uPointColor[8];\n"                                                  \
     "uniform float uPointRange[8];\n"                                                 \
-    "vec3 toLinear(vec3 c) {\n"                                                       \
-    "    return mix(c / 12.92, pow((c + 0.055) / 1.055, vec3(2.4)), step(0.04045, c));\n" \
-    "}\n"                                                                             \
-    "vec3 toSrgb(vec3 c) {\n"                                                         \
-    "    c = clamp(c, 0.0, 1.0);\n"                                                   \
-    "    return mix(c * 12.92, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(0.0031308, c));\n" \
+    "const float kDirectOcclusion = 0.35;\n"                                          \
+    "uniform bool uShadows;\n"                                                        \
+    "uniform sampler2DShadow uShadowMap;\n"                                           \
+    "uniform mat4 uShadowMatrix;\n"                                                   \
+    "uniform float uShadowOffset;\n"                                                  \
+    "uniform float uShadowTexel;\n"                                                   \
+    "float sunShadow(vec3 p, vec3 n, vec3 l) {\n"                                     \
+    "    if (!uShadows) return 1.0;\n"                                                \
+    "    float slope = 1.0 - clamp(dot(n, l), 0.0, 1.0);\n"                           \
+    "    vec4 s = uShadowMatrix * vec4(p + n * uShadowOffset * (0.5 + slope), 1.0);\n" \
+    "    vec3 c = s.xyz / s.w;\n"                                                     \
+    "    /* receiver plane: how depth changes across the map, so taps a few */\n"     \
+    "    /* texels away compare against the surface's own plane (no acne) */\n"      \
+    "    vec3 dx = dFdx(c), dy = dFdy(c);\n"                                          \
+    "    float det = dx.x * dy.y - dx.y * dy.x;\n"                                    \
+    "    vec2 plane = abs(det) > 1e-12\n"                                             \
+    "        ? vec2(dy.y * dx.z - dx.y * dy.z, dx.x * dy.z - dy.x * dx.z) / det : vec2(0.0);\n" \
+    "    if (c.x <= 0.0 || c.y <= 0.0 || c.x >= 1.0 || c.y >= 1.0) return 1.0;\n"     \
+    "    float lit = 0.0;\n"                                                          \
+    "    for (int y = -1; y <= 1; ++y)\n"                                             \
+    "        for (int x = -1; x <= 1; ++x) {\n"                                       \
+    "            vec2 o = vec2(x, y) * uShadowTexel;\n"                               \
+    "            float ref = c.z + clamp(dot(o, plane), -0.01, 0.01);\n"              \
+    "            lit += texture(uShadowMap, vec3(c.xy + o, min(ref, 1.0)));\n"        \
+    "        }\n"                                                                     \
+    "    return lit / 9.0;\n"                                                         \
     "}\n"                                                                             \
     "vec3 blinnPhong(vec3 base, vec3 n, vec3 l, vec3 v, float specular, float shininess) {\n" \
     "    float ndl = dot(n, l);\n"                                                    \
@@ -26,11 +48,14 @@ namespace hg::garden::shaders {
     "    float ndh = max(dot(n, normalize(l + v)), 0.0);\n"                           \
     "    return base * ndl + vec3(specular * pow(ndh, shininess));\n"                 \
     "}\n"                                                                             \
-    "vec3 shade(vec3 base, vec3 n, vec3 p, float specular, float shininess) {\n"      \
+    "vec4 shade(vec3 base, vec3 n, vec3 p, float specular, float shininess) {\n"      \
     "    vec3 v = normalize(uEye - p);\n"                                             \
-    "    vec3 c = uAmbient * base;\n"                                                 \
-    "    for (int i = 0; i < uLightCount; ++i)\n"                                     \
-    "        c += uLightColor[i] * blinnPhong(base, n, uLightDir[i], v, specular, shininess);\n" \
+    "    vec3 ambient = uAmbient * base;\n"                                           \
+    "    vec3 direct = vec3(0.0);\n"                                                  \
+    "    for (int i = 0; i < uLightCount; ++i) {\n"                                   \
+    "        float lit = i == 0 ? sunShadow(p, n, uLightDir[0]) : 1.0;\n"             \
+    "        direct += lit * uLightColor[i] * blinnPhong(base, n, uLightDir[i], v, specular, shininess);\n" \
+    "    }\n"                                                                         \
     "    for (int i = 0; i < uPointCount; ++i) {\n"                                   \
     "        vec3 d = uPointPosition[i] - p;\n"                                       \
     "        float r = length(d);\n"                                                  \
@@ -39,9 +64,12 @@ namespace hg::garden::shaders {
     "        float window = clamp(1.0 - x * x * x * x, 0.0, 1.0);\n"                  \
     "        float falloff = window * window / max(r * r, 0.01);\n"                   \
     "        vec3 l = d / max(r, 1e-4);\n"                                            \
-    "        c += falloff * uPointColor[i] * blinnPhong(base, n, l, v, specular, shininess);\n" \
+    "        direct += falloff * uPointColor[i] * blinnPhong(base, n, l, v, specular, shininess);\n" \
     "    }\n"                                                                         \
-    "    return c;\n"                                                                 \
+    "    vec3 w = vec3(0.2126, 0.7152, 0.0722);\n"                                    \
+    "    float a = dot(ambient, w), d = dot(direct, w);\n"                            \
+    "    /* occlusion dims the ambient light, and a third of the direct: form reads */\n" \
+    "    return vec4(ambient + direct, (a + kDirectOcclusion * d) / max(a + d, 1e-5));\n" \
     "}\n"
 
 const char* const kMeshVertex = R"(#version 330 core
@@ -72,8 +100,7 @@ void main() {
     // Without vertex normals, the face normal from screen-space derivatives
     // (it faces the viewer, and culling leaves only front faces).
     vec3 n = uHasNormals ? normalize(vNormal) : normalize(cross(dFdx(vWorld), dFdy(vWorld)));
-    vec3 c = shade(toLinear(uBaseColor), n, vWorld, uSpecular, uShininess);
-    fragColor = vec4(toSrgb(c), 1.0);
+    fragColor = shade(toLinear(uBaseColor), n, vWorld, uSpecular, uShininess);
 }
 )";
 
@@ -95,6 +122,25 @@ uniform float uSpacing;
 uniform float uLineWidth;   // pixels
 uniform int uMajorEvery;
 out vec4 fragColor;
+// Value noise in world space: the lawn looks the same from anywhere.
+float hash(vec2 p) {
+    p = fract(p * vec2(123.34, 456.21));
+    p += dot(p, p + 45.32);
+    return fract(p.x * p.y);
+}
+float noise(vec2 p) {
+    vec2 i = floor(p), f = fract(p);
+    vec2 u = f * f * (3.0 - 2.0 * f);
+    return mix(mix(hash(i), hash(i + vec2(1.0, 0.0)), u.x), mix(hash(i + vec2(0.0, 1.0)), hash(i + 1.0), u.x), u.y);
+}
+// Lawn: patches a few metres and under a metre across, and tufts of a few
+// centimetres that fade to their mean where they shrink below a pixel.
+float lawn(vec2 p) {
+    float n = 0.55 * noise(p / 3.1) + 0.3 * noise(p / 0.7 + 17.0);
+    float w = max(fwidth(p.x), fwidth(p.y));
+    n += 0.15 * mix(noise(p / 0.035 + 3.0), 0.5, smoothstep(0.01, 0.03, w));
+    return n;
+}
 // 1 on a line of the grid with the given spacing, 0 between, anti-aliased
 // over a pixel; fades out where cells shrink to a few pixels (no moire).
 float grid(vec2 coord, float width) {
@@ -107,9 +153,20 @@ void main() {
     vec2 coord = vWorld.xz / uSpacing;
     float line = grid(coord, uLineWidth);
     if (uMajorEvery > 1) line = max(line, grid(coord / float(uMajorEvery), 2.0 * uLineWidth));
-    vec3 base = mix(toLinear(uGroundColor), toLinear(uLineColor), line);
-    vec3 c = shade(base, vec3(0.0, 1.0, 0.0), vWorld, 0.0, 1.0);
-    fragColor = vec4(toSrgb(c), 1.0);
+    float n = lawn(vWorld.xz);
+    // Lighter, yellower where the grass is dry; darker and greener where lush.
+    vec3 grass = toLinear(uGroundColor) * (0.7 + 0.6 * n) * mix(vec3(1.0), vec3(1.12, 1.06, 0.78), smoothstep(0.55, 0.8, n));
+    vec3 base = mix(grass, toLinear(uLineColor), line);
+    fragColor = shade(base, vec3(0.0, 1.0, 0.0), vWorld, 0.0, 1.0);
+}
+)";
+
+const char* const kFullscreenVertex = R"(#version 330 core
+// One triangle covering the viewport, from gl_VertexID alone.
+out vec2 vUv;
+void main() {
+    vUv = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2);
+    gl_Position = vec4(vUv * 2.0 - 1.0, 0.0, 1.0);
 }
 )";
 

@@ -1,19 +1,35 @@
-// GLSL 3.30 core sources for the renderer's three programs. Colours given
-// to the renderer are sRGB display values; lighting happens in linear space
-// and the result is encoded back to sRGB here (the framebuffer is plain
-// RGBA8, so no GL_FRAMEBUFFER_SRGB).
+// GLSL 3.30 core sources for the renderer's scene programs. Colours given
+// to the renderer are sRGB display values; the scene is lit in linear
+// space into a linear HDR target (the alpha channel carries the share of
+// the light that ambient occlusion dims) and post_process.cpp encodes the
+// result to sRGB. Lines and the detail sphere (the flat program) are drawn
+// afterwards straight into the output framebuffer, as sRGB values.
 #pragma once
+
+// The sRGB transfer both ways, for any program that needs it.
+#define HG_SRGB_GLSL                                                                  \
+    "vec3 toLinear(vec3 c) {\n"                                                       \
+    "    return mix(c / 12.92, pow((c + 0.055) / 1.055, vec3(2.4)), step(0.04045, c));\n" \
+    "}\n"                                                                             \
+    "vec3 toSrgb(vec3 c) {\n"                                                         \
+    "    c = clamp(c, 0.0, 1.0);\n"                                                   \
+    "    return mix(c * 12.92, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(0.0031308, c));\n" \
+    "}\n"
 
 namespace hg::garden::shaders {
 
 // Lit sculpture chunks: Blinn-Phong, up to kMaxLights directional and
-// kMaxPointLights point lights (inverse square, windowed to their range).
+// kMaxPointLights point lights (inverse square, windowed to their range);
+// the first directional light (the sun) casts shadows.
 extern const char* const kMeshVertex;
 extern const char* const kMeshFragment;
 
 // The ground plane with its procedural grid.
 extern const char* const kGroundVertex;
 extern const char* const kGroundFragment;
+
+// A triangle over the whole viewport (no vertex buffer; vUv in [0, 1]).
+extern const char* const kFullscreenVertex;
 
 // Unlit lines and the detail sphere: one colour, pulled slightly towards
 // the eye so lines lying on the ground or a surface do not z-fight it.

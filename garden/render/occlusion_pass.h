@@ -1,0 +1,39 @@
+// Screen-space ambient occlusion from the scene's depth: a normal-oriented
+// hemisphere of samples per pixel (normals rebuilt from depth), rotated per
+// pixel, then a separable depth-aware (bilateral) blur that smooths the
+// noise without bleeding across silhouettes. Full or half resolution.
+// docs/rendering.md has the parameters and their cost.
+#pragma once
+
+#include <glm/mat4x4.hpp>
+
+#include "garden/render/gl_objects.h"
+#include "garden/render/render_quality.h"
+#include "garden/render/render_targets.h"
+#include "garden/render/shader_program.h"
+
+namespace hg::garden {
+
+class OcclusionPass {
+public:
+    OcclusionPass();  // throws GlError naming a shader that fails
+
+    // The occlusion of the scene seen through `projection`: an R8 texture,
+    // 1 where open, towards 0 in hollows. Changes framebuffer bindings and
+    // the viewport.
+    GLuint render(const SceneTargets& scene, const glm::mat4& projection, const RenderQuality& quality);
+
+private:
+    ShaderProgram occlusion_;
+    ShaderProgram blur_;
+    gl::VertexArray empty_;
+    ScalarTarget raw_, blurred_;
+    struct {
+        GLint inverseProjection, projection, fullSize, scale, samples, radius;
+    } o_{};
+    struct {
+        GLint inverseProjection, fullSize, scale, direction;
+    } b_{};
+};
+
+}  // namespace hg::garden

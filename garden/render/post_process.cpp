@@ -1,0 +1,86 @@
+#include "garden/render/post_process.h"
+
+#include "garden/render/shaders.h"
+
+namespace hg::garden {
+namespace {
+
+const char* const kCompositeFragment = "#version 330 core\n" HG_SRGB_GLSL R"(
+uniform sampler2DMS uColor;
+uniform sampler2DMS uDepth;
+uniform sampler2D uOcclusion;
+uniform int uSamples;
+uniform float uExposure;
+uniform bool uUseOcclusion;
+uniform vec2 uSize;
+out vec4 fragColor;
+// Khronos PBR Neutral's highlight roll-off without its toe: colours below
+// 0.76 pass unchanged (the garden file's colours stay what they say),
+// brighter ones roll off towards white keeping their hue.
+vec3 toneMap(vec3 color) {
+    const float startCompression = 0.8 - 0.04;
+    const float desaturation = 0.15;
+    float peak = max(color.r, max(color.g, color.b));
+    if (peak < startCompression) return color;
+    const float d = 1.0 - startCompression;
+    float newPeak = 1.0 - d * d / (peak + d - startCompression);
+    color *= newPeak / peak;
+    float g = 1.0 - 1.0 / (desaturation * (peak - newPeak) + 1.0);
+    return mix(color, vec3(newPeak), g);
+}
+void main() {
+    ivec2 p = ivec2(gl_FragCoord.xy);
+    float open = uUseOcclusion ? texture(uOcclusion, gl_FragCoord.xy / uSize).r : 1.0;
+    vec3 sum = vec3(0.0);
+    for (int i = 0; i < uSamples; ++i) {
+        vec4 c = texelFetch(uColor, p, i);
+        // alpha: the share of this sample's light that occlusion dims.
+        sum += toneMap(max(c.rgb, vec3(0.0)) * mix(1.0, open, c.a) * uExposure);
+    }
+    fragColor = vec4(toSrgb(sum / float(uSamples)), 1.0);
+    gl_FragDepth = texelFetch(uDepth, p, 0).r;
+}
+)";
+
+}  // namespace
+
+PostProcess::PostProcess()
+    : program_("composite", shaders::kFullscreenVertex, kCompositeFragment), empty_(gl::VertexArray::create()) {
+    program_.use();
+    glUniform1i(program_.uniform("uColor"), 0);
+    glUniform1i(program_.uniform("uDepth"), 1);
+    glUniform1i(program_.uniform("uOcclusion"), 2);
+    samples_ = program_.uniform("uSamples");
+    exposure_ = program_.uniform("uExposure");
+    useOcclusion_ = program_.uniform("uUseOcclusion");
+    size_ = program_.uniform("uSize");
+}
+
+void PostProcess::composite(const SceneTargets& scene, GLuint occlusion, float exposure) {
+    program_.use();
+    glUniform1i(samples_, scene.samples());
+    glUniform1f(exposure_, exposure);
+    glUniform1i(useOcclusion_, occlusion != 0 ? 1 : 0);
+    glUniform2f(size_, static_cast<float>(scene.size().x), static_cast<float>(scene.size().y));
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, scene.colorTexture());
+    glActiveTexture(GL_TEXTURE1);
+    glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, scene.depthTexture());
+    glActiveTexture(GL_TEXTURE2);
+    glBindTexture(GL_TEXTURE_2D, occlusion);
+    glActiveTexture(GL_TEXTURE0);
+
+    // Every pixel is written, colour and depth, whatever was there.
+    glDisable(GL_BLEND);
+    glDisable(GL_CULL_FACE);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_ALWAYS);
+    glDepthMask(GL_TRUE);
+    glBindVertexArray(empty_.get());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindVertexArray(0);
+    glDepthFunc(GL_LESS);
+    glEnable(GL_CULL_FACE);
+}
+
+}  // namespace hg::garden

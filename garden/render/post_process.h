@@ -1,0 +1,32 @@
+// The last pass of a view: every sample of the linear HDR scene is exposed,
+// darkened by ambient occlusion where the scene pass said how much of it is
+// ambient light, tone mapped (Khronos PBR Neutral) and only then averaged,
+// so anti-aliased edges between a bright sky and a dark sculpture keep
+// their coverage; the average is encoded to sRGB. The scene's depth goes
+// along (sample 0), so lines and panels drawn afterwards are depth tested
+// against the sculptures. docs/rendering.md explains the order.
+#pragma once
+
+#include <glm/vec2.hpp>
+
+#include "garden/render/gl_objects.h"
+#include "garden/render/render_targets.h"
+#include "garden/render/shader_program.h"
+
+namespace hg::garden {
+
+class PostProcess {
+public:
+    PostProcess();  // throws GlError naming a shader that fails
+
+    // Draws into the bound framebuffer, whose viewport the caller has set
+    // to the scene's size. `occlusion`: an R8 texture (1 = open), or 0.
+    void composite(const SceneTargets& scene, GLuint occlusion, float exposure);
+
+private:
+    ShaderProgram program_;
+    gl::VertexArray empty_;  // the fullscreen triangle comes from gl_VertexID
+    GLint samples_ = -1, exposure_ = -1, useOcclusion_ = -1, size_ = -1;
+};
+
+}  // namespace hg::garden

@@ -1,0 +1,39 @@
+#include "garden/render/render_quality.h"
+
+namespace hg::garden {
+
+RenderQuality qualityOf(QualityPreset preset) {
+    RenderQuality q;
+    switch (preset) {
+        case QualityPreset::Low:
+            q.msaaSamples = 1;
+            q.shadows = false;
+            q.ambientOcclusion = false;
+            break;
+        case QualityPreset::Medium:
+            q.msaaSamples = 2;
+            q.shadowMapSize = 1024;
+            q.aoSamples = 8;
+            q.aoHalfResolution = true;
+            break;
+        case QualityPreset::High:
+            q.aoSamples = 16;
+            break;
+    }
+    return q;
+}
+
+QualityPreset rendererPreset(const std::string& glRenderer) {
+    for (const char* software : {"llvmpipe", "softpipe", "swrast", "Software Rasterizer"})
+        if (glRenderer.find(software) != std::string::npos) return QualityPreset::Low;
+    return QualityPreset::High;
+}
+
+std::optional<QualityPreset> parseQualityPreset(const std::string& name) {
+    if (name == "low") return QualityPreset::Low;
+    if (name == "medium") return QualityPreset::Medium;
+    if (name == "high") return QualityPreset::High;
+    return std::nullopt;
+}
+
+}  // namespace hg::garden

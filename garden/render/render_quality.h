@@ -1,0 +1,39 @@
+// What the renderer spends on the picture: anti-aliasing, shadows, ambient
+// occlusion, render scale and exposure, each switchable (docs/rendering.md).
+#pragma once
+
+#include <optional>
+#include <string>
+
+namespace hg::garden {
+
+struct RenderQuality {
+    int msaaSamples = 4;             // 1: no multisampling; clamped to what the driver offers
+    bool shadows = true;             // the sun's (the first directional light's) shadow map
+    int shadowMapSize = 2048;        // texels on a side
+    bool ambientOcclusion = true;    // screen-space, from the depth buffer
+    int aoSamples = 12;              // hemisphere samples per pixel (4..32)
+    bool aoHalfResolution = false;   // AO computed at half width and height, then upsampled
+    float aoRadius = 0.25f;          // metres: the largest hollow that darkens
+    float exposure = 1.0f;           // linear scale before tone mapping
+};
+
+}  // namespace hg::garden
+
+namespace hg::garden {
+
+// low: no multisampling, shadows or occlusion (the old look, for software
+// rendering); medium: 2x MSAA, a 1024 shadow map, 8 occlusion samples at
+// half resolution; high: the defaults above with 16 samples.
+enum class QualityPreset { Low, Medium, High };
+
+RenderQuality qualityOf(QualityPreset preset);
+// "low", "medium" or "high"; nothing for another word.
+std::optional<QualityPreset> parseQualityPreset(const std::string& name);
+// The preset `--quality auto` takes for a GL renderer (GL_RENDERER's text):
+// low on Mesa's software rasterizers (llvmpipe, softpipe, swrast), where
+// the high preset costs about 2.5 times the frame (docs/benchmarks.md,
+// bench_look), else high.
+QualityPreset rendererPreset(const std::string& glRenderer);
+
+}  // namespace hg::garden

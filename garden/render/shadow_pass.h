@@ -1,0 +1,52 @@
+// The sun's shadow map: one orthographic depth map fitted each view to the
+// bounds of the sculptures in view (snapped to whole texels so it does not
+// shimmer as the camera moves), sampled by the lit programs with 3 x 3 PCF
+// and a normal offset (docs/rendering.md).
+#pragma once
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+
+#include <vector>
+
+#include "garden/render/gl_objects.h"
+#include "garden/render/shader_program.h"
+
+namespace hg::garden {
+
+struct ShadowCaster {
+    GLuint vao = 0;
+    GLsizei indexCount = 0;
+    glm::mat4 model{1.0f};
+};
+
+class ShadowPass {
+public:
+    ShadowPass();  // throws GlError naming a shader that fails
+
+    // Renders the casters' depth as seen from `toLight` (towards the sun)
+    // over the world box [lo, hi], into a map of `size` texels a side.
+    // Leaves its framebuffer bound; returns the draw calls made.
+    std::size_t render(const std::vector<ShadowCaster>& casters, const glm::vec3& lo, const glm::vec3& hi,
+                       const glm::vec3& toLight, int size);
+
+    // World point to shadow-map texture coordinates and depth, all in [0, 1].
+    const glm::mat4& worldToTexture() const { return worldToTexture_; }
+    // Metres one texel spans: how far the lit programs offset along the normal.
+    float texelWorld() const { return texelWorld_; }
+    int size() const { return size_; }
+    GLuint texture() const { return depth_.get(); }
+
+private:
+    void ensure(int size);
+
+    ShaderProgram program_;
+    GLint lightModel_ = -1;
+    gl::Framebuffer fbo_;
+    gl::Texture depth_;
+    int size_ = 0;
+    glm::mat4 worldToTexture_{1.0f};
+    float texelWorld_ = 0.0f;
+};
+
+}  // namespace hg::garden

@@ -1,0 +1,356 @@
+// The passes that make the garden worth seeing (docs/rendering.md), each
+// read back as real pixels: anti-aliased edges, tone mapping that keeps
+// ordinary colours, the sun's shadow without acne, ambient occlusion in a
+// carved groove, GPU timings per pass.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+#include <memory>
+#include <string>
+
+#include "frep/diagnostics.h"
+#include "frep/model.h"
+#include "frep/parser.h"
+#include "garden/render/screenshot.h"
+#include "garden/render/shapes.h"
+#include "gl_fixture.h"
+#include "polygonizer/export_mesher.h"
+#include "voxel/sampler.h"
+
+namespace hg::garden::test {
+namespace {
+
+const RenderMaterial kRed{{0.9f, 0.1f, 0.1f}, 0.2f, 32.0f};
+const RenderMaterial kMatteWhite{{0.8f, 0.8f, 0.8f}, 0.0f, 16.0f};
+
+glm::mat4 at(const glm::vec3& p, float scale = 1.0f) {
+    return glm::scale(glm::translate(glm::mat4(1.0f), p), glm::vec3(scale));
+}
+
+// A real sculpture, carved: a 1 x 0.6 x 1 m block with a slot 0.12 m wide
+// and 0.15 m deep along z across its top, voxelized and meshed as the
+// garden does.
+poly::Mesh slottedBlock() {
+    const std::string source =
+        "slotted(x[3], a[1]) {\n"
+        "  block = (0.5 - x[1]) & (0.5 + x[1]) & (0.3 - x[2]) & (0.3 + x[2]) & (0.5 - x[3]) & (0.5 + x[3]);\n"
+        "  slot = (a[1] - x[1]) & (a[1] + x[1]) & (x[2] - 0.15);\n"
+        "  slotted = block \\ slot;\n"
+        "}\n";
+    frep::ParseResult r = frep::parseProgram(source, "slotted.hf");
+    if (!r.ok()) {
+        ADD_FAILURE() << (r.errors.empty() ? "parse failed" : frep::formatDiagnostic(r.errors[0]));
+        return {};
+    }
+    auto program = std::make_shared<const frep::Program>(std::move(*r.program));
+    frep::Model model(program, program->defaultBody(), {0.06});
+    voxel::VolumeRequest request;
+    request.resolution = 96;
+    voxel::VoxelizeResult v = voxel::voxelize(model, request);
+    if (!v.volume) {
+        ADD_FAILURE() << v.error;
+        return {};
+    }
+    return poly::meshVolume(*v.volume);
+}
+
+class LookTest : public GlTest {
+protected:
+    void render(const View& view, const RenderQuality& quality, bool ground, const glm::mat4& model,
+                const RenderMaterial& material) {
+        renderer_->setQuality(quality);
+        target_->bind();
+        renderer_->beginFrame(view);
+        if (ground) renderer_->drawGround(GroundStyle{});
+        renderer_->drawChunk(1, model, material);
+        renderer_->endFrame();
+        read();
+        if (std::getenv("HG_LOOK_DUMP")) writePng(std::string(std::getenv("HG_LOOK_DUMP")) + std::to_string(dumps_++) + ".png", kWidth, kHeight, color_);
+    }
+    int dumps_ = 0;
+    // Mean of r + g + b over a square of (2k + 1) pixels a side about p.
+    double meanSum(glm::ivec2 p, int k = 2) const {
+        double sum = 0.0;
+        for (int y = p.y - k; y <= p.y + k; ++y)
+            for (int x = p.x - k; x <= p.x + k; ++x) sum += pixel(x, y).sum();
+        return sum / double((2 * k + 1) * (2 * k + 1));
+    }
+};
+
+RenderQuality plain() {
+    RenderQuality q;
+    q.msaaSamples = 1;
+    q.shadows = false;
+    q.ambientOcclusion = false;
+    return q;
+}
+
+TEST_F(LookTest, MultisamplingGivesSilhouettesIntermediateCoverageAndLeavesFlatColoursAlone) {
+    renderer_->upload(1, 1, uvSphereMesh(1.0f, 96, 48));
+    const View view = makeView({0, 0, 5}, {0, 0, 0});
+    // The sky alone, to tell sky pixels from the sphere's.
+    renderer_->setQuality(plain());
+    target_->bind();
+    renderer_->beginFrame(view);
+    renderer_->endFrame();
+    read();
+    const std::vector<std::uint8_t> sky = color_;
+    // Neither the sky nor the sphere: a pixel the silhouette crosses.
+    auto mixedCount = [&] {
+        int n = 0;
+        for (int y = 0; y < kHeight; ++y)
+            for (int x = 0; x < kWidth; ++x) {
+                const std::size_t i = (std::size_t(y) * kWidth + std::size_t(x)) * 4;
+                bool isSky = true;
+                for (int c = 0; c < 3; ++c) isSky = isSky && std::abs(int(color_[i + c]) - int(sky[i + c])) <= 2;
+                n += (!isSky && !reddish(pixel(x, y))) ? 1 : 0;
+            }
+        return n;
+    };
+    RenderQuality aliased = plain();
+    render(view, aliased, false, glm::mat4(1.0f), kRed);
+    const int hard = mixedCount();
+    const Rgba flatAliased = pixel(kWidth / 2, kHeight / 2);
+
+    RenderQuality smooth = aliased;
+    smooth.msaaSamples = 4;
+    render(view, smooth, false, glm::mat4(1.0f), kRed);
+    const int soft = mixedCount();
+    const Rgba flatSmooth = pixel(kWidth / 2, kHeight / 2);
+
+    const double perimeter = 2.0 * kPi * discRadiusPixels(1.0, 5.0);
+    EXPECT_LT(hard, 0.05 * perimeter) << "one sample: every pixel is sky or sphere";
+    EXPECT_GT(soft, 0.5 * perimeter) << "four samples: the outline's pixels blend sky and sphere";
+    EXPECT_NEAR(flatSmooth.r, flatAliased.r, 1);
+    EXPECT_NEAR(flatSmooth.g, flatAliased.g, 1);
+    EXPECT_NEAR(flatSmooth.b, flatAliased.b, 1);
+}
+
+TEST_F(LookTest, ToneMappingKeepsOrdinaryColoursAndRollsHighlightsOffWithTheirHue) {
+    renderer_->upload(1, 1, uvSphereMesh(1.0f, 48, 24));
+    View view = makeView({0, 0, 5}, {0, 0, 0});
+    view.lights.clear();  // ambient alone: one known linear value on the whole disc
+    const RenderMaterial orange{{0.8f, 0.4f, 0.2f}, 0.0f, 16.0f};
+    auto linear = [](double c) { return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4); };
+    auto encode = [](double c) { return 255.0 * (c <= 0.0031308 ? c * 12.92 : 1.055 * std::pow(c, 1 / 2.4) - 0.055); };
+
+    view.ambient = glm::vec3(0.5f);
+    render(view, plain(), false, glm::mat4(1.0f), orange);
+    Rgba c = pixel(kWidth / 2, kHeight / 2);
+    EXPECT_NEAR(c.r, encode(0.5 * linear(0.8)), 1.5) << "below the roll-off a colour passes unchanged";
+    EXPECT_NEAR(c.g, encode(0.5 * linear(0.4)), 1.5);
+    EXPECT_NEAR(c.b, encode(0.5 * linear(0.2)), 1.5);
+
+    RenderQuality brighter = plain();
+    brighter.exposure = 2.0f;
+    render(view, brighter, false, glm::mat4(1.0f), orange);
+    c = pixel(kWidth / 2, kHeight / 2);
+    EXPECT_NEAR(c.r, encode(linear(0.8)), 1.5) << "exposure scales the linear light";
+
+    view.ambient = glm::vec3(6.0f);
+    render(view, plain(), false, glm::mat4(1.0f), orange);
+    c = pixel(kWidth / 2, kHeight / 2);
+    EXPECT_LT(c.r, 255) << "rolled off, not clipped";
+    EXPECT_GT(c.r, 240);
+    EXPECT_GT(c.r, c.g + 10) << "still orange";
+    EXPECT_GT(c.g, c.b);
+}
+
+TEST_F(LookTest, TheSunCastsASoftShadowOnTheGroundAndNoneOnLitFaces) {
+    renderer_->upload(1, 1, uvSphereMesh(1.0f, 48, 24));
+    const glm::vec3 sun(0.3f, 1.0f, 0.2f);
+    const View view = makeView({0, 4, 7}, {0, 0.5f, 0}, sun);
+    const glm::vec3 centre(0, 1.2f, 0);
+    const glm::mat4 model = at(centre, 0.5f);
+    // Where the sun's ray through the sphere's centre meets the ground.
+    const glm::vec3 l = glm::normalize(sun);
+    const glm::vec3 under = centre - l * (centre.y / l.y);
+    const glm::vec3 away(-2.5f, 0, 1.5f);
+    const glm::ivec2 underPx = worldToPixel(view, under), awayPx = worldToPixel(view, away);
+
+    RenderQuality quality;
+    quality.ambientOcclusion = false;
+    quality.shadows = false;
+    render(view, quality, true, model, kRed);
+    const std::vector<std::uint8_t> lit = color_;
+    const double underLit = meanSum(underPx), awayLit = meanSum(awayPx);
+
+    quality.shadows = true;
+    render(view, quality, true, model, kRed);
+    const double underShadow = meanSum(underPx), awayShadow = meanSum(awayPx);
+    EXPECT_LT(underShadow, underLit - 60) << "the sphere's shadow lies where the sun's ray meets the ground";
+    EXPECT_NEAR(awayShadow, awayLit, 3) << "ground in the open is not shadowed";
+    // Soft edge: walking out of the shadow, some pixels are partly lit.
+    int between = 0;
+    for (float t = 0.0f; t < 1.2f; t += 0.01f) {
+        const glm::ivec2 p = worldToPixel(view, under + glm::vec3(t, 0, 0));
+        const std::size_t i = (std::size_t(p.y) * kWidth + std::size_t(p.x)) * 4;
+        const double open = double(lit[i]) + lit[i + 1] + lit[i + 2];
+        const double ratio = pixel(p.x, p.y).sum() / std::max(open, 1.0);
+        between += (ratio > 0.75 && ratio < 0.95) ? 1 : 0;
+    }
+    EXPECT_GE(between, 2) << "PCF gives the shadow a graded edge";
+}
+
+TEST_F(LookTest, ALitFlatFaceHasNoShadowAcne) {
+    const poly::Mesh block = slottedBlock();
+    ASSERT_FALSE(block.empty());
+    renderer_->upload(1, 1, block);
+    // The sun low at 35 degrees, facing the block's +x side squarely.
+    const glm::vec3 sun(1.0f, 0.7f, 0.0f);
+    const View view = makeView({3.0f, 1.0f, 1.5f}, {0.5f, 0.3f, 0}, sun);
+    const glm::mat4 model = at({0, 0.3f, 0});
+    const glm::ivec2 face = worldToPixel(view, {0.5f, 0.3f, 0.0f});
+
+    RenderQuality quality;
+    quality.ambientOcclusion = false;
+    quality.shadows = false;
+    render(view, quality, true, model, kMatteWhite);
+    const double open = meanSum(face, 6);
+    quality.shadows = true;
+    render(view, quality, true, model, kMatteWhite);
+    double sum = 0, sum2 = 0;
+    int n = 0;
+    for (int y = face.y - 6; y <= face.y + 6; ++y)
+        for (int x = face.x - 6; x <= face.x + 6; ++x) {
+            const double s = pixel(x, y).sum();
+            sum += s;
+            sum2 += s * s;
+            ++n;
+        }
+    const double mean = sum / n, variance = sum2 / n - mean * mean;
+    EXPECT_NEAR(mean, open, 4) << "the lit face does not shadow itself";
+    EXPECT_LT(variance, 4.0) << "no acne: a flat lit patch is even";
+}
+
+TEST_F(LookTest, AmbientOcclusionDarkensACarvedGrooveAndNotTheOpenTop) {
+    const poly::Mesh block = slottedBlock();
+    ASSERT_FALSE(block.empty());
+    renderer_->upload(1, 1, block);
+    // Sun straight above: the groove's floor and the top get the same direct light.
+    const View view = makeView({0.0f, 1.9f, 1.5f}, {0, 0.45f, 0}, {0.0f, 1.0f, 0.0f});
+    const glm::mat4 model = at({0, 0.3f, 0});
+    const glm::ivec2 groove = worldToPixel(view, {0.0f, 0.45f, 0.1f});
+    const glm::ivec2 top = worldToPixel(view, {0.3f, 0.6f, 0.1f});
+
+    RenderQuality quality;
+    quality.shadows = false;
+    quality.ambientOcclusion = false;
+    render(view, quality, false, model, kMatteWhite);
+    const double grooveOpen = meanSum(groove, 1), topOpen = meanSum(top, 1);
+
+    EXPECT_NEAR(grooveOpen, topOpen, 6) << "without occlusion the floor of the groove is lit like the top";
+
+    quality.ambientOcclusion = true;
+    render(view, quality, false, model, kMatteWhite);
+    const double grooveShut = meanSum(groove, 1), topShut = meanSum(top, 1);
+
+    EXPECT_LT(grooveShut, grooveOpen - 30) << "the groove reads darker";
+    EXPECT_NEAR(topShut, topOpen, 8) << "an open flat top is not darkened";
+
+    quality.aoHalfResolution = true;
+    render(view, quality, false, model, kMatteWhite);
+    EXPECT_LT(meanSum(groove, 1), grooveOpen - 30) << "at half resolution too";
+}
+
+TEST_F(LookTest, TheSkyDeepensOverheadAndShowsTheSun) {
+    const glm::vec3 sun(0.0f, 0.35f, -1.0f);  // low, ahead
+    View view = makeView({0, 1, 0}, {0, 1.4f, -5}, sun);
+    renderer_->setQuality(plain());
+    target_->bind();
+    renderer_->beginFrame(view);
+    renderer_->endFrame();
+    read();
+    const glm::ivec2 sunPx = worldToPixel(view, view.eye + 50.0f * glm::normalize(sun));
+    EXPECT_GT(pixel(sunPx.x, sunPx.y).sum(), 740) << "the sun's disc is white";
+    EXPECT_LT(pixel(10, sunPx.y).sum(), 600) << "the sky away from it is not";
+
+    view.lights.clear();  // no sun: the gradient alone
+    target_->bind();
+    renderer_->beginFrame(view);
+    renderer_->endFrame();
+    read();
+    const glm::ivec2 horizonPx = worldToPixel(view, view.eye + glm::vec3(-30.0f, 0.0f, -50.0f));
+    const Rgba horizon = pixel(horizonPx.x, horizonPx.y), top = pixel(kWidth / 2, 0);
+    EXPECT_NEAR(horizon.r, 51, 8) << "the clear colour at the horizon";
+    EXPECT_NEAR(horizon.b, 204, 8);
+    EXPECT_LT(top.r + top.g, horizon.r + horizon.g) << "deeper blue overhead";
+    EXPECT_EQ(depth(kWidth / 2, 0), 1.0f) << "the sky is behind everything";
+}
+
+TEST_F(LookTest, TheLawnVariesInWorldSpace) {
+    const glm::vec3 spot(0.37f, 0.0f, 0.41f);  // inside a grid cell
+    GroundStyle lawn;
+    lawn.lineWidth = 0.0f;
+    renderer_->setQuality(plain());
+    auto look = [&](const glm::vec3& eye) {
+        const View view = makeView(eye, spot);
+        target_->bind();
+        renderer_->beginFrame(view);
+        renderer_->drawGround(lawn);
+        renderer_->endFrame();
+        read();
+        return view;
+    };
+    View v = look({0.37f, 1.5f, 2.4f});
+    glm::ivec2 p = worldToPixel(v, spot);
+    const Rgba first = pixel(p.x, p.y);
+    double sum = 0, sum2 = 0;
+    for (int x = 0; x < kWidth; ++x) {
+        const double s = pixel(x, kHeight - 20).sum();
+        sum += s;
+        sum2 += s * s;
+    }
+    const double mean = sum / kWidth;
+    EXPECT_GT(std::sqrt(sum2 / kWidth - mean * mean), 3.0) << "not one flat colour";
+    v = look({-1.2f, 1.1f, 1.9f});
+    p = worldToPixel(v, spot);
+    const Rgba second = pixel(p.x, p.y);
+    EXPECT_NEAR(first.g, second.g, 6) << "the same patch of lawn from elsewhere";
+    EXPECT_GT(first.g, first.r) << "green";
+}
+
+TEST(RenderQualityTest, PresetsSwitchTheEffectsAndParseByName) {
+    EXPECT_EQ(parseQualityPreset("low"), QualityPreset::Low);
+    EXPECT_EQ(parseQualityPreset("medium"), QualityPreset::Medium);
+    EXPECT_EQ(parseQualityPreset("high"), QualityPreset::High);
+    EXPECT_FALSE(parseQualityPreset("ultra").has_value());
+    const RenderQuality low = qualityOf(QualityPreset::Low), medium = qualityOf(QualityPreset::Medium),
+                        high = qualityOf(QualityPreset::High);
+    EXPECT_EQ(low.msaaSamples, 1);
+    EXPECT_FALSE(low.shadows || low.ambientOcclusion);
+    EXPECT_LT(medium.shadowMapSize, high.shadowMapSize);
+    EXPECT_LT(medium.aoSamples, high.aoSamples);
+    EXPECT_TRUE(medium.aoHalfResolution && !high.aoHalfResolution);
+    EXPECT_LT(medium.msaaSamples, high.msaaSamples);
+    // --quality auto: low on Mesa's software rasterizers, high on a GPU.
+    EXPECT_EQ(rendererPreset("4.5 (Core Profile) Mesa 22.3.6, llvmpipe (LLVM 15.0.6, 256 bits)"), QualityPreset::Low);
+    EXPECT_EQ(rendererPreset("4.6.0 NVIDIA 550.54.15, NVIDIA H100 80GB HBM3/PCIe/SSE2"), QualityPreset::High);
+}
+
+TEST_F(LookTest, EachPassReportsItsGpuTime) {
+    renderer_->upload(1, 1, uvSphereMesh(1.0f, 48, 24));
+    const View view = makeView({0, 2, 5}, {0, 0.5f, 0});
+    RenderStats stats;
+    // Results come a few views late, without waiting for the GPU.
+    for (int frame = 0; frame < 8 && !(stats.gpuSceneMs >= 0.0f && stats.gpuShadowMs >= 0.0f); ++frame) {
+        target_->bind();
+        renderer_->beginFrame(view);
+        renderer_->drawGround(GroundStyle{});
+        renderer_->drawChunk(1, at({0, 1, 0}), kRed);
+        stats = renderer_->endFrame();
+        glFinish();
+    }
+    EXPECT_GE(stats.gpuShadowMs, 0.0f);
+    EXPECT_GT(stats.gpuSceneMs, 0.0f);
+    EXPECT_GE(stats.gpuOcclusionMs, 0.0f);
+    EXPECT_GE(stats.gpuPostMs, 0.0f);
+    EXPECT_GE(stats.gpuMs(), stats.gpuSceneMs);
+    EXPECT_EQ(stats.shadowDrawCalls, 1u) << "the sphere is drawn into the shadow map, the ground is not";
+}
+
+}  // namespace
+}  // namespace hg::garden::test
