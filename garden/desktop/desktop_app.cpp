@@ -218,8 +218,16 @@ int runDesktopOn(GardenSession& session, GardenWindow& gardenWindow, const Deskt
         overlay.render();
         return ViewDraw{r.trianglesDrawn, r.drawCalls};
     });
-    glm::dvec2 lastMouse(0.0);
-    glfwGetCursorPos(window.handle(), &lastMouse.x, &lastMouse.y);
+    // The mouse's buttons and moves come as events (pointer_events.h); this
+    // is where they left it at the end of the last frame.
+    PointerState pointer;
+    const auto cursorNow = [&] {
+        glm::dvec2 c(0.0);
+        glfwGetCursorPos(window.handle(), &c.x, &c.y);
+        pointer = PointerState{};
+        pointer.position = glm::vec2(c);
+    };
+    cursorNow();
     auto last = std::chrono::steady_clock::now();
     for (int frame = 0; !window.shouldClose() && (options.frames == 0 || frame < options.frames); ++frame) {
         pollEvents();
@@ -244,17 +252,15 @@ int runDesktopOn(GardenSession& session, GardenWindow& gardenWindow, const Deskt
             in.right = keys && glfwGetKey(w, GLFW_KEY_D) == GLFW_PRESS;
             in.up = keys && glfwGetKey(w, GLFW_KEY_E) == GLFW_PRESS;
             in.down = keys && glfwGetKey(w, GLFW_KEY_Q) == GLFW_PRESS;
-            in.lookButton = mouse && glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS;
-            in.toolButton = mouse && glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
-            glm::dvec2 cursor;
-            glfwGetCursorPos(w, &cursor.x, &cursor.y);
+            const PointerFrame p = foldPointerEvents(events.pointer, pointer);
+            // A release lost to the window (focus taken mid-drag) leaves no button stuck.
+            pointer.toolDown = pointer.toolDown && glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
+            pointer.lookDown = pointer.lookDown && glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS;
             const glm::ivec2 ws = window.size();
             // Mouse in framebuffer pixels (HiDPI: window and framebuffer differ).
             const glm::vec2 toFb(static_cast<float>(fb.x) / static_cast<float>(std::max(ws.x, 1)),
                                  static_cast<float>(fb.y) / static_cast<float>(std::max(ws.y, 1)));
-            in.mouse = glm::vec2(cursor) * toFb;
-            in.mouseDelta = glm::vec2(cursor - lastMouse);
-            lastMouse = cursor;
+            applyPointer(in, p, toFb, mouse);
             // Keys ImGui wants (typing in a field) are not the garden's.
             pressed = keys ? events.keys : DesktopKeys{};
             in.wheel = mouse ? events.wheel : 0.0f;
@@ -291,7 +297,7 @@ int runDesktopOn(GardenSession& session, GardenWindow& gardenWindow, const Deskt
         const bool toHeadset = headsetButton || pressed.headset || (options.onFrame && options.onFrame(session, frame));
         if (toHeadset && options.headset) {
             enterHeadset(session, gardenWindow, options, headsetMessage);
-            glfwGetCursorPos(window.handle(), &lastMouse.x, &lastMouse.y);
+            cursorNow();
             last = std::chrono::steady_clock::now();
         }
     }

@@ -27,6 +27,7 @@
 #include <glm/mat4x4.hpp>
 
 #include "garden/hands/hand_state.h"
+#include "garden/hands/pointer_events.h"
 
 namespace hg::garden {
 
@@ -42,6 +43,12 @@ struct DesktopInput {
     float wheel = 0.0f;        // notches this frame
     glm::vec2 viewport{1280.0f, 720.0f};
 };
+
+// This frame's pointer (its events folded, garden/hands/pointer_events.h)
+// into `in`: the buttons held, the tool's pixel in framebuffer pixels
+// (`windowToFramebuffer` scales window pixels; HiDPI) and the look drag.
+// `free`: the panels do not have the mouse; else neither button acts.
+void applyPointer(DesktopInput& in, const PointerFrame& p, glm::vec2 windowToFramebuffer, bool free);
 
 struct DesktopMapping {
     float lookRadiansPerPixel = 0.004f;
