@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cerrno>
-#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -12,26 +11,13 @@
 
 #include <nlohmann/json.hpp>
 
+#include "garden/desktop/desktop_settings.h"
 #include "garden/scene/json_reader.h"
 #include "io/checked_write.h"
 
 namespace hg::xr {
 
-namespace {
-
-const char* nonEmptyEnv(const char* name) {
-    const char* v = std::getenv(name);
-    return v && *v ? v : nullptr;
-}
-
-}  // namespace
-
-std::string xrSettingsPath() {
-    if (const char* p = nonEmptyEnv("HG_XR_SETTINGS")) return p;
-    if (const char* x = nonEmptyEnv("XDG_CONFIG_HOME")) return (std::filesystem::path(x) / "hypergarden" / "xr.json").string();
-    if (const char* h = nonEmptyEnv("HOME")) return (std::filesystem::path(h) / ".config" / "hypergarden" / "xr.json").string();
-    return "";
-}
+std::string xrSettingsPath() { return garden::userSettingsPath("HG_XR_SETTINGS", "xr.json"); }
 
 XrUserSettings loadXrSettings(const std::string& path, std::string& warning) {
     warning.clear();

@@ -63,6 +63,7 @@ GardenSession::GardenSession(GardenLoad load, SessionSettings settings)
     // estimate runs on one thread), each into its own slot.
     tbb::parallel_for(std::size_t{0}, g.sculptures.size(), [this](std::size_t i) { buildSculpture(i); });
     buildMorph();
+    recorded_ = 0;  // the garden's own first weights are no action of the user's
 }
 
 GardenSession::~GardenSession() = default;
@@ -188,7 +189,9 @@ void GardenSession::recordMorph() {
 }
 
 void GardenSession::record(const Action& r) {
-    if (journal_ && !restoring_) journal_->append(r);
+    if (restoring_) return;
+    ++recorded_;
+    if (journal_) journal_->append(r);
 }
 
 void GardenSession::restartMorph() {

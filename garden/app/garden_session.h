@@ -95,7 +95,7 @@ public:
     std::vector<Sculpture>& sculptures() { return sculptures_; }
     const std::vector<Sculpture>& sculptures() const { return sculptures_; }
     Navigator& navigator() { return navigator_; }
-    // Back where the garden file starts the visitor, walking (the desktop's Home key).
+    // Back where the garden file starts the visitor, walking.
     void resetView();
     const Navigator& navigator() const { return navigator_; }
     FrameScheduler& scheduler() { return scheduler_; }
@@ -216,6 +216,9 @@ public:
     // whether it is saved (garden/action/action_sink.h). Not owned.
     void setJournal(JournalSink* journal) { journal_ = journal; }
     JournalSink* journal() const { return journal_; }
+    // Finished actions made in this run (not those a journal played): with
+    // no journal, what closing would lose.
+    std::size_t actionsRecorded() const { return recorded_; }
     // Plays journalled actions without journalling them again, the grids
     // recomputed once at the end (each voxel once). "" or why a record
     // cannot be played (its number, from 1, and the reason).
@@ -329,6 +332,7 @@ private:
     std::uint32_t lastButtons_ = 0;    // the tool hand's buttons last frame (undo, redo edges)
     bool toolArmed_ = true;            // the trigger was released since the last action
     JournalSink* journal_ = nullptr;
+    std::size_t recorded_ = 0;         // actionsRecorded()
     bool restoring_ = false;           // playing a journal: nothing is journalled again
     bool morphDragging_ = false;       // the tool hand holds the selector on the ground
     bool morphDragged_ = false;        // ... and moved it: journalled on release

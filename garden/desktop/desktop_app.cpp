@@ -16,11 +16,14 @@
 
 #include "garden/app/garden_session.h"
 #include "garden/desktop/desktop_keys.h"
+#include "garden/desktop/desktop_settings.h"
 #include "garden/desktop/export_panel.h"
 #include "garden/desktop/garden_view.h"
 #include "garden/desktop/garden_window.h"
+#include "garden/desktop/view_framing.h"
 #include "garden/hands/desktop_hands.h"
 #include "garden/render/gl_context.h"
+#include "garden/render/key_table.h"
 #include "garden/render/morph_triangle.h"
 #include "garden/render/overlay.h"
 #include "garden/render/panels.h"
@@ -174,7 +177,20 @@ void showAsDesktop(GardenWindow& window, const DesktopOptions& options) {
 int runDesktopOn(GardenSession& session, GardenWindow& gardenWindow, const DesktopOptions& options) {
     GlWindow& window = gardenWindow.window();
     Overlay& overlay = *gardenWindow.overlay();
-    bool showHelp = true;  // the key list, open for a first look; F1 toggles it
+    bool showHelp = false;  // the key list (F1)
+    // The first-run overlay, until the user dismisses it (then remembered).
+    const std::string settingsPath = options.settingsPath ? *options.settingsPath : desktopSettingsPath();
+    std::string settingsWarning;
+    DesktopUserSettings userSettings = loadDesktopSettings(settingsPath, settingsWarning);
+    if (!settingsWarning.empty()) std::cerr << "warning: " << settingsWarning << "\n";
+    bool firstRun = !userSettings.firstRunDone;
+    const auto firstRunDismissed = [&] {
+        firstRun = false;
+        userSettings.firstRunDone = true;
+        if (const std::string why = saveDesktopSettings(settingsPath, userSettings); !why.empty())
+            std::cerr << "warning: the first-run overlay will show again: " << why << "\n";
+    };
+    bool askQuit = false, quitConfirmed = false;  // Esc or the close button with work not saved
     Renderer& renderer = gardenWindow.renderer();
     GardenView& view = gardenWindow.view();
     WindowEvents& events = gardenWindow.events();
@@ -210,8 +226,14 @@ int runDesktopOn(GardenSession& session, GardenWindow& gardenWindow, const Deskt
         exportPanel.draw(session);
         ImGui::End();
         drawToolPanel(session);
-        drawStatsPanel(session.scheduler().history());
+        drawStatsPanel(session.scheduler().history(), pressed.stats);
         drawHelpPanel(showHelp, {0.5f * static_cast<float>(fb.x), static_cast<float>(fb.y)});
+        if (drawFirstRunPanel(firstRun)) firstRunDismissed();
+        if (drawQuitQuestion(askQuit, unsavedWhat(session))) {
+            quitConfirmed = true;
+            window.setShouldClose(true);
+        }
+        askQuit = false;
         // Above everything, centred: work that is not on disk.
         const float bannerWidth = std::min(640.0f, static_cast<float>(fb.x) - 20.0f);
         drawSaveBanner(session, {0.5f * (static_cast<float>(fb.x) - bannerWidth), 10.0f}, bannerWidth);
@@ -229,7 +251,15 @@ int runDesktopOn(GardenSession& session, GardenWindow& gardenWindow, const Deskt
     };
     cursorNow();
     auto last = std::chrono::steady_clock::now();
-    for (int frame = 0; !window.shouldClose() && (options.frames == 0 || frame < options.frames); ++frame) {
+    // The window's close button, like Esc, asks first when work is not saved.
+    const auto closing = [&] {
+        if (!window.shouldClose()) return false;
+        if (quitConfirmed || !unsavedWork(session)) return true;
+        window.setShouldClose(false);
+        askQuit = true;
+        return false;
+    };
+    for (int frame = 0; !closing() && (options.frames == 0 || frame < options.frames); ++frame) {
         pollEvents();
         const auto now = std::chrono::steady_clock::now();
         const double dt = std::min(0.1, std::chrono::duration<double>(now - last).count());
@@ -246,12 +276,19 @@ int runDesktopOn(GardenSession& session, GardenWindow& gardenWindow, const Deskt
             DesktopInput in;
             GLFWwindow* w = window.handle();
             const bool keys = !overlay.wantsKeyboard(), mouse = !overlay.wantsMouse();
-            in.forward = keys && glfwGetKey(w, GLFW_KEY_W) == GLFW_PRESS;
-            in.back = keys && glfwGetKey(w, GLFW_KEY_S) == GLFW_PRESS;
-            in.left = keys && glfwGetKey(w, GLFW_KEY_A) == GLFW_PRESS;
-            in.right = keys && glfwGetKey(w, GLFW_KEY_D) == GLFW_PRESS;
-            in.up = keys && glfwGetKey(w, GLFW_KEY_E) == GLFW_PRESS;
-            in.down = keys && glfwGetKey(w, GLFW_KEY_Q) == GLFW_PRESS;
+            // Held keys, as the key table binds them.
+            const auto held = [&](KeyCommand c) {
+                if (!keys) return false;
+                for (const int k : keysOf(c))
+                    if (glfwGetKey(w, k) == GLFW_PRESS) return true;
+                return false;
+            };
+            in.forward = held(KeyCommand::Forward);
+            in.back = held(KeyCommand::Back);
+            in.left = held(KeyCommand::Left);
+            in.right = held(KeyCommand::Right);
+            in.up = held(KeyCommand::Up);
+            in.down = held(KeyCommand::Down);
             const PointerFrame p = foldPointerEvents(events.pointer, pointer);
             // A release lost to the window (focus taken mid-drag) leaves no button stuck.
             pointer.toolDown = pointer.toolDown && glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
@@ -264,16 +301,29 @@ int runDesktopOn(GardenSession& session, GardenWindow& gardenWindow, const Deskt
             // Keys ImGui wants (typing in a field) are not the garden's.
             pressed = keys ? events.keys : DesktopKeys{};
             in.wheel = mouse ? events.wheel : 0.0f;
-            in.turn = keys && (glfwGetKey(w, GLFW_KEY_LEFT_SHIFT) == GLFW_PRESS ||
-                               glfwGetKey(w, GLFW_KEY_RIGHT_SHIFT) == GLFW_PRESS);
+            in.turn = held(KeyCommand::Turn);
             in.viewport = glm::vec2(fb);
             const glm::mat4 projection = glm::perspective(
                 fovY, static_cast<float>(fb.x) / static_cast<float>(std::max(fb.y, 1)), 0.05f, 500.0f);
             hands = desktopHands(in, pressed, session, projection, dt, carry);
             // The tool where the mouse points, unless it points at a panel.
             aim = mouse ? std::optional<Pose>(hands.tool.aim) : std::nullopt;
-            if (quitRequested(pressed)) window.setShouldClose(true);
-            if (pressed.resetView) session.resetView();
+            if (pressed.escape) {
+                switch (escapeDoes(popupOpen(), showHelp || firstRun, unsavedWork(session))) {
+                    case EscapeDoes::ClosePopup: closePopups(); break;
+                    case EscapeDoes::CloseHelp:
+                        if (firstRun) firstRunDismissed();
+                        showHelp = false;
+                        break;
+                    case EscapeDoes::AskToQuit: askQuit = true; break;
+                    case EscapeDoes::Quit:
+                        quitConfirmed = true;
+                        window.setShouldClose(true);
+                        break;
+                }
+            }
+            if (pressed.frameGarden)
+                frameGarden(session, fovY, static_cast<float>(fb.x) / static_cast<float>(std::max(fb.y, 1)));
             if (pressed.help) showHelp = !showHelp;
             if (pressed.detail) {
                 // Where the mouse ray meets the ground, a metre up; again: removed.
