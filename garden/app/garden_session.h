@@ -201,6 +201,10 @@ public:
     // otherwise. The last sketch's refusal ("" after one that was made).
     const std::vector<glm::vec3>& sketchPath() const { return sketch_.points; }
     const std::string& sketchMessage() const { return sketchMessage_; }
+    // Why the last press of a sculpting tool did nothing ("" after one that
+    // acted): it met no sculpture. A stroke edits the sculpture its press
+    // met, and only that one, which becomes the selection.
+    const std::string& toolMessage() const { return toolMessage_; }
     // The sculpture's mirror plane (model frame; none: off): strokes and
     // perturbations made while it is set act on both sides of it.
     void setMirror(int sculpture, std::optional<MirrorPlane> plane);
@@ -359,6 +363,7 @@ private:
     };
     SketchDraw sketch_;
     std::string sketchMessage_;
+    std::string toolMessage_;  // toolMessage()
     int liveMove_ = -1;                // the sculpture moved live, or -1
     Placement liveMoveFrom_;           // its placement before the drag
     bool intentScaling_ = false;       // the live move is the tool intents' selection scaling

@@ -350,10 +350,18 @@ void GardenSession::sculptWithHands(const Hands& hands) {
         return;
     }
     if (!toolArmed_) return;  // one action per trigger pull
-    const auto hit = toolHit(h.aim);
-    if (!hit) return;
+    // The press picks the sculpture, and only the press (docs/desktop.md
+    // "Tools"): a press that meets none does nothing until the trigger is
+    // let go, rather than landing on whatever the dragged ray meets later.
     toolArmed_ = false;
+    const auto hit = toolHit(h.aim);
+    if (!hit) {
+        toolMessage_ = std::string("the press met no sculpture: press on the sculpture to ") + toolKindName(tool_.kind);
+        return;
+    }
+    toolMessage_.clear();
     const auto [sculpture, point] = *hit;
+    if (selected_ != sculpture) select(sculpture);  // the sculpture edited is the one shown selected
     if (tool_.kind == ToolSettings::Kind::Impacts) {
         ImpactTool t;
         t.shape = tool_.impactShape;

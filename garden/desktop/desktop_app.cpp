@@ -15,6 +15,7 @@
 #include <optional>
 
 #include "garden/app/garden_session.h"
+#include "garden/app/tool_defaults.h"
 #include "garden/desktop/desktop_keys.h"
 #include "garden/desktop/desktop_settings.h"
 #include "garden/desktop/export_panel.h"
@@ -24,7 +25,6 @@
 #include "garden/hands/desktop_hands.h"
 #include "garden/render/gl_context.h"
 #include "garden/render/key_table.h"
-#include "garden/render/morph_triangle.h"
 #include "garden/render/overlay.h"
 #include "garden/render/panels.h"
 #include "garden/render/screenshot.h"
@@ -45,7 +45,7 @@ std::string timestampedName(const std::string& dir) {
 // The side panel: the garden, what is missing, the morph selector.
 // `headset`: the Headset button is shown (true when pressed), with the
 // last headset message under it.
-bool gardenPanel(GardenSession& session, glm::vec2& selector, bool headset, const std::string& headsetMessage) {
+bool gardenPanel(GardenSession& session, bool headset, const std::string& headsetMessage) {
     // Top right: the stats panel takes the top left.
     ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x - 10.0f, 10.0f), ImGuiCond_FirstUseEver, ImVec2(1.0f, 0.0f));
     ImGui::Begin("Garden", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
@@ -69,16 +69,7 @@ bool gardenPanel(GardenSession& session, glm::vec2& selector, bool headset, cons
         ImGui::EndListBox();
     }
     ImGui::TextDisabled("O orbits the selection, G puts the detail sphere where the mouse points");
-    if (session.hasMorph()) {
-        const MorphSpec& m = *session.garden().morph;
-        const char* labels[3] = {m.sources[0].c_str(), m.sources[1].c_str(), m.sources[2].c_str()};
-        if (morphTriangleWidget(labels, selector)) {
-            const glm::vec3 b = triangleWeights(selector);
-            session.setMorphBarycentric({b.x, b.y, b.z});
-        }
-        if (const auto& w = session.morphWeights())
-            ImGui::Text("weights %.2f %.2f %.2f", w->w[0], w->w[1], w->w[2]);
-    }
+    drawMorphSection(session);
     bool lod = session.settings().lod;
     if (ImGui::Checkbox("level of detail", &lod)) session.settings().lod = lod;
     bool enter = false;
@@ -156,6 +147,9 @@ int runDesktopGarden(const DesktopOptions& options) {
             return opened.exitStatus;
         }
         for (const std::string& m : openedMessages(opened)) std::cerr << m << "\n";
+        // Sessions keep no tool settings yet: the tools start sized to the
+        // sculpture in view (a few percent of it).
+        sizeToolsToView(*opened.session);
         reportSaveChangesOnStderr(opened);
         int status = runDesktopOn(*opened.session, window, options);
         std::vector<std::string> last;
@@ -199,10 +193,6 @@ int runDesktopOn(GardenSession& session, GardenWindow& gardenWindow, const Deskt
     ExportPanel exportPanel(options.session);
     std::string headsetMessage;
 
-    glm::vec2 selector = trianglePoint(glm::vec3(1.0f / 3.0f));
-    if (const auto& w = session.morphWeights())
-        selector = trianglePoint(glm::vec3(static_cast<float>(w->barycentric[0]), static_cast<float>(w->barycentric[1]),
-                                           static_cast<float>(w->barycentric[2])));
     DesktopCarry carry;  // the walking speed, the wheel burst
     glm::ivec2 fb(1);
     const float fovY = static_cast<float>(session.settings().fovY);
@@ -221,7 +211,7 @@ int runDesktopOn(GardenSession& session, GardenWindow& gardenWindow, const Deskt
             std::cerr << (why.empty() ? "screenshot: " + path : "error: " + why) << "\n";
         }
         overlay.newFrame();
-        headsetButton = gardenPanel(session, selector, static_cast<bool>(options.headset), headsetMessage);
+        headsetButton = gardenPanel(session, static_cast<bool>(options.headset), headsetMessage);
         ImGui::Begin("Garden");  // the same window: its Export section
         exportPanel.draw(session);
         ImGui::End();

@@ -54,4 +54,12 @@ bool drawQuitQuestion(bool ask, const std::string& what);
 // morph_triangle.h (weights by triangleWeights). True when `point` changed.
 bool morphTriangleWidget(const char* const labels[3], glm::vec2& point, float side = 180.0f);
 
+// The morph section of the Garden panel (nothing without a morph): the
+// triangle widget and the weights line, both drawn from the session's
+// weights each frame (a pick on the ground shows at once); a click or drag
+// in the triangle sets them.
+void drawMorphSection(GardenSession& session);
+// The widget's point for the session's weights (morph_triangle.h's frame).
+glm::vec2 morphSelectorPoint(const GardenSession& session);
+
 }  // namespace hg::garden
