@@ -67,6 +67,14 @@ struct SessionSettings {
 
 // What one frame is given: the hands (world frame), the time since the
 // last frame, and the caller's commands.
+// One action in the undo history, for a panel.
+struct HistoryItem {
+    int sculpture = -1;
+    std::string name;    // the sculpture's
+    std::string action;  // actionKind: "stroke", "perturb", "move", ...
+    bool undone = false; // waiting in the redo list
+};
+
 struct FrameInput {
     FrameInput() = default;
     FrameInput(const Hands& h, double seconds) : hands(h), dt(seconds) {}
@@ -181,6 +189,13 @@ public:
     // false when there is nothing to undo or redo.
     bool undo();
     bool redo();
+    // The last action on one sculpture undone, the others' left as they are
+    // (journalled as an UndoAction naming it); redo brings it back. False
+    // when that sculpture has nothing to undo.
+    bool undoSculpture(int sculpture);
+    // The undo history, oldest first, then what redo would bring back
+    // (garden/render/history_panel.cpp lists it).
+    std::vector<HistoryItem> history() const;
     // The perturbation of a sculpture under a world point (the latest whose
     // quadric holds it), by its index in the edit list; none when none does.
     std::optional<std::size_t> pickPerturbation(int sculpture, const std::array<double, 3>& worldPoint) const;
@@ -306,7 +321,8 @@ private:
     void applyToolIntents(const Hands& hands);
     void sculptWithHands(const Hands& hands);
     void record(const Action& r);
-    bool stepHistory(std::vector<UndoEntry>& from, std::vector<UndoEntry>& to, bool undoing);
+    // `only` >= 0: that sculpture's last entry, not the last of all.
+    bool stepHistory(std::vector<UndoEntry>& from, std::vector<UndoEntry>& to, bool undoing, int only = -1);
     // `followOrbit`: an orbit of the sculpture follows it (not during a live
     // move: the camera would carry the hand's ray, and the sculpture, along).
     void placeSculpture(int sculpture, const Placement& placement, bool followOrbit = true);

@@ -172,6 +172,7 @@ int runDesktopOn(GardenSession& session, GardenWindow& gardenWindow, const Deskt
     GlWindow& window = gardenWindow.window();
     Overlay& overlay = *gardenWindow.overlay();
     bool showHelp = false;  // the key list (F1)
+    bool showHistory = false;  // the history panel (H)
     // The first-run overlay, until the user dismisses it (then remembered).
     const std::string settingsPath = options.settingsPath ? *options.settingsPath : desktopSettingsPath();
     std::string settingsWarning;
@@ -217,6 +218,7 @@ int runDesktopOn(GardenSession& session, GardenWindow& gardenWindow, const Deskt
         ImGui::End();
         drawToolPanel(session);
         drawStatsPanel(session.scheduler().history(), pressed.stats);
+        drawHistoryPanel(session, showHistory);
         drawHelpPanel(showHelp, {0.5f * static_cast<float>(fb.x), static_cast<float>(fb.y)});
         if (drawFirstRunPanel(firstRun)) firstRunDismissed();
         if (drawQuitQuestion(askQuit, unsavedWhat(session))) {
@@ -315,6 +317,8 @@ int runDesktopOn(GardenSession& session, GardenWindow& gardenWindow, const Deskt
             if (pressed.frameGarden)
                 frameGarden(session, fovY, static_cast<float>(fb.x) / static_cast<float>(std::max(fb.y, 1)));
             if (pressed.help) showHelp = !showHelp;
+            if (pressed.history) showHistory = !showHistory;
+            if (pressed.undoSelected && session.selected() >= 0) session.undoSculpture(session.selected());
             if (pressed.detail) {
                 // Where the mouse ray meets the ground, a metre up; again: removed.
                 if (session.detail()) session.setDetail(std::nullopt);

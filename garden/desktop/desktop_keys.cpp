@@ -31,6 +31,8 @@ bool addKeyPress(DesktopKeys& keys, int key, int mods) {
         case KeyCommand::Mirror: keys.mirror = !keys.mirror; return true;
         case KeyCommand::Undo: keys.undo = true; return true;
         case KeyCommand::Redo: keys.redo = true; return true;
+        case KeyCommand::UndoSelected: keys.undoSelected = true; return true;
+        case KeyCommand::History: keys.history = true; return true;
         case KeyCommand::Fly: keys.fly = true; return true;
         case KeyCommand::Orbit: keys.orbit = true; return true;
         case KeyCommand::Detail: keys.detail = true; return true;

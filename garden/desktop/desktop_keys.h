@@ -26,6 +26,8 @@ struct DesktopKeys {
     bool mirror = false;                     // M
     bool undo = false;                       // Ctrl+Z
     bool redo = false;                       // Ctrl+Shift+Z, Ctrl+Y
+    bool undoSelected = false;               // Ctrl+Alt+Z: the selection's last action
+    bool history = false;                    // H: the history panel
     bool fly = false, orbit = false, detail = false, screenshot = false;  // space, O, G, F12
     bool escape = false;                     // Esc (escapeDoes)
     bool frameGarden = false;                // Home: every sculpture in view

@@ -33,40 +33,53 @@ std::string userSettingsPath(const char* overrideVariable, const char* fileName)
 
 std::string desktopSettingsPath() { return userSettingsPath("HG_DESKTOP_SETTINGS", "desktop.json"); }
 
-DesktopUserSettings loadDesktopSettings(const std::string& path, std::string& warning) {
+std::optional<nlohmann::json> readSettingsObject(const std::string& path, std::string& warning) {
     warning.clear();
-    DesktopUserSettings s;
     std::error_code ec;
-    if (path.empty() || !std::filesystem::exists(path, ec)) return s;
+    if (path.empty() || !std::filesystem::exists(path, ec)) return std::nullopt;
     std::ifstream in(path);
     if (!in) {
         warning = path + ": cannot read: " + std::strerror(errno) + "; using the default settings";
-        return s;
+        return std::nullopt;
     }
     std::ostringstream text;
     text << in.rdbuf();
     try {
-        const nlohmann::json j = parseStrictJson(text.str());
+        nlohmann::json j = parseStrictJson(text.str());
         if (!j.is_object()) throw JsonError("$", "must be an object");
-        if (const auto it = j.find("first_run_done"); it != j.end()) {
-            if (!it->is_boolean()) throw JsonError("$.first_run_done", "must be true or false");
-            s.firstRunDone = it->get<bool>();
-        }
+        return j;
     } catch (const JsonError& e) {
         warning = path + ": " + e.what() + "; using the default settings";
-        return DesktopUserSettings{};
+    }
+    return std::nullopt;
+}
+
+std::string writeSettingsFile(const std::string& path, const nlohmann::json& settings, const char* overrideVariable) {
+    if (path.empty())
+        return std::string("no place for the settings (neither ") + overrideVariable + ", XDG_CONFIG_HOME nor HOME is set)";
+    std::error_code ec;
+    const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+    if (!folder.empty()) std::filesystem::create_directories(folder, ec);
+    if (ec) return "cannot write " + path + ": cannot make its folder: " + ec.message();
+    return io::writeFileAtomically(path, settings.dump(2) + "\n", io::WriteSite::Settings);
+}
+
+DesktopUserSettings loadDesktopSettings(const std::string& path, std::string& warning) {
+    DesktopUserSettings s;
+    const std::optional<nlohmann::json> j = readSettingsObject(path, warning);
+    if (!j) return s;
+    if (const auto it = j->find("first_run_done"); it != j->end()) {
+        if (!it->is_boolean()) {
+            warning = path + ": " + JsonError("$.first_run_done", "must be true or false").what() + "; using the default settings";
+            return s;
+        }
+        s.firstRunDone = it->get<bool>();
     }
     return s;
 }
 
 std::string saveDesktopSettings(const std::string& path, const DesktopUserSettings& s) {
-    if (path.empty()) return "no place for the settings (neither HG_DESKTOP_SETTINGS, XDG_CONFIG_HOME nor HOME is set)";
-    std::error_code ec;
-    const std::filesystem::path folder = std::filesystem::path(path).parent_path();
-    if (!folder.empty()) std::filesystem::create_directories(folder, ec);
-    if (ec) return "cannot write " + path + ": cannot make its folder: " + ec.message();
-    const nlohmann::json j = {{"first_run_done", s.firstRunDone}};
-    return io::writeFileAtomically(path, j.dump(2) + "\n", io::WriteSite::Settings);
+    return writeSettingsFile(path, {{"first_run_done", s.firstRunDone}}, "HG_DESKTOP_SETTINGS");
 }
 
 }  // namespace hg::garden

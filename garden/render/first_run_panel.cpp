@@ -34,19 +34,7 @@ bool drawFirstRunPanel(bool& open) {
         "A garden of HyperFun sculptures you can walk through and sculpt. Pick a tool with the number keys, then "
         "press on a sculpture and drag: the stroke edits that sculpture only. Every action can be undone.");
     ImGui::Spacing();
-    if (ImGui::BeginTable("##first keys", 2, ImGuiTableFlags_RowBg)) {
-        ImGui::TableSetupColumn("key", ImGuiTableColumnFlags_WidthFixed, 180.0f);
-        ImGui::TableSetupColumn("does", ImGuiTableColumnFlags_WidthStretch);
-        for (const KeyRow& r : keyTable()) {
-            if (!firstHourRow(r)) continue;
-            ImGui::TableNextRow();
-            ImGui::TableSetColumnIndex(0);
-            ImGui::TextWrapped("%s", r.keys.c_str());
-            ImGui::TableSetColumnIndex(1);
-            ImGui::TextWrapped("%s", r.does.c_str());
-        }
-        ImGui::EndTable();
-    }
+    drawKeyRows("##first keys", 180.0f, firstHourRow);
     ImGui::Spacing();
     const bool dismissed = ImGui::Button("Start") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter));
     ImGui::SameLine();

@@ -5,11 +5,27 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <functional>
 
 #include "garden/render/key_table.h"
 #include "garden/render/panels.h"
 
 namespace hg::garden {
+
+void drawKeyRows(const char* id, float keyWidth, const std::function<bool(const KeyRow&)>& pick) {
+    if (!ImGui::BeginTable(id, 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) return;
+    ImGui::TableSetupColumn("key", ImGuiTableColumnFlags_WidthFixed, keyWidth);
+    ImGui::TableSetupColumn("does", ImGuiTableColumnFlags_WidthStretch);
+    for (const KeyRow& r : keyTable()) {
+        if (pick && !pick(r)) continue;
+        ImGui::TableNextRow();
+        ImGui::TableSetColumnIndex(0);
+        ImGui::TextWrapped("%s", r.keys.c_str());
+        ImGui::TableSetColumnIndex(1);
+        ImGui::TextWrapped("%s", r.does.c_str());
+    }
+    ImGui::EndTable();
+}
 
 void drawHelpPanel(bool& open, glm::vec2 bottomCentre) {
     if (!open) {
@@ -26,18 +42,7 @@ void drawHelpPanel(bool& open, glm::vec2 bottomCentre) {
     ImGui::SetNextWindowPos(ImVec2(0.5f * display.x, 0.5f * display.y), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
     ImGui::SetNextWindowSize(ImVec2(std::min(760.0f, display.x - 20.0f), 0.0f), ImGuiCond_Appearing);
     if (ImGui::Begin("Keys and mouse (F1)", &open, ImGuiWindowFlags_NoSavedSettings)) {
-        if (ImGui::BeginTable("##keys", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
-            ImGui::TableSetupColumn("key", ImGuiTableColumnFlags_WidthFixed, 200.0f);
-            ImGui::TableSetupColumn("does", ImGuiTableColumnFlags_WidthStretch);
-            for (const KeyRow& r : keyTable()) {
-                ImGui::TableNextRow();
-                ImGui::TableSetColumnIndex(0);
-                ImGui::TextWrapped("%s", r.keys.c_str());
-                ImGui::TableSetColumnIndex(1);
-                ImGui::TextWrapped("%s", r.does.c_str());
-            }
-            ImGui::EndTable();
-        }
+        drawKeyRows("##keys", 200.0f, nullptr);
         ImGui::TextDisabled("Panels take the keys and clicks over them. Esc or F1 closes this list.");
     }
     ImGui::End();

@@ -18,7 +18,7 @@ enum class KeyCommand {
     Fly, FrameGarden, Orbit, Detail,
     ToolNone, ToolCarve, ToolAdd, ToolMelt, ToolPerturb, ToolImpacts, ToolMove, ToolSketch,
     Smaller, Larger, Reverse, Mirror,
-    Undo, Redo,
+    Undo, Redo, UndoSelected, History,
     Headset, Screenshot, Help, Stats, Escape,
 };
 

@@ -3,6 +3,7 @@
 // they run headless in tests.
 #pragma once
 
+#include <functional>
 #include <string>
 
 #include <glm/vec2.hpp>
@@ -12,6 +13,7 @@
 namespace hg::garden {
 
 class GardenSession;
+struct KeyRow;
 
 // A window with the last frame's time per stage against the budget, the
 // morph, remesh and upload counters and queues, triangles and draw calls,
@@ -37,6 +39,14 @@ bool drawSaveBanner(GardenSession& session, glm::vec2 topLeft, float width);
 // a window the user can close; closed: a hint line at `bottomCentre`, the
 // middle of the window's bottom edge in pixels, to press F1).
 void drawHelpPanel(bool& open, glm::vec2 bottomCentre);
+// The key table's rows that `pick` takes (all without one) as a two-column
+// table: the keys `keyWidth` pixels wide, what they do wrapped beside them.
+void drawKeyRows(const char* id, float keyWidth, const std::function<bool(const KeyRow&)>& pick);
+
+// The history panel (H): the undo history with each action's sculpture
+// (the selection's highlighted, undone ones greyed), undo, redo and undo on
+// the selected sculpture alone. `open` goes false when closed.
+void drawHistoryPanel(GardenSession& session, bool& open);
 
 // The first-run overlay: what the garden is, the few keys to start with
 // (from the key table) and a button that dismisses it. `open` goes false

@@ -72,15 +72,8 @@ TEST(DesktopKeys, KeysMapToTheDocumentedCommands) {
     EXPECT_EQ(k.sizeSteps, 1);
 }
 
-class DesktopKeysSession : public test::SmallGardenSession {
+class DesktopKeysSession : public test::FlyingBeforeBallC {
 protected:
-    void SetUp() override {
-        test::SmallGardenSession::SetUp();
-        // Flying 3 m in front of ball c at its centre's height, looking along -z.
-        session->navigator().setMode(NavigationMode::Fly);
-        session->navigator().setPose({2.0f, 0.5f, 4.1547f}, 0.0f, 0.0f);
-        projection = glm::perspective(static_cast<float>(session->settings().fovY), kViewport.x / kViewport.y, 0.05f, 500.0f);
-    }
     // One frame of the window: these keys pressed, the mouse at `mouse`,
     // the left button as given.
     void frame(const DesktopKeys& keys, glm::vec2 mouse, bool leftButton, float wheel = 0.0f) {
@@ -100,9 +93,6 @@ protected:
     }
     Sculpture& ball() { return session->sculptures()[static_cast<std::size_t>(c)]; }
 
-    static constexpr glm::vec2 kViewport{1280.0f, 720.0f};
-    static constexpr glm::vec2 kCentre{640.0f, 360.0f};
-    glm::mat4 projection{1.0f};
     static constexpr double kDt = 1.0 / 90.0;
     DesktopCarry carry;
     float lastSpeed = 1.0f;

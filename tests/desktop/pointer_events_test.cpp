@@ -63,14 +63,10 @@ TEST(PointerEvents, OnlyMovesWithTheLookButtonDownLook) {
     EXPECT_EQ(f.lookDelta, glm::vec2(0.0f));
 }
 
-class PointerSession : public test::SmallGardenSession {
+class PointerSession : public test::FlyingBeforeBallC {
 protected:
     void SetUp() override {
-        test::SmallGardenSession::SetUp();
-        // Flying 3 m in front of ball c at its centre's height, looking along -z.
-        session->navigator().setMode(NavigationMode::Fly);
-        session->navigator().setPose({2.0f, 0.5f, 4.1547f}, 0.0f, 0.0f);
-        projection = glm::perspective(static_cast<float>(session->settings().fovY), kViewport.x / kViewport.y, 0.05f, 500.0f);
+        test::FlyingBeforeBallC::SetUp();
         pointer.position = kCentre;
     }
     // One window frame with these pointer events (the desktop loop's path).
@@ -80,10 +76,7 @@ protected:
         applyPointer(in, foldPointerEvents(events, pointer), glm::vec2(1.0f), true);
         session->frame(FrameInput(desktopHands(in, keys, *session, projection, kDt, carry), kDt));
     }
-    static constexpr glm::vec2 kViewport{1280.0f, 720.0f};
-    static constexpr glm::vec2 kCentre{640.0f, 360.0f};
     static constexpr double kDt = 1.0 / 12.0;  // a slow software-GL frame
-    glm::mat4 projection{1.0f};
     PointerState pointer;
     DesktopCarry carry;
 };
