@@ -107,6 +107,10 @@ struct GestureCommandOptions {
 };
 int runGestureCommand(const GestureCommandOptions& options);
 
+// `hypergarden keys [--markdown]`: the window's keys and mouse, from the
+// table the window binds (garden/render/key_table.h).
+int runKeysCommand(bool markdown);
+
 // "0.5,1,-2" -> {0.5, 1, -2}; false when an item is not a number.
 bool parseNumberList(const std::string& text, std::vector<double>& out);
 

@@ -152,6 +152,11 @@ int main(int argc, char** argv) {
     gestureCmd->add_option("--threshold", gestureOpts.threshold, "Least confidence that counts (default: the weights file's)")
         ->check(CLI::Range(0.0, 1.0));
 
+    bool keysMarkdown = false;
+    auto* keysCmd = app.add_subcommand("keys", "List the garden window's keys and mouse (F1 shows them in the window)");
+    keysCmd->add_flag("--markdown", keysMarkdown, "As the README's Markdown table");
+    app.footer("In the window, F1 lists the keys and mouse; `hypergarden keys` prints them.");
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -193,6 +198,7 @@ int main(int argc, char** argv) {
     if (*sessionCmd) return runSessionCommand(sessionOpts);
     if (*gardenCmd) return runGardenAdd(addOpts);
     if (*gestureCmd) return runGestureCommand(gestureOpts);
+    if (*keysCmd) return runKeysCommand(keysMarkdown);
     if (*vox) {
         if (!parseNumberList(voxBox, voxOpts.box)) {
             std::cerr << "error: --box expects six numbers separated by commas: x0,y0,z0,x1,y1,z1\n";

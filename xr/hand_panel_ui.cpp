@@ -172,8 +172,6 @@ struct HandPanelUi::Gl {
     garden::ShaderProgram program{"hand panel", kVertex, kFragment};
     garden::gl::VertexArray vao = garden::gl::VertexArray::create();
     garden::gl::Buffer vertices = garden::gl::Buffer::create();
-    glm::vec2 selector{0.5f, 0.3f};  // the morph triangle's point
-    bool selectorSet = false;
     std::optional<std::uint64_t> drawn;  // drawDataHash of what the texture shows
 };
 
@@ -299,7 +297,7 @@ bool HandPanelUi::update(garden::GardenSession& session, const HandPanel& panel,
         if (b == PanelButton::Undo) session.undo();
         else if (b == PanelButton::Redo) session.redo();
         else {
-            t.kind = toolOf(b);
+            selectTool(t, toolOf(b));
             page_ = PanelPage::Tool;  // the tool's parameters
         }
     }
@@ -355,17 +353,13 @@ void HandPanelUi::toolPage(garden::GardenSession& session) {
 
     ImGui::SetCursorPos(ImVec2(kMorphX, kBodyY));
     if (session.hasMorph()) {
-        if (!gl_->selectorSet) {
-            if (const auto& w = session.morphWeights())
-                gl_->selector = garden::trianglePoint(glm::vec3(static_cast<float>(w->barycentric[0]),
-                                                                static_cast<float>(w->barycentric[1]),
-                                                                static_cast<float>(w->barycentric[2])));
-            gl_->selectorSet = true;
-        }
+        // Drawn from the session's weights each frame: a pick on the ground
+        // shows here at once (garden/render/morph_panel.cpp).
+        glm::vec2 point = garden::morphSelectorPoint(session);
         const garden::MorphSpec& m = *session.garden().morph;
         const char* labels[3] = {m.sources[0].c_str(), m.sources[1].c_str(), m.sources[2].c_str()};
-        if (garden::morphTriangleWidget(labels, gl_->selector, kMorphSide)) {
-            const glm::vec3 b = garden::triangleWeights(gl_->selector);
+        if (garden::morphTriangleWidget(labels, point, kMorphSide)) {
+            const glm::vec3 b = garden::triangleWeights(point);
             session.setMorphBarycentric({b.x, b.y, b.z});
         }
     } else {

@@ -1,54 +1,24 @@
 #include "xr/xr_settings.h"
 
 #include <algorithm>
-#include <cerrno>
-#include <cstdlib>
-#include <cstring>
-#include <filesystem>
-#include <fstream>
 #include <iterator>
-#include <sstream>
-#include <system_error>
 
 #include <nlohmann/json.hpp>
 
+#include "garden/desktop/desktop_settings.h"
 #include "garden/scene/json_reader.h"
-#include "io/checked_write.h"
 
 namespace hg::xr {
 
-namespace {
-
-const char* nonEmptyEnv(const char* name) {
-    const char* v = std::getenv(name);
-    return v && *v ? v : nullptr;
-}
-
-}  // namespace
-
-std::string xrSettingsPath() {
-    if (const char* p = nonEmptyEnv("HG_XR_SETTINGS")) return p;
-    if (const char* x = nonEmptyEnv("XDG_CONFIG_HOME")) return (std::filesystem::path(x) / "hypergarden" / "xr.json").string();
-    if (const char* h = nonEmptyEnv("HOME")) return (std::filesystem::path(h) / ".config" / "hypergarden" / "xr.json").string();
-    return "";
-}
+std::string xrSettingsPath() { return garden::userSettingsPath("HG_XR_SETTINGS", "xr.json"); }
 
 XrUserSettings loadXrSettings(const std::string& path, std::string& warning) {
     warning.clear();
     XrUserSettings s;
-    if (path.empty()) return s;
-    std::error_code ec;
-    if (!std::filesystem::exists(path, ec)) return s;
-    std::ifstream in(path);
-    if (!in) {
-        warning = path + ": cannot read: " + std::strerror(errno) + "; using the default settings";
-        return s;
-    }
-    std::ostringstream text;
-    text << in.rdbuf();
+    const std::optional<nlohmann::json> found = garden::readSettingsObject(path, warning);
+    if (!found) return s;
+    const nlohmann::json& j = *found;
     try {
-        const nlohmann::json j = garden::parseStrictJson(text.str());
-        if (!j.is_object()) throw garden::JsonError("$", "must be an object");
         XrUserSettings read;
         for (const auto& [key, target] : {std::pair<const char*, bool*>{"left_handed", &read.leftHanded},
                                           std::pair<const char*, bool*>{"seated", &read.seated},
@@ -77,17 +47,12 @@ XrUserSettings loadXrSettings(const std::string& path, std::string& warning) {
 }
 
 std::string saveXrSettings(const std::string& path, const XrUserSettings& s) {
-    if (path.empty()) return "no place for the settings (neither HG_XR_SETTINGS, XDG_CONFIG_HOME nor HOME is set)";
-    std::error_code ec;
-    const std::filesystem::path folder = std::filesystem::path(path).parent_path();
-    if (!folder.empty()) std::filesystem::create_directories(folder, ec);
-    if (ec) return "cannot write " + path + ": cannot make its folder: " + ec.message();
     const nlohmann::json j = {{"left_handed", s.leftHanded},
                               {"seated", s.seated},
                               {"seated_height_offset", s.seatedHeightOffset},
                               {"smooth_turn", s.smoothTurn},
                               {"snap_degrees", s.snapDegrees}};
-    return io::writeFileAtomically(path, j.dump(2) + "\n", io::WriteSite::Settings);
+    return garden::writeSettingsFile(path, j, "HG_XR_SETTINGS");
 }
 
 }  // namespace hg::xr

@@ -55,7 +55,12 @@ struct ReplaceAction {
     Perturbation perturbation;
 };
 
-struct UndoAction {};
+// Undo: the last action over every sculpture, or with `sculpture` named the
+// last action on that sculpture only (the history panel's "undo on the
+// selection"), leaving the others' as they are.
+struct UndoAction {
+    std::string sculpture;  // "": the last action, whichever sculpture it was on
+};
 struct RedoAction {};
 struct DiscardAction { std::string sculpture; };
 // The selector as barycentric coordinates and the balancing factors it was

@@ -93,6 +93,8 @@ std::string actionJson(const Action& record) {
         j["sculpture"] = rp->sculpture;
         j["edit"] = rp->edit;
         writePerturbation(rp->perturbation, j);
+    } else if (const auto* u = std::get_if<UndoAction>(&record)) {
+        if (!u->sculpture.empty()) j["sculpture"] = u->sculpture;
     } else if (const auto* d = std::get_if<DiscardAction>(&record)) {
         j["sculpture"] = d->sculpture;
     } else if (const auto* m = std::get_if<MorphWeightsAction>(&record)) {
@@ -180,10 +182,16 @@ Action readAction(const nlohmann::json& v, const std::string& path) {
         r.finish();
         return p;
     }
-    if (action == "undo" || action == "redo") {
+    if (action == "undo") {
+        ObjectReader r(v, path, {"action", "sculpture"});
+        UndoAction u;
+        if (r.has("sculpture")) u.sculpture = readString(r.required("sculpture"), r.pathOf("sculpture"));
+        r.finish();
+        return u;
+    }
+    if (action == "redo") {
         ObjectReader r(v, path, {"action"});
         r.finish();
-        if (action == "undo") return UndoAction{};
         return RedoAction{};
     }
     if (action == "discard") {

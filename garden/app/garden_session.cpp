@@ -91,6 +91,7 @@ GardenSession::GardenSession(GardenLoad load, SessionSettings settings)
         const glm::vec3 eye = navigator_.eye();
         loader_ = std::make_unique<SculptureLoader>(std::move(jobs), std::array<double, 3>{eye.x, eye.y, eye.z});
     }
+    recorded_ = 0;  // the garden's own first weights are no action of the user's
 }
 
 GardenSession::~GardenSession() = default;
@@ -245,7 +246,9 @@ void GardenSession::recordMorph() {
 }
 
 void GardenSession::record(const Action& r) {
-    if (journal_ && !restoring_) journal_->append(r);
+    if (restoring_) return;
+    ++recorded_;
+    if (journal_) journal_->append(r);
 }
 
 void GardenSession::restartMorph() {

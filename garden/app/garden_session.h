@@ -83,6 +83,14 @@ struct SessionSettings {
 
 // What one frame is given: the hands (world frame), the time since the
 // last frame, and the caller's commands.
+// One action in the undo history, for a panel.
+struct HistoryItem {
+    int sculpture = -1;
+    std::string name;    // the sculpture's
+    std::string action;  // actionKind: "stroke", "perturb", "move", ...
+    bool undone = false; // waiting in the redo list
+};
+
 struct FrameInput {
     FrameInput() = default;
     FrameInput(const Hands& h, double seconds) : hands(h), dt(seconds) {}
@@ -112,7 +120,7 @@ public:
     std::vector<Sculpture>& sculptures() { return sculptures_; }
     const std::vector<Sculpture>& sculptures() const { return sculptures_; }
     Navigator& navigator() { return navigator_; }
-    // Back where the garden file starts the visitor, walking (the desktop's Home key).
+    // Back where the garden file starts the visitor, walking.
     void resetView();
     const Navigator& navigator() const { return navigator_; }
     FrameScheduler& scheduler() { return scheduler_; }
@@ -216,6 +224,13 @@ public:
     // false when there is nothing to undo or redo.
     bool undo();
     bool redo();
+    // The last action on one sculpture undone, the others' left as they are
+    // (journalled as an UndoAction naming it); redo brings it back. False
+    // when that sculpture has nothing to undo.
+    bool undoSculpture(int sculpture);
+    // The undo history, oldest first, then what redo would bring back
+    // (garden/render/history_panel.cpp lists it).
+    std::vector<HistoryItem> history() const;
     // The perturbation of a sculpture under a world point (the latest whose
     // quadric holds it), by its index in the edit list; none when none does.
     std::optional<std::size_t> pickPerturbation(int sculpture, const std::array<double, 3>& worldPoint) const;
@@ -236,6 +251,10 @@ public:
     // otherwise. The last sketch's refusal ("" after one that was made).
     const std::vector<glm::vec3>& sketchPath() const { return sketch_.points; }
     const std::string& sketchMessage() const { return sketchMessage_; }
+    // Why the last press of a sculpting tool did nothing ("" after one that
+    // acted): it met no sculpture. A stroke edits the sculpture its press
+    // met, and only that one, which becomes the selection.
+    const std::string& toolMessage() const { return toolMessage_; }
     // The sculpture's mirror plane (model frame; none: off): strokes and
     // perturbations made while it is set act on both sides of it.
     void setMirror(int sculpture, std::optional<MirrorPlane> plane);
@@ -251,6 +270,9 @@ public:
     // whether it is saved (garden/action/action_sink.h). Not owned.
     void setJournal(JournalSink* journal) { journal_ = journal; }
     JournalSink* journal() const { return journal_; }
+    // Finished actions made in this run (not those a journal played): with
+    // no journal, what closing would lose.
+    std::size_t actionsRecorded() const { return recorded_; }
     // Plays journalled actions without journalling them again, the grids
     // recomputed once at the end (each voxel once). "" or why a record
     // cannot be played (its number, from 1, and the reason).
@@ -348,7 +370,8 @@ private:
     void applyToolIntents(const Hands& hands);
     void sculptWithHands(const Hands& hands);
     void record(const Action& r);
-    bool stepHistory(std::vector<UndoEntry>& from, std::vector<UndoEntry>& to, bool undoing);
+    // `only` >= 0: that sculpture's last entry, not the last of all.
+    bool stepHistory(std::vector<UndoEntry>& from, std::vector<UndoEntry>& to, bool undoing, int only = -1);
     // `followOrbit`: an orbit of the sculpture follows it (not during a live
     // move: the camera would carry the hand's ray, and the sculpture, along).
     void placeSculpture(int sculpture, const Placement& placement, bool followOrbit = true);
@@ -378,6 +401,7 @@ private:
     std::uint32_t lastButtons_ = 0;    // the tool hand's buttons last frame (undo, redo edges)
     bool toolArmed_ = true;            // the trigger was released since the last action
     JournalSink* journal_ = nullptr;
+    std::size_t recorded_ = 0;         // actionsRecorded()
     bool restoring_ = false;           // playing a journal: nothing is journalled again
     bool morphDragging_ = false;       // the tool hand holds the selector on the ground
     bool morphDragged_ = false;        // ... and moved it: journalled on release
@@ -405,6 +429,7 @@ private:
     };
     SketchDraw sketch_;
     std::string sketchMessage_;
+    std::string toolMessage_;  // toolMessage()
     int liveMove_ = -1;                // the sculpture moved live, or -1
     Placement liveMoveFrom_;           // its placement before the drag
     bool intentScaling_ = false;       // the live move is the tool intents' selection scaling

@@ -72,7 +72,12 @@ std::string GardenSession::apply(const Action& action) {
         return why.empty() ? applySketchModel(i, *a) : why;
     }
     if (const auto* a = std::get_if<AddAction>(&action)) return applyAddModel(*a);
-    if (std::holds_alternative<UndoAction>(action)) return undo() ? "" : "nothing to undo";
+    if (const auto* u = std::get_if<UndoAction>(&action)) {
+        if (u->sculpture.empty()) return undo() ? "" : "nothing to undo";
+        const int i = findSculpture(u->sculpture);
+        if (i < 0) return "no sculpture named '" + u->sculpture + "'";
+        return undoSculpture(i) ? "" : "nothing to undo on '" + u->sculpture + "'";
+    }
     if (std::holds_alternative<RedoAction>(action)) return redo() ? "" : "nothing to redo";
     const auto& m = std::get<MorphWeightsAction>(action);
     if (!blender_) return "the garden has no metamorphosis";

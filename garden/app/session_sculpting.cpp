@@ -226,13 +226,33 @@ std::string GardenSession::replacePerturbationModel(int sculpture, std::size_t e
 
 bool GardenSession::undo() { return stepHistory(undoOrder_, redoOrder_, true); }
 bool GardenSession::redo() { return stepHistory(redoOrder_, undoOrder_, false); }
+bool GardenSession::undoSculpture(int sculpture) {
+    if (sculpture < 0 || sculpture >= static_cast<int>(sculptures_.size())) return false;
+    return stepHistory(undoOrder_, redoOrder_, true, sculpture);
+}
 
-bool GardenSession::stepHistory(std::vector<UndoEntry>& from, std::vector<UndoEntry>& to, bool undoing) {
+std::vector<HistoryItem> GardenSession::history() const {
+    std::vector<HistoryItem> items;
+    for (const UndoEntry& e : undoOrder_)
+        items.push_back({e.sculpture, sculptures_[static_cast<std::size_t>(e.sculpture)].name, actionKind(e.action), false});
+    for (auto it = redoOrder_.rbegin(); it != redoOrder_.rend(); ++it)
+        items.push_back({it->sculpture, sculptures_[static_cast<std::size_t>(it->sculpture)].name, actionKind(it->action), true});
+    return items;
+}
+
+bool GardenSession::stepHistory(std::vector<UndoEntry>& from, std::vector<UndoEntry>& to, bool undoing, int only) {
     if (stroking()) endStroke();
     endLiveMove();
-    while (!from.empty()) {
-        UndoEntry entry = from.back();
-        from.pop_back();
+    // Each sculpture's own edits undo and redo in their own order, so the
+    // last entry of one sculpture can be taken out from among the others'.
+    auto next = [&]() {
+        for (std::size_t i = from.size(); i-- > 0;)
+            if (only < 0 || from[i].sculpture == only) return static_cast<std::ptrdiff_t>(i);
+        return static_cast<std::ptrdiff_t>(-1);
+    };
+    for (std::ptrdiff_t at = next(); at >= 0; at = next()) {
+        UndoEntry entry = from[static_cast<std::size_t>(at)];
+        from.erase(from.begin() + at);
         Sculpture& s = sculptures_[static_cast<std::size_t>(entry.sculpture)];
         if (const auto* move = std::get_if<MoveAction>(&entry.action)) {
             placeSculpture(entry.sculpture, undoing ? *entry.placementBefore : move->placement);
@@ -252,7 +272,7 @@ bool GardenSession::stepHistory(std::vector<UndoEntry>& from, std::vector<UndoEn
             showChanged(entry.sculpture, *box);
         }
         to.push_back(entry);
-        if (undoing) record(UndoAction{});
+        if (undoing) record(UndoAction{only < 0 ? std::string() : s.name});
         else record(RedoAction{});
         return true;
     }
@@ -355,10 +375,18 @@ void GardenSession::sculptWithHands(const Hands& hands) {
         return;
     }
     if (!toolArmed_) return;  // one action per trigger pull
-    const auto hit = toolHit(h.aim);
-    if (!hit) return;
+    // The press picks the sculpture, and only the press (docs/desktop.md
+    // "Tools"): a press that meets none does nothing until the trigger is
+    // let go, rather than landing on whatever the dragged ray meets later.
     toolArmed_ = false;
+    const auto hit = toolHit(h.aim);
+    if (!hit) {
+        toolMessage_ = std::string("the press met no sculpture: press on the sculpture to ") + toolKindName(tool_.kind);
+        return;
+    }
+    toolMessage_.clear();
     const auto [sculpture, point] = *hit;
+    if (selected_ != sculpture) select(sculpture);  // the sculpture edited is the one shown selected
     if (tool_.kind == ToolSettings::Kind::Impacts) {
         ImpactTool t;
         t.shape = tool_.impactShape;

@@ -53,7 +53,7 @@ ToolChoice toolChoiceOf(ToolSettings::Kind k) {
 
 void GardenSession::applyToolIntents(const Hands& hands) {
     const ToolIntents& in = hands.intents;
-    if (in.tool) tool_.kind = toolKindOf(*in.tool);
+    if (in.tool) selectTool(tool_, toolKindOf(*in.tool));
     if (in.reverse) tool_.reverse = !tool_.reverse;
 
     const bool haveSelection = selected_ >= 0 && !sculptures_[static_cast<std::size_t>(selected_)].missing();

@@ -15,14 +15,17 @@
 #include <optional>
 
 #include "garden/app/garden_session.h"
+#include "garden/app/tool_defaults.h"
 #include "garden/desktop/desktop_keys.h"
 #include "garden/desktop/add_panel.h"
+#include "garden/desktop/desktop_settings.h"
 #include "garden/desktop/export_panel.h"
 #include "garden/desktop/garden_view.h"
 #include "garden/desktop/garden_window.h"
+#include "garden/desktop/view_framing.h"
 #include "garden/hands/desktop_hands.h"
 #include "garden/render/gl_context.h"
-#include "garden/render/morph_triangle.h"
+#include "garden/render/key_table.h"
 #include "garden/render/overlay.h"
 #include "garden/render/panels.h"
 #include "garden/render/screenshot.h"
@@ -43,8 +46,7 @@ std::string timestampedName(const std::string& dir) {
 // The side panel: the garden, what is missing, the morph selector.
 // `headset`: the Headset button is shown (true when pressed), with the
 // last headset message under it.
-bool gardenPanel(GardenSession& session, glm::vec2& selector, bool headset, const std::string& headsetMessage,
-                 AddPanel& addPanel) {
+bool gardenPanel(GardenSession& session, bool headset, const std::string& headsetMessage, AddPanel& addPanel) {
     // Top right: the stats panel takes the top left.
     ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x - 10.0f, 10.0f), ImGuiCond_FirstUseEver, ImVec2(1.0f, 0.0f));
     ImGui::Begin("Garden", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
@@ -75,16 +77,7 @@ bool gardenPanel(GardenSession& session, glm::vec2& selector, bool headset, cons
     if (const std::size_t n = session.sculpturesLoading())
         ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "loading %zu sculpture%s, nearest first", n, n == 1 ? "" : "s");
     ImGui::TextDisabled("O orbits the selection, G puts the detail sphere where the mouse points");
-    if (session.hasMorph()) {
-        const MorphSpec& m = *session.garden().morph;
-        const char* labels[3] = {m.sources[0].c_str(), m.sources[1].c_str(), m.sources[2].c_str()};
-        if (morphTriangleWidget(labels, selector)) {
-            const glm::vec3 b = triangleWeights(selector);
-            session.setMorphBarycentric({b.x, b.y, b.z});
-        }
-        if (const auto& w = session.morphWeights())
-            ImGui::Text("weights %.2f %.2f %.2f", w->w[0], w->w[1], w->w[2]);
-    }
+    drawMorphSection(session);
     bool lod = session.settings().lod;
     if (ImGui::Checkbox("level of detail", &lod)) session.settings().lod = lod;
     addPanel.draw(session);
@@ -166,6 +159,9 @@ int runDesktopGarden(const DesktopOptions& options) {
             return opened.exitStatus;
         }
         for (const std::string& m : openedMessages(opened)) std::cerr << m << "\n";
+        // Sessions keep no tool settings yet: the tools start sized to the
+        // sculpture in view (a few percent of it).
+        sizeToolsToView(*opened.session);
         reportSaveChangesOnStderr(opened);
         int status = runDesktopOn(*opened.session, window, options);
         std::vector<std::string> last;
@@ -187,7 +183,21 @@ void showAsDesktop(GardenWindow& window, const DesktopOptions& options) {
 int runDesktopOn(GardenSession& session, GardenWindow& gardenWindow, const DesktopOptions& options) {
     GlWindow& window = gardenWindow.window();
     Overlay& overlay = *gardenWindow.overlay();
-    bool showHelp = true;  // the key list, open for a first look; F1 toggles it
+    bool showHelp = false;  // the key list (F1)
+    bool showHistory = false;  // the history panel (H)
+    // The first-run overlay, until the user dismisses it (then remembered).
+    const std::string settingsPath = options.settingsPath ? *options.settingsPath : desktopSettingsPath();
+    std::string settingsWarning;
+    DesktopUserSettings userSettings = loadDesktopSettings(settingsPath, settingsWarning);
+    if (!settingsWarning.empty()) std::cerr << "warning: " << settingsWarning << "\n";
+    bool firstRun = !userSettings.firstRunDone;
+    const auto firstRunDismissed = [&] {
+        firstRun = false;
+        userSettings.firstRunDone = true;
+        if (const std::string why = saveDesktopSettings(settingsPath, userSettings); !why.empty())
+            std::cerr << "warning: the first-run overlay will show again: " << why << "\n";
+    };
+    bool askQuit = false, quitConfirmed = false;  // Esc or the close button with work not saved
     Renderer& renderer = gardenWindow.renderer();
     renderer.setQuality(options.autoQuality ? qualityOf(rendererPreset(GlWindow::glVersionString())) : options.quality);
     GardenView& view = gardenWindow.view();
@@ -198,10 +208,6 @@ int runDesktopOn(GardenSession& session, GardenWindow& gardenWindow, const Deskt
     AddPanel addPanel;
     std::string headsetMessage;
 
-    glm::vec2 selector = trianglePoint(glm::vec3(1.0f / 3.0f));
-    if (const auto& w = session.morphWeights())
-        selector = trianglePoint(glm::vec3(static_cast<float>(w->barycentric[0]), static_cast<float>(w->barycentric[1]),
-                                           static_cast<float>(w->barycentric[2])));
     DesktopCarry carry;  // the walking speed, the wheel burst
     glm::ivec2 fb(1);
     const float fovY = static_cast<float>(session.settings().fovY);
@@ -220,23 +226,46 @@ int runDesktopOn(GardenSession& session, GardenWindow& gardenWindow, const Deskt
             std::cerr << (why.empty() ? "screenshot: " + path : "error: " + why) << "\n";
         }
         overlay.newFrame();
-        headsetButton = gardenPanel(session, selector, static_cast<bool>(options.headset), headsetMessage, addPanel);
+        headsetButton = gardenPanel(session, static_cast<bool>(options.headset), headsetMessage, addPanel);
         ImGui::Begin("Garden");  // the same window: its Export section
         exportPanel.draw(session);
         ImGui::End();
         drawToolPanel(session);
-        drawStatsPanel(session.scheduler().history());
+        drawStatsPanel(session.scheduler().history(), pressed.stats);
+        drawHistoryPanel(session, showHistory);
         drawHelpPanel(showHelp, {0.5f * static_cast<float>(fb.x), static_cast<float>(fb.y)});
+        if (drawFirstRunPanel(firstRun)) firstRunDismissed();
+        if (drawQuitQuestion(askQuit, unsavedWhat(session))) {
+            quitConfirmed = true;
+            window.setShouldClose(true);
+        }
+        askQuit = false;
         // Above everything, centred: work that is not on disk.
         const float bannerWidth = std::min(640.0f, static_cast<float>(fb.x) - 20.0f);
         drawSaveBanner(session, {0.5f * (static_cast<float>(fb.x) - bannerWidth), 10.0f}, bannerWidth);
         overlay.render();
         return ViewDraw{r.trianglesDrawn, r.drawCalls};
     });
-    glm::dvec2 lastMouse(0.0);
-    glfwGetCursorPos(window.handle(), &lastMouse.x, &lastMouse.y);
+    // The mouse's buttons and moves come as events (pointer_events.h); this
+    // is where they left it at the end of the last frame.
+    PointerState pointer;
+    const auto cursorNow = [&] {
+        glm::dvec2 c(0.0);
+        glfwGetCursorPos(window.handle(), &c.x, &c.y);
+        pointer = PointerState{};
+        pointer.position = glm::vec2(c);
+    };
+    cursorNow();
     auto last = std::chrono::steady_clock::now();
-    for (int frame = 0; !window.shouldClose() && (options.frames == 0 || frame < options.frames); ++frame) {
+    // The window's close button, like Esc, asks first when work is not saved.
+    const auto closing = [&] {
+        if (!window.shouldClose()) return false;
+        if (quitConfirmed || !unsavedWork(session)) return true;
+        window.setShouldClose(false);
+        askQuit = true;
+        return false;
+    };
+    for (int frame = 0; !closing() && (options.frames == 0 || frame < options.frames); ++frame) {
         pollEvents();
         const auto now = std::chrono::steady_clock::now();
         const double dt = std::min(0.1, std::chrono::duration<double>(now - last).count());
@@ -253,37 +282,57 @@ int runDesktopOn(GardenSession& session, GardenWindow& gardenWindow, const Deskt
             DesktopInput in;
             GLFWwindow* w = window.handle();
             const bool keys = !overlay.wantsKeyboard(), mouse = !overlay.wantsMouse();
-            in.forward = keys && glfwGetKey(w, GLFW_KEY_W) == GLFW_PRESS;
-            in.back = keys && glfwGetKey(w, GLFW_KEY_S) == GLFW_PRESS;
-            in.left = keys && glfwGetKey(w, GLFW_KEY_A) == GLFW_PRESS;
-            in.right = keys && glfwGetKey(w, GLFW_KEY_D) == GLFW_PRESS;
-            in.up = keys && glfwGetKey(w, GLFW_KEY_E) == GLFW_PRESS;
-            in.down = keys && glfwGetKey(w, GLFW_KEY_Q) == GLFW_PRESS;
-            in.lookButton = mouse && glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS;
-            in.toolButton = mouse && glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
-            glm::dvec2 cursor;
-            glfwGetCursorPos(w, &cursor.x, &cursor.y);
+            // Held keys, as the key table binds them.
+            const auto held = [&](KeyCommand c) {
+                if (!keys) return false;
+                for (const int k : keysOf(c))
+                    if (glfwGetKey(w, k) == GLFW_PRESS) return true;
+                return false;
+            };
+            in.forward = held(KeyCommand::Forward);
+            in.back = held(KeyCommand::Back);
+            in.left = held(KeyCommand::Left);
+            in.right = held(KeyCommand::Right);
+            in.up = held(KeyCommand::Up);
+            in.down = held(KeyCommand::Down);
+            const PointerFrame p = foldPointerEvents(events.pointer, pointer);
+            // A release lost to the window (focus taken mid-drag) leaves no button stuck.
+            pointer.toolDown = pointer.toolDown && glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
+            pointer.lookDown = pointer.lookDown && glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS;
             const glm::ivec2 ws = window.size();
             // Mouse in framebuffer pixels (HiDPI: window and framebuffer differ).
             const glm::vec2 toFb(static_cast<float>(fb.x) / static_cast<float>(std::max(ws.x, 1)),
                                  static_cast<float>(fb.y) / static_cast<float>(std::max(ws.y, 1)));
-            in.mouse = glm::vec2(cursor) * toFb;
-            in.mouseDelta = glm::vec2(cursor - lastMouse);
-            lastMouse = cursor;
+            applyPointer(in, p, toFb, mouse);
             // Keys ImGui wants (typing in a field) are not the garden's.
             pressed = keys ? events.keys : DesktopKeys{};
             in.wheel = mouse ? events.wheel : 0.0f;
-            in.turn = keys && (glfwGetKey(w, GLFW_KEY_LEFT_SHIFT) == GLFW_PRESS ||
-                               glfwGetKey(w, GLFW_KEY_RIGHT_SHIFT) == GLFW_PRESS);
+            in.turn = held(KeyCommand::Turn);
             in.viewport = glm::vec2(fb);
             const glm::mat4 projection = glm::perspective(
                 fovY, static_cast<float>(fb.x) / static_cast<float>(std::max(fb.y, 1)), 0.05f, 500.0f);
             hands = desktopHands(in, pressed, session, projection, dt, carry);
             // The tool where the mouse points, unless it points at a panel.
             aim = mouse ? std::optional<Pose>(hands.tool.aim) : std::nullopt;
-            if (quitRequested(pressed)) window.setShouldClose(true);
-            if (pressed.resetView) session.resetView();
+            if (pressed.escape) {
+                switch (escapeDoes(popupOpen(), showHelp || firstRun, unsavedWork(session))) {
+                    case EscapeDoes::ClosePopup: closePopups(); break;
+                    case EscapeDoes::CloseHelp:
+                        if (firstRun) firstRunDismissed();
+                        showHelp = false;
+                        break;
+                    case EscapeDoes::AskToQuit: askQuit = true; break;
+                    case EscapeDoes::Quit:
+                        quitConfirmed = true;
+                        window.setShouldClose(true);
+                        break;
+                }
+            }
+            if (pressed.frameGarden)
+                frameGarden(session, fovY, static_cast<float>(fb.x) / static_cast<float>(std::max(fb.y, 1)));
             if (pressed.help) showHelp = !showHelp;
+            if (pressed.history) showHistory = !showHistory;
+            if (pressed.undoSelected && session.selected() >= 0) session.undoSculpture(session.selected());
             if (pressed.detail) {
                 // Where the mouse ray meets the ground, a metre up; again: removed.
                 if (session.detail()) session.setDetail(std::nullopt);
@@ -306,7 +355,7 @@ int runDesktopOn(GardenSession& session, GardenWindow& gardenWindow, const Deskt
         const bool toHeadset = headsetButton || pressed.headset || (options.onFrame && options.onFrame(session, frame));
         if (toHeadset && options.headset) {
             enterHeadset(session, gardenWindow, options, headsetMessage);
-            glfwGetCursorPos(window.handle(), &lastMouse.x, &lastMouse.y);
+            cursorNow();
             last = std::chrono::steady_clock::now();
         }
     }

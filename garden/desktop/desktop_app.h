@@ -8,6 +8,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
 
 #include "garden/render/render_quality.h"
@@ -43,6 +44,9 @@ struct DesktopOptions {
     // Called at the end of every desktop frame with its index; true asks
     // for the headset as F9 does (tests, scripts).
     std::function<bool(GardenSession&, int)> onFrame;
+    // The desktop's user settings file (desktop_settings.h); none: the
+    // user's (desktopSettingsPath()).
+    std::optional<std::string> settingsPath;
 };
 
 // Runs until the window closes. 0 on a normal close, 1 when the window or

@@ -1,63 +1,82 @@
 #include "garden/desktop/desktop_keys.h"
 
-#define GLFW_INCLUDE_NONE
-#include <GLFW/glfw3.h>
-
 #include <imgui.h>
+#include <imgui_internal.h>
 
 #include <cmath>
 
 #include "garden/app/garden_session.h"
 #include "garden/app/tool_intents.h"
+#include "garden/action/action_sink.h"
+#include "garden/render/key_table.h"
 
 namespace hg::garden {
 
-namespace {
-
-std::optional<ToolSettings::Kind> toolOfDigit(int digit) {
-    using K = ToolSettings::Kind;
-    constexpr K kinds[] = {K::None, K::Carve, K::Add, K::Melt, K::Perturb, K::Impacts, K::Move, K::Sketch};
-    if (digit < 0 || digit > 7) return std::nullopt;
-    return kinds[digit];
-}
-
-}  // namespace
-
 bool addKeyPress(DesktopKeys& keys, int key, int mods) {
-    const bool ctrl = (mods & GLFW_MOD_CONTROL) != 0, shift = (mods & GLFW_MOD_SHIFT) != 0;
-    if (ctrl) {
-        if (key == GLFW_KEY_Z) (shift ? keys.redo : keys.undo) = true;
-        else if (key == GLFW_KEY_Y) keys.redo = true;
-        else return false;
-        return true;
+    const std::optional<KeyCommand> c = keyCommand(key, mods);
+    if (!c) return false;
+    using K = ToolSettings::Kind;
+    switch (*c) {
+        case KeyCommand::ToolNone: keys.tool = K::None; return true;
+        case KeyCommand::ToolCarve: keys.tool = K::Carve; return true;
+        case KeyCommand::ToolAdd: keys.tool = K::Add; return true;
+        case KeyCommand::ToolMelt: keys.tool = K::Melt; return true;
+        case KeyCommand::ToolPerturb: keys.tool = K::Perturb; return true;
+        case KeyCommand::ToolImpacts: keys.tool = K::Impacts; return true;
+        case KeyCommand::ToolMove: keys.tool = K::Move; return true;
+        case KeyCommand::ToolSketch: keys.tool = K::Sketch; return true;
+        case KeyCommand::Smaller: --keys.sizeSteps; return true;
+        case KeyCommand::Larger: ++keys.sizeSteps; return true;
+        case KeyCommand::Reverse: keys.reverse = !keys.reverse; return true;
+        case KeyCommand::Mirror: keys.mirror = !keys.mirror; return true;
+        case KeyCommand::Undo: keys.undo = true; return true;
+        case KeyCommand::Redo: keys.redo = true; return true;
+        case KeyCommand::UndoSelected: keys.undoSelected = true; return true;
+        case KeyCommand::History: keys.history = true; return true;
+        case KeyCommand::Fly: keys.fly = true; return true;
+        case KeyCommand::Orbit: keys.orbit = true; return true;
+        case KeyCommand::Detail: keys.detail = true; return true;
+        case KeyCommand::Headset: keys.headset = true; return true;
+        case KeyCommand::Screenshot: keys.screenshot = true; return true;
+        case KeyCommand::Escape: keys.escape = true; return true;
+        case KeyCommand::FrameGarden: keys.frameGarden = true; return true;
+        case KeyCommand::Help: keys.help = true; return true;
+        case KeyCommand::Stats: keys.stats = true; return true;
+        // Held keys are polled (heldKey), not pressed.
+        case KeyCommand::Forward: case KeyCommand::Back: case KeyCommand::Left: case KeyCommand::Right:
+        case KeyCommand::Down: case KeyCommand::Up: case KeyCommand::Turn: return false;
     }
-    if (key >= GLFW_KEY_0 && key <= GLFW_KEY_9) {
-        keys.tool = toolOfDigit(key - GLFW_KEY_0);
-        return keys.tool.has_value();
-    }
-    if (key >= GLFW_KEY_KP_0 && key <= GLFW_KEY_KP_9) {
-        keys.tool = toolOfDigit(key - GLFW_KEY_KP_0);
-        return keys.tool.has_value();
-    }
-    switch (key) {
-        case GLFW_KEY_LEFT_BRACKET: --keys.sizeSteps; return true;
-        case GLFW_KEY_RIGHT_BRACKET: ++keys.sizeSteps; return true;
-        case GLFW_KEY_R: keys.reverse = !keys.reverse; return true;
-        case GLFW_KEY_M: keys.mirror = !keys.mirror; return true;
-        case GLFW_KEY_SPACE: keys.fly = true; return true;
-        case GLFW_KEY_O: keys.orbit = true; return true;
-        case GLFW_KEY_G: keys.detail = true; return true;
-        case GLFW_KEY_F9: keys.headset = true; return true;
-        case GLFW_KEY_F12: keys.screenshot = true; return true;
-        case GLFW_KEY_ESCAPE: keys.quit = true; return true;
-        case GLFW_KEY_HOME: keys.resetView = true; return true;
-        case GLFW_KEY_F1: keys.help = true; return true;
-        default: return false;
-    }
+    return false;
 }
 
-bool quitRequested(const DesktopKeys& keys) {
-    return keys.quit && !(ImGui::GetCurrentContext() && ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId));
+EscapeDoes escapeDoes(bool popupOpen, bool helpOpen, bool unsaved) {
+    if (popupOpen) return EscapeDoes::ClosePopup;
+    if (helpOpen) return EscapeDoes::CloseHelp;
+    return unsaved ? EscapeDoes::AskToQuit : EscapeDoes::Quit;
+}
+
+bool popupOpen() { return ImGui::GetCurrentContext() && ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId); }
+
+void closePopups() {
+    // ImGui closes its pop-ups on Esc only with keyboard navigation, which
+    // would take the garden's keys.
+    if (popupOpen()) ImGui::ClosePopupToLevel(0, true);
+}
+
+bool unsavedWork(const GardenSession& session) {
+    if (const JournalSink* j = session.journal()) return !j->saveStatus().saved();
+    return session.actionsRecorded() > 0;
+}
+
+std::string unsavedWhat(const GardenSession& session) {
+    if (const JournalSink* j = session.journal()) {
+        const SaveStatus st = j->saveStatus();
+        return st.headline() + (st.reason.empty() ? "" : "\n" + st.reason);
+    }
+    const std::size_t n = session.actionsRecorded();
+    return std::to_string(n) + (n == 1 ? " action" : " actions") +
+           " made in this run will be lost: this garden is not open in a session folder (hypergarden --session DIR "
+           "keeps every action).";
 }
 
 ToolIntents desktopIntents(const DesktopKeys& keys, float& wheel, const GardenSession& session, double dt,

@@ -1,5 +1,5 @@
-// The desktop's keys (the full list is in garden/hands/desktop_hands.h): a
-// GLFW key press becomes a command, gathered between frames in DesktopKeys.
+// The desktop's keys (the one table of them is garden/render/key_table.*):
+// a GLFW key press becomes a command, gathered between frames in DesktopKeys.
 // The frame hands undo, redo and the navigation toggles to the hands
 // (DesktopInput, mapDesktop); the tool keys and the wheel become the
 // hands' tool intents (garden/hands/tool_intents.h), which the session
@@ -7,6 +7,7 @@
 #pragma once
 
 #include <optional>
+#include <string>
 
 #include <glm/mat4x4.hpp>
 
@@ -19,25 +20,42 @@ class GardenSession;
 
 // Key presses since the last frame.
 struct DesktopKeys {
-    std::optional<ToolSettings::Kind> tool;  // 0 none, 1 carve, 2 add, 3 melt, 4 perturb, 5 impacts, 6 move
+    std::optional<ToolSettings::Kind> tool;  // 0 none, 1 carve, ... 7 sketch
     int sizeSteps = 0;                       // ] +1, [ -1, summed
     bool reverse = false;                    // R
     bool mirror = false;                     // M
     bool undo = false;                       // Ctrl+Z
     bool redo = false;                       // Ctrl+Shift+Z, Ctrl+Y
-    bool fly = false, orbit = false, detail = false, screenshot = false, quit = false;  // space, O, G, F12, Esc
-    bool resetView = false;                  // Home: back to the garden's start
+    bool undoSelected = false;               // Ctrl+Alt+Z: the selection's last action
+    bool history = false;                    // H: the history panel
+    bool fly = false, orbit = false, detail = false, screenshot = false;  // space, O, G, F12
+    bool escape = false;                     // Esc (escapeDoes)
+    bool frameGarden = false;                // Home: every sculpture in view
     bool help = false;                       // F1: the key list
+    bool stats = false;                      // F3: the frame statistics open / collapsed
     bool headset = false;                    // F9: into the headset, and back
 };
 
-// Adds one press of a GLFW key with its modifier bits; false when the key
-// means nothing here.
+// Adds one press of a GLFW key with its modifier bits (looked up in the key
+// table); false when the key means nothing here or is a held key (walking,
+// Shift: polled each frame).
 bool addKeyPress(DesktopKeys& keys, int glfwKey, int glfwMods);
 
-// Esc quits, unless it was pressed to close a drop-down or popup of the
-// panels (open in the last frame): then it is the panel's.
-bool quitRequested(const DesktopKeys& keys);
+// What Esc does, the first that applies: an open drop-down or pop-up of
+// the panels closes (ImGui's, open in the last frame), the help or the
+// first-run overlay closes, a "quit without saving?" question opens when
+// something is not saved, else the window closes.
+enum class EscapeDoes { ClosePopup, CloseHelp, AskToQuit, Quit };
+EscapeDoes escapeDoes(bool popupOpen, bool helpOpen, bool unsaved);
+// A drop-down or pop-up of the panels is open (false without ImGui);
+// closes them all.
+bool popupOpen();
+void closePopups();
+// Work that closing would lose: with a session folder, actions its journal
+// could not write; without one, any action at all.
+bool unsavedWork(const GardenSession& session);
+// What would be lost, for the question.
+std::string unsavedWhat(const GardenSession& session);
 
 // The size factor of one [ or ] press, and of one wheel notch scaling the
 // selection.

@@ -15,12 +15,32 @@ void onKey(GLFWwindow* w, int key, int, int action, int mods) {
     if (action == GLFW_PRESS) addKeyPress(eventsOf(w)->keys, key, mods);
 }
 
+glm::vec2 cursorOf(GLFWwindow* w) {
+    double x = 0.0, y = 0.0;
+    glfwGetCursorPos(w, &x, &y);
+    return {static_cast<float>(x), static_cast<float>(y)};
+}
+
+void onCursor(GLFWwindow* w, double x, double y) {
+    eventsOf(w)->pointer.push_back({PointerEvent::Kind::Move, PointerButton::Tool,
+                                    {static_cast<float>(x), static_cast<float>(y)}});
+}
+
+void onMouseButton(GLFWwindow* w, int button, int action, int) {
+    if (button != GLFW_MOUSE_BUTTON_LEFT && button != GLFW_MOUSE_BUTTON_RIGHT) return;
+    const PointerButton b = button == GLFW_MOUSE_BUTTON_LEFT ? PointerButton::Tool : PointerButton::Look;
+    const auto kind = action == GLFW_PRESS ? PointerEvent::Kind::Press : PointerEvent::Kind::Release;
+    eventsOf(w)->pointer.push_back({kind, b, cursorOf(w)});
+}
+
 }  // namespace
 
 GardenWindow::GardenWindow(const WindowOptions& options, bool overlay) : window_(options) {
     glfwSetWindowUserPointer(window_.handle(), &events_);
     glfwSetScrollCallback(window_.handle(), onScroll);
     glfwSetKeyCallback(window_.handle(), onKey);
+    glfwSetCursorPosCallback(window_.handle(), onCursor);
+    glfwSetMouseButtonCallback(window_.handle(), onMouseButton);
     if (overlay) overlay_ = std::make_unique<Overlay>(window_);  // after our callbacks: ImGui chains to them
     renderer_ = std::make_unique<Renderer>();
     view_ = std::make_unique<GardenView>(*renderer_);

@@ -7,20 +7,24 @@
 #pragma once
 
 #include <memory>
+#include <vector>
 
 #include "garden/desktop/desktop_keys.h"
 #include "garden/desktop/garden_view.h"
+#include "garden/hands/pointer_events.h"
 #include "garden/render/gl_context.h"
 #include "garden/render/overlay.h"
 #include "garden/render/renderer.h"
 
 namespace hg::garden {
 
-// Key presses and the wheel arrive as events between frames; the frame
-// that reads them clears them.
+// Key presses, the wheel and the mouse's buttons and moves arrive as
+// events between frames (garden/hands/pointer_events.h); the frame that
+// reads them clears them.
 struct WindowEvents {
     float wheel = 0.0f;
     DesktopKeys keys;
+    std::vector<PointerEvent> pointer;  // in the order they came
 };
 
 class GardenWindow {

@@ -23,6 +23,13 @@ Pose rayThroughPixel(glm::vec2 pixel, glm::vec2 viewport, const glm::mat4& view,
     return p;
 }
 
+void applyPointer(DesktopInput& in, const PointerFrame& p, glm::vec2 windowToFramebuffer, bool free) {
+    in.toolButton = free && p.toolButton;
+    in.lookButton = free && p.lookButton;
+    in.mouse = p.toolPosition * windowToFramebuffer;
+    in.mouseDelta = p.lookDelta;
+}
+
 Hands mapDesktop(const DesktopInput& in, const glm::mat4& view, const glm::mat4& projection, const DesktopMapping& m,
                  float previousSpeedScale) {
     Hands h;

@@ -1,41 +1,31 @@
-// The key list a new user needs on screen (README "Keys and mouse", the
-// same table): open at the first look, toggled by F1, and a one-line hint
-// at the bottom of the window while it is closed.
+// The key list a new user needs on screen: the key table the window binds
+// (garden/render/key_table.h, the README's table is checked against it),
+// toggled by F1, and a one-line hint at the bottom of the window while it
+// is closed.
 #include <imgui.h>
 
+#include <algorithm>
+#include <functional>
+
+#include "garden/render/key_table.h"
 #include "garden/render/panels.h"
 
 namespace hg::garden {
 
-namespace {
-
-struct KeyRow {
-    const char* keys;
-    const char* does;
-};
-
-constexpr KeyRow kRows[] = {
-    {"W A S D, Q / E", "walk (or fly) forward, left, back, right; down / up"},
-    {"right button drag", "look"},
-    {"wheel", "walking speed (move tool: the selection's scale)"},
-    {"space", "fly / walk"},
-    {"Home", "back to where the garden starts"},
-    {"O", "orbit the selected sculpture"},
-    {"G", "full detail around where the mouse points, or off"},
-    {"left button", "use the tool where the mouse points (no tool: pick the blend on the ground triangle)"},
-    {"0 1 2 3 4 5 6 7", "tool: none, carve, add, melt, perturb, impacts, move, sketch"},
-    {"[ / ]", "the tool's size smaller / larger"},
-    {"R", "reverse (carve <-> add, pull <-> push)"},
-    {"M", "the selected sculpture's mirror plane on / off"},
-    {"Shift + drag", "move tool: turn the sculpture"},
-    {"Ctrl+Z, Ctrl+Shift+Z", "undo, redo"},
-    {"F9", "into the OpenXR headset and back"},
-    {"F12", "screenshot"},
-    {"F1", "this list"},
-    {"Esc", "quit (or close an open drop-down)"},
-};
-
-}  // namespace
+void drawKeyRows(const char* id, float keyWidth, const std::function<bool(const KeyRow&)>& pick) {
+    if (!ImGui::BeginTable(id, 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) return;
+    ImGui::TableSetupColumn("key", ImGuiTableColumnFlags_WidthFixed, keyWidth);
+    ImGui::TableSetupColumn("does", ImGuiTableColumnFlags_WidthStretch);
+    for (const KeyRow& r : keyTable()) {
+        if (pick && !pick(r)) continue;
+        ImGui::TableNextRow();
+        ImGui::TableSetColumnIndex(0);
+        ImGui::TextWrapped("%s", r.keys.c_str());
+        ImGui::TableSetColumnIndex(1);
+        ImGui::TextWrapped("%s", r.does.c_str());
+    }
+    ImGui::EndTable();
+}
 
 void drawHelpPanel(bool& open, glm::vec2 bottomCentre) {
     if (!open) {
@@ -48,20 +38,12 @@ void drawHelpPanel(bool& open, glm::vec2 bottomCentre) {
         ImGui::End();
         return;
     }
-    ImGui::SetNextWindowPos(ImVec2(0.5f * ImGui::GetIO().DisplaySize.x, 0.5f * ImGui::GetIO().DisplaySize.y),
-                            ImGuiCond_FirstUseEver, ImVec2(0.5f, 0.5f));
-    if (ImGui::Begin("Keys and mouse (F1)", &open, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings)) {
-        if (ImGui::BeginTable("##keys", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit)) {
-            for (const KeyRow& r : kRows) {
-                ImGui::TableNextRow();
-                ImGui::TableSetColumnIndex(0);
-                ImGui::TextUnformatted(r.keys);
-                ImGui::TableSetColumnIndex(1);
-                ImGui::TextUnformatted(r.does);
-            }
-            ImGui::EndTable();
-        }
-        ImGui::TextDisabled("Panels take the keys and clicks over them. The README has the rest.");
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    ImGui::SetNextWindowPos(ImVec2(0.5f * display.x, 0.5f * display.y), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+    ImGui::SetNextWindowSize(ImVec2(std::min(760.0f, display.x - 20.0f), 0.0f), ImGuiCond_Appearing);
+    if (ImGui::Begin("Keys and mouse (F1)", &open, ImGuiWindowFlags_NoSavedSettings)) {
+        drawKeyRows("##keys", 200.0f, nullptr);
+        ImGui::TextDisabled("Panels take the keys and clicks over them. Esc or F1 closes this list.");
     }
     ImGui::End();
 }

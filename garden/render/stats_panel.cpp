@@ -49,12 +49,16 @@ void frameGraph(const FrameHistory& history, double budgetMs) {
 
 }  // namespace
 
-void drawStatsPanel(const FrameHistory& history) {
+void drawStatsPanel(const FrameHistory& history, bool toggle) {
     // Always fitted to its contents: they change from "no frames yet" to the
     // full panel, and a size fitted once would clip them.
     // Folded at first: numbers for whoever looks for them, not a new user's view.
-    ImGui::SetNextWindowCollapsed(true, ImGuiCond_FirstUseEver);
-    if (!ImGui::Begin("Frame stats", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    static bool folded = true;  // as last drawn (its title's arrow folds it too)
+    if (toggle) ImGui::SetNextWindowCollapsed(!folded, ImGuiCond_Always);
+    else ImGui::SetNextWindowCollapsed(true, ImGuiCond_FirstUseEver);
+    const bool shown = ImGui::Begin(kStatsPanelTitle, nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+    folded = ImGui::IsWindowCollapsed();
+    if (!shown) {
         ImGui::End();
         return;
     }

@@ -200,6 +200,23 @@ std::vector<GizmoLines> mirrorGizmo(const Sculpture& s) {
     return out;
 }
 
+std::vector<GizmoLines> selectionGizmo(const Sculpture& s) {
+    std::vector<GizmoLines> out;
+    if (!s.volume) return out;
+    const frep::Box3& b = s.volume->frame.modelBox;
+    const auto corner = [&](int c) {
+        const glm::vec4 m(static_cast<float>(c & 1 ? b.hi[0] : b.lo[0]), static_cast<float>(c & 2 ? b.hi[1] : b.lo[1]),
+                          static_cast<float>(c & 4 ? b.hi[2] : b.lo[2]), 1.0f);
+        return glm::vec3(s.modelToWorld * m);
+    };
+    std::vector<glm::vec3> edges;
+    for (int c = 0; c < 8; ++c)
+        for (const int axis : {1, 2, 4})
+            if (!(c & axis)) edges.insert(edges.end(), {corner(c), corner(c | axis)});
+    addSeeThrough(out, std::move(edges), glm::vec4(0.95f, 0.95f, 0.95f, 1.0f), LineMode::Segments);
+    return out;
+}
+
 void drawToolGizmos(Renderer& renderer, const GardenSession& session, const std::optional<Pose>& aim) {
     std::optional<glm::vec3> hit;
     if (aim)
@@ -217,6 +234,8 @@ void drawToolGizmos(Renderer& renderer, const GardenSession& session, const std:
         for (GizmoLines& l : mirrorGizmo(s)) lines.push_back(std::move(l));
         if (tool.kind == ToolSettings::Kind::Move)
             for (GizmoLines& l : moveGizmo(s)) lines.push_back(std::move(l));
+        else
+            for (GizmoLines& l : selectionGizmo(s)) lines.push_back(std::move(l));
     }
     if (aim && hit && tool.kind != ToolSettings::Kind::None && tool.kind != ToolSettings::Kind::Move)
         for (GizmoLines& l : toolGizmo(tool, *hit, aim->position, aim->forward(), session.navigator().eye()))

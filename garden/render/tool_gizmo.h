@@ -45,6 +45,10 @@ std::vector<GizmoLines> moveGizmo(const Sculpture& s);
 // without a mirror.
 std::vector<GizmoLines> mirrorGizmo(const Sculpture& s);
 
+// The selected sculpture (the one the last stroke edited) outlined: the
+// edges of its box in the world, and faintly through whatever hides them.
+std::vector<GizmoLines> selectionGizmo(const Sculpture& s);
+
 // Draws the gizmos of this frame after the garden (GardenView::render):
 // the selected sculpture's mirror plane, the move gizmo on the selection
 // while the move tool is in hand, and the tool where `aim` (the tool hand's

@@ -187,7 +187,7 @@ void drawToolPanel(GardenSession& session) {
         ImGui::TableNextRow();
         ImGui::TableSetColumnIndex(0);
         for (std::size_t i = 0; i < std::size(kTools); ++i) {
-            if (ImGui::RadioButton(kToolLabels[i], t.kind == kTools[i])) t.kind = kTools[i];
+            if (ImGui::RadioButton(kToolLabels[i], t.kind == kTools[i])) selectTool(t, kTools[i]);
             if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", kToolTips[i]);
         }
 
@@ -202,6 +202,8 @@ void drawToolPanel(GardenSession& session) {
             ImGui::TextDisabled("hold the button on a sculpture\nand draw round; let go: %s", t.reverse ? "cut" : "joined");
             if (!session.sketchMessage().empty())
                 ImGui::TextColored(ImVec4(1.0f, 0.6f, 0.3f, 1.0f), "%s", session.sketchMessage().c_str());
+        } else if (!session.toolMessage().empty()) {
+            ImGui::TextColored(ImVec4(1.0f, 0.6f, 0.3f, 1.0f), "%s", session.toolMessage().c_str());
         }
 
         ImGui::TableSetColumnIndex(2);

@@ -21,6 +21,22 @@ std::size_t radiiInUse(const ToolSettings& tool) { return tool.shape == QuadricS
 
 }  // namespace
 
+bool strokeTool(ToolSettings::Kind kind) {
+    using K = ToolSettings::Kind;
+    return kind == K::Carve || kind == K::Add || kind == K::Melt;
+}
+
+void selectTool(ToolSettings& tool, ToolSettings::Kind kind) {
+    if (kind == tool.kind) return;
+    ToolSettings::Kept& down = tool.kept[static_cast<std::size_t>(tool.kind)];
+    down.reverse = tool.reverse;
+    if (strokeTool(tool.kind)) down.radius = tool.radius;
+    tool.kind = kind;
+    const ToolSettings::Kept& up = tool.kept[static_cast<std::size_t>(kind)];
+    tool.reverse = up.reverse;
+    if (strokeTool(kind) && up.radius > 0.0) tool.radius = up.radius;
+}
+
 void scaleToolSize(ToolSettings& tool, double factor) {
     using K = ToolSettings::Kind;
     switch (tool.kind) {

@@ -33,6 +33,16 @@ struct ToolSettings {
     int impactCount = 20;
     std::uint64_t seed = 1;      // grows by one with every pull
 
+    // What each tool keeps while another is in hand (by Kind): its reverse
+    // and, for carve, add and melt, its radius (a radius of 0: never held
+    // yet, it takes the radius in hand). selectTool swaps them in and out,
+    // so R on perturb does not turn carve into add.
+    struct Kept {
+        bool reverse = false;
+        double radius = 0.0;
+    };
+    std::array<Kept, 8> kept{};
+
     // What a perturbation placed now would have: radii times the scale,
     // strength with the reverse applied.
     std::array<double, 3> perturbRadii() const {
@@ -74,6 +84,14 @@ void scaleToolStrength(ToolSettings& tool, double factor);
 // sliders call after the user sets absolute values. Raw perturbation radii
 // are kept so that times the scale they lie in the size bounds.
 void clampToolSettings(ToolSettings& tool);
+
+// Takes `kind` in hand: the tool put down keeps its reverse and radius,
+// the tool taken up gets back its own (ToolSettings::kept). Every tool
+// change of a device or panel goes through here.
+void selectTool(ToolSettings& tool, ToolSettings::Kind kind);
+
+// Whether the tool's size is ToolSettings::radius (carve, add, melt).
+bool strokeTool(ToolSettings::Kind kind);
 
 // "none", "carve", "add", "melt", "perturb", "impacts", "move", "sketch".
 const char* toolKindName(ToolSettings::Kind kind);

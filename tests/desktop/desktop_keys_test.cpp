@@ -59,7 +59,11 @@ TEST(DesktopKeys, KeysMapToTheDocumentedCommands) {
     EXPECT_TRUE(press(GLFW_KEY_O).orbit);
     EXPECT_TRUE(press(GLFW_KEY_G).detail);
     EXPECT_TRUE(press(GLFW_KEY_F12).screenshot);
-    EXPECT_TRUE(press(GLFW_KEY_ESCAPE).quit);
+    EXPECT_TRUE(press(GLFW_KEY_ESCAPE).escape);
+    EXPECT_TRUE(press(GLFW_KEY_F3).stats);
+    EXPECT_TRUE(press(GLFW_KEY_F9).headset);
+    EXPECT_TRUE(press(GLFW_KEY_1, GLFW_MOD_SHIFT).tool) << "Shift (held to turn) leaves the keys as they are";
+    EXPECT_FALSE(addKeyPress(none, GLFW_KEY_W, 0)) << "walking keys are held, polled each frame";
     // Presses add up between frames: two ] and a [ are one step up.
     DesktopKeys k;
     addKeyPress(k, GLFW_KEY_RIGHT_BRACKET, 0);
@@ -68,15 +72,8 @@ TEST(DesktopKeys, KeysMapToTheDocumentedCommands) {
     EXPECT_EQ(k.sizeSteps, 1);
 }
 
-class DesktopKeysSession : public test::SmallGardenSession {
+class DesktopKeysSession : public test::FlyingBeforeBallC {
 protected:
-    void SetUp() override {
-        test::SmallGardenSession::SetUp();
-        // Flying 3 m in front of ball c at its centre's height, looking along -z.
-        session->navigator().setMode(NavigationMode::Fly);
-        session->navigator().setPose({2.0f, 0.5f, 4.1547f}, 0.0f, 0.0f);
-        projection = glm::perspective(static_cast<float>(session->settings().fovY), kViewport.x / kViewport.y, 0.05f, 500.0f);
-    }
     // One frame of the window: these keys pressed, the mouse at `mouse`,
     // the left button as given.
     void frame(const DesktopKeys& keys, glm::vec2 mouse, bool leftButton, float wheel = 0.0f) {
@@ -96,27 +93,31 @@ protected:
     }
     Sculpture& ball() { return session->sculptures()[static_cast<std::size_t>(c)]; }
 
-    static constexpr glm::vec2 kViewport{1280.0f, 720.0f};
-    static constexpr glm::vec2 kCentre{640.0f, 360.0f};
-    glm::mat4 projection{1.0f};
     static constexpr double kDt = 1.0 / 90.0;
     DesktopCarry carry;
     float lastSpeed = 1.0f;
 };
 
-// Esc quits, except when it was pressed to close a panel's drop-down;
-// Home and F1 are the view's reset and the key list.
-TEST(DesktopKeys, EscClosesAnOpenDropDownInsteadOfQuitting) {
-    EXPECT_TRUE(press(GLFW_KEY_HOME).resetView);
+// Esc closes what is open first (a drop-down, the help), then quits,
+// asking first only when work is not saved; Home frames the garden, F1
+// the key list.
+TEST(DesktopKeys, EscClosesWhatIsOpenFirstAndAsksOnlyWhenUnsaved) {
+    EXPECT_TRUE(press(GLFW_KEY_HOME).frameGarden);
     EXPECT_TRUE(press(GLFW_KEY_F1).help);
-    const DesktopKeys esc = press(GLFW_KEY_ESCAPE);
-    EXPECT_TRUE(quitRequested(esc));  // no ImGui context: nothing to close
+    EXPECT_EQ(escapeDoes(true, true, true), EscapeDoes::ClosePopup);
+    EXPECT_EQ(escapeDoes(false, true, true), EscapeDoes::CloseHelp);
+    EXPECT_EQ(escapeDoes(false, false, true), EscapeDoes::AskToQuit);
+    EXPECT_EQ(escapeDoes(false, false, false), EscapeDoes::Quit);
+    EXPECT_FALSE(popupOpen());  // no ImGui context: nothing to close
     createHeadlessImGui(ImVec2(800, 600));
-    const auto frame = [](bool open) {
+    // A panel's drop-down, open in the last frame, is what Esc closes.
+    bool shown = false;
+    const auto frame = [&](bool open) {
         ImGui::NewFrame();
         ImGui::Begin("panel");
         if (open) ImGui::OpenPopup("choices");
-        if (ImGui::BeginPopup("choices")) {
+        shown = ImGui::BeginPopup("choices");
+        if (shown) {
             ImGui::TextUnformatted("a");
             ImGui::EndPopup();
         }
@@ -124,22 +125,45 @@ TEST(DesktopKeys, EscClosesAnOpenDropDownInsteadOfQuitting) {
         ImGui::Render();
     };
     frame(false);
-    EXPECT_TRUE(quitRequested(esc));
+    EXPECT_FALSE(popupOpen());
     frame(true);
-    EXPECT_FALSE(quitRequested(esc));  // the drop-down is the panel's
-    EXPECT_FALSE(quitRequested(DesktopKeys{}));
-    ImGui::CloseCurrentPopup();
-    ImGui::NewFrame();
-    ImGui::Begin("panel");
-    if (ImGui::BeginPopup("choices")) {
-        ImGui::CloseCurrentPopup();
-        ImGui::EndPopup();
-    }
-    ImGui::End();
-    ImGui::Render();
+    EXPECT_TRUE(popupOpen());
     frame(false);
-    EXPECT_TRUE(quitRequested(esc));
+    EXPECT_TRUE(shown) << "it stays open by itself";
+    closePopups();
+    EXPECT_FALSE(popupOpen());
+    frame(false);
+    EXPECT_FALSE(shown) << "Esc closed it";
     ImGui::DestroyContext();
+}
+
+TEST_F(DesktopKeysSession, WorkIsUnsavedWithoutAJournalOrWithAFailedOne) {
+    EXPECT_FALSE(unsavedWork(*session)) << "nothing done yet";
+    session->select(c);
+    frame(press(GLFW_KEY_1));
+    frame({}, kCentre, true);
+    frame({}, kCentre, false);
+    ASSERT_EQ(session->editCount(c), 1u);
+    EXPECT_TRUE(unsavedWork(*session)) << "a stroke and no session folder";
+    EXPECT_NE(unsavedWhat(*session).find("1 action made in this run"), std::string::npos) << unsavedWhat(*session);
+    struct FailingJournal : test::ActionList {
+        bool failed = false;
+        SaveStatus saveStatus() const override {
+            SaveStatus s;
+            if (failed) {
+                s.state = SaveStatus::State::NotSaved;
+                s.unsaved = 1;
+                s.reason = "disk full";
+            }
+            return s;
+        }
+    } journal;
+    session->setJournal(&journal);
+    EXPECT_FALSE(unsavedWork(*session)) << "every action of a session folder is on disk";
+    journal.failed = true;
+    EXPECT_TRUE(unsavedWork(*session));
+    EXPECT_NE(unsavedWhat(*session).find("disk full"), std::string::npos);
+    session->setJournal(nullptr);
 }
 
 TEST_F(DesktopKeysSession, HomeTakesTheViewBackToTheGardensStart) {

@@ -241,6 +241,15 @@ TEST_F(ToolGizmoTest, TheMirrorPlaneAndTheMoveRingShowOnTheSelection) {
     draw(aim_);
     EXPECT_EQ(added(baseline, cyan, top, offCentre), 0);
     EXPECT_EQ(added(baseline, yellow, top, offCentre), 0) << "the move gizmo is the move tool's";
+    // With the other tools the selection (the sculpture the last stroke
+    // edited) is outlined: its box's edges, light grey.
+    const auto grey = [](const test::Rgba& p) {
+        return p.r > 200 && p.g > 200 && p.b > 200 && std::abs(p.r - p.g) < 12 && std::abs(p.g - p.b) < 12;
+    };
+    EXPECT_GT(added(baseline, grey, top, offCentre), 100) << "the selection outlined";
+    session_->select(-1);
+    draw(aim_);
+    EXPECT_EQ(added(baseline, grey, top, offCentre), 0) << "nothing selected, no outline";
 }
 
 }  // namespace

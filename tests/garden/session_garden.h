@@ -6,6 +6,7 @@
 
 #include <memory>
 
+#include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
 
 #include "garden/app/garden_session.h"
@@ -74,6 +75,21 @@ protected:
     }
     std::unique_ptr<GardenSession> session;
     int c = -1;
+};
+
+// The session as the desktop tests see it: flying 3 m in front of ball c
+// at its centre's height, looking along -z, through a 1280 x 720 window.
+class FlyingBeforeBallC : public SmallGardenSession {
+protected:
+    void SetUp() override {
+        SmallGardenSession::SetUp();
+        session->navigator().setMode(NavigationMode::Fly);
+        session->navigator().setPose({2.0f, 0.5f, 4.1547f}, 0.0f, 0.0f);
+        projection = glm::perspective(static_cast<float>(session->settings().fovY), kViewport.x / kViewport.y, 0.05f, 500.0f);
+    }
+    static constexpr glm::vec2 kViewport{1280.0f, 720.0f};
+    static constexpr glm::vec2 kCentre{640.0f, 360.0f};
+    glm::mat4 projection{1.0f};
 };
 
 }  // namespace hg::garden::test

@@ -255,7 +255,9 @@ TEST_F(ToolIntentsTest, ReplayScriptsDriveTheIntents) {
     const ReplayResult r = runReplay(script, s, nullptr, {});
     ASSERT_EQ(r.error, "");
     EXPECT_EQ(s.tool().kind, Kind::Move);
-    EXPECT_TRUE(s.tool().reverse) << "toggled once, not every frame";
+    EXPECT_FALSE(s.tool().reverse) << "the move tool's own reverse";
+    EXPECT_TRUE(s.tool().kept[static_cast<std::size_t>(Kind::Perturb)].reverse)
+        << "perturb's, toggled once, not every frame, kept while the move tool is in hand";
     EXPECT_NEAR(s.tool().perturbScale, 2.0, 1e-12);
     EXPECT_NEAR(s.tool().strength, 1.0, 1e-12);
     EXPECT_TRUE(s.sculptures()[static_cast<std::size_t>(ball)].mirror);

@@ -176,7 +176,7 @@ TEST_F(HeadlessImGui, StatsPanelDrawsWithAndWithoutFrames) {
     };
     // It starts folded (a new user's view); folded, it is its title alone.
     const int folded = vertices(sampleHistory(300));
-    ImGui::SetWindowCollapsed("Frame stats", false);
+    ImGui::SetWindowCollapsed(kStatsPanelTitle, false);
     const int none = vertices(sampleHistory(0));
     EXPECT_GT(none, folded) << "unfolded, it says there are no frames";
     const int one = vertices(sampleHistory(1));

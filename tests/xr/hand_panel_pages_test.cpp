@@ -113,16 +113,15 @@ TEST_F(HandPanelPages, ImpactShapeAndSpreadChosenOnThePanel) {
 
 TEST_F(HandPanelPages, TheSculpturePageMirrorsAndDiscardsTheSelectedSculpturesEdits) {
     options.session = (dir / "session").string();
-    // Run 1: carve 'a' (the carve button, then the trigger on it), then on
-    // the sculpture page select the first sculpture ('a') and tick its
+    // Run 1: carve 'a' (the carve button, then the trigger on it: the
+    // stroke selects what it carves), then on the sculpture page tick its
     // mirror plane.
     int selected = -1;
     std::size_t edits = 0;
     bool mirrored = false;
     run("[" + press(panelButtonCenter(PanelButton::Carve)) + R"(,
       {"frames": 6, "tool": {"aim": {"position": [0.3, 1.2, -1.0], "direction": [-0.35, -0.6, -1.3]}, "trigger": 1}},
-      {"frames": 2}, )" + press(panelPageCenter(PanelPage::Sculpture)) + ", " +
-            press(panelActionCenter(PanelAction::NextSculpture)) + ", " + press(panelToggleCenter(PanelToggle::Mirror)) +
+      {"frames": 2}, )" + press(panelPageCenter(PanelPage::Sculpture)) + ", " + press(panelToggleCenter(PanelToggle::Mirror)) +
             R"(, {"frames": 2}])",
         [&](garden::GardenSession& xr) {
             const int a = xr.findSculpture("a");
