@@ -5,13 +5,42 @@
 // runs check and eval and hands the rest to hypergarden-full.
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 
 #include "cli/commands.h"
+#include "frep/near_miss.h"
 #ifdef HG_CLI_KERNEL_ONLY
 #include "cli/full_executable.h"
 #endif
+
+namespace {
+
+// "error: unknown option '--sesion' (did you mean '--session'?)" for the
+// first word that looks like an option and is none of the program's; ""
+// when every one is known (the error is then CLI11's own).
+std::string unknownOption(const CLI::App& app, int argc, char** argv) {
+    std::vector<std::string> known;
+    std::vector<const CLI::App*> apps{&app};
+    for (std::size_t i = 0; i < apps.size(); ++i) {
+        for (const CLI::Option* o : apps[i]->get_options())
+            for (const std::string& name : o->get_lnames()) known.push_back("--" + name);
+        for (const CLI::App* s : apps[i]->get_subcommands([](const CLI::App*) { return true; })) apps.push_back(s);
+    }
+    for (int i = 1; i < argc; ++i) {
+        std::string word = argv[i];
+        if (word.rfind("--", 0) != 0 || word == "--") continue;
+        word = word.substr(0, word.find('='));
+        if (std::find(known.begin(), known.end(), word) != known.end()) continue;
+        const std::string near = hg::frep::nearMiss(word, known);
+        return "error: unknown option '" + word + "'" + (near.empty() ? "" : " (did you mean '" + near + "'?)") +
+               "\nRun with --help for the options.";
+    }
+    return "";
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
     using namespace hg::garden::cli;
@@ -160,6 +189,11 @@ int main(int argc, char** argv) {
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
+        if (dynamic_cast<const CLI::ExtrasError*>(&e))
+            if (const std::string unknown = unknownOption(app, argc, argv); !unknown.empty()) {
+                std::cerr << unknown << '\n';
+                return 2;
+            }
         return app.exit(e);
     }
     gardenOpts.gardenGiven = gardenOption->count() > 0;

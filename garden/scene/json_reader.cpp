@@ -34,21 +34,6 @@ std::string describe(const json& v) {
     }
 }
 
-std::size_t editDistance(const std::string& a, const std::string& b) {
-    std::vector<std::size_t> row(b.size() + 1);
-    for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-    for (std::size_t i = 1; i <= a.size(); ++i) {
-        std::size_t diagonal = row[0];
-        row[0] = i;
-        for (std::size_t j = 1; j <= b.size(); ++j) {
-            std::size_t up = row[j];
-            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0u : 1u)});
-            diagonal = up;
-        }
-    }
-    return row[b.size()];
-}
-
 // Where the parser is, for duplicate keys: one frame per open container.
 struct Frame {
     bool array = false;
@@ -161,16 +146,6 @@ void ObjectReader::finish() const {
         for (const auto& k : known_) reason += " " + k;
         throw JsonError(childPath(path_, it.key()), reason);
     }
-}
-
-std::string nearMiss(const std::string& word, const std::vector<std::string>& candidates) {
-    std::string best;
-    std::size_t bestDistance = 3;  // suggest only near misses
-    for (const auto& c : candidates) {
-        std::size_t d = editDistance(word, c);
-        if (d < bestDistance) { bestDistance = d; best = c; }
-    }
-    return best;
 }
 
 double readNumber(const json& v, const std::string& path) {

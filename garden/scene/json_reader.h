@@ -14,6 +14,8 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include "frep/near_miss.h"
+
 namespace hg::garden {
 
 // What is wrong and where. `path` is a JSON path ("$" for the document) or,
@@ -65,9 +67,8 @@ private:
 // A number as JSON writes it, without a trailing ".0" ("64.5", "0", "1e+30").
 std::string formatNumber(double v);
 
-// The candidate nearest to `word` by edit distance when it is a near miss
-// (at most 2 edits), else "".
-std::string nearMiss(const std::string& word, const std::vector<std::string>& candidates);
+// The candidate nearest to `word` when it is a near miss (frep/near_miss.h).
+using frep::nearMiss;
 
 // Typed values; each throws JsonError at `path` when the value does not fit.
 double readNumber(const nlohmann::json& v, const std::string& path);

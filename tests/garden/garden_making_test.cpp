@@ -107,6 +107,13 @@ TEST_F(GardenMakingTest, TheCommandLineAddsAndSuggests) {
     r = test::shell("\"$HG\" chek '" + m.file + "'");
     EXPECT_EQ(r.status, 2);
     EXPECT_NE(r.output.find("did you mean 'check'?"), std::string::npos) << r.output;
+    // So does a mistyped option, of the program or of a command.
+    r = test::shell("\"$HG\" --sesion '" + dir.string() + "'");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.output.find("unknown option '--sesion' (did you mean '--session'?)"), std::string::npos) << r.output;
+    r = test::shell("\"$HG\" garden add '" + garden + "' '" + m.file + "' --nmae x");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.output.find("did you mean '--name'?"), std::string::npos) << r.output;
     EXPECT_NE(before, read(garden));
 }
 #endif
