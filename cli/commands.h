@@ -68,7 +68,7 @@ struct GardenOptions {
     double budgetMs = 11.1;
     int frames = 0;                   // stop after N frames (0: until the window closes)
     std::string exitScreenshot;       // with frames: a PNG of the last frame
-    std::string screenshotDir = ".";
+    std::string screenshotDir;        // "": the session's screenshots/, else ~/Pictures/hypergarden
     std::string session;              // open (or create) this session folder ("" : none)
     std::string quality = "auto";     // --quality auto|low|medium|high
     bool xr = false;                  // in a headset through OpenXR (docs/xr.md)

@@ -59,7 +59,7 @@ int main(int argc, char** argv) {
                    "Picture: auto (default: low on software rendering, else high), low, medium or high "
                    "(docs/rendering.md)")
         ->check(CLI::IsMember({"auto", "low", "medium", "high"}));
-    app.add_option("--screenshot-dir", gardenOpts.screenshotDir, "Where F12 screenshots go (default: .)");
+    app.add_option("--screenshot-dir", gardenOpts.screenshotDir, "Where F12 screenshots go (default: the session's screenshots/ folder, else ~/Pictures/hypergarden)");
     app.add_option("--exit-screenshot", gardenOpts.exitScreenshot, "With --frames: a PNG of the last frame, overlay included");
     app.add_option("--session", gardenOpts.session,
                    "Session folder: opened with every journalled action, or made from --garden when new; "

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdlib>
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
@@ -35,6 +36,25 @@
 namespace hg::garden {
 
 namespace {
+
+// What F12 did, shown at the bottom of the window for a few seconds.
+struct Notice {
+    std::string text;
+    bool error = false;
+    std::chrono::steady_clock::time_point until{};
+};
+
+void drawNotice(const Notice& n, glm::ivec2 fb) {
+    if (n.text.empty() || std::chrono::steady_clock::now() > n.until) return;
+    ImGui::SetNextWindowPos(ImVec2(0.5f * static_cast<float>(fb.x), static_cast<float>(fb.y) - 10.0f), ImGuiCond_Always,
+                            ImVec2(0.5f, 1.0f));
+    ImGui::Begin("##notice", nullptr,
+                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoInputs |
+                     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing);
+    if (n.error) ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.35f, 1.0f), "%s", n.text.c_str());
+    else ImGui::TextUnformatted(n.text.c_str());
+    ImGui::End();
+}
 
 std::string timestampedName(const std::string& dir) {
     const std::time_t t = std::time(nullptr);
@@ -129,6 +149,19 @@ void enterHeadset(GardenSession& session, GardenWindow& window, const DesktopOpt
 
 }  // namespace
 
+std::string screenshotFolder(const DesktopOptions& options) {
+    std::filesystem::path dir = options.screenshotDir;
+    if (dir.empty()) {
+        const char* home = std::getenv("HOME");
+        dir = !options.session.empty() ? std::filesystem::path(options.session) / "screenshots"
+              : home && *home        ? std::filesystem::path(home) / "Pictures" / "hypergarden"
+                                     : std::filesystem::path(".");
+    }
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);  // a failure shows when the file is written
+    return dir.string();
+}
+
 int runDesktopGarden(const DesktopOptions& options) {
     std::optional<GardenLoad> load;
     if (options.session.empty()) {
@@ -206,6 +239,7 @@ int runDesktopOn(GardenSession& session, GardenWindow& gardenWindow, const Deskt
     // Exports go next to the session, or into the working folder without one.
     ExportPanel exportPanel(options.session);
     AddPanel addPanel;
+    Notice notice;
     std::string headsetMessage;
 
     DesktopCarry carry;  // the walking speed, the wheel burst
@@ -221,9 +255,11 @@ int runDesktopOn(GardenSession& session, GardenWindow& gardenWindow, const Deskt
         drawToolGizmos(renderer, session, aim);
         const RenderStats r = renderer.endFrame();
         if (pressed.screenshot) {
-            const std::string path = timestampedName(options.screenshotDir);
+            const std::string path = timestampedName(screenshotFolder(options));
             const std::string why = writeFramebufferPng(path, fb.x, fb.y);
             std::cerr << (why.empty() ? "screenshot: " + path : "error: " + why) << "\n";
+            notice = {why.empty() ? "screenshot saved: " + path : "no screenshot: " + why, !why.empty(),
+                      std::chrono::steady_clock::now() + std::chrono::seconds(5)};
         }
         overlay.newFrame();
         headsetButton = gardenPanel(session, static_cast<bool>(options.headset), headsetMessage, addPanel);
@@ -242,6 +278,7 @@ int runDesktopOn(GardenSession& session, GardenWindow& gardenWindow, const Deskt
         askQuit = false;
         // Above everything, centred: work that is not on disk.
         const float bannerWidth = std::min(640.0f, static_cast<float>(fb.x) - 20.0f);
+        drawNotice(notice, fb);
         drawSaveBanner(session, {0.5f * (static_cast<float>(fb.x) - bannerWidth), 10.0f}, bannerWidth);
         overlay.render();
         return ViewDraw{r.trianglesDrawn, r.drawCalls};

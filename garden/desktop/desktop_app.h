@@ -28,13 +28,19 @@ enum class HeadsetReturn {
 // waits meanwhile. `message` is for the user (no runtime, a failure).
 using HeadsetEntry = std::function<HeadsetReturn(GardenSession&, GardenWindow&, std::string& message)>;
 
+struct DesktopOptions;
+// The folder F12 writes into (made when missing), per DesktopOptions::screenshotDir.
+std::string screenshotFolder(const DesktopOptions& options);
+
 struct DesktopOptions {
     std::string garden;         // the garden file
     bool gardenGiven = false;   // named by the user: told when an existing session keeps its own
     int width = 1280, height = 720;
     bool vsync = true;
     double budgetMs = 11.1;
-    std::string screenshotDir = ".";
+    // Where F12 screenshots go; "": the session's screenshots/ folder, or
+    // ~/Pictures/hypergarden without a session (screenshotFolder).
+    std::string screenshotDir;
     int frames = 0;             // stop after this many frames (0: until closed); smoke tests
     std::string exitScreenshot; // a PNG of the last frame, overlay included ("" : none)
     std::string session;        // a session folder (made from `garden` when new); "" : none

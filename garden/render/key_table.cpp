@@ -61,7 +61,7 @@ std::vector<KeyRow> makeTable() {
          {{GLFW_KEY_H, 0, C::History}}},
         {"F9", "this garden into the OpenXR headset; back at the desktop when its session ends (or F9 in the mirror)",
          {{GLFW_KEY_F9, 0, C::Headset}}},
-        {"F12", "screenshot", {{GLFW_KEY_F12, 0, C::Screenshot}}},
+        {"F12", "screenshot into the session's screenshots/ (else ~/Pictures/hypergarden); the window says where", {{GLFW_KEY_F12, 0, C::Screenshot}}},
         {"F1", "the key list on screen", {{GLFW_KEY_F1, 0, C::Help}}},
         {"F3", "the frame statistics panel open / collapsed (collapsed at the start)", {{GLFW_KEY_F3, 0, C::Stats}}},
         {"Esc",
