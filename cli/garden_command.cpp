@@ -3,9 +3,7 @@
 #include <unistd.h>
 
 #include <filesystem>
-#include <fstream>
 #include <iostream>
-#include <sstream>
 
 #include "cli/commands.h"
 #include "garden/desktop/desktop_app.h"
@@ -13,6 +11,7 @@
 #include "garden/scene/garden_making.h"
 #include "garden/scene/json_reader.h"
 #include "io/checked_write.h"
+#include "io/read_text.h"
 #include "xr/xr_garden.h"
 
 namespace hg::garden::cli {
@@ -108,13 +107,11 @@ int runGarden(const GardenOptions& given) {
 }
 
 int runGardenAdd(const GardenAddOptions& options) {
-    std::ifstream in(options.garden, std::ios::binary);
-    if (!in) {
-        std::cerr << options.garden << ": cannot open the garden file\n";
+    std::string text;
+    if (std::string why = io::readText(options.garden, text); !why.empty()) {
+        std::cerr << "cannot open the garden file " << why << '\n';
         return 1;
     }
-    std::ostringstream text;
-    text << in.rdbuf();
     ModelToPlace m;
     m.file = options.file;
     m.name = options.name;
@@ -122,7 +119,7 @@ int runGardenAdd(const GardenAddOptions& options) {
     m.resolution = options.resolution;
     m.size = options.size;
     std::string error;
-    const std::string out = gardenWithModel(text.str(), options.garden, m, error);
+    const std::string out = gardenWithModel(text, options.garden, m, error);
     if (out.empty()) {
         std::cerr << error;
         if (error.empty() || error.back() != '\n') std::cerr << '\n';

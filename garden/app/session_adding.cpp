@@ -6,8 +6,6 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include "garden/app/garden_session.h"
 #include "garden/scene/garden_making.h"
@@ -15,6 +13,7 @@
 #include "garden/scene/to_glm.h"
 #include "garden/sculpt/sketch_edit.h"
 #include "garden/sketch/inflation_text.h"
+#include "io/read_text.h"
 #include "voxel/sampler.h"
 
 namespace hg::garden {
@@ -50,14 +49,12 @@ std::array<double, 3> GardenSession::placeInView(double distance) const {
 
 ActionOrWhy GardenSession::addFromFile(const std::string& path, const std::string& name, const Placement& placement,
                                        int resolution, const std::string& body) const {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return refused(path + ": cannot open the file");
-    std::ostringstream text;
-    text << in.rdbuf();
+    std::string text;
+    if (std::string why = io::readText(path, text); !why.empty()) return refused("cannot open " + why);
     AddAction a;
     a.sculpture = uniqueName(name.empty() ? std::filesystem::path(path).stem().string() : name);
     if (!name.empty() && a.sculpture != name) return refused("a sculpture named '" + name + "' is already in the garden");
-    a.source = text.str();
+    a.source = std::move(text);
     a.origin = path;
     a.body = body;
     a.resolution = resolution;

@@ -4,9 +4,7 @@
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <set>
-#include <sstream>
 
 #include <nlohmann/json.hpp>
 
@@ -32,15 +30,6 @@ std::string gridFileName(const std::string& sculpture, std::size_t records) {
 }
 
 }  // namespace
-
-std::string readText(const std::string& path, std::string& text) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return path + ": " + std::strerror(errno);
-    std::ostringstream s;
-    s << in.rdbuf();
-    text = s.str();
-    return "";
-}
 
 SessionPaths::SessionPaths(const std::string& d)
     : dir(d),

@@ -23,6 +23,7 @@
 #include "garden/session/journal.h"
 #include "garden/action/action_sink.h"
 #include "io/folder_lock.h"
+#include "io/read_text.h"
 
 namespace hg::garden {
 
@@ -53,8 +54,8 @@ FolderKind folderKind(const std::string& dir);
 // half-made is taken for a session: session.json is written last).
 std::string makeSession(const std::string& dir, const std::string& gardenFile);
 
-// A session file's whole contents; "" or "PATH: reason".
-std::string readText(const std::string& path, std::string& text);
+// A session file's whole contents; "" or "PATH: reason" (io/read_text.h).
+using io::readText;
 
 // The version and format check of DIR/session.json; "" when it is ours.
 std::string checkSessionManifest(const SessionPaths& paths);
