@@ -40,7 +40,7 @@ std::string GardenSession::uniqueName(const std::string& wanted) const {
 
 std::array<double, 3> GardenSession::placeInView(double distance) const {
     const glm::vec3 eye = navigator_.eye();
-    glm::vec3 ahead = glm::vec3(glm::inverse(navigator_.view())[2]) * -1.0f;
+    glm::vec3 ahead = navigator_.forward();
     ahead.y = 0.0f;
     if (glm::length(ahead) < 1e-4f) ahead = glm::vec3(0.0f, 0.0f, -1.0f);
     const glm::vec3 p = eye + glm::normalize(ahead) * static_cast<float>(distance);
