@@ -69,6 +69,7 @@
 
 #ifdef HG_BENCH_OFFSCREEN
 #include "garden/desktop/offscreen_garden.h"
+#include "garden/render/gl_context.h"
 #endif
 
 namespace {
@@ -93,6 +94,10 @@ struct Options {
     int scaleFrames = 1000;
     bool scaleProgressive = true;
     std::size_t uploadBytes = 0;  // SessionSettings::uploadBytesPerFrame (0: no limit)
+    // Offscreen scale rows: each walk drawn with multi-draw, one call per
+    // chunk, or both in turn over the same garden (the peer in the same run).
+    std::vector<std::string> drawModes{"multi", "per-chunk"};
+    std::string quality = "high";
 };
 
 template <class T>
@@ -126,6 +131,20 @@ bool parseOptions(int argc, char** argv, Options& o) {
         else if (a == "--scale-resolution" && hasValue) o.scaleResolution = std::max(16, std::atoi(argv[++i]));
         else if (a == "--scale-frames" && hasValue) o.scaleFrames = std::max(10, std::atoi(argv[++i]));
         else if (a == "--upload-bytes" && hasValue) o.uploadBytes = std::strtoull(argv[++i], nullptr, 10);
+        else if (a == "--draw" && hasValue) {
+            const std::string how = argv[++i];
+            if (how != "multi" && how != "per-chunk" && how != "both") {
+                std::fprintf(stderr, "--draw: multi, per-chunk or both\n");
+                return false;
+            }
+            o.drawModes = how == "both" ? std::vector<std::string>{"multi", "per-chunk"} : std::vector<std::string>{how};
+        } else if (a == "--quality" && hasValue) {
+            o.quality = argv[++i];
+            if (o.quality != "low" && o.quality != "medium" && o.quality != "high") {
+                std::fprintf(stderr, "--quality: low, medium or high\n");
+                return false;
+            }
+        }
         else if (a == "--scale-load" && hasValue) {
             const std::string how = argv[++i];
             if (how != "start" && how != "progressive") {
@@ -140,7 +159,8 @@ bool parseOptions(int argc, char** argv, Options& o) {
         std::fprintf(stderr,
                      "       [--offscreen] [--viewport WxH] [--max-frames N] [--remesh-chunks N] [--walk-speed S]\n"
                      "       [--samples N,N,...] [--resolutions R,R] [--scale N,N,...] [--scale-resolution R]\n"
-                     "       [--scale-frames N] [--scale-load start|progressive] [--upload-bytes N]\n");
+                     "       [--scale-frames N] [--scale-load start|progressive] [--upload-bytes N]\n"
+                     "       [--draw multi|per-chunk|both] [--quality low|medium|high]\n");
         return false;
     }
     return true;
@@ -668,18 +688,58 @@ ReplayScript scaleWalk(const Options& o, int count, double spacing) {
     return s;
 }
 
+// Frames from the start pose until the session is idle (nothing left to
+// sample, mesh or upload), at most 90 a second: the garden settling as a
+// display would pace it. The number of frames, or 0 when it did not settle
+// within --max-frames.
+std::size_t settle(const Options& o, Scene& scene, const ReplayScript& walk) {
+    ReplayScript start = baseScript(o);
+    start.steps.assign(walk.steps.begin(), walk.steps.begin() + 1);
+    ReplayResult r = runReplay(start, *scene.session, scene.recorder.get(), ReplayOptions{});
+    if (!r.ok()) return 0;
+    std::size_t frames = 1;
+    for (; !scene.session->idle() && frames < static_cast<std::size_t>(o.maxFrames); ++frames) {
+        const auto f0 = Clock::now();
+        scene.session->frame(FrameInput{}, *scene.recorder);
+        std::this_thread::sleep_until(f0 + std::chrono::microseconds(11111));
+    }
+    scene.recorder->clear();
+    return scene.session->idle() ? frames : 0;
+}
+
+std::string spreadCell(const Spread& s) {
+    char b[80];
+    std::snprintf(b, sizeof b, "%.2f / %.2f / %.2f / %.1f", s.mean, s.p95, s.p99, s.max);
+    return b;
+}
+
 void scaleTable(const Options& o, nlohmann::json& json) {
     bool anyRow = false;
     for (int n : o.scaleCounts) anyRow = anyRow || o.bench.matches("scale/" + std::to_string(n));
     if (!anyRow) return;
     constexpr double kSpacing = 3.0;
-    std::printf("Scale: N copies of the default garden's sculptures on a grid %.0f m apart at %d^3, headless, sampled %s; "
+    const bool gl = o.offscreen;
+    std::printf("Scale: N copies of the default garden's sculptures on a grid %.0f m apart at %d^3, %s, sampled %s; "
                 "the walk: %d frames down the middle aisle at 1.5 m/s. CPU ms per frame: mean / p95 / p99 / max.\n\n",
-                kSpacing, o.scaleResolution, o.scaleProgressive ? "in the background, nearest first" : "before the first frame",
-                o.scaleFrames);
-    std::printf("| sculptures | chunks | first frame (s) | loading at first frame | settled (s) | input | lod | remesh | total | frames over 11.1 ms | "
-                "chunks tested by LOD (mean) | triangles shown (mean) | new mesh KiB per frame (max) | peak memory (MiB) |\n");
-    std::printf("|---:|---:|---:|---:|---:|---|---|---|---|---:|---:|---:|---:|---:|\n");
+                kSpacing, o.scaleResolution,
+                gl ? ("drawn offscreen at " + std::to_string(o.width) + " x " + std::to_string(o.height) + ", quality " +
+                      o.quality)
+                           .c_str()
+                   : "headless",
+                o.scaleProgressive ? "in the background, nearest first" : "before the first frame", o.scaleFrames);
+    // Printed before the first row, after the GL line that names the card.
+    bool headed = false;
+    auto head = [&] {
+        if (headed) return;
+        headed = true;
+        std::printf("| sculptures | chunks | first frame (s) | loading at first frame | settled (s) | %sinput | lod | remesh | %stotal | "
+                    "frames over 11.1 ms | chunks tested by LOD (mean) | triangles shown (mean) | %snew mesh KiB per frame (max) | "
+                    "peak memory (MiB) |\n",
+                    gl ? "draw | " : "", gl ? "upload | render | GPU ms | " : "",
+                    gl ? "chunks drawn (mean) | draw calls (mean) | " : "");
+        std::printf("|---:|---:|---:|---:|---:|%s---|---|---|%s---|---:|---:|---:|%s---:|---:|\n", gl ? "---|" : "",
+                    gl ? "---|---|---|" : "", gl ? "---:|---:|" : "");
+    };
     for (int n : o.scaleCounts) {
         const std::string name = "scale/" + std::to_string(n);
         if (!o.bench.matches(name)) continue;
@@ -700,71 +760,110 @@ void scaleTable(const Options& o, nlohmann::json& json) {
         settings.progressiveLoading = o.scaleProgressive;
         settings.uploadBytesPerFrame = o.uploadBytes;
         Scene scene;
+        FrameRenderer* inner = nullptr;
+#ifdef HG_BENCH_OFFSCREEN
+        if (gl) {
+            std::string error;
+            scene.offscreen = OffscreenGarden::create(o.width, o.height, error);
+            if (!scene.offscreen) {
+                std::fprintf(stderr, "%s: %s\n", name.c_str(), error.c_str());
+                return;
+            }
+            scene.offscreen->setQuality(qualityOf(*parseQualityPreset(o.quality)));
+            static bool named = false;  // the card, once: GPU figures mean nothing without it
+            if (!named) std::printf("GL: %s\n\n", GlWindow::glVersionString().c_str());
+            std::fflush(stdout);
+            named = true;
+            inner = scene.offscreen.get();
+        }
+#endif
         scene.session = std::make_unique<GardenSession>(std::move(load), settings);
-        scene.recorder = std::make_unique<Recorder>(nullptr);
+        scene.recorder = std::make_unique<Recorder>(inner);
+        const ReplayScript walk = scaleWalk(o, n, kSpacing);
         // The first frame, then frames at 90 Hz at most (a display's pace:
         // sampling goes on in the background meanwhile) until settled.
         ReplayScript first = baseScript(o);
-        first.steps.resize(1);
+        first.steps.assign(walk.steps.begin(), walk.steps.begin() + 1);
         ReplayResult r = runReplay(first, *scene.session, scene.recorder.get(), ReplayOptions{});
         const double firstFrame = std::chrono::duration<double>(Clock::now() - t0).count();
-        std::size_t settleFrames = 1;
         const std::size_t loadingAtFirst = r.stats.empty() ? 0 : r.stats.back().sculpturesLoading;
-        for (; r.ok() && !scene.session->idle() && settleFrames < static_cast<std::size_t>(o.maxFrames); ++settleFrames) {
-            const auto f0 = Clock::now();
-            scene.session->frame(FrameInput{}, *scene.recorder);
-            std::this_thread::sleep_until(f0 + std::chrono::microseconds(11111));
-        }
-        scene.recorder->clear();
+        const std::size_t settleFrames = r.ok() ? settle(o, scene, walk) : 0;
         const double settled = std::chrono::duration<double>(Clock::now() - t0).count();
-        if (!r.ok() || !scene.session->idle()) {
+        if (settleFrames == 0) {
             std::fprintf(stderr, "%s: %s\n", name.c_str(), r.ok() ? "not settled within --max-frames" : r.error.c_str());
             continue;
         }
-        Run run = timedRun(scene, scaleWalk(o, n, kSpacing));
-        if (!run.error.empty()) {
-            std::fprintf(stderr, "%s: %s\n", name.c_str(), run.error.c_str());
-            continue;
+        const std::vector<std::string> modes = gl ? o.drawModes : std::vector<std::string>{""};
+        for (std::size_t m = 0; m < modes.size(); ++m) {
+#ifdef HG_BENCH_OFFSCREEN
+            if (gl && !scene.offscreen->setMultiDraw(modes[m] == "multi")) {
+                std::fprintf(stderr, "%s: this GL has no multi-draw (GL 4.3)\n", name.c_str());
+                continue;
+            }
+#endif
+            // Back at the start and settled again: each mode walks the same garden from the same state.
+            if (m > 0 && settle(o, scene, walk) == 0) {
+                std::fprintf(stderr, "%s: not settled again within --max-frames\n", name.c_str());
+                continue;
+            }
+            Run run = timedRun(scene, walk);
+            if (!run.error.empty()) {
+                std::fprintf(stderr, "%s: %s\n", name.c_str(), run.error.c_str());
+                continue;
+            }
+            std::array<std::vector<double>, kStageCount> perStage;
+            std::vector<double> totals, visited, shown, gpu, calls, drawn;
+            std::size_t over = 0, bytesMax = 0;
+            for (std::size_t i = 0; i < run.frames.size(); ++i) {
+                const FrameStats& f = run.frames[i];
+                for (std::size_t k = 0; k < kStageCount; ++k) perStage[k].push_back(f.stageMs[k]);
+                totals.push_back(f.totalMs);
+                visited.push_back(static_cast<double>(f.lodChunksVisited));
+                shown.push_back(i < run.shown.size() ? static_cast<double>(run.shown[i]) : 0.0);
+                if (f.gpuMs >= 0.0) gpu.push_back(f.gpuMs);
+                calls.push_back(static_cast<double>(f.drawCalls));
+                drawn.push_back(static_cast<double>(f.chunksDrawn));
+                over += f.totalMs > 11.1 ? 1 : 0;
+                bytesMax = std::max(bytesMax, f.meshBytesShown);
+            }
+            auto stage = [&](Stage st) { return spread(perStage[static_cast<std::size_t>(st)]); };
+            std::size_t chunks = 0;
+            for (const Sculpture& st : scene.session->sculptures())
+                if (st.layout) chunks += st.layout->count();
+            const double peakMiB = static_cast<double>(peakResidentBytes()) / (1024.0 * 1024.0);
+            std::string drawColumns, glColumns, countColumns;
+            if (gl) {
+                drawColumns = modes[m] + " | ";
+                glColumns = spreadCell(stage(Stage::Upload)) + " | " + spreadCell(stage(Stage::Render)) + " | " +
+                            (gpu.empty() ? std::string("-") : spreadCell(spread(gpu))) + " | ";
+                char b[96];
+                std::snprintf(b, sizeof b, "%.0f | %.1f | ", spread(drawn).mean, spread(calls).mean);
+                countColumns = b;
+            }
+            head();
+            std::printf("| %d | %zu | %.2f | %zu | %.1f (%zu frames) | %s%s | %s | %s | %s%s | %zu of %zu | %.0f | %.0f | %s%.0f | %.0f |\n",
+                        n, chunks, firstFrame, loadingAtFirst, settled, settleFrames, drawColumns.c_str(),
+                        spreadCell(stage(Stage::Input)).c_str(), spreadCell(stage(Stage::Lod)).c_str(),
+                        spreadCell(stage(Stage::Remesh)).c_str(), glColumns.c_str(), spreadCell(spread(totals)).c_str(),
+                        over, run.frames.size(), spread(visited).mean, spread(shown).mean, countColumns.c_str(),
+                        static_cast<double>(bytesMax) / 1024.0, peakMiB);
+            std::fflush(stdout);
+            nlohmann::json stages = nlohmann::json::object();
+            for (int k = 0; k < kStageCount; ++k)
+                stages[stageName(static_cast<Stage>(k))] = spreadJson(spread(perStage[static_cast<std::size_t>(k)]));
+            json["scale"].push_back({{"name", name}, {"sculptures", n}, {"resolution", o.scaleResolution},
+                                     {"chunks", chunks}, {"first_frame_s", firstFrame}, {"settled_s", settled},
+                                     {"progressive", o.scaleProgressive}, {"loading_at_first_frame", loadingAtFirst},
+                                     {"upload_bytes_per_frame", o.uploadBytes}, {"mesh_bytes_shown_max", bytesMax},
+                                     {"settle_frames", settleFrames}, {"walk_frames", run.frames.size()},
+                                     {"offscreen", gl}, {"draw", modes[m]}, {"quality", gl ? o.quality : ""},
+                                     {"viewport", {o.width, o.height}},
+                                     {"stage_ms", stages}, {"total_ms", spreadJson(spread(totals))},
+                                     {"gpu_ms", spreadJson(spread(gpu))}, {"draw_calls", spreadJson(spread(calls))},
+                                     {"chunks_drawn", spreadJson(spread(drawn))},
+                                     {"frames_over_budget", over}, {"lod_chunks_visited", spreadJson(spread(visited))},
+                                     {"triangles_shown", spreadJson(spread(shown))}, {"peak_resident_bytes", peakResidentBytes()}});
         }
-        std::array<std::vector<double>, kStageCount> perStage;
-        std::vector<double> totals, visited, shown;
-        std::size_t over = 0, bytesMax = 0;
-        for (std::size_t i = 0; i < run.frames.size(); ++i) {
-            const FrameStats& f = run.frames[i];
-            for (std::size_t k = 0; k < kStageCount; ++k) perStage[k].push_back(f.stageMs[k]);
-            totals.push_back(f.totalMs);
-            visited.push_back(static_cast<double>(f.lodChunksVisited));
-            shown.push_back(i < run.shown.size() ? static_cast<double>(run.shown[i]) : 0.0);
-            over += f.totalMs > 11.1 ? 1 : 0;
-            bytesMax = std::max(bytesMax, f.meshBytesShown);
-        }
-        auto cell = [](const Spread& s) {
-            char b[80];
-            std::snprintf(b, sizeof b, "%.2f / %.2f / %.2f / %.1f", s.mean, s.p95, s.p99, s.max);
-            return std::string(b);
-        };
-        std::size_t chunks = 0;
-        for (const Sculpture& st : scene.session->sculptures())
-            if (st.layout) chunks += st.layout->count();
-        const double peakMiB = static_cast<double>(peakResidentBytes()) / (1024.0 * 1024.0);
-        std::printf("| %d | %zu | %.2f | %zu | %.1f (%zu frames) | %s | %s | %s | %s | %zu of %zu | %.0f | %.0f | %.0f | %.0f |\n", n,
-                    chunks, firstFrame, loadingAtFirst, settled, settleFrames, cell(spread(perStage[static_cast<std::size_t>(Stage::Input)])).c_str(),
-                    cell(spread(perStage[static_cast<std::size_t>(Stage::Lod)])).c_str(),
-                    cell(spread(perStage[static_cast<std::size_t>(Stage::Remesh)])).c_str(), cell(spread(totals)).c_str(),
-                    over, run.frames.size(), spread(visited).mean, spread(shown).mean, static_cast<double>(bytesMax) / 1024.0,
-                    peakMiB);
-        std::fflush(stdout);
-        nlohmann::json stages = nlohmann::json::object();
-        for (int k = 0; k < kStageCount; ++k)
-            stages[stageName(static_cast<Stage>(k))] = spreadJson(spread(perStage[static_cast<std::size_t>(k)]));
-        json["scale"].push_back({{"name", name}, {"sculptures", n}, {"resolution", o.scaleResolution},
-                                 {"chunks", chunks}, {"first_frame_s", firstFrame}, {"settled_s", settled},
-                                 {"progressive", o.scaleProgressive}, {"loading_at_first_frame", loadingAtFirst},
-                                 {"upload_bytes_per_frame", o.uploadBytes}, {"mesh_bytes_shown_max", bytesMax},
-                                 {"settle_frames", settleFrames}, {"walk_frames", run.frames.size()},
-                                 {"stage_ms", stages}, {"total_ms", spreadJson(spread(totals))},
-                                 {"frames_over_budget", over}, {"lod_chunks_visited", spreadJson(spread(visited))},
-                                 {"triangles_shown", spreadJson(spread(shown))}, {"peak_resident_bytes", peakResidentBytes()}});
     }
     std::printf("\n");
 }

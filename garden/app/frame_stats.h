@@ -33,7 +33,11 @@ struct FrameStats {
     std::size_t uploadsPending = 0;
     std::size_t trianglesShown = 0;             // in the meshes on show (drawn or not)
     std::size_t trianglesDrawn = 0;             // after view culling (0 headless)
-    std::size_t drawCalls = 0;
+    std::size_t chunksDrawn = 0;                // chunk draws after view culling
+    std::size_t drawCalls = 0;                  // GL draw calls (chunks go out batched)
+    // GPU milliseconds of the latest frame the GPU finished (timer queries,
+    // read without waiting: a frame or a few behind); -1 where unknown.
+    double gpuMs = -1.0;
 };
 
 // The last N frames, for the frame-time graph.

@@ -296,7 +296,9 @@ void GardenSession::uploadAndRender(ViewSink& views) {
     scheduler_.beginStage(Stage::Render);
     const ViewDraw drawn = views.render(*this);
     stats().trianglesDrawn = drawn.trianglesDrawn;
+    stats().chunksDrawn = drawn.chunksDrawn;
     stats().drawCalls = drawn.drawCalls;
+    stats().gpuMs = drawn.gpuMs;
 }
 
 void GardenSession::input(const Hands& hands, double dt) {

@@ -21,7 +21,9 @@ struct ViewUpload {
 // What the render stage drew, over every view of the frame.
 struct ViewDraw {
     std::size_t trianglesDrawn = 0;
-    std::size_t drawCalls = 0;
+    std::size_t chunksDrawn = 0;
+    std::size_t drawCalls = 0;  // GL calls: one per batch of chunks where multi-draw is on
+    double gpuMs = -1.0;        // the GPU's time for the latest frame it finished; -1 unknown
 };
 
 class ViewSink {

@@ -51,10 +51,12 @@ ViewDraw OffscreenGarden::render(GardenSession& session) {
     // The CPU cost of drawing includes waiting for llvmpipe here: a software
     // GPU; on hardware this is where the driver would queue the frame.
     glFinish();
-    return {r.trianglesDrawn, r.drawCalls};
+    return {r.trianglesDrawn, r.chunksDrawn, r.drawCalls, r.gpuMs()};
 }
 
 void OffscreenGarden::setQuality(const RenderQuality& quality) { impl_->renderer.setQuality(quality); }
+
+bool OffscreenGarden::setMultiDraw(bool on) { return impl_->renderer.setMultiDraw(on) == on; }
 
 std::string OffscreenGarden::screenshot(const std::string& path) {
     impl_->target.bind();

@@ -22,6 +22,9 @@ public:
     std::string screenshot(const std::string& path) override;
     // What the renderer spends on the picture (replay --quality).
     void setQuality(const RenderQuality& quality);
+    // Chunks in one multi-draw (the default where GL 4.3 is there) or a call
+    // each; false when multi-draw was asked for and is missing.
+    bool setMultiDraw(bool on);
 
 private:
     struct Impl;

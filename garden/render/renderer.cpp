@@ -12,6 +12,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "garden/render/chunk_batch.h"
 #include "garden/render/gpu_timers.h"
 #include "garden/render/occlusion_pass.h"
 #include "garden/render/post_process.h"
@@ -69,6 +70,19 @@ glm::vec3 srgbToLinear(const glm::vec3& c) {
     return out;
 }
 
+// A chunk draw's record for the shaders (HG_DRAW_RECORD_GLSL in shaders.h):
+// the transform, the normal transform (the inverse transpose, for scales
+// that are not uniform) and the material.
+DrawRecord drawRecord(const glm::mat4& model, const RenderMaterial& material, bool hasNormals) {
+    DrawRecord r{};
+    for (int c = 0; c < 4; ++c) r[static_cast<std::size_t>(c)] = model[c];
+    const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(model)));
+    for (int c = 0; c < 3; ++c) r[static_cast<std::size_t>(4 + c)] = glm::vec4(normalMatrix[c], 0.0f);
+    r[7] = glm::vec4(material.baseColor, material.specular);
+    r[8] = glm::vec4(material.shininess, hasNormals ? 1.0f : 0.0f, 0.0f, 0.0f);
+    return r;
+}
+
 // The texture unit the lit programs read the shadow map from.
 constexpr GLint kShadowUnit = 3;
 // Metres between the 3 x 3 shadow taps: a penumbra of about 5 cm.
@@ -96,7 +110,10 @@ Renderer::Renderer()
       occlusion_(std::make_unique<OcclusionPass>()),
       sky_(std::make_unique<SkyPass>()),
       post_(std::make_unique<PostProcess>()),
-      timers_(std::make_unique<GpuTimers>()) {
+      timers_(std::make_unique<GpuTimers>()),
+      arena_(std::make_unique<ChunkArena>()),
+      batch_(std::make_unique<ChunkBatch>()),
+      multiDraw_(multiDrawAvailable()) {
     auto lit = [](const ShaderProgram& p) {
         return LitUniforms{p.uniform("uEye"),         p.uniform("uAmbient"),       p.uniform("uLightCount"),
                            p.uniform("uLightDir"),    p.uniform("uLightColor"),    p.uniform("uPointCount"),
@@ -113,9 +130,9 @@ Renderer::Renderer()
     meshShadow_ = shadowed(meshProgram_);
     groundShadow_ = shadowed(groundProgram_);
     const ShaderProgram& m = meshProgram_;
-    mesh_ = {m.uniform("uModel"),     m.uniform("uNormalMatrix"), m.uniform("uViewProjection"),
-             m.uniform("uBaseColor"), m.uniform("uSpecular"),     m.uniform("uShininess"),
-             m.uniform("uHasNormals")};
+    mesh_ = {m.uniform("uViewProjection")};
+    m.use();
+    glUniform1i(m.uniform("uDrawRecords"), kDrawRecordUnit);
     const ShaderProgram& g = groundProgram_;
     ground_ = {g.uniform("uViewProjection"), g.uniform("uGroundColor"), g.uniform("uLineColor"),
                g.uniform("uSpacing"),        g.uniform("uLineWidth"),   g.uniform("uMajorEvery")};
@@ -167,48 +184,15 @@ std::size_t Renderer::upload(ChunkId id, std::uint64_t version, const poly::Mesh
     if (found != chunks_.end() && found->second.version == version) return 0;
     checkMesh(mesh);
 
-    ChunkBuffers& c = chunks_[id];
+    ChunkRecord& c = chunks_[id];
     residentBytes_ -= c.bytes;
     c.version = version;
-    c.indexCount = static_cast<GLsizei>(mesh.indices.size());
+    c.indexCount = mesh.indices.size();
     c.hasNormals = !mesh.normals.empty();
-    c.bytes = 0;
-    if (mesh.empty()) {
-        // Keep the record (the chunk is current and empty), free the memory.
-        c.vao.reset();
-        c.vertices.reset();
-        c.indices.reset();
-        return 0;
-    }
-    if (!c.vao) {
-        c.vao = gl::VertexArray::create();
-        c.vertices = gl::Buffer::create();
-        c.indices = gl::Buffer::create();
-    }
-    const GLsizeiptr positionBytes = byteSize(mesh.positions);
-    const GLsizeiptr normalBytes = byteSize(mesh.normals);
-    const GLsizeiptr indexBytes = byteSize(mesh.indices);
-
-    glBindVertexArray(c.vao.get());
-    glBindBuffer(GL_ARRAY_BUFFER, c.vertices.get());
-    // Fresh storage each version: the driver need not wait for draws still
-    // reading the old contents.
-    glBufferData(GL_ARRAY_BUFFER, positionBytes + normalBytes, nullptr, GL_STATIC_DRAW);
-    glBufferSubData(GL_ARRAY_BUFFER, 0, positionBytes, mesh.positions.data());
-    glEnableVertexAttribArray(0);
-    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float), byteOffset(0));
-    if (c.hasNormals) {
-        glBufferSubData(GL_ARRAY_BUFFER, positionBytes, normalBytes, mesh.normals.data());
-        glEnableVertexAttribArray(1);
-        glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float),
-                              byteOffset(static_cast<std::size_t>(positionBytes)));
-    } else {
-        glDisableVertexAttribArray(1);
-    }
-    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, c.indices.get());
-    glBufferData(GL_ELEMENT_ARRAY_BUFFER, indexBytes, mesh.indices.data(), GL_STATIC_DRAW);
-    glBindVertexArray(0);
-    glBindBuffer(GL_ARRAY_BUFFER, 0);
+    // An empty mesh keeps the record (the chunk is current and empty) and
+    // frees its space.
+    c.bytes = arena_->place(id, mesh);
+    if (mesh.empty()) return 0;
 
     c.lo = glm::vec3(mesh.positions[0], mesh.positions[1], mesh.positions[2]);
     c.hi = c.lo;
@@ -217,7 +201,6 @@ std::size_t Renderer::upload(ChunkId id, std::uint64_t version, const poly::Mesh
         c.lo = glm::min(c.lo, p);
         c.hi = glm::max(c.hi, p);
     }
-    c.bytes = static_cast<std::size_t>(positionBytes + normalBytes + indexBytes);
     residentBytes_ += c.bytes;
     stats_.bytesUploaded += c.bytes;
     return c.bytes;
@@ -234,7 +217,13 @@ void Renderer::drop(ChunkId id) {
     auto found = chunks_.find(id);
     if (found == chunks_.end()) return;
     residentBytes_ -= found->second.bytes;
+    arena_->remove(id);
     chunks_.erase(found);
+}
+
+bool Renderer::setMultiDraw(bool on) {
+    multiDraw_ = on && multiDrawAvailable();
+    return multiDraw_;
 }
 
 // --- a frame -------------------------------------------------------------------
@@ -302,15 +291,15 @@ void Renderer::setLighting(const LitUniforms& u, const ShadowUniforms& s, bool s
 bool Renderer::drawChunk(ChunkId id, const glm::mat4& model, const RenderMaterial& material) {
     auto found = chunks_.find(id);
     if (found == chunks_.end()) return false;
-    const ChunkBuffers& c = found->second;
+    const ChunkRecord& c = found->second;
     if (c.indexCount == 0) return true;
     SceneDraw d;
     d.id = id;
     d.model = model;
     d.material = material;
     sceneDraws_.push_back(d);
-    stats_.drawCalls += 1;
-    stats_.trianglesDrawn += static_cast<std::size_t>(c.indexCount / 3);
+    stats_.chunksDrawn += 1;
+    stats_.trianglesDrawn += c.indexCount / 3;
     return true;
 }
 
@@ -372,16 +361,17 @@ void Renderer::drawSphere(const glm::vec3& center, float radius, const glm::vec4
 
 // --- rendering a recorded view ------------------------------------------------
 
-bool Renderer::renderShadows() {
-    if (!quality_.shadows || view_.lights.empty()) return false;
-    std::vector<ShadowCaster> casters;
-    glm::vec3 lo(1e30f), hi(-1e30f);
+void Renderer::gatherChunks(glm::vec3& lo, glm::vec3& hi) {
+    batch_->clear();
+    lo = glm::vec3(1e30f);
+    hi = glm::vec3(-1e30f);
     for (const SceneDraw& d : sceneDraws_) {
-        if (d.ground) continue;  // the ground only receives
+        if (d.ground) continue;
         auto found = chunks_.find(d.id);
-        if (found == chunks_.end() || found->second.indexCount == 0) continue;
-        const ChunkBuffers& c = found->second;
-        casters.push_back({c.vao.get(), c.indexCount, d.model});
+        const ArenaSlot* slot = arena_->slot(d.id);
+        if (found == chunks_.end() || slot == nullptr) continue;  // dropped or emptied since recorded
+        const ChunkRecord& c = found->second;
+        batch_->add(*slot, drawRecord(d.model, d.material, c.hasNormals));
         for (int i = 0; i < 8; ++i) {
             const glm::vec3 corner((i & 1) ? c.hi.x : c.lo.x, (i & 2) ? c.hi.y : c.lo.y, (i & 4) ? c.hi.z : c.lo.z);
             const glm::vec3 w = glm::vec3(d.model * glm::vec4(corner, 1.0f));
@@ -389,9 +379,14 @@ bool Renderer::renderShadows() {
             hi = glm::max(hi, w);
         }
     }
-    if (casters.empty()) return false;
+}
+
+bool Renderer::renderShadows(const glm::vec3& lo, const glm::vec3& hi) {
+    // The ground only receives: the casters are the view's chunks.
+    if (!quality_.shadows || view_.lights.empty() || batch_->empty()) return false;
     timers_->begin(GpuPass::Shadow);
-    stats_.shadowDrawCalls += shadow_->render(casters, lo, hi, view_.lights.front().direction, quality_.shadowMapSize);
+    stats_.shadowDrawCalls +=
+        shadow_->render(*batch_, *arena_, multiDraw_, lo, hi, view_.lights.front().direction, quality_.shadowMapSize);
     timers_->end();
     return true;
 }
@@ -428,12 +423,12 @@ void Renderer::renderScene(bool shadowed) {
     setMat4(ground_.viewProjection, viewProjection);
     setLighting(groundLit_, groundShadow_, shadowed);
 
-    for (const SceneDraw& d : sceneDraws_) {
-        if (d.ground)
-            drawGroundNow(d.groundStyle);
-        else
-            drawChunkNow(d);
-    }
+    // Sculptures before the ground: they hide much of it, and early depth
+    // tests then skip its pixels.
+    meshProgram_.use();
+    stats_.drawCalls += batch_->draw(*arena_, multiDraw_);
+    for (const SceneDraw& d : sceneDraws_)
+        if (d.ground) drawGroundNow(d.groundStyle);
     sky_->draw(view_);
     timers_->end();
 }
@@ -444,7 +439,9 @@ void Renderer::finishView() {
     timers_->nextView();
     targets_->ensure(view_.viewport, quality_.msaaSamples);
 
-    const bool shadowed = renderShadows();
+    glm::vec3 lo, hi;
+    gatherChunks(lo, hi);
+    const bool shadowed = renderShadows(lo, hi);
     renderScene(shadowed);
     GLuint occlusion = 0;
     if (quality_.ambientOcclusion) {
@@ -468,24 +465,6 @@ void Renderer::finishView() {
         for (const FlatDraw& d : flatDraws_) drawFlatNow(d);
     }
     timers_->end();
-}
-
-void Renderer::drawChunkNow(const SceneDraw& d) {
-    auto found = chunks_.find(d.id);
-    if (found == chunks_.end() || found->second.indexCount == 0) return;  // dropped since recorded
-    const ChunkBuffers& c = found->second;
-    const RenderMaterial& material = d.material;
-    meshProgram_.use();
-    setMat4(mesh_.model, d.model);
-    const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(d.model)));
-    glUniformMatrix3fv(mesh_.normalMatrix, 1, GL_FALSE, glm::value_ptr(normalMatrix));
-    glUniform3fv(mesh_.baseColor, 1, glm::value_ptr(material.baseColor));
-    glUniform1f(mesh_.specular, material.specular);
-    glUniform1f(mesh_.shininess, material.shininess);
-    glUniform1i(mesh_.hasNormals, c.hasNormals ? 1 : 0);
-    glBindVertexArray(c.vao.get());
-    glDrawElements(GL_TRIANGLES, c.indexCount, GL_UNSIGNED_INT, byteOffset(0));
-    glBindVertexArray(0);
 }
 
 void Renderer::drawGroundNow(const GroundStyle& ground) {

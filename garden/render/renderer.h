@@ -33,14 +33,13 @@
 #include <unordered_map>
 #include <vector>
 
+#include "garden/render/chunk_arena.h"
 #include "garden/render/gl_objects.h"
 #include "garden/render/render_quality.h"
 #include "garden/render/shader_program.h"
 #include "polygonizer/mesh.h"
 
 namespace hg::garden {
-
-using ChunkId = std::uint64_t;
 
 struct RenderMaterial {
     glm::vec3 baseColor{0.8f, 0.8f, 0.8f};  // sRGB
@@ -90,8 +89,9 @@ enum class LineMode { Segments, Strip, Loop };
 
 struct RenderStats {
     std::size_t trianglesDrawn = 0;
-    std::size_t drawCalls = 0;        // scene, lines and sphere: one per draw asked for
-    std::size_t shadowDrawCalls = 0;  // the casters drawn again into the shadow map
+    std::size_t chunksDrawn = 0;      // chunk draws asked for (drawChunk calls that drew)
+    std::size_t drawCalls = 0;        // GL draw calls for the scene, lines and sphere: one per batch of chunks
+    std::size_t shadowDrawCalls = 0;  // GL draw calls of the casters into the shadow map
     std::size_t bytesUploaded = 0;
     // GPU milliseconds per pass of the latest view the GPU has finished
     // (GL timer queries, read without waiting: a view or a few behind); -1
@@ -103,6 +103,7 @@ struct RenderStats {
     float gpuMs() const;  // the measured passes together; -1 when none is
 };
 
+class ChunkBatch;
 class SceneTargets;
 class PostProcess;
 class GpuTimers;
@@ -130,6 +131,15 @@ public:
     void drop(ChunkId id);
     std::size_t chunkCount() const { return chunks_.size(); }
     std::size_t residentBytes() const { return residentBytes_; }
+    const ChunkArena& arena() const { return *arena_; }
+
+    // --- batching ------------------------------------------------------------
+    // Chunks go out as one multi-draw per pass where the context can
+    // (multiDrawAvailable(): GL 4.3), else one draw call each; both give
+    // the same pixels. Asking for multi-draw where it is missing leaves it
+    // off; returns whether it is on.
+    bool setMultiDraw(bool on);
+    bool multiDraw() const { return multiDraw_; }
 
     // --- quality -------------------------------------------------------------
     void setQuality(const RenderQuality& quality) { quality_ = quality; }
@@ -165,12 +175,10 @@ public:
     RenderStats endFrame();
 
 private:
-    struct ChunkBuffers {
+    // A chunk's mesh lives in the arena; this is what the renderer keeps beside it.
+    struct ChunkRecord {
         std::uint64_t version = 0;
-        gl::VertexArray vao;
-        gl::Buffer vertices;  // positions, then normals
-        gl::Buffer indices;
-        GLsizei indexCount = 0;
+        std::size_t indexCount = 0;
         bool hasNormals = false;
         std::size_t bytes = 0;
         glm::vec3 lo{0.0f}, hi{0.0f};  // model-space bounds, for fitting the shadow map
@@ -203,9 +211,10 @@ private:
 
     // Frame lighting and the shadow for the bound program whose locations are `u`.
     void setLighting(const LitUniforms& u, const ShadowUniforms& s, bool shadowed) const;
-    bool renderShadows();
+    // The view's chunk draws into batch_, and the world box they span.
+    void gatherChunks(glm::vec3& lo, glm::vec3& hi);
+    bool renderShadows(const glm::vec3& lo, const glm::vec3& hi);
     void renderScene(bool shadowed);
-    void drawChunkNow(const SceneDraw& d);
     void drawGroundNow(const GroundStyle& ground);
     void drawFlatNow(const FlatDraw& d);
 
@@ -215,7 +224,7 @@ private:
     LitUniforms meshLit_{}, groundLit_{};
     ShadowUniforms meshShadow_{}, groundShadow_{};
     struct {
-        GLint model, normalMatrix, viewProjection, baseColor, specular, shininess, hasNormals;
+        GLint viewProjection;
     } mesh_{};
     struct {
         GLint viewProjection, groundColor, lineColor, spacing, lineWidth, majorEvery;
@@ -224,7 +233,7 @@ private:
         GLint model, view, projection, color;
     } flat_{};
 
-    std::unordered_map<ChunkId, ChunkBuffers> chunks_;
+    std::unordered_map<ChunkId, ChunkRecord> chunks_;
     std::size_t residentBytes_ = 0;
 
     gl::VertexArray groundVao_;
@@ -243,6 +252,9 @@ private:
     std::unique_ptr<SkyPass> sky_;
     std::unique_ptr<PostProcess> post_;
     std::unique_ptr<GpuTimers> timers_;
+    std::unique_ptr<ChunkArena> arena_;  // every chunk's mesh
+    std::unique_ptr<ChunkBatch> batch_;  // the open view's chunk draws
+    bool multiDraw_ = false;
 
     View view_;
     bool viewOpen_ = false;

@@ -72,35 +72,35 @@ namespace hg::garden::shaders {
     "    return vec4(ambient + direct, (a + kDirectOcclusion * d) / max(a + d, 1e-5));\n" \
     "}\n"
 
-const char* const kMeshVertex = R"(#version 330 core
+const char* const kMeshVertex = "#version 330 core\n" HG_DRAW_RECORD_GLSL R"(
 layout(location = 0) in vec3 aPosition;
 layout(location = 1) in vec3 aNormal;
-uniform mat4 uModel;
-uniform mat3 uNormalMatrix;
+layout(location = 2) in uint aDraw;
 uniform mat4 uViewProjection;
 out vec3 vWorld;
 out vec3 vNormal;
+flat out int vDraw;
 void main() {
-    vec4 world = uModel * vec4(aPosition, 1.0);
+    vDraw = int(aDraw);
+    vec4 world = drawModel(vDraw) * vec4(aPosition, 1.0);
     vWorld = world.xyz;
-    vNormal = uNormalMatrix * aNormal;
+    vNormal = drawNormalMatrix(vDraw) * aNormal;
     gl_Position = uViewProjection * world;
 }
 )";
 
-const char* const kMeshFragment = "#version 330 core\n" HG_LIGHTING_GLSL R"(
+const char* const kMeshFragment = "#version 330 core\n" HG_LIGHTING_GLSL HG_DRAW_RECORD_GLSL R"(
 in vec3 vWorld;
 in vec3 vNormal;
-uniform vec3 uBaseColor;
-uniform float uSpecular;
-uniform float uShininess;
-uniform bool uHasNormals;
+flat in int vDraw;
 out vec4 fragColor;
 void main() {
+    vec4 surface = drawRecord(vDraw, 7);  // sRGB base colour, specular
+    vec4 finish = drawRecord(vDraw, 8);   // shininess, has normals
     // Without vertex normals, the face normal from screen-space derivatives
     // (it faces the viewer, and culling leaves only front faces).
-    vec3 n = uHasNormals ? normalize(vNormal) : normalize(cross(dFdx(vWorld), dFdy(vWorld)));
-    fragColor = shade(toLinear(uBaseColor), n, vWorld, uSpecular, uShininess);
+    vec3 n = finish.y > 0.5 ? normalize(vNormal) : normalize(cross(dFdx(vWorld), dFdy(vWorld)));
+    fragColor = shade(toLinear(surface.rgb), n, vWorld, surface.a, finish.x);
 }
 )";
 

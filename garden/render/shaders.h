@@ -16,6 +16,20 @@
     "    return mix(c * 12.92, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(0.0031308, c));\n" \
     "}\n"
 
+// A batched chunk draw's record (chunk_batch.h): its model matrix, normal
+// matrix and material, kDrawRecordTexels texels from texture unit
+// kDrawRecordUnit. Texel 7 holds the sRGB base colour and the specular
+// strength, texel 8 the shininess and whether the mesh has normals.
+#define HG_DRAW_RECORD_GLSL                                                           \
+    "uniform samplerBuffer uDrawRecords;\n"                                           \
+    "vec4 drawRecord(int draw, int texel) { return texelFetch(uDrawRecords, draw * 9 + texel); }\n" \
+    "mat4 drawModel(int d) {\n"                                                       \
+    "    return mat4(drawRecord(d, 0), drawRecord(d, 1), drawRecord(d, 2), drawRecord(d, 3));\n" \
+    "}\n"                                                                             \
+    "mat3 drawNormalMatrix(int d) {\n"                                                \
+    "    return mat3(drawRecord(d, 4).xyz, drawRecord(d, 5).xyz, drawRecord(d, 6).xyz);\n" \
+    "}\n"
+
 namespace hg::garden::shaders {
 
 // Lit sculpture chunks: Blinn-Phong, up to kMaxLights directional and

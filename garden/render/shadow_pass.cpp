@@ -9,14 +9,16 @@
 #include <cmath>
 
 #include "garden/render/render_targets.h"
+#include "garden/render/shaders.h"
 
 namespace hg::garden {
 namespace {
 
-const char* const kDepthVertex = R"(#version 330 core
+const char* const kDepthVertex = "#version 330 core\n" HG_DRAW_RECORD_GLSL R"(
 layout(location = 0) in vec3 aPosition;
-uniform mat4 uLightModel;
-void main() { gl_Position = uLightModel * vec4(aPosition, 1.0); }
+layout(location = 2) in uint aDraw;
+uniform mat4 uLightViewProjection;
+void main() { gl_Position = uLightViewProjection * (drawModel(int(aDraw)) * vec4(aPosition, 1.0)); }
 )";
 
 const char* const kDepthFragment = R"(#version 330 core
@@ -31,7 +33,9 @@ constexpr float kConstantBias = 4.0f;
 }  // namespace
 
 ShadowPass::ShadowPass() : program_("shadow depth", kDepthVertex, kDepthFragment) {
-    lightModel_ = program_.uniform("uLightModel");
+    lightViewProjection_ = program_.uniform("uLightViewProjection");
+    program_.use();
+    glUniform1i(program_.uniform("uDrawRecords"), kDrawRecordUnit);
 }
 
 void ShadowPass::ensure(int size) {
@@ -55,8 +59,8 @@ void ShadowPass::ensure(int size) {
     size_ = size;
 }
 
-std::size_t ShadowPass::render(const std::vector<ShadowCaster>& casters, const glm::vec3& lo, const glm::vec3& hi,
-                               const glm::vec3& toLight, int size) {
+std::size_t ShadowPass::render(ChunkBatch& casters, ChunkArena& arena, bool multiDraw, const glm::vec3& lo,
+                               const glm::vec3& hi, const glm::vec3& toLight, int size) {
     ensure(std::clamp(size, 64, 8192));
     const glm::vec3 l = glm::normalize(toLight);
     const glm::vec3 up = std::fabs(l.y) < 0.99f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
@@ -97,16 +101,11 @@ std::size_t ShadowPass::render(const std::vector<ShadowCaster>& casters, const g
     glEnable(GL_POLYGON_OFFSET_FILL);
     glPolygonOffset(kSlopeBias, kConstantBias);
     program_.use();
-    for (const ShadowCaster& c : casters) {
-        const glm::mat4 m = lightViewProjection * c.model;
-        glUniformMatrix4fv(lightModel_, 1, GL_FALSE, glm::value_ptr(m));
-        glBindVertexArray(c.vao);
-        glDrawElements(GL_TRIANGLES, c.indexCount, GL_UNSIGNED_INT, nullptr);
-    }
-    glBindVertexArray(0);
+    glUniformMatrix4fv(lightViewProjection_, 1, GL_FALSE, glm::value_ptr(lightViewProjection));
+    const std::size_t calls = casters.draw(arena, multiDraw);
     glDisable(GL_POLYGON_OFFSET_FILL);
     glEnable(GL_CULL_FACE);
-    return casters.size();
+    return calls;
 }
 
 }  // namespace hg::garden

@@ -7,28 +7,22 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
-#include <vector>
-
+#include "garden/render/chunk_batch.h"
 #include "garden/render/gl_objects.h"
 #include "garden/render/shader_program.h"
 
 namespace hg::garden {
 
-struct ShadowCaster {
-    GLuint vao = 0;
-    GLsizei indexCount = 0;
-    glm::mat4 model{1.0f};
-};
-
 class ShadowPass {
 public:
     ShadowPass();  // throws GlError naming a shader that fails
 
-    // Renders the casters' depth as seen from `toLight` (towards the sun)
-    // over the world box [lo, hi], into a map of `size` texels a side.
+    // Renders the depth of the batch's chunks (the view's own batch: the
+    // casters are what the view draws) as seen from `toLight` (towards the
+    // sun) over the world box [lo, hi], into a map of `size` texels a side.
     // Leaves its framebuffer bound; returns the draw calls made.
-    std::size_t render(const std::vector<ShadowCaster>& casters, const glm::vec3& lo, const glm::vec3& hi,
-                       const glm::vec3& toLight, int size);
+    std::size_t render(ChunkBatch& casters, ChunkArena& arena, bool multiDraw, const glm::vec3& lo,
+                       const glm::vec3& hi, const glm::vec3& toLight, int size);
 
     // World point to shadow-map texture coordinates and depth, all in [0, 1].
     const glm::mat4& worldToTexture() const { return worldToTexture_; }
@@ -41,7 +35,7 @@ private:
     void ensure(int size);
 
     ShaderProgram program_;
-    GLint lightModel_ = -1;
+    GLint lightViewProjection_ = -1;
     gl::Framebuffer fbo_;
     gl::Texture depth_;
     int size_ = 0;

@@ -84,6 +84,12 @@ void drawStatsPanel(const FrameHistory& history, bool toggle) {
         ImGui::SameLine();
         ImGui::TextUnformatted(stageName(static_cast<Stage>(s)));
     }
+    // The GPU's own time (timer queries), beside the CPU's stages: a frame
+    // may be cheap to submit and still slow to draw.
+    if (last->gpuMs >= 0.0)
+        ImGui::Text("GPU %.2f ms", last->gpuMs);
+    else
+        ImGui::TextUnformatted("GPU time: not measured yet");
 
     if (ImGui::BeginTable("##counters", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp)) {
         counterRow("morph samples", last->morphSamples);
@@ -94,6 +100,7 @@ void drawStatsPanel(const FrameHistory& history, bool toggle) {
         counterRow("upload bytes", last->uploadBytes);
         counterRow("uploads pending", last->uploadsPending);
         counterRow("triangles drawn", last->trianglesDrawn);
+        counterRow("chunks drawn", last->chunksDrawn);
         counterRow("draw calls", last->drawCalls);
         ImGui::EndTable();
     }

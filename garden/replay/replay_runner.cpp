@@ -222,7 +222,8 @@ std::string statsJson(const ReplayScript& script, const ReplayResult& result) {
                           {"mesh_bytes_shown", f.meshBytesShown}, {"upload_bytes", f.uploadBytes},
                           {"uploads_pending", f.uploadsPending}, {"triangles_shown", f.trianglesShown},
                           {"triangles_drawn", f.trianglesDrawn},
-                          {"draw_calls", f.drawCalls}});
+                          {"chunks_drawn", f.chunksDrawn}, {"draw_calls", f.drawCalls},
+                          {"gpu_ms", f.gpuMs}});
     }
     const double n = std::max<double>(1.0, static_cast<double>(result.stats.size()));
     nlohmann::json mean = nlohmann::json::object(), maxima = nlohmann::json::object();

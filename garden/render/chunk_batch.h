@@ -1,0 +1,77 @@
+// One view's chunk draws as a batch: per draw a record of its transform and
+// material in a texture buffer, and a command naming its range in the
+// chunk arena. Drawn with one glMultiDrawElementsIndirect where GL 4.3 (or
+// ARB_multi_draw_indirect with ARB_base_instance) is present, each draw's
+// base instance selecting its record; else, on GL 3.3, one
+// glDrawElementsBaseVertex per chunk with the record's index as a constant
+// attribute. Both paths use the same programs and records, so they give the
+// same pixels (docs/rendering.md, "Batched drawing").
+//
+// Programs that draw a batch declare HG_DRAW_RECORD_GLSL (shaders.h) and
+// read the records from texture unit kDrawRecordUnit.
+#pragma once
+
+#include <glm/vec4.hpp>
+
+#include <array>
+
+#include <cstddef>
+#include <vector>
+
+#include "garden/render/chunk_arena.h"
+#include "garden/render/gl_objects.h"
+
+namespace hg::garden {
+
+// The texture unit the batch's records are bound to while it draws.
+constexpr GLint kDrawRecordUnit = 4;
+// vec4 texels per draw record (shaders.h's HG_DRAW_RECORD_GLSL reads them).
+constexpr int kDrawRecordTexels = 9;
+// A draw's record as the shaders read it; renderer.cpp fills it.
+using DrawRecord = std::array<glm::vec4, kDrawRecordTexels>;
+
+// Whether this context can draw a batch in one call (GL 4.3, or 3.3 with
+// ARB_multi_draw_indirect and ARB_base_instance).
+bool multiDrawAvailable();
+
+class ChunkBatch {
+public:
+    ChunkBatch();
+    ~ChunkBatch();
+    ChunkBatch(const ChunkBatch&) = delete;
+    ChunkBatch& operator=(const ChunkBatch&) = delete;
+
+    void clear();
+    void add(const ArenaSlot& slot, const DrawRecord& record);
+    std::size_t size() const { return commands_.size(); }
+    bool empty() const { return commands_.empty(); }
+
+    // Draws every chunk with the program in use, whose draw records are
+    // read from kDrawRecordUnit; `multiDraw` false takes the one-call-a-chunk
+    // path. Returns the GL draw calls made.
+    std::size_t draw(ChunkArena& arena, bool multiDraw);
+
+private:
+    struct Command {  // GL's DrawElementsIndirectCommand
+        GLuint count;
+        GLuint instanceCount;
+        GLuint firstIndex;
+        GLint baseVertex;
+        GLuint baseInstance;
+    };
+    // Sends the records (and, for a multi-draw, the commands) of
+    // [first, first + count) when they are not the ones on the GPU already.
+    void send(std::size_t first, std::size_t count, bool commands);
+
+    std::vector<Command> commands_;
+    std::vector<float> records_;  // kDrawRecordTexels * 4 floats per draw
+    gl::Buffer recordBuffer_;
+    gl::Texture recordTexture_;
+    gl::Buffer commandBuffer_;
+    std::size_t maxRecords_ = 0;  // what one texture buffer can hold
+    std::size_t sentFirst_ = 0, sentCount_ = 0;
+    bool sent_ = false;
+    bool sentCommands_ = false;
+};
+
+}  // namespace hg::garden
