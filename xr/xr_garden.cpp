@@ -328,7 +328,7 @@ private:
             }
             if (overlay_) drawPanels();
             const garden::RenderStats rs = renderer_.endFrame();
-            drawn = {rs.trianglesDrawn, rs.drawCalls};
+            drawn = {rs.trianglesDrawn, rs.chunksDrawn, rs.drawCalls, rs.gpuMs()};
             ++info_.framesRendered;
         }
         headset_.endFrame(f, render, kNearZ, kFarZ);
