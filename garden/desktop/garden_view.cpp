@@ -67,22 +67,27 @@ poly::Mesh pathMesh(const PathSpec& path, double groundHeight) {
 
 // Whether a chunk's box (model units) may show: false when all eight of its
 // corners lie beyond one plane of the view frustum.
-bool mayShow(const glm::mat4& modelViewProjection, const double lo[3], const double hi[3]) {
+enum class InView { Outside, Partly, Wholly };
+
+// Where a model-space box lies against the view frustum (clip space: every
+// corner tested against the six planes). Outside only when all eight
+// corners are beyond one plane: conservative, so nothing visible is lost.
+InView frustumTest(const glm::mat4& modelViewProjection, const double lo[3], const double hi[3]) {
     int outside[6] = {0, 0, 0, 0, 0, 0};
+    bool allInside = true;
     for (int c = 0; c < 8; ++c) {
         const glm::vec4 p = modelViewProjection * glm::vec4(static_cast<float>(c & 1 ? hi[0] : lo[0]),
                                                            static_cast<float>(c & 2 ? hi[1] : lo[1]),
                                                            static_cast<float>(c & 4 ? hi[2] : lo[2]), 1.0f);
-        outside[0] += p.x < -p.w;
-        outside[1] += p.x > p.w;
-        outside[2] += p.y < -p.w;
-        outside[3] += p.y > p.w;
-        outside[4] += p.z < -p.w;
-        outside[5] += p.z > p.w;
+        const bool out[6] = {p.x < -p.w, p.x > p.w, p.y < -p.w, p.y > p.w, p.z < -p.w, p.z > p.w};
+        for (int k = 0; k < 6; ++k) {
+            outside[k] += out[k];
+            allInside = allInside && !out[k];
+        }
     }
     for (int n : outside)
-        if (n == 8) return false;
-    return true;
+        if (n == 8) return InView::Outside;
+    return allInside ? InView::Wholly : InView::Partly;
 }
 
 }  // namespace
@@ -150,12 +155,24 @@ void GardenView::render(const GardenSession& session, glm::ivec2 viewport, const
         if (!st.hasGrid()) continue;  // still loading
         const RenderMaterial m = renderMaterial(st.material);
         const glm::mat4 mvp = v.projection * v.view * st.modelToWorld;
-        for (std::size_t c = 0; c < st.queue->count(); ++c) {
+        // The sculpture's whole box first (the layout's first and last
+        // chunks hold its corners): one test instead of one per chunk for a
+        // sculpture wholly in view or wholly out of it.
+        const std::size_t chunks = st.queue->count();
+        if (chunks == 0) continue;
+        double lo[3], hi[3], last[3];
+        st.layout->modelBox(0, lo, last);
+        st.layout->modelBox(chunks - 1, last, hi);
+        const InView whole = frustumTest(mvp, lo, hi);
+        if (whole == InView::Outside) continue;
+        for (std::size_t c = 0; c < chunks; ++c) {
             const auto mesh = st.queue->mesh(c);
             if (!mesh || mesh->empty()) continue;
-            double lo[3], hi[3];
-            st.layout->modelBox(c, lo, hi);
-            if (mayShow(mvp, lo, hi)) renderer_.drawChunk(chunkId(s, c), st.modelToWorld, m);
+            if (whole == InView::Partly) {
+                st.layout->modelBox(c, lo, hi);
+                if (frustumTest(mvp, lo, hi) == InView::Outside) continue;
+            }
+            renderer_.drawChunk(chunkId(s, c), st.modelToWorld, m);
         }
     }
     if (const auto t = session.morphTriangle()) {

@@ -1,6 +1,7 @@
 #include "garden/render/chunk_batch.h"
 
 #include <algorithm>
+#include <stdexcept>
 
 namespace hg::garden {
 
@@ -27,11 +28,21 @@ ChunkBatch::~ChunkBatch() = default;
 
 void ChunkBatch::clear() {
     commands_.clear();
+    recordOf_.clear();
     records_.clear();
     sent_ = false;
 }
 
-void ChunkBatch::add(const ArenaSlot& slot, const DrawRecord& record) {
+std::size_t ChunkBatch::addRecord(const DrawRecord& record) {
+    const std::size_t index = records();
+    for (const glm::vec4& texel : record) records_.insert(records_.end(), {texel.x, texel.y, texel.z, texel.w});
+    sent_ = false;
+    return index;
+}
+
+void ChunkBatch::add(const ArenaSlot& slot, std::size_t record) {
+    if (record >= records() || (!recordOf_.empty() && record < recordOf_.back()))
+        throw std::logic_error("chunk batch: records must be used in the order they were added");
     Command c{};
     c.count = static_cast<GLuint>(slot.indexCount);
     c.instanceCount = 1;
@@ -39,21 +50,23 @@ void ChunkBatch::add(const ArenaSlot& slot, const DrawRecord& record) {
     c.baseVertex = static_cast<GLint>(slot.firstVertex);
     c.baseInstance = 0;  // set per group in send()
     commands_.push_back(c);
-    for (const glm::vec4& texel : record) records_.insert(records_.end(), {texel.x, texel.y, texel.z, texel.w});
+    recordOf_.push_back(record);
     sent_ = false;
 }
 
-void ChunkBatch::send(std::size_t first, std::size_t count, bool commands) {
+void ChunkBatch::send(std::size_t first, std::size_t count, std::size_t recordFirst, std::size_t recordCount,
+                      bool commands) {
     if (sent_ && sentFirst_ == first && sentCount_ == count && (sentCommands_ || !commands)) return;
     constexpr std::size_t kFloats = 4 * kDrawRecordTexels;
     // Orphan and refill: the previous view's draws may still be reading.
     glBindBuffer(GL_TEXTURE_BUFFER, recordBuffer_.get());
-    glBufferData(GL_TEXTURE_BUFFER, static_cast<GLsizeiptr>(count * kFloats * sizeof(float)),
-                 records_.data() + first * kFloats, GL_STREAM_DRAW);
+    glBufferData(GL_TEXTURE_BUFFER, static_cast<GLsizeiptr>(recordCount * kFloats * sizeof(float)),
+                 records_.data() + recordFirst * kFloats, GL_STREAM_DRAW);
     glBindBuffer(GL_TEXTURE_BUFFER, 0);
-    // Within a group, draw k's base instance is k: the identity draw-id
-    // buffer turns it into its record's index.
-    for (std::size_t k = 0; k < count; ++k) commands_[first + k].baseInstance = static_cast<GLuint>(k);
+    // A command's base instance is its record's index within the group:
+    // the identity draw-id buffer hands that to the shaders.
+    for (std::size_t k = 0; k < count; ++k)
+        commands_[first + k].baseInstance = static_cast<GLuint>(recordOf_[first + k] - recordFirst);
     // GL 3.3 has no indirect buffer binding at all.
     if (commands) {
         glBindBuffer(GL_DRAW_INDIRECT_BUFFER, commandBuffer_.get());
@@ -70,8 +83,7 @@ void ChunkBatch::send(std::size_t first, std::size_t count, bool commands) {
 std::size_t ChunkBatch::draw(ChunkArena& arena, bool multiDraw) {
     if (commands_.empty()) return 0;
     std::size_t calls = 0;
-    const std::size_t group = std::min(maxRecords_, commands_.size());
-    arena.ensureDrawIds(group);
+    arena.ensureDrawIds(std::min(maxRecords_, records()));
     glBindVertexArray(arena.vertexArray());
     if (multiDraw)
         glEnableVertexAttribArray(ChunkArena::kDrawIdAttribute);
@@ -80,25 +92,32 @@ std::size_t ChunkBatch::draw(ChunkArena& arena, bool multiDraw) {
     glActiveTexture(GL_TEXTURE0 + kDrawRecordUnit);
     glBindTexture(GL_TEXTURE_BUFFER, recordTexture_.get());
     glActiveTexture(GL_TEXTURE0);
-    for (std::size_t first = 0; first < commands_.size(); first += group) {
-        const std::size_t count = std::min(group, commands_.size() - first);
-        send(first, count, multiDraw);
+    // Groups of commands whose records fit one texture buffer (all of them
+    // in one group unless there are tens of thousands of placements).
+    for (std::size_t first = 0; first < commands_.size();) {
+        const std::size_t recordFirst = recordOf_[first];
+        std::size_t end = first;
+        while (end < commands_.size() && recordOf_[end] - recordFirst < maxRecords_) ++end;
+        const std::size_t count = end - first;
+        const std::size_t recordCount = recordOf_[end - 1] - recordFirst + 1;
+        send(first, count, recordFirst, recordCount, multiDraw);
         if (multiDraw) {
             glBindBuffer(GL_DRAW_INDIRECT_BUFFER, commandBuffer_.get());
             glMultiDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT, nullptr, static_cast<GLsizei>(count), 0);
             glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
             ++calls;
-            continue;
+        } else {
+            for (std::size_t k = first; k < end; ++k) {
+                const Command& c = commands_[k];
+                // The array is disabled: every vertex reads this constant.
+                glVertexAttribI1ui(ChunkArena::kDrawIdAttribute, static_cast<GLuint>(recordOf_[k] - recordFirst));
+                glDrawElementsBaseVertex(GL_TRIANGLES, static_cast<GLsizei>(c.count), GL_UNSIGNED_INT,
+                                         reinterpret_cast<const void*>(static_cast<std::size_t>(c.firstIndex) * 4),
+                                         c.baseVertex);
+                ++calls;
+            }
         }
-        for (std::size_t k = 0; k < count; ++k) {
-            const Command& c = commands_[first + k];
-            // The array is disabled: every vertex reads this constant.
-            glVertexAttribI1ui(ChunkArena::kDrawIdAttribute, static_cast<GLuint>(k));
-            glDrawElementsBaseVertex(GL_TRIANGLES, static_cast<GLsizei>(c.count), GL_UNSIGNED_INT,
-                                     reinterpret_cast<const void*>(static_cast<std::size_t>(c.firstIndex) * 4),
-                                     c.baseVertex);
-            ++calls;
-        }
+        first = end;
     }
     glActiveTexture(GL_TEXTURE0 + kDrawRecordUnit);
     glBindTexture(GL_TEXTURE_BUFFER, 0);

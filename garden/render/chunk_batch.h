@@ -1,8 +1,9 @@
-// One view's chunk draws as a batch: per draw a record of its transform and
-// material in a texture buffer, and a command naming its range in the
-// chunk arena. Drawn with one glMultiDrawElementsIndirect where GL 4.3 (or
-// ARB_multi_draw_indirect with ARB_base_instance) is present, each draw's
-// base instance selecting its record; else, on GL 3.3, one
+// One view's chunk draws as a batch: records of transform and material in
+// a texture buffer (one per placement: every chunk of a sculpture shares
+// its sculpture's), and per chunk a command naming its range in the chunk
+// arena and its record. Drawn with one glMultiDrawElementsIndirect where
+// GL 4.3 (or ARB_multi_draw_indirect with ARB_base_instance) is present,
+// each command's base instance selecting its record; else, on GL 3.3, one
 // glDrawElementsBaseVertex per chunk with the record's index as a constant
 // attribute. Both paths use the same programs and records, so they give the
 // same pixels (docs/rendering.md, "Batched drawing").
@@ -42,8 +43,14 @@ public:
     ChunkBatch& operator=(const ChunkBatch&) = delete;
 
     void clear();
-    void add(const ArenaSlot& slot, const DrawRecord& record);
+    // A record for the chunks that follow; its index.
+    std::size_t addRecord(const DrawRecord& record);
+    // A chunk drawn with record `record`: records are used in the order
+    // they were added (std::logic_error otherwise), so a group of draws
+    // needs one contiguous range of them.
+    void add(const ArenaSlot& slot, std::size_t record);
     std::size_t size() const { return commands_.size(); }
+    std::size_t records() const { return records_.size() / (4 * kDrawRecordTexels); }
     bool empty() const { return commands_.empty(); }
 
     // Draws every chunk with the program in use, whose draw records are
@@ -59,12 +66,14 @@ private:
         GLint baseVertex;
         GLuint baseInstance;
     };
-    // Sends the records (and, for a multi-draw, the commands) of
-    // [first, first + count) when they are not the ones on the GPU already.
-    void send(std::size_t first, std::size_t count, bool commands);
+    // Sends the records [recordFirst, recordFirst + recordCount) and, for a
+    // multi-draw, the commands [first, first + count) with base instances
+    // counted from recordFirst, unless they are on the GPU already.
+    void send(std::size_t first, std::size_t count, std::size_t recordFirst, std::size_t recordCount, bool commands);
 
     std::vector<Command> commands_;
-    std::vector<float> records_;  // kDrawRecordTexels * 4 floats per draw
+    std::vector<std::size_t> recordOf_;  // per command
+    std::vector<float> records_;         // kDrawRecordTexels * 4 floats per record
     gl::Buffer recordBuffer_;
     gl::Texture recordTexture_;
     gl::Buffer commandBuffer_;

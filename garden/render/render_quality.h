@@ -11,6 +11,7 @@ struct RenderQuality {
     int msaaSamples = 4;             // 1: no multisampling; clamped to what the driver offers
     bool shadows = true;             // the sun's (the first directional light's) shadow map
     int shadowMapSize = 2048;        // texels on a side
+    float shadowDistance = 40.0f;    // metres from the eye within which chunks cast (0: all in view)
     bool ambientOcclusion = true;    // screen-space, from the depth buffer
     int aoSamples = 12;              // hemisphere samples per pixel (4..32)
     bool aoHalfResolution = false;   // AO computed at half width and height, then upsampled

@@ -113,6 +113,7 @@ Renderer::Renderer()
       timers_(std::make_unique<GpuTimers>()),
       arena_(std::make_unique<ChunkArena>()),
       batch_(std::make_unique<ChunkBatch>()),
+      shadowBatch_(std::make_unique<ChunkBatch>()),
       multiDraw_(multiDrawAvailable()) {
     auto lit = [](const ShaderProgram& p) {
         return LitUniforms{p.uniform("uEye"),         p.uniform("uAmbient"),       p.uniform("uLightCount"),
@@ -363,30 +364,58 @@ void Renderer::drawSphere(const glm::vec3& center, float radius, const glm::vec4
 
 void Renderer::gatherChunks(glm::vec3& lo, glm::vec3& hi) {
     batch_->clear();
+    shadowBatch_->clear();
     lo = glm::vec3(1e30f);
     hi = glm::vec3(-1e30f);
+    const float shadowReach = quality_.shadowDistance > 0.0f ? quality_.shadowDistance : 1e30f;
+    // Draws of one placement come together (a sculpture's chunks): they
+    // share one record, made when the placement or material changes.
+    const SceneDraw* previous = nullptr;
+    bool previousNormals = false;
+    std::size_t record = 0, shadowRecord = 0;
+    bool shadowRecordMade = false;
+    float stretch = 1.0f;  // the model matrix's largest scale, for chunk radii
     for (const SceneDraw& d : sceneDraws_) {
         if (d.ground) continue;
         auto found = chunks_.find(d.id);
         const ArenaSlot* slot = arena_->slot(d.id);
         if (found == chunks_.end() || slot == nullptr) continue;  // dropped or emptied since recorded
         const ChunkRecord& c = found->second;
-        batch_->add(*slot, drawRecord(d.model, d.material, c.hasNormals));
-        for (int i = 0; i < 8; ++i) {
-            const glm::vec3 corner((i & 1) ? c.hi.x : c.lo.x, (i & 2) ? c.hi.y : c.lo.y, (i & 4) ? c.hi.z : c.lo.z);
-            const glm::vec3 w = glm::vec3(d.model * glm::vec4(corner, 1.0f));
-            lo = glm::min(lo, w);
-            hi = glm::max(hi, w);
+        const bool same = previous && previousNormals == c.hasNormals && previous->model == d.model &&
+                          previous->material.baseColor == d.material.baseColor &&
+                          previous->material.specular == d.material.specular &&
+                          previous->material.shininess == d.material.shininess;
+        if (!same) {
+            const DrawRecord r = drawRecord(d.model, d.material, c.hasNormals);
+            record = batch_->addRecord(r);
+            shadowRecordMade = false;
+            stretch = std::max({glm::length(glm::vec3(d.model[0])), glm::length(glm::vec3(d.model[1])),
+                                glm::length(glm::vec3(d.model[2]))});
+            previous = &d;
+            previousNormals = c.hasNormals;
         }
+        batch_->add(*slot, record);
+        // A caster when it comes within the shadow's reach of the eye; the
+        // map is fitted to the casters' bounding spheres.
+        const glm::vec3 centre = glm::vec3(d.model * glm::vec4(0.5f * (c.lo + c.hi), 1.0f));
+        const float radius = 0.5f * glm::length(c.hi - c.lo) * stretch;
+        if (glm::length(centre - view_.eye) - radius > shadowReach) continue;
+        if (!shadowRecordMade) {
+            shadowRecord = shadowBatch_->addRecord(drawRecord(d.model, d.material, c.hasNormals));
+            shadowRecordMade = true;
+        }
+        shadowBatch_->add(*slot, shadowRecord);
+        lo = glm::min(lo, centre - glm::vec3(radius));
+        hi = glm::max(hi, centre + glm::vec3(radius));
     }
 }
 
 bool Renderer::renderShadows(const glm::vec3& lo, const glm::vec3& hi) {
     // The ground only receives: the casters are the view's chunks.
-    if (!quality_.shadows || view_.lights.empty() || batch_->empty()) return false;
+    if (!quality_.shadows || view_.lights.empty() || shadowBatch_->empty()) return false;
     timers_->begin(GpuPass::Shadow);
-    stats_.shadowDrawCalls +=
-        shadow_->render(*batch_, *arena_, multiDraw_, lo, hi, view_.lights.front().direction, quality_.shadowMapSize);
+    stats_.shadowDrawCalls += shadow_->render(*shadowBatch_, *arena_, multiDraw_, lo, hi,
+                                              view_.lights.front().direction, quality_.shadowMapSize);
     timers_->end();
     return true;
 }

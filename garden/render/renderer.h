@@ -211,7 +211,8 @@ private:
 
     // Frame lighting and the shadow for the bound program whose locations are `u`.
     void setLighting(const LitUniforms& u, const ShadowUniforms& s, bool shadowed) const;
-    // The view's chunk draws into batch_, and the world box they span.
+    // The view's chunk draws into batch_, the casters among them (within
+    // the shadow distance) into shadowBatch_ with the world box they span.
     void gatherChunks(glm::vec3& lo, glm::vec3& hi);
     bool renderShadows(const glm::vec3& lo, const glm::vec3& hi);
     void renderScene(bool shadowed);
@@ -253,7 +254,8 @@ private:
     std::unique_ptr<PostProcess> post_;
     std::unique_ptr<GpuTimers> timers_;
     std::unique_ptr<ChunkArena> arena_;  // every chunk's mesh
-    std::unique_ptr<ChunkBatch> batch_;  // the open view's chunk draws
+    std::unique_ptr<ChunkBatch> batch_;        // the open view's chunk draws
+    std::unique_ptr<ChunkBatch> shadowBatch_;  // those of them that cast the sun's shadow
     bool multiDraw_ = false;
 
     View view_;

@@ -36,6 +36,12 @@ protected:
                 const RenderMaterial material{{0.2f + 0.07f * float(k % 10), 0.5f, 0.9f - 0.08f * float(k % 9)},
                                               0.1f * float(k % 4), 8.0f + 4.0f * float(k % 6)};
                 EXPECT_TRUE(renderer_->drawChunk(id, m, material));
+                // A sculpture of several chunks: the same placement and
+                // material again (one record for them all).
+                if (k % 3 == 0) {
+                    EXPECT_TRUE(renderer_->drawChunk(1 + (id % 4), m, material));
+                    EXPECT_TRUE(renderer_->drawChunk(1 + ((id + 1) % 4), m, material));
+                }
             }
         lastStats_ = renderer_->endFrame();
         read();
@@ -54,6 +60,8 @@ protected:
     RenderStats lastStats_;
 };
 
+const RenderMaterial kRedMaterial{{0.9f, 0.1f, 0.1f}, 0.2f, 32.0f};
+
 RenderQuality everything() {
     RenderQuality q;  // MSAA, shadows, occlusion: every pass that draws chunks
     return q;
@@ -67,12 +75,12 @@ TEST_F(BatchedDrawing, MultiDrawAndOneCallPerChunkGiveTheSamePixels) {
     const std::vector<std::uint8_t> single = renderScene(false, everything());
     const RenderStats singleStats = lastStats_;
 
-    EXPECT_EQ(batchedStats.chunksDrawn, 45u);
-    EXPECT_EQ(singleStats.chunksDrawn, 45u);
+    EXPECT_EQ(batchedStats.chunksDrawn, 75u);
+    EXPECT_EQ(singleStats.chunksDrawn, 75u);
     EXPECT_EQ(batchedStats.drawCalls, 2u) << "one multi-draw and the ground";
-    EXPECT_EQ(singleStats.drawCalls, 46u) << "a call per chunk and the ground";
+    EXPECT_EQ(singleStats.drawCalls, 76u) << "a call per chunk and the ground";
     EXPECT_EQ(batchedStats.shadowDrawCalls, 1u);
-    EXPECT_EQ(singleStats.shadowDrawCalls, 45u);
+    EXPECT_EQ(singleStats.shadowDrawCalls, 75u);
     EXPECT_EQ(batchedStats.trianglesDrawn, singleStats.trianglesDrawn);
 
     ASSERT_EQ(batched.size(), single.size());
@@ -84,6 +92,46 @@ TEST_F(BatchedDrawing, MultiDrawAndOneCallPerChunkGiveTheSamePixels) {
     for (int y = 0; y < kHeight; ++y)
         for (int x = 0; x < kWidth; ++x) coloured += pixel(x, y).b > pixel(x, y).g + 30 ? 1 : 0;
     EXPECT_GT(coloured, 2000);
+}
+
+TEST_F(BatchedDrawing, OnlyChunksWithinTheShadowDistanceCastAndTheRestStillDraw) {
+    renderer_->upload(1, 1, uvSphereMesh(0.5f, 32, 16));
+    // The sun low from +x: each sphere's shadow lies beside it towards -x.
+    const View view = makeView({0.0f, 2.0f, -30.0f}, {0.0f, 0.3f, -40.0f}, {1.0f, 0.8f, 0.0f});
+    const glm::vec3 far(0.0f, 0.6f, -40.0f);
+    auto frame = [&](float shadowDistance) {
+        RenderQuality q = everything();
+        q.ambientOcclusion = false;
+        q.shadowDistance = shadowDistance;
+        renderer_->setQuality(q);
+        target_->bind();
+        renderer_->beginFrame(view);
+        renderer_->drawGround(GroundStyle{});
+        renderer_->drawChunk(1, glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.6f, -26.0f)), kRedMaterial);
+        renderer_->drawChunk(1, glm::translate(glm::mat4(1.0f), far), kRedMaterial);
+        const RenderStats stats = renderer_->endFrame();
+        read();
+        return stats;
+    };
+    // Where the far sphere's shadow falls: from its centre along the sun's
+    // ray down to the ground.
+    const glm::vec3 toSun = glm::normalize(glm::vec3(1.0f, 0.8f, 0.0f));
+    const glm::vec3 shadowAt = far - toSun * (far.y / toSun.y);
+    const glm::ivec2 p = worldToPixel(view, shadowAt);
+    ASSERT_TRUE(p.x > 3 && p.y > 3 && p.x < kWidth - 3 && p.y < kHeight - 3);
+    auto darkness = [&] {
+        int sum = 0;
+        for (int y = p.y - 2; y <= p.y + 2; ++y)
+            for (int x = p.x - 2; x <= p.x + 2; ++x) sum += pixel(x, y).sum();
+        return sum / 25;
+    };
+    const RenderStats near = frame(6.0f);  // the far sphere is 10 m from the eye, the other 4 m
+    EXPECT_EQ(near.chunksDrawn, 2u) << "both drawn";
+    const int lawn = darkness();
+    EXPECT_GT(count(reddish), 200) << "the far sphere itself is there";
+    frame(0.0f);  // no limit
+    const int shaded = darkness();
+    EXPECT_LT(shaded, lawn - 30) << "its shadow shows only when it may cast";
 }
 
 TEST_F(BatchedDrawing, ChunksSurviveTheArenaGrowingAndMoving) {
