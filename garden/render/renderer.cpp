@@ -38,6 +38,9 @@ constexpr float kGroundOffsetUnits = 1.0f;
 constexpr int kSphereSlices = 48;
 constexpr int kSphereStacks = 24;
 constexpr int kCircleSegments = 96;
+// The wireframe overlay's lines (sRGB, over the tone-mapped picture): dark
+// enough to read on plaster, light enough that bronze shows through.
+const glm::vec4 kEdgeColor{0.05f, 0.06f, 0.08f, 0.55f};
 
 const void* byteOffset(std::size_t bytes) { return reinterpret_cast<const void*>(bytes); }
 
@@ -115,7 +118,8 @@ Renderer::Renderer()
     const ShaderProgram& m = meshProgram_;
     mesh_ = {m.uniform("uModel"),     m.uniform("uNormalMatrix"), m.uniform("uViewProjection"),
              m.uniform("uBaseColor"), m.uniform("uSpecular"),     m.uniform("uShininess"),
-             m.uniform("uHasNormals")};
+             m.uniform("uHasNormals"), m.uniform("uKind"),         m.uniform("uMetallic"),
+             m.uniform("uDetailScale")};
     const ShaderProgram& g = groundProgram_;
     ground_ = {g.uniform("uViewProjection"), g.uniform("uGroundColor"), g.uniform("uLineColor"),
                g.uniform("uSpacing"),        g.uniform("uLineWidth"),   g.uniform("uMajorEvery")};
@@ -467,6 +471,24 @@ void Renderer::finishView() {
         glBindBuffer(GL_ARRAY_BUFFER, 0);
         for (const FlatDraw& d : flatDraws_) drawFlatNow(d);
     }
+    if (std::any_of(sceneDraws_.begin(), sceneDraws_.end(), [](const SceneDraw& d) { return d.material.edges != 0; })) {
+        // The wireframe overlay: the front faces' edges, pulled towards the
+        // eye like the other lines, blended so the surface shows through.
+        flatProgram_.use();
+        setMat4(flat_.view, view_.view);
+        setMat4(flat_.projection, view_.projection);
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        glDepthMask(GL_FALSE);
+        glEnable(GL_DEPTH_TEST);
+        glEnable(GL_CULL_FACE);  // back faces' edges stay hidden
+        glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+        for (const SceneDraw& d : sceneDraws_)
+            if (!d.ground && d.material.edges != 0) drawEdgesNow(d);
+        glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+        glDepthMask(GL_TRUE);
+        glDisable(GL_BLEND);
+    }
     timers_->end();
 }
 
@@ -474,17 +496,33 @@ void Renderer::drawChunkNow(const SceneDraw& d) {
     auto found = chunks_.find(d.id);
     if (found == chunks_.end() || found->second.indexCount == 0) return;  // dropped since recorded
     const ChunkBuffers& c = found->second;
-    const RenderMaterial& material = d.material;
     meshProgram_.use();
     setMat4(mesh_.model, d.model);
     const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(d.model)));
     glUniformMatrix3fv(mesh_.normalMatrix, 1, GL_FALSE, glm::value_ptr(normalMatrix));
-    glUniform3fv(mesh_.baseColor, 1, glm::value_ptr(material.baseColor));
-    glUniform1f(mesh_.specular, material.specular);
-    glUniform1f(mesh_.shininess, material.shininess);
+    setMaterial(d.material);
     glUniform1i(mesh_.hasNormals, c.hasNormals ? 1 : 0);
     glBindVertexArray(c.vao.get());
     glDrawElements(GL_TRIANGLES, c.indexCount, GL_UNSIGNED_INT, byteOffset(0));
+    glBindVertexArray(0);
+}
+
+void Renderer::setMaterial(const RenderMaterial& material) const {
+    glUniform3fv(mesh_.baseColor, 1, glm::value_ptr(material.baseColor));
+    glUniform1f(mesh_.specular, material.specular);
+    glUniform1f(mesh_.shininess, material.shininess);
+    glUniform1i(mesh_.kind, material.kind);
+    glUniform1f(mesh_.metallic, material.metallic);
+    glUniform1f(mesh_.detailScale, material.detailScale > 0.0f ? material.detailScale : 1.0f);
+}
+
+void Renderer::drawEdgesNow(const SceneDraw& d) {
+    auto found = chunks_.find(d.id);
+    if (found == chunks_.end() || found->second.indexCount == 0) return;
+    setMat4(flat_.model, d.model);
+    glUniform4fv(flat_.color, 1, glm::value_ptr(kEdgeColor));
+    glBindVertexArray(found->second.vao.get());
+    glDrawElements(GL_TRIANGLES, found->second.indexCount, GL_UNSIGNED_INT, byteOffset(0));
     glBindVertexArray(0);
 }
 
