@@ -44,18 +44,10 @@ poly::Mesh square(int n = 1) {
     return m;
 }
 
-RenderQuality plain() {
-    RenderQuality q;
-    q.msaaSamples = 1;
-    q.shadows = false;
-    q.ambientOcclusion = false;
-    return q;
-}
-
 class MaterialLookTest : public GlTest {
 protected:
     void render(const View& view, const glm::mat4& model, const RenderMaterial& material) {
-        renderer_->setQuality(plain());
+        renderer_->setQuality(plainQuality());
         target_->bind();
         renderer_->beginFrame(view);
         renderer_->drawChunk(1, model, material);
