@@ -3,6 +3,9 @@
 // alone and with the presets, against the low preset measured in the same
 // run. Frame time is wall time to glFinish (on llvmpipe that is the
 // software GPU's work); the GPU columns are the renderer's timer queries.
+// The last rows give the nine blocks the built-in materials' procedural
+// detail (issue 24: marble, wood, bronze...), the clay view and the
+// wireframe overlay, at the low and high presets.
 //
 //   xvfb-run -a ./build/release/bench/bench_look [--json FILE] [--filter NAME] [--repeat N]
 #include <epoxy/gl.h>
@@ -21,6 +24,8 @@
 #include "frep/model.h"
 #include "frep/parser.h"
 #include "garden/render/gl_context.h"
+#include "garden/render/material_look.h"
+#include "garden/scene/materials.h"
 #include "garden/render/offscreen_target.h"
 #include "garden/render/renderer.h"
 #include "polygonizer/export_mesher.h"
@@ -52,9 +57,13 @@ poly::Mesh carvedBlock() {
     return v.volume ? poly::meshVolume(*v.volume) : poly::Mesh{};
 }
 
+// What the nine blocks wear.
+enum class Look { Plain, Materials, Clay, Wireframe };
+
 struct Row {
     std::string name;
     RenderQuality quality;
+    Look look = Look::Plain;
 };
 
 RenderQuality low() { return qualityOf(QualityPreset::Low); }
@@ -108,6 +117,18 @@ int main(int argc, char** argv) {
     rows.push_back({"+ AO 8, half", q});
     rows.push_back({"medium", qualityOf(QualityPreset::Medium)});
     rows.push_back({"high", qualityOf(QualityPreset::High)});
+    rows.push_back({"low + materials", low(), Look::Materials});
+    rows.push_back({"high + materials", qualityOf(QualityPreset::High), Look::Materials});
+    rows.push_back({"high + clay view", qualityOf(QualityPreset::High), Look::Clay});
+    rows.push_back({"high + wireframe", qualityOf(QualityPreset::High), Look::Wireframe});
+    // The built-ins but plain, in turn over the blocks; the pattern a tenth
+    // of a block (1.2 m tall), as the garden view sets it.
+    std::vector<RenderMaterial> kinds;
+    for (const Material& m : builtinMaterials())
+        if (m.kind != MaterialKind::Plain) kinds.push_back(renderMaterial(m, detailScaleFor(1.2)));
+    ViewLook clay, wire;
+    clay.clay = true;
+    wire.wireframe = true;
 
     std::printf("Software rendering (Mesa llvmpipe) unless the GL renderer below says otherwise: %s\n\n",
                 GlWindow::glVersionString().c_str());
@@ -125,7 +146,11 @@ int main(int argc, char** argv) {
             renderer.drawGround(ground);
             for (int i = 0; i < 9; ++i) {
                 const glm::vec3 at(float(i % 3 - 1) * 2.2f, 0.6f, float(i / 3 - 1) * 2.2f);
-                renderer.drawChunk(1, glm::translate(glm::mat4(1.0f), at), stone);
+                const RenderMaterial m = row.look == Look::Materials   ? kinds[std::size_t(i) % kinds.size()]
+                                         : row.look == Look::Clay      ? lookedAt(stone, clay)
+                                         : row.look == Look::Wireframe ? lookedAt(stone, wire)
+                                                                       : stone;
+                renderer.drawChunk(1, glm::translate(glm::mat4(1.0f), at), m);
             }
             stats = renderer.endFrame();
             glFinish();

@@ -96,9 +96,16 @@ struct AddAction {
     Placement placement;
 };
 
+// A sculpture given another material (the panel's choice): the whole
+// material, so the journal plays it back whatever the garden file says.
+struct MaterialAction {
+    std::string sculpture;
+    Material material;
+};
+
 using Action =
     std::variant<StrokeAction, PerturbAction, UndoAction, RedoAction, DiscardAction, MorphWeightsAction, MoveAction,
-                 ImpactsAction, ReplaceAction, SketchAction, AddAction>;
+                 ImpactsAction, ReplaceAction, SketchAction, AddAction, MaterialAction>;
 
 std::string actionKind(const Action& r);
 

@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "garden/scene/json_reader.h"
+#include "garden/scene/materials.h"
 #include "garden/sculpt/edit_names.h"
 #include "voxel/volume_frame.h"
 
@@ -70,7 +71,7 @@ Placement readPlacement(ObjectReader& r) {
 
 std::string actionKind(const Action& r) {
     static const char* const names[] = {"stroke", "perturb", "undo",    "redo",    "discard",
-                                        "morph",  "move",    "impacts", "replace", "sketch", "add"};
+                                        "morph",  "move",    "impacts", "replace", "sketch", "add", "material"};
     return names[r.index()];
 }
 
@@ -124,6 +125,10 @@ std::string actionJson(const Action& record) {
     } else if (const auto* mv = std::get_if<MoveAction>(&record)) {
         j["sculpture"] = mv->sculpture;
         writePlacement(mv->placement, j);
+    } else if (const auto* ma = std::get_if<MaterialAction>(&record)) {
+        j["sculpture"] = ma->sculpture;
+        if (!ma->material.name.empty()) j["name"] = ma->material.name;
+        j["material"] = materialObjectJson(ma->material);
     } else if (const auto* ad = std::get_if<AddAction>(&record)) {
         j["sculpture"] = ad->sculpture;
         j["source"] = ad->source;
@@ -273,6 +278,15 @@ Action readAction(const nlohmann::json& v, const std::string& path) {
         r.finish();
         return a;
     }
+    if (action == "material") {
+        ObjectReader r(v, path, {"action", "sculpture", "name", "material"});
+        MaterialAction m;
+        m.sculpture = readString(r.required("sculpture"), r.pathOf("sculpture"));
+        const std::string name = r.has("name") ? readString(r.required("name"), r.pathOf("name")) : std::string();
+        m.material = readMaterialObject(r.required("material"), r.pathOf("material"), name);
+        r.finish();
+        return m;
+    }
     if (action == "sketch") {
         ObjectReader r(v, path, {"action", "sculpture", "mode", "points", "normal", "thickness", "mirror"});
         SketchAction k;
@@ -289,7 +303,7 @@ Action readAction(const nlohmann::json& v, const std::string& path) {
     }
     throw JsonError(childPath(path, "action"), "unknown action '" + action +
                                                    "' (expected stroke, perturb, replace, impacts, undo, redo, discard, "
-                                                   "morph, move, sketch or add)");
+                                                   "morph, move, sketch, add or material)");
 }
 
 }  // namespace hg::garden

@@ -238,6 +238,10 @@ public:
     // journalled): its grid stays, in its model frame. "" or why not (a
     // scale out of range, say).
     std::string moveSculpture(int sculpture, const Placement& placement);
+    // Gives a sculpture another material (a MaterialAction: undoable,
+    // journalled); a missing sculpture keeps its place and takes it too.
+    // "" or why not; nothing is recorded when it already has that material.
+    std::string setMaterial(int sculpture, const Material& material);
     // A move while a hand drags (garden/app/session_moving.cpp): shown at
     // once, not journalled; endLiveMove makes the drag one undoable,
     // journalled move from the placement before its first live move to the
@@ -332,6 +336,7 @@ private:
         Action action;
         std::optional<Placement> placementBefore;     // a MoveAction's
         std::optional<Perturbation> replacedBefore;   // a ReplaceAction's
+        std::optional<Material> materialBefore;       // a MaterialAction's
     };
     // A sculpture from the garden file (name, placement, source; missing
     // when its file is), then sampled and given its meshing caches.

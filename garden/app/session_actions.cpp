@@ -67,6 +67,10 @@ std::string GardenSession::apply(const Action& action) {
         const int i = findSculpture(a->sculpture);
         return i < 0 ? "no sculpture named '" + a->sculpture + "'" : moveSculpture(i, a->placement);
     }
+    if (const auto* a = std::get_if<MaterialAction>(&action)) {
+        const int i = findSculpture(a->sculpture);
+        return i < 0 ? "no sculpture named '" + a->sculpture + "'" : setMaterial(i, a->material);
+    }
     if (const auto* a = std::get_if<SketchAction>(&action)) {
         const int i = actionSculpture(a->sculpture, why);
         return why.empty() ? applySketchModel(i, *a) : why;

@@ -157,7 +157,7 @@ std::string GardenSession::applyAddModel(const AddAction& a) {
     load_.sculptures.push_back(std::move(loaded));
     const int index = static_cast<int>(sculptures_.size());
     sculptures_.push_back(std::move(s));
-    undoOrder_.push_back(UndoEntry{index, a, std::nullopt, std::nullopt});
+    undoOrder_.push_back(UndoEntry{index, a, std::nullopt, std::nullopt, std::nullopt});
     redoOrder_.clear();
     record(a);
     return "";

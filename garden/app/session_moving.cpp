@@ -81,7 +81,7 @@ void GardenSession::endLiveMove() {
     const Placement& from = liveMoveFrom_;
     if (to.position == from.position && to.yawDegrees == from.yawDegrees && to.scale == from.scale) return;
     const MoveAction move{s.name, to};
-    undoOrder_.push_back(UndoEntry{sculpture, move, from, std::nullopt});
+    undoOrder_.push_back(UndoEntry{sculpture, move, from, std::nullopt, std::nullopt});
     redoOrder_.clear();
     record(move);
 }

@@ -57,7 +57,8 @@ void GardenSession::discardEdits(int sculpture) {
     while (const auto box = s.edits->undo()) showChanged(sculpture, *box);
     s.edits->clearRedo();
     const auto isEdit = [sculpture](const UndoEntry& u) {
-        return u.sculpture == sculpture && !std::holds_alternative<MoveAction>(u.action);
+        return u.sculpture == sculpture && !std::holds_alternative<MoveAction>(u.action) &&
+               !std::holds_alternative<MaterialAction>(u.action);
     };
     // (replacements go too: the edits they replaced are gone)
     undoOrder_.erase(std::remove_if(undoOrder_.begin(), undoOrder_.end(), isEdit), undoOrder_.end());
@@ -99,7 +100,7 @@ std::string GardenSession::startStroke(int sculpture, Stroke stroke) {
     showChanged(sculpture, edits.append(std::move(e)));
     strokeSculpture_ = sculpture;
     // The entry's action is the whole stroke once it ends (endStroke).
-    undoOrder_.push_back(UndoEntry{sculpture, StrokeAction{}, std::nullopt, std::nullopt});
+    undoOrder_.push_back(UndoEntry{sculpture, StrokeAction{}, std::nullopt, std::nullopt, std::nullopt});
     redoOrder_.clear();
     return "";
 }
@@ -179,7 +180,7 @@ std::string GardenSession::applySketchModel(int sculpture, const SketchAction& a
 
 void GardenSession::appendEdit(int sculpture, Edit e, const Action& done) {
     showChanged(sculpture, editsOf(sculpture).append(std::move(e)));
-    undoOrder_.push_back(UndoEntry{sculpture, done, std::nullopt, std::nullopt});
+    undoOrder_.push_back(UndoEntry{sculpture, done, std::nullopt, std::nullopt, std::nullopt});
     redoOrder_.clear();
     record(done);
 }
@@ -218,7 +219,7 @@ std::string GardenSession::replacePerturbationModel(int sculpture, std::size_t e
     Edit replaced;
     showChanged(sculpture, s.edits->replace(edit, std::move(e), replaced));
     const ReplaceAction done{s.name, edit, p};
-    undoOrder_.push_back(UndoEntry{sculpture, done, std::nullopt, before});
+    undoOrder_.push_back(UndoEntry{sculpture, done, std::nullopt, before, std::nullopt});
     redoOrder_.clear();
     record(done);
     return "";
@@ -256,6 +257,8 @@ bool GardenSession::stepHistory(std::vector<UndoEntry>& from, std::vector<UndoEn
         Sculpture& s = sculptures_[static_cast<std::size_t>(entry.sculpture)];
         if (const auto* move = std::get_if<MoveAction>(&entry.action)) {
             placeSculpture(entry.sculpture, undoing ? *entry.placementBefore : move->placement);
+        } else if (const auto* material = std::get_if<MaterialAction>(&entry.action)) {
+            s.material = undoing ? *entry.materialBefore : material->material;
         } else if (std::holds_alternative<AddAction>(entry.action)) {
             s.removed = undoing;
             if (undoing && selected_ == entry.sculpture) select(-1);
@@ -285,9 +288,24 @@ std::string GardenSession::moveSculpture(int sculpture, const Placement& placeme
     if (std::string why = checkPlacement(sculpture, placement); !why.empty()) return why;
     Sculpture& s = sculptures_[static_cast<std::size_t>(sculpture)];
     const MoveAction done{s.name, placement};
-    undoOrder_.push_back(UndoEntry{sculpture, done, s.placement, std::nullopt});
+    undoOrder_.push_back(UndoEntry{sculpture, done, s.placement, std::nullopt, std::nullopt});
     redoOrder_.clear();
     placeSculpture(sculpture, placement);
+    record(done);
+    return "";
+}
+
+std::string GardenSession::setMaterial(int sculpture, const Material& material) {
+    if (sculpture < 0 || sculpture >= static_cast<int>(sculptures_.size())) return "no such sculpture";
+    if (stroking()) endStroke();
+    endLiveMove();
+    Sculpture& s = sculptures_[static_cast<std::size_t>(sculpture)];
+    if (s.removed) return "'" + s.name + "' is not in the garden";
+    if (s.material == material) return "";
+    const MaterialAction done{s.name, material};
+    undoOrder_.push_back(UndoEntry{sculpture, done, std::nullopt, std::nullopt, s.material});
+    redoOrder_.clear();
+    s.material = material;
     record(done);
     return "";
 }

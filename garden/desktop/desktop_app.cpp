@@ -63,10 +63,12 @@ std::string timestampedName(const std::string& dir) {
     return (std::filesystem::path(dir) / name).string();
 }
 
-// The side panel: the garden, what is missing, the morph selector.
+// The side panel: the garden, what is missing, the morph selector, the
+// clay view and wireframe switches.
 // `headset`: the Headset button is shown (true when pressed), with the
 // last headset message under it.
-bool gardenPanel(GardenSession& session, bool headset, const std::string& headsetMessage, AddPanel& addPanel) {
+bool gardenPanel(GardenSession& session, ViewLook& look, bool headset, const std::string& headsetMessage,
+                 AddPanel& addPanel) {
     // Top right: the stats panel takes the top left.
     ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x - 10.0f, 10.0f), ImGuiCond_FirstUseEver, ImVec2(1.0f, 0.0f));
     ImGui::Begin("Garden", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
@@ -100,6 +102,10 @@ bool gardenPanel(GardenSession& session, bool headset, const std::string& headse
     drawMorphSection(session);
     bool lod = session.settings().lod;
     if (ImGui::Checkbox("level of detail", &lod)) session.settings().lod = lod;
+    ImGui::Checkbox("clay view (C)", &look.clay);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("every sculpture in one neutral matte material, to judge its form");
+    ImGui::SameLine();
+    ImGui::Checkbox("wireframe (X)", &look.wireframe);
     addPanel.draw(session);
     bool enter = false;
     if (headset) {
@@ -262,7 +268,7 @@ int runDesktopOn(GardenSession& session, GardenWindow& gardenWindow, const Deskt
                       std::chrono::steady_clock::now() + std::chrono::seconds(5)};
         }
         overlay.newFrame();
-        headsetButton = gardenPanel(session, static_cast<bool>(options.headset), headsetMessage, addPanel);
+        headsetButton = gardenPanel(session, view.look(), static_cast<bool>(options.headset), headsetMessage, addPanel);
         ImGui::Begin("Garden");  // the same window: its Export section
         exportPanel.draw(session);
         ImGui::End();
@@ -369,6 +375,8 @@ int runDesktopOn(GardenSession& session, GardenWindow& gardenWindow, const Deskt
                 frameGarden(session, fovY, static_cast<float>(fb.x) / static_cast<float>(std::max(fb.y, 1)));
             if (pressed.help) showHelp = !showHelp;
             if (pressed.history) showHistory = !showHistory;
+            if (pressed.clayView) view.look().clay = !view.look().clay;
+            if (pressed.wireframe) view.look().wireframe = !view.look().wireframe;
             if (pressed.undoSelected && session.selected() >= 0) session.undoSculpture(session.selected());
             if (pressed.detail) {
                 // Where the mouse ray meets the ground, a metre up; again: removed.

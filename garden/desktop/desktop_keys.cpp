@@ -42,6 +42,8 @@ bool addKeyPress(DesktopKeys& keys, int key, int mods) {
         case KeyCommand::FrameGarden: keys.frameGarden = true; return true;
         case KeyCommand::Help: keys.help = true; return true;
         case KeyCommand::Stats: keys.stats = true; return true;
+        case KeyCommand::ClayView: keys.clayView = !keys.clayView; return true;
+        case KeyCommand::Wireframe: keys.wireframe = !keys.wireframe; return true;
         // Held keys are polled (heldKey), not pressed.
         case KeyCommand::Forward: case KeyCommand::Back: case KeyCommand::Left: case KeyCommand::Right:
         case KeyCommand::Down: case KeyCommand::Up: case KeyCommand::Turn: return false;

@@ -33,6 +33,8 @@ struct DesktopKeys {
     bool frameGarden = false;                // Home: every sculpture in view
     bool help = false;                       // F1: the key list
     bool stats = false;                      // F3: the frame statistics open / collapsed
+    bool clayView = false;                   // C: the clay view on / off
+    bool wireframe = false;                  // X: the wireframe overlay on / off
     bool headset = false;                    // F9: into the headset, and back
 };
 

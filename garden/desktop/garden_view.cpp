@@ -7,20 +7,12 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "garden/desktop/view_lights.h"
+#include "garden/render/material_look.h"
 #include "garden/scene/to_glm.h"
 
 namespace hg::garden {
 
 namespace {
-
-RenderMaterial renderMaterial(const Material& m) {
-    RenderMaterial r;
-    r.baseColor = glm::vec3(m.color[0], m.color[1], m.color[2]);
-    // Rough surfaces have a weak, wide highlight; smooth ones a sharp one.
-    r.specular = 0.05f + 0.6f * (1.0f - m.roughness) + 0.3f * m.metallic;
-    r.shininess = 4.0f + 200.0f * (1.0f - m.roughness) * (1.0f - m.roughness);
-    return r;
-}
 
 // A marker for a missing sculpture: a red wire cube of 1 m at its place.
 std::vector<glm::vec3> cubeEdges(const glm::mat4& place, float scaleToMetre) {
@@ -153,7 +145,9 @@ void GardenView::render(const GardenSession& session, glm::ivec2 viewport, const
             continue;
         }
         if (!st.hasGrid()) continue;  // still loading
-        const RenderMaterial m = renderMaterial(st.material);
+        const frep::Box3& box = st.layout->frame().modelBox;
+        const double size = std::max({box.hi[0] - box.lo[0], box.hi[1] - box.lo[1], box.hi[2] - box.lo[2]});
+        const RenderMaterial m = lookedAt(renderMaterial(st.material, detailScaleFor(size)), look_);
         const glm::mat4 mvp = v.projection * v.view * st.modelToWorld;
         // The sculpture's whole box first (the layout's first and last
         // chunks hold its corners): one test instead of one per chunk for a

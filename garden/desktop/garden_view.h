@@ -12,6 +12,7 @@
 #include <glm/vec2.hpp>
 
 #include "garden/app/garden_session.h"
+#include "garden/render/material_look.h"
 #include "garden/render/renderer.h"
 
 namespace hg::garden {
@@ -40,8 +41,14 @@ public:
     // Paths are drawn as meshes too, under ids no sculpture reaches.
     static ChunkId pathId(std::size_t path) { return (ChunkId{0xFFFFFFFFu} << 32) | static_cast<ChunkId>(path); }
 
+    // The clay view and the wireframe overlay (sculptures only; the paths
+    // keep their materials).
+    ViewLook& look() { return look_; }
+    const ViewLook& look() const { return look_; }
+
 private:
     Renderer& renderer_;
+    ViewLook look_;
     // Per sculpture, the queue's shownGeneration() + 1 last uploaded (0:
     // never): a sculpture whose queue showed nothing new is not looked at.
     std::vector<std::uint64_t> uploaded_;

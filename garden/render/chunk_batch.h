@@ -27,7 +27,7 @@ namespace hg::garden {
 // The texture unit the batch's records are bound to while it draws.
 constexpr GLint kDrawRecordUnit = 4;
 // vec4 texels per draw record (shaders.h's HG_DRAW_RECORD_GLSL reads them).
-constexpr int kDrawRecordTexels = 9;
+constexpr int kDrawRecordTexels = 10;
 // A draw's record as the shaders read it; renderer.cpp fills it.
 using DrawRecord = std::array<glm::vec4, kDrawRecordTexels>;
 

@@ -19,6 +19,7 @@ enum class KeyCommand {
     ToolNone, ToolCarve, ToolAdd, ToolMelt, ToolPerturb, ToolImpacts, ToolMove, ToolSketch,
     Smaller, Larger, Reverse, Mirror,
     Undo, Redo, UndoSelected, History,
+    ClayView, Wireframe,
     Headset, Screenshot, Help, Stats, Escape,
 };
 

@@ -39,6 +39,9 @@ constexpr float kGroundOffsetUnits = 1.0f;
 constexpr int kSphereSlices = 48;
 constexpr int kSphereStacks = 24;
 constexpr int kCircleSegments = 96;
+// The wireframe overlay's lines (sRGB, over the tone-mapped picture): dark
+// enough to read on plaster, light enough that bronze shows through.
+const glm::vec4 kEdgeColor{0.05f, 0.06f, 0.08f, 0.55f};
 
 const void* byteOffset(std::size_t bytes) { return reinterpret_cast<const void*>(bytes); }
 
@@ -72,7 +75,8 @@ glm::vec3 srgbToLinear(const glm::vec3& c) {
 
 // A chunk draw's record for the shaders (HG_DRAW_RECORD_GLSL in shaders.h):
 // the transform, the normal transform (the inverse transpose, for scales
-// that are not uniform) and the material.
+// that are not uniform) and the material. The one place the mesh program's
+// material inputs are set.
 DrawRecord drawRecord(const glm::mat4& model, const RenderMaterial& material, bool hasNormals) {
     DrawRecord r{};
     for (int c = 0; c < 4; ++c) r[static_cast<std::size_t>(c)] = model[c];
@@ -80,6 +84,8 @@ DrawRecord drawRecord(const glm::mat4& model, const RenderMaterial& material, bo
     for (int c = 0; c < 3; ++c) r[static_cast<std::size_t>(4 + c)] = glm::vec4(normalMatrix[c], 0.0f);
     r[7] = glm::vec4(material.baseColor, material.specular);
     r[8] = glm::vec4(material.shininess, hasNormals ? 1.0f : 0.0f, 0.0f, 0.0f);
+    r[9] = glm::vec4(static_cast<float>(material.kind), material.metallic,
+                     material.detailScale > 0.0f ? material.detailScale : 1.0f, 0.0f);
     return r;
 }
 
@@ -381,10 +387,11 @@ void Renderer::gatherChunks(glm::vec3& lo, glm::vec3& hi) {
         const ArenaSlot* slot = arena_->slot(d.id);
         if (found == chunks_.end() || slot == nullptr) continue;  // dropped or emptied since recorded
         const ChunkRecord& c = found->second;
+        const RenderMaterial& pm = previous ? previous->material : d.material;
         const bool same = previous && previousNormals == c.hasNormals && previous->model == d.model &&
-                          previous->material.baseColor == d.material.baseColor &&
-                          previous->material.specular == d.material.specular &&
-                          previous->material.shininess == d.material.shininess;
+                          pm.baseColor == d.material.baseColor && pm.specular == d.material.specular &&
+                          pm.shininess == d.material.shininess && pm.kind == d.material.kind &&
+                          pm.metallic == d.material.metallic && pm.detailScale == d.material.detailScale;
         if (!same) {
             const DrawRecord r = drawRecord(d.model, d.material, c.hasNormals);
             record = batch_->addRecord(r);
@@ -493,7 +500,39 @@ void Renderer::finishView() {
         glBindBuffer(GL_ARRAY_BUFFER, 0);
         for (const FlatDraw& d : flatDraws_) drawFlatNow(d);
     }
+    if (std::any_of(sceneDraws_.begin(), sceneDraws_.end(), [](const SceneDraw& d) { return d.material.edges != 0; }))
+        drawEdges();
     timers_->end();
+}
+
+void Renderer::drawEdges() {
+    // The front faces' edges, pulled towards the eye like the other lines,
+    // blended so the surface shows through: one call per chunk (a view for
+    // judging the mesh, not for speed).
+    flatProgram_.use();
+    setMat4(flat_.view, view_.view);
+    setMat4(flat_.projection, view_.projection);
+    glUniform4fv(flat_.color, 1, glm::value_ptr(kEdgeColor));
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    glDepthMask(GL_FALSE);
+    glEnable(GL_DEPTH_TEST);
+    glEnable(GL_CULL_FACE);  // back faces' edges stay hidden
+    glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+    glBindVertexArray(arena_->vertexArray());
+    for (const SceneDraw& d : sceneDraws_) {
+        if (d.ground || d.material.edges == 0) continue;
+        const ArenaSlot* slot = arena_->slot(d.id);
+        if (slot == nullptr) continue;
+        setMat4(flat_.model, d.model);
+        glDrawElementsBaseVertex(GL_TRIANGLES, static_cast<GLsizei>(slot->indexCount), GL_UNSIGNED_INT,
+                                 byteOffset(slot->firstIndex * sizeof(std::uint32_t)),
+                                 static_cast<GLint>(slot->firstVertex));
+    }
+    glBindVertexArray(0);
+    glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
 }
 
 void Renderer::drawGroundNow(const GroundStyle& ground) {

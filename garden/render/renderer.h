@@ -41,10 +41,34 @@
 
 namespace hg::garden {
 
+// The procedural detail a material shows (shaders.cpp's surfaceDetail),
+// computed from the model-space position so it stays on the sculpture as
+// it moves and scales, and a carve reveals the same material inside
+// (docs/rendering.md "Materials"). An int in RenderMaterial, so that a
+// material is plain numbers that can live in a per-draw buffer.
+enum SurfaceKind : int {
+    kSurfacePlain = 0,  // one colour
+    kSurfaceStone,      // mottled, with dark and light grains
+    kSurfaceMarble,     // pale, with dark winding veins
+    kSurfaceBronze,     // metal, with a green patina in patches and on faces turned up
+    kSurfaceClay,       // matte, faint smears of a darker and a lighter body
+    kSurfacePlaster,    // matte white with a faint fine grain
+    kSurfaceWood,       // growth rings around the model's vertical axis, with fine grain
+    kSurfaceKindCount
+};
+
+// Everything a chunk's draw needs to shade it: plain floats and ints (see
+// SurfaceKind), set on the mesh program in one place (renderer.cpp,
+// drawRecord).
 struct RenderMaterial {
     glm::vec3 baseColor{0.8f, 0.8f, 0.8f};  // sRGB
     float specular = 0.25f;                  // strength of the Blinn-Phong highlight, 0..1
     float shininess = 32.0f;                 // Blinn-Phong exponent: higher is smaller, sharper
+    int kind = kSurfacePlain;                // SurfaceKind
+    float metallic = 0.0f;                   // 0..1: the highlight takes the base colour, diffuse light fades
+    float detailScale = 1.0f;                // model units per unit of the detail's pattern (about a tenth of
+                                             // the sculpture: veins, rings, patches)
+    int edges = 0;                           // 1: its triangles' edges drawn over it (the wireframe overlay)
 };
 
 struct DirectionalLight {
@@ -216,6 +240,8 @@ private:
     void gatherChunks(glm::vec3& lo, glm::vec3& hi);
     bool renderShadows(const glm::vec3& lo, const glm::vec3& hi);
     void renderScene(bool shadowed);
+    // The wireframe overlay: the edges of the chunks whose material asks.
+    void drawEdges();
     void drawGroundNow(const GroundStyle& ground);
     void drawFlatNow(const FlatDraw& d);
 

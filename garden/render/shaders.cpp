@@ -42,13 +42,14 @@ namespace hg::garden::shaders {
     "        }\n"                                                                     \
     "    return lit / 9.0;\n"                                                         \
     "}\n"                                                                             \
-    "vec3 blinnPhong(vec3 base, vec3 n, vec3 l, vec3 v, float specular, float shininess) {\n" \
+    "vec3 blinnPhong(vec3 base, vec3 n, vec3 l, vec3 v, vec3 specular, float shininess) {\n" \
     "    float ndl = dot(n, l);\n"                                                    \
     "    if (ndl <= 0.0) return vec3(0.0);\n"                                         \
     "    float ndh = max(dot(n, normalize(l + v)), 0.0);\n"                           \
-    "    return base * ndl + vec3(specular * pow(ndh, shininess));\n"                 \
+    "    return base * ndl + specular * pow(ndh, shininess);\n"                       \
     "}\n"                                                                             \
-    "vec4 shade(vec3 base, vec3 n, vec3 p, float specular, float shininess) {\n"      \
+    "/* specular: the highlight's colour (a metal's takes its own colour) */\n"      \
+    "vec4 shade(vec3 base, vec3 n, vec3 p, vec3 specular, float shininess) {\n"      \
     "    vec3 v = normalize(uEye - p);\n"                                             \
     "    vec3 ambient = uAmbient * base;\n"                                           \
     "    vec3 direct = vec3(0.0);\n"                                                  \
@@ -79,11 +80,13 @@ layout(location = 2) in uint aDraw;
 uniform mat4 uViewProjection;
 out vec3 vWorld;
 out vec3 vNormal;
+out vec3 vModel;  // the materials' detail is a function of the model-space position
 flat out int vDraw;
 void main() {
     vDraw = int(aDraw);
     vec4 world = drawModel(vDraw) * vec4(aPosition, 1.0);
     vWorld = world.xyz;
+    vModel = aPosition;
     vNormal = drawNormalMatrix(vDraw) * aNormal;
     gl_Position = uViewProjection * world;
 }
@@ -92,15 +95,88 @@ void main() {
 const char* const kMeshFragment = "#version 330 core\n" HG_LIGHTING_GLSL HG_DRAW_RECORD_GLSL R"(
 in vec3 vWorld;
 in vec3 vNormal;
+in vec3 vModel;
 flat in int vDraw;
 out vec4 fragColor;
+// Value noise in model space (hash after Dave Hoskins' hash13), and its sum
+// over four octaves, about 0..1 with mean 0.5.
+float hash3(vec3 p) {
+    p = fract(p * vec3(0.1031, 0.1030, 0.0973));
+    p += dot(p, p.yxz + 33.33);
+    return fract((p.x + p.y) * p.z);
+}
+float noise3(vec3 p) {
+    vec3 i = floor(p), f = fract(p);
+    vec3 u = f * f * (3.0 - 2.0 * f);
+    vec2 e = vec2(1.0, 0.0);
+    return mix(mix(mix(hash3(i), hash3(i + e.xyy), u.x), mix(hash3(i + e.yxy), hash3(i + e.xxy), u.x), u.y),
+               mix(mix(hash3(i + e.yyx), hash3(i + e.xyx), u.x), mix(hash3(i + e.yxx), hash3(i + 1.0), u.x), u.y), u.z);
+}
+float fbm(vec3 p) {
+    float sum = 0.0, amplitude = 0.5;
+    for (int o = 0; o < 4; ++o) {
+        sum += amplitude * noise3(p);
+        p = p * 2.03 + vec3(1.7, 9.2, 3.1);
+        amplitude *= 0.5;
+    }
+    return sum / 0.9375;
+}
+// 1 while a pattern of `frequency` (per pattern unit) is larger than a
+// pixel, fading to 0 as it shrinks below one: no shimmer far away.
+float resolved(float frequency, float pixel) { return 1.0 - smoothstep(0.3, 0.8, frequency * pixel); }
+// The material's colour, highlight and metalness at model point q (in
+// pattern units) with world normal n; `pixel` is q's change across a pixel.
+void surfaceDetail(int kind, vec3 q, vec3 n, float pixel, inout vec3 base, inout vec3 specular,
+                   inout float shininess, inout float metallic) {
+    if (kind == 1) {  // stone: mottled, dark and light grains
+        base *= 0.82 + 0.36 * fbm(q * 0.5);
+        float grain = noise3(q * 9.0);
+        float seen = resolved(9.0, pixel);
+        base *= 1.0 - 0.5 * seen * smoothstep(0.72, 0.8, grain);
+        base = mix(base, vec3(0.85), 0.35 * seen * (1.0 - smoothstep(0.18, 0.26, grain)));
+    } else if (kind == 2) {  // marble: thin dark veins winding through a pale body
+        float t = dot(q, vec3(0.35, 0.22, 0.13)) + 2.2 * fbm(q * 0.35);
+        float vein = pow(1.0 - abs(sin(t * 3.14159)), 10.0);
+        float fine = pow(1.0 - abs(sin((t + 0.6 * fbm(q * 1.3 + 4.0)) * 7.3)), 24.0);
+        base = mix(base, base * vec3(0.38, 0.40, 0.44), vein + 0.5 * fine * resolved(3.0, pixel));
+        base *= 0.95 + 0.08 * fbm(q * 0.8 + 11.0);
+    } else if (kind == 3) {  // bronze: metal under a green patina, more on faces turned up
+        float patina = smoothstep(0.6, 0.82, fbm(q * 0.6) + 0.2 * n.y);
+        base *= 0.85 + 0.3 * noise3(q * 2.0);
+        base = mix(base, vec3(0.06, 0.13, 0.1), 0.85 * patina);
+        metallic *= 1.0 - patina;
+        specular *= 1.0 - 0.8 * patina;
+        shininess = mix(shininess, 8.0, patina);
+    } else if (kind == 4) {  // clay: faint smears of a darker and a lighter body
+        base *= 0.9 + 0.2 * fbm(q * vec3(0.6, 1.4, 0.6));
+    } else if (kind == 5) {  // plaster: a faint fine grain
+        base *= 0.97 + 0.06 * mix(0.5, noise3(q * 14.0), resolved(14.0, pixel));
+    } else if (kind == 6) {  // wood: growth rings round the model's vertical axis, fine grain along it
+        vec2 warp = vec2(noise3(q * 0.25), noise3(q * 0.25 + 7.0)) - 0.5;
+        float r = length(q.xz + 1.6 * warp) * 1.1 + 0.4 * noise3(q * vec3(0.6, 0.08, 0.6));
+        float ring = smoothstep(0.55, 0.95, fract(r));
+        base *= 1.0 - 0.38 * ring * resolved(1.1, pixel);
+        float streak = noise3(q * vec3(18.0, 0.9, 18.0));
+        base *= 0.94 + 0.12 * mix(0.5, streak, resolved(18.0, pixel));
+    }
+}
 void main() {
-    vec4 surface = drawRecord(vDraw, 7);  // sRGB base colour, specular
-    vec4 finish = drawRecord(vDraw, 8);   // shininess, has normals
     // Without vertex normals, the face normal from screen-space derivatives
     // (it faces the viewer, and culling leaves only front faces).
+    vec4 surface = drawRecord(vDraw, 7);  // sRGB base colour, specular
+    vec4 finish = drawRecord(vDraw, 8);   // shininess, has normals
+    vec4 detail = drawRecord(vDraw, 9);   // SurfaceKind, metallic, detail scale
     vec3 n = finish.y > 0.5 ? normalize(vNormal) : normalize(cross(dFdx(vWorld), dFdy(vWorld)));
-    fragColor = shade(toLinear(surface.rgb), n, vWorld, surface.a, finish.x);
+    vec3 base = toLinear(surface.rgb);
+    vec3 specular = vec3(surface.a);
+    float shininess = finish.x, metallic = detail.y;
+    vec3 q = vModel / detail.z;
+    float pixel = max(length(fwidth(q)), 1e-6);
+    surfaceDetail(int(detail.x + 0.5), q, n, pixel, base, specular, shininess, metallic);
+    // A metal's highlight is its own colour and strong; its diffuse light
+    // fades (Blinn-Phong's stand-in for a metal's missing diffuse term).
+    specular = mix(specular, base * (0.6 + specular), metallic);
+    fragColor = shade(base * (1.0 - 0.6 * metallic), n, vWorld, specular, shininess);
 }
 )";
 
@@ -157,7 +233,7 @@ void main() {
     // Lighter, yellower where the grass is dry; darker and greener where lush.
     vec3 grass = toLinear(uGroundColor) * (0.7 + 0.6 * n) * mix(vec3(1.0), vec3(1.12, 1.06, 0.78), smoothstep(0.55, 0.8, n));
     vec3 base = mix(grass, toLinear(uLineColor), line);
-    fragColor = shade(base, vec3(0.0, 1.0, 0.0), vWorld, 0.0, 1.0);
+    fragColor = shade(base, vec3(0.0, 1.0, 0.0), vWorld, vec3(0.0), 1.0);
 }
 )";
 

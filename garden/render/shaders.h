@@ -19,10 +19,11 @@
 // A batched chunk draw's record (chunk_batch.h): its model matrix, normal
 // matrix and material, kDrawRecordTexels texels from texture unit
 // kDrawRecordUnit. Texel 7 holds the sRGB base colour and the specular
-// strength, texel 8 the shininess and whether the mesh has normals.
+// strength, texel 8 the shininess and whether the mesh has normals, texel 9
+// the SurfaceKind, metalness and detail scale.
 #define HG_DRAW_RECORD_GLSL                                                           \
     "uniform samplerBuffer uDrawRecords;\n"                                           \
-    "vec4 drawRecord(int draw, int texel) { return texelFetch(uDrawRecords, draw * 9 + texel); }\n" \
+    "vec4 drawRecord(int draw, int texel) { return texelFetch(uDrawRecords, draw * 10 + texel); }\n" \
     "mat4 drawModel(int d) {\n"                                                       \
     "    return mat4(drawRecord(d, 0), drawRecord(d, 1), drawRecord(d, 2), drawRecord(d, 3));\n" \
     "}\n"                                                                             \

@@ -3,13 +3,17 @@
 // sculpting API.
 #include <imgui.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <iterator>
+#include <string>
+#include <vector>
 
 #include "garden/app/garden_session.h"
 #include "garden/app/sculpture_gizmos.h"
 #include "garden/render/panels.h"
 #include "garden/render/tool_panel.h"
+#include "garden/scene/materials.h"
 
 namespace hg::garden {
 namespace {
@@ -102,6 +106,31 @@ bool impactParameters(ToolSettings& t, const ToolWidgetLook& look) {
     return changed;
 }
 
+// The garden file's named materials, then the built-ins it does not
+// redefine (garden/scene/materials.h): what the selection may be given.
+std::vector<Material> materialChoices(const Garden& garden) {
+    std::vector<Material> all = garden.materials;
+    for (const Material& b : builtinMaterials())
+        if (std::none_of(all.begin(), all.end(), [&](const Material& m) { return m.name == b.name; })) all.push_back(b);
+    return all;
+}
+
+void materialChoice(GardenSession& session, int selected, const ToolWidgetLook& look) {
+    const Material& current = session.sculptures()[static_cast<std::size_t>(selected)].material;
+    const std::vector<Material> choices = materialChoices(session.garden());
+    const std::string shown = current.name.empty() ? "its own (" + materialKindName(current.kind) + ")" : current.name;
+    ImGui::SetNextItemWidth(look.fieldWidth);
+    if (ImGui::BeginCombo("material", shown.c_str())) {
+        for (const Material& m : choices) {
+            const bool chosen = m == current;
+            if (ImGui::Selectable(m.name.c_str(), chosen) && !chosen) session.setMaterial(selected, m);
+            if (chosen) ImGui::SetItemDefaultFocus();
+        }
+        ImGui::EndCombo();
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("the selected sculpture's material (undoable, saved with the session)");
+}
+
 }  // namespace
 
 bool chooseOne(const char* label, int& index, const char* const names[], int count, const ToolWidgetLook& look) {
@@ -171,6 +200,7 @@ void selectionSection(GardenSession& session, const ToolWidgetLook& look) {
                                           : "back to the unedited sculpture: the edits go for good (no redo)");
     ImGui::SameLine();
     ImGui::Text("%zu edit%s", edits, edits == 1 ? "" : "s");
+    materialChoice(session, selected, look);
     ImGui::TextDisabled("at (%.2f, %.2f, %.2f) m\nturned %.0f deg, scale %.3g", s.placement.position[0],
                         s.placement.position[1], s.placement.position[2], s.placement.yawDegrees, s.placement.scale);
 }

@@ -19,11 +19,22 @@ namespace hg::garden {
 using Vec2 = std::array<double, 2>;  // a point on the ground: (x, z) in metres
 using Vec3 = std::array<double, 3>;  // (x, y, z), y up
 
+// The look of a material beyond its colour: the procedural detail it shows
+// (veins, grain, patina, speckle), in the sculpture's model frame
+// (docs/rendering.md "Materials", garden/scene/materials.h for the names).
+enum class MaterialKind { Plain, Stone, Marble, Bronze, Clay, Plaster, Wood };
+
 struct Material {
-    std::string name;                 // the key in "materials", or "" when written inline
+    std::string name;                 // the key in "materials" or a built-in's, or "" when written inline
+    MaterialKind kind = MaterialKind::Plain;
     std::array<float, 3> color = {0.7f, 0.7f, 0.7f};
     float roughness = 0.5f;           // 0 mirror .. 1 matte
     float metallic = 0.0f;            // 0 dielectric .. 1 metal
+
+    bool operator==(const Material& o) const {
+        return name == o.name && kind == o.kind && color == o.color && roughness == o.roughness && metallic == o.metallic;
+    }
+    bool operator!=(const Material& o) const { return !(*this == o); }
 };
 
 // Where a model stands: model point p goes to position + R_y(yaw) * (scale * p).

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "garden/scene/json_reader.h"
+#include "garden/scene/materials.h"
 #include "garden/scene/model_file.h"
 #include "voxel/volume_frame.h"
 
@@ -28,30 +29,21 @@ struct Reader {
     std::string folder;
     std::map<std::string, Material> materials;
 
+    // A name: an entry of $.materials, else a built-in (garden/scene/materials.h).
     Material material(const json& v, const std::string& path) const {
         if (v.is_string()) {
             std::string name = v.get<std::string>();
             auto it = materials.find(name);
             if (it != materials.end()) return it->second;
-            std::vector<std::string> names;
+            if (auto builtin = builtinMaterial(name)) return *builtin;
+            std::vector<std::string> names = materialKindNames();
             for (const auto& m : materials) names.push_back(m.first);
             std::string hint = nearMiss(name, names);
-            throw JsonError(path, "no material named '" + name + "' in $.materials" +
+            throw JsonError(path, "no material named '" + name + "' in $.materials or built in" +
                                       (hint.empty() ? std::string() : " (did you mean '" + hint + "'?)"));
         }
         if (!v.is_object()) throw JsonError(path, "expected a material name or a material object");
-        return materialObject(v, path, "");
-    }
-
-    static Material materialObject(const json& v, const std::string& path, const std::string& name) {
-        ObjectReader o(v, path, {"color", "roughness", "metallic"});
-        o.finish();
-        Material m;
-        m.name = name;
-        if (auto* c = o.optional("color")) m.color = readColor(*c, o.pathOf("color"));
-        if (auto* r = o.optional("roughness")) m.roughness = static_cast<float>(readNumber(*r, o.pathOf("roughness"), 0, 1));
-        if (auto* r = o.optional("metallic")) m.metallic = static_cast<float>(readNumber(*r, o.pathOf("metallic"), 0, 1));
-        return m;
+        return readMaterialObject(v, path, "");
     }
 
     static frep::Box3 box(const json& v, const std::string& path) {
@@ -306,7 +298,7 @@ Garden parseGarden(const std::string& text, const std::string& file, const std::
         std::string at = top.pathOf("materials");
         if (!x->is_object()) throw JsonError(at, "expected an object of named materials");
         for (auto it = x->begin(); it != x->end(); ++it) {
-            Material m = Reader::materialObject(it.value(), childPath(at, it.key()), it.key());
+            Material m = readMaterialObject(it.value(), childPath(at, it.key()), it.key());
             r.materials[it.key()] = m;
             g.materials.push_back(m);
         }

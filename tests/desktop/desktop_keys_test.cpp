@@ -62,6 +62,8 @@ TEST(DesktopKeys, KeysMapToTheDocumentedCommands) {
     EXPECT_TRUE(press(GLFW_KEY_ESCAPE).escape);
     EXPECT_TRUE(press(GLFW_KEY_F3).stats);
     EXPECT_TRUE(press(GLFW_KEY_F9).headset);
+    EXPECT_TRUE(press(GLFW_KEY_C).clayView);
+    EXPECT_TRUE(press(GLFW_KEY_X).wireframe);
     EXPECT_TRUE(press(GLFW_KEY_1, GLFW_MOD_SHIFT).tool) << "Shift (held to turn) leaves the keys as they are";
     EXPECT_FALSE(addKeyPress(none, GLFW_KEY_W, 0)) << "walking keys are held, polled each frame";
     // Presses add up between frames: two ] and a [ are one step up.

@@ -10,6 +10,7 @@
 
 #include "garden/scene/garden_file.h"
 #include "garden/scene/json_reader.h"
+#include "garden/scene/materials.h"
 #include "garden_test_util.h"
 
 namespace hg::garden {
@@ -117,6 +118,38 @@ TEST_F(GardenFile, MinimalFileGetsDefaults) {
     EXPECT_EQ(load.garden->lights.size(), 2u);  // ambient and a sun
 }
 
+TEST_F(GardenFile, MaterialsAreNamedBuiltInsOrKindsWithTheirOwnValues) {
+    json j = goodGarden();
+    j["materials"]["green marble"] = {{"kind", "marble"}, {"color", {0.3, 0.5, 0.35}}};
+    j["sculptures"][0]["material"] = "wood";            // built in, not in $.materials
+    j["sculptures"][1]["material"] = "green marble";    // a kind with its own colour
+    j["sculptures"][2]["material"] = {{"kind", "bronze"}, {"roughness", 0.6}};
+    GardenLoad load = loadJson(j);
+    ASSERT_TRUE(load.ok()) << load.error;
+    const auto& s = load.garden->sculptures;
+    EXPECT_EQ(s[0].material, *builtinMaterial("wood"));
+    EXPECT_EQ(s[0].material.kind, MaterialKind::Wood);
+    EXPECT_EQ(s[1].material.name, "green marble");
+    EXPECT_EQ(s[1].material.kind, MaterialKind::Marble);
+    EXPECT_FLOAT_EQ(s[1].material.color[1], 0.5f);
+    EXPECT_FLOAT_EQ(s[1].material.roughness, builtinMaterial("marble")->roughness);  // the kind's, not given
+    EXPECT_EQ(s[2].material.kind, MaterialKind::Bronze);
+    EXPECT_FLOAT_EQ(s[2].material.metallic, 1.0f);
+    EXPECT_FLOAT_EQ(s[2].material.roughness, 0.6f);
+    // $.materials may redefine a built-in's name: the file's own wins.
+    EXPECT_EQ(loadJson(goodGarden()).garden->sculptures[0].material.kind, MaterialKind::Plain);
+    // Without a material a sculpture is plain, as before materials had kinds.
+    EXPECT_EQ(loadJson(json::parse(R"({"version": 1, "sculptures": [{"name": "a", "file": "hf/ball.hf"}]})"))
+                  .garden->sculptures[0]
+                  .material.kind,
+              MaterialKind::Plain);
+    // Every kind by name, and the JSON written for one reads back the same.
+    for (const Material& m : builtinMaterials()) {
+        EXPECT_EQ(materialKindName(m.kind), m.name);
+        EXPECT_EQ(readMaterialObject(materialObjectJson(m), "$", m.name), m);
+    }
+}
+
 struct BadCase {
     const char* what;
     std::function<void(json&)> edit;
@@ -156,7 +189,14 @@ TEST_F(GardenFile, BadFilesAreRefusedWithPathAndReason) {
         {"negative scale", [](json& j) { j["sculptures"][1]["placement"]["scale"] = -1; },
          "$.sculptures[1].placement.scale", "expected a positive number"},
         {"unknown material", [](json& j) { j["sculptures"][0]["material"] = "bronz"; },
-         "$.sculptures[0].material", "no material named 'bronz' in $.materials (did you mean 'bronze'?)"},
+         "$.sculptures[0].material", "no material named 'bronz' in $.materials or built in (did you mean 'bronze'?)"},
+        {"unknown built-in material", [](json& j) { j["sculptures"][1]["material"] = "marbel"; },
+         "$.sculptures[1].material", "no material named 'marbel' in $.materials or built in (did you mean 'marble'?)"},
+        {"unknown material kind", [](json& j) { j["sculptures"][2]["material"] = {{"kind", "woood"}}; },
+         "$.sculptures[2].material.kind",
+         "unknown material kind 'woood' (did you mean 'wood'?); expected one of: plain stone marble bronze clay plaster wood"},
+        {"material kind not a word", [](json& j) { j["materials"]["bronze"]["kind"] = 3; },
+         "$.materials.bronze.kind", "expected a string"},
         {"colour out of range", [](json& j) { j["materials"]["bronze"]["color"] = {0.6, 1.4, 0.2}; },
          "$.materials.bronze.color", "expected a colour of 3 numbers in [0, 1] (linear RGB); item 1 is 1.4"},
         {"unknown source", [](json& j) { j["morph"]["sources"][1] = "tow"; },

@@ -38,7 +38,8 @@ std::vector<Action> everyKind() {
     series.volume = 3e-6;
     return {s, PerturbAction{"dancer", q}, UndoAction{}, RedoAction{}, DiscardAction{"metamorphosis"},
             MorphWeightsAction{{0.2, 0.3, 0.5}, {1.1, 0.9, 1.0}}, MoveAction{"dryad", moved}, ImpactsAction{"knot", series},
-            ReplaceAction{"dancer", 3, q}};
+            ReplaceAction{"dancer", 3, q},
+            MaterialAction{"dryad", Material{"oak", MaterialKind::Wood, {0.5f, 0.3f, 1.0f / 7.0f}, 0.65f, 0.0f}}};
 }
 
 std::string slurp(const std::string& path) {
@@ -67,6 +68,7 @@ TEST_F(JournalTest, RecordsRoundTripExactly) {
     EXPECT_EQ(s.path[1][0], 0.1000000000000001);
     EXPECT_EQ(s.path[1][1], -2.5e-9);
     EXPECT_EQ(std::get<PerturbAction>(read.records[1]).perturbation.center[0], 1.0 / 3.0);
+    EXPECT_EQ(std::get<MaterialAction>(read.records.back()).material, std::get<MaterialAction>(expected.back()).material);
     // Appending to an existing journal keeps what is there.
     {
         JournalWriter w;

@@ -16,6 +16,7 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include "garden/scene/materials.h"
 #include "garden/sculpt/sculpture_edits.h"
 #include "garden/session/open_session.h"
 #include "session_garden.h"
@@ -94,6 +95,36 @@ TEST_F(SessionFolderTest, ASessionReopensWithIdenticalGridsAndItsUndoHistory) {
     EXPECT_EQ(o.session->editCount(o.session->findSculpture("b")), 0u);
     // The snapshot agrees with a rebuild from the journal.
     EXPECT_TRUE(readSnapshotInfo(SessionPaths(folder)).present);
+}
+
+TEST_F(SessionFolderTest, AMaterialChosenSurvivesReopeningAndUndoes) {
+    const std::string garden = writeGarden();
+    const std::string folder = (dir / "session").string();
+    Material marble = *builtinMaterial("marble");
+    marble.color = {0.8f, 0.85f, 0.9f};  // its own colour: the whole material is kept, not only the name
+    {
+        OpenedSession o = openSession({folder, garden}, settings());
+        ASSERT_EQ(o.error, "");
+        GardenSession& s = *o.session;
+        ASSERT_EQ(s.setMaterial(s.findSculpture("a"), *builtinMaterial("bronze")), "");
+        ASSERT_EQ(s.setMaterial(s.findSculpture("b"), marble), "");
+        ASSERT_EQ(s.setMaterial(s.findSculpture("a"), *builtinMaterial("wood")), "");
+        ASSERT_TRUE(s.undo());  // a: bronze again
+        EXPECT_EQ(s.history().back().action, "material");
+    }
+    OpenedSession o = openSession({folder, garden}, settings());
+    ASSERT_EQ(o.error, "");
+    GardenSession& s = *o.session;
+    const auto material = [&](const char* name) { return s.sculptures()[static_cast<std::size_t>(s.findSculpture(name))].material; };
+    EXPECT_EQ(material("a"), *builtinMaterial("bronze"));
+    EXPECT_EQ(material("b"), marble);
+    EXPECT_EQ(material("b").kind, MaterialKind::Marble);
+    // Its undo history came back: undo gives b the garden file's "red" again.
+    ASSERT_TRUE(s.undo());
+    EXPECT_EQ(material("b").name, "red");
+    EXPECT_EQ(material("b").kind, MaterialKind::Plain);
+    ASSERT_TRUE(s.redo());
+    EXPECT_EQ(material("b"), marble);
 }
 
 TEST_F(SessionFolderTest, ADamagedTailIsReportedKeptAndCutAndTheRestRecovered) {

@@ -147,6 +147,16 @@ protected:
     std::vector<float> depth_;
 };
 
+// One sample per pixel, no shadows, no occlusion: each surface one shade
+// where the light is even, for tests that compare colours.
+inline RenderQuality plainQuality() {
+    RenderQuality q;
+    q.msaaSamples = 1;
+    q.shadows = false;
+    q.ambientOcclusion = false;
+    return q;
+}
+
 // Mostly red, green, blue: one material colour against the others.
 inline bool reddish(const Rgba& p) { return p.r > p.g + 40 && p.r > p.b + 40; }
 inline bool greenish(const Rgba& p) { return p.g > p.r + 40 && p.g > p.b + 40; }

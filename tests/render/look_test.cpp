@@ -80,13 +80,7 @@ protected:
     }
 };
 
-RenderQuality plain() {
-    RenderQuality q;
-    q.msaaSamples = 1;
-    q.shadows = false;
-    q.ambientOcclusion = false;
-    return q;
-}
+RenderQuality plain() { return plainQuality(); }
 
 TEST_F(LookTest, MultisamplingGivesSilhouettesIntermediateCoverageAndLeavesFlatColoursAlone) {
     renderer_->upload(1, 1, uvSphereMesh(1.0f, 96, 48));

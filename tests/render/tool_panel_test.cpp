@@ -111,5 +111,29 @@ TEST_F(ToolPanelTest, UndoRedoMirrorAndDiscardActOnTheSession) {
     EXPECT_FALSE(session->redo());
 }
 
+TEST_F(ToolPanelTest, TheMaterialListGivesTheSelectionAnotherMaterialUndoably) {
+    const int a = session->findSculpture("a");
+    EXPECT_FALSE(find("material")) << "nothing selected";
+    session->select(a);
+    frame({0, 0}, false);
+    frame({0, 0}, false);
+    ASSERT_TRUE(click("material"));
+    // The open list: the garden's "red", then the built-ins.
+    const ImGuiWindow* list = ImGui::FindWindowByName("##Combo_00");
+    ASSERT_TRUE(list && list->Active) << "the list opened";
+    std::optional<ImVec2> marble;
+    for (float y = list->Pos.y; y < list->Pos.y + list->Size.y && !marble; y += 2.0f)
+        if (frame({list->Pos.x + 20.0f, y}, false) == ImHashStr("marble", 0, list->ID)) marble = ImVec2(list->Pos.x + 20.0f, y);
+    ASSERT_TRUE(marble) << "marble is in the list";
+    frame(*marble, true);
+    frame(*marble, false);
+    const Sculpture& s = session->sculptures()[static_cast<std::size_t>(a)];
+    EXPECT_EQ(s.material.name, "marble");
+    EXPECT_EQ(s.material.kind, MaterialKind::Marble);
+    EXPECT_EQ(session->history().back().action, "material");
+    ASSERT_TRUE(session->undo());
+    EXPECT_EQ(s.material.name, "red");
+}
+
 }  // namespace
 }  // namespace hg::garden
