@@ -122,7 +122,26 @@ bool TapeSpecializer::specialize(const Tape& tape, const std::vector<IntervalEva
     if (kept * 20 > n * 19) return false;
     locs_.assign(tape.locs.begin(), tape.locs.end());
     locs_.resize(n);
-    out.tape = assembleTape(ssa_, locs_, live_, result, tape.sites, tape.params, &order_);
+    // Only the kept instructions' kernel parameters and failure sites go
+    // along: an edited sculpture's tape holds tens of thousands of segment
+    // parameters, and copying them all for every box cost more than the
+    // box's evaluation.
+    std::vector<double> params;
+    std::vector<SourceLoc> sites;
+    for (std::size_t k = 0; k < n; ++k) {
+        if (!live_[k]) continue;
+        Instr& in = ssa_[k];
+        if (const std::uint32_t count = fusedParamCount(in.op)) {
+            const auto first = static_cast<std::uint32_t>(params.size());
+            params.insert(params.end(), tape.params.begin() + in.param, tape.params.begin() + in.param + count);
+            in.param = first;
+        }
+        if (opCanFail(in.op) && in.site < tape.sites.size()) {
+            sites.push_back(tape.sites[in.site]);
+            in.site = static_cast<std::uint32_t>(sites.size() - 1);
+        }
+    }
+    out.tape = assembleTape(ssa_, locs_, live_, result, std::move(sites), std::move(params), &order_);
     out.affine.resize(order_.size());
     for (std::size_t i = 0; i < order_.size(); ++i) out.affine[i] = affine[order_[i]];
     return true;

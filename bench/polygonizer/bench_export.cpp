@@ -10,8 +10,16 @@
 // With --simplify ERROR (model units) only the export runs, simplified,
 // and a table of triangles before and after is printed instead.
 //
+// With --stages only the export runs, and a table says where its time
+// goes (the plan: coarse sampling and normalization; sampling the tiles;
+// meshing, welding, validating and writing) and which tape each evaluated
+// leaf ran (mean, longest) beside the full tape (docs/hyperfun.md,
+// "Evaluation specialized to a region"). --hf FILE adds a HyperFun file of
+// one's own (an exported edited sculpture, say) to the models; --box gives
+// those files' model box (an export's header states it).
+//
 //   ./build/release/bench/bench_export [--json out.json] [--filter NAME] [--repeat N] [--res 256,512,1024]
-//                                      [--memory-limit MiB] [--simplify ERROR]
+//                                      [--memory-limit MiB] [--simplify ERROR] [--stages] [--hf FILE]... [--box x0,y0,z0,x1,y1,z1]
 #include <openvdb/tools/VolumeToMesh.h>
 
 #include <chrono>
@@ -48,6 +56,7 @@ struct Source {
     std::string name;
     std::string text;  // program text, or "" with a file
     fs::path file;
+    std::optional<frep::Box3> box;  // none: resolveModelBox's
 };
 
 std::uint64_t peakResidentBytes() {
@@ -76,7 +85,7 @@ nlohmann::json measure(const Source& s, int res, const std::string& path, std::u
     nlohmann::json row = {{"model", s.name}, {"res", res}, {"path", path}};
     std::optional<frep::Model> model = load(s);
     voxel::ModelBox box;
-    if (!model || !voxel::resolveModelBox(*model, std::nullopt, box).empty()) {
+    if (!model || !voxel::resolveModelBox(*model, s.box, box).empty()) {
         row["error"] = "cannot load or bound the model";
         return row;
     }
@@ -92,6 +101,11 @@ nlohmann::json measure(const Source& s, int res, const std::string& path, std::u
         if (!why.empty()) row["error"] = why;
         row["seconds"] = t;
         row["mesh_seconds"] = report.meshSeconds;
+        row["plan_seconds"] = report.planSeconds;
+        row["sample_seconds"] = report.sampleSeconds;
+        row["leaf_tape_mean"] = report.leafTapeMean;
+        row["leaf_tape_max"] = report.leafTapeMax;
+        row["full_tape"] = model->tape() ? model->tape()->size() : 0;
         row["triangles"] = report.triangles;
         row["triangles_before_simplify"] = report.trianglesBeforeSimplify;
         row["simplify_note"] = report.simplifyNote;
@@ -182,6 +196,9 @@ int main(int argc, char** argv) {
     // Our own options first, the shared ones after.
     std::vector<int> resolutions = {256, 512, 1024};
     std::uint64_t limitMiB = 0;
+    bool stages = false;
+    std::optional<frep::Box3> fileBox;
+    std::vector<fs::path> files;
     std::vector<char*> rest = {argv[0]};
     for (int i = 1; i < argc; ++i) {
         if (std::strcmp(argv[i], "--res") == 0 && i + 1 < argc) {
@@ -190,6 +207,18 @@ int main(int argc, char** argv) {
             for (std::string r; std::getline(list, r, ',');) resolutions.push_back(std::atoi(r.c_str()));
         } else if (std::strcmp(argv[i], "--simplify") == 0 && i + 1 < argc) {
             gSimplifyError = std::atof(argv[++i]);
+        } else if (std::strcmp(argv[i], "--stages") == 0) {
+            stages = true;
+        } else if (std::strcmp(argv[i], "--box") == 0 && i + 1 < argc) {
+            frep::Box3 b;
+            if (std::sscanf(argv[++i], "%lf,%lf,%lf,%lf,%lf,%lf", &b.lo[0], &b.lo[1], &b.lo[2], &b.hi[0], &b.hi[1],
+                            &b.hi[2]) != 6) {
+                std::fprintf(stderr, "--box takes x0,y0,z0,x1,y1,z1\n");
+                return 2;
+            }
+            fileBox = b;
+        } else if (std::strcmp(argv[i], "--hf") == 0 && i + 1 < argc) {
+            files.emplace_back(argv[++i]);
         } else if (std::strcmp(argv[i], "--memory-limit") == 0 && i + 1 < argc) {
             limitMiB = std::strtoull(argv[++i], nullptr, 10);
         } else {
@@ -201,10 +230,11 @@ int main(int argc, char** argv) {
     if (!bench::parseBenchArgs(static_cast<int>(rest.size()), rest.data(), args)) return 2;
 
     std::vector<Source> sources = {
-        {"sphere", "q(x[3], a[1]) { q = 0.64 - (x[1]^2 + x[2]^2 + x[3]^2); }", {}},
+        {"sphere", "q(x[3], a[1]) { q = 0.64 - (x[1]^2 + x[2]^2 + x[3]^2); }", {}, std::nullopt},
     };
     for (const char* n : {"key_dryad", "path_boulder"})
-        sources.push_back({n, "", fs::path(HG_SOURCE_DIR) / "content" / "hyperfun" / (std::string(n) + ".hf")});
+        sources.push_back({n, "", fs::path(HG_SOURCE_DIR) / "content" / "hyperfun" / (std::string(n) + ".hf"), std::nullopt});
+    for (const fs::path& f : files) sources.push_back({f.stem().string(), "", f, fileBox});
 
     nlohmann::json rows = nlohmann::json::array();
     if (gSimplifyError > 0.0) {
@@ -221,6 +251,30 @@ int main(int argc, char** argv) {
                 std::fflush(stdout);
                 if (ours.contains("error")) std::fprintf(stderr, "%s\n", ours["error"].get<std::string>().c_str());
                 rows.push_back({{"export", ours}});
+            }
+        }
+        if (!args.jsonPath.empty()) std::ofstream(args.jsonPath) << nlohmann::json{{"mesh_export", rows}}.dump(2) << "\n";
+        return 0;
+    }
+    if (stages) {
+        std::printf("| model | res | export STL (s) | plan (s) | sampling tiles (s) | meshing, welding, writing (s) "
+                    "| full tape | leaf tape mean | leaf tape max |\n");
+        std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+        for (const Source& s : sources) {
+            if (!args.matches(s.name)) continue;
+            for (int res : resolutions) {
+                const nlohmann::json r = inChild(s, res, "export", limitMiB, args.repeat);
+                if (r.contains("error")) {
+                    std::fprintf(stderr, "%s %d: %s\n", s.name.c_str(), res, r["error"].get<std::string>().c_str());
+                    continue;
+                }
+                const double total = r["seconds"].get<double>(), plan = r["plan_seconds"].get<double>(),
+                             sample = r["sample_seconds"].get<double>();
+                std::printf("| %s | %d^3 | %.2f | %.2f | %.2f | %.2f | %zu | %.0f | %zu |\n", s.name.c_str(), res, total,
+                            plan, sample, total - plan - sample, r.value("full_tape", std::size_t{0}),
+                            r.value("leaf_tape_mean", 0.0), r.value("leaf_tape_max", std::size_t{0}));
+                std::fflush(stdout);
+                rows.push_back({{"export", r}});
             }
         }
         if (!args.jsonPath.empty()) std::ofstream(args.jsonPath) << nlohmann::json{{"mesh_export", rows}}.dump(2) << "\n";
