@@ -15,6 +15,14 @@
 // (IntervalTrace's exact bits: a clamp's floor against a clamped field).
 // Operations that may fail in the box stay, as do their operands (a failure
 // anywhere fails the point); NaN is never pruned around.
+//
+// Gradients: min and max carry the derivative of the operand they return,
+// so a tie is pruned only where both operands' derivatives are zero at the
+// tied value (an edit's running field at the band's floor against a far
+// piece clamped to that floor). The values are the full tape's bit for bit;
+// a derivative may then be a zero of the other sign, which no later
+// operation turns into anything but a zero: the magnitudes are the same bit
+// for bit.
 #pragma once
 
 #include <cstdint>
@@ -54,6 +62,13 @@ public:
                     Precision precision, SpecializedTape& out);
 
 private:
+    // Gradients: whether instruction k's derivative is zero wherever its
+    // value is t (a clamp at its floor, a constant, a max of pieces all at
+    // their floors there), from the values noted for it (NaN: none).
+    bool isFlat(std::uint32_t k, double t) const;
+    void noteFlat(const Instr& in, std::size_t k, const IntervalTrace& trace);
+
+    std::vector<double> flatLo_, flatHi_;  // per instruction, gradients only
     std::vector<std::uint32_t> def_;    // per register: the instruction that last wrote it
     std::vector<std::uint32_t> alias_;  // per instruction: the instruction whose value it equals in the box
     std::vector<char> live_;

@@ -141,6 +141,10 @@ std::string exportMesh(const frep::Model& model, const frep::Box3& box, const Me
     report.estimatedBytes = tiled.plan.estimatedBytes;
     report.limitBytes = tiled.plan.limit;
     report.meshSeconds = tiled.stats.seconds;
+    report.planSeconds = tiled.stats.planSeconds;
+    report.sampleSeconds = tiled.stats.sampleSeconds;
+    report.leafTapeMean = tiled.stats.leafTapeMean;
+    report.leafTapeMax = tiled.stats.leafTapeMax;
     if (!tiled.error.empty()) return tiled.error;
     Mesh& mesh = tiled.mesh;
 

@@ -54,6 +54,10 @@ struct MeshExportReport {
     double size[3] = {0, 0, 0};      // boxMax - boxMin, model units
     double seconds = 0.0;            // the whole export
     double meshSeconds = 0.0;        // of which planning, sampling, meshing and welding the tiles
+    double planSeconds = 0.0;        // of which the plan (coarse sampling, normalization)
+    double sampleSeconds = 0.0;      // of which sampling the tiles
+    double leafTapeMean = 0.0;       // the tape each evaluated leaf ran (voxel::SampleStats)
+    std::uint64_t leafTapeMax = 0;
     std::size_t tiles = 0;           // tiles sampled (meshes)
     int tileSize = 0;
     std::uint64_t peakTileBytes = 0; // the largest tile's grid (VDB: the whole grid)

@@ -114,20 +114,28 @@ std::string planTiledMesh(const frep::Model& model, const frep::Box3& box, const
     if (std::string why = voxel::makeFrame(box, options.resolution, kBand, plan.frame); !why.empty()) return why;
     plan.limit = voxel::memoryLimit(options.memoryLimit);
 
+    // The normalization first: the tiles need it, and the coarse pass below
+    // takes it too instead of estimating its own (an estimate evaluates
+    // the whole model on a lattice and its gradients at the surface, which
+    // for an edited sculpture costs as much as the coarse pass itself). A
+    // positive scale leaves every sign, so the coarse mesh, as it is.
+    plan.normalization = voxel::estimateNormalization(model, plan.frame).scale;
+
     // How many triangles: a coarse meshing's count, scaled by area (the
     // square of the resolution), with a margin for detail the coarse grid
-    // misses.
-    voxel::VolumeRequest coarse;
-    coarse.box = box;
-    coarse.resolution = std::min(options.resolution, kCoarseResolution);
-    voxel::SampleOptions coarseOptions;
-    coarseOptions.memoryLimit = plan.limit;
-    voxel::VoxelizeResult sampled = voxel::voxelize(model, coarse, coarseOptions);
-    if (!sampled.volume) return sampled.error;
-    const double scale = static_cast<double>(options.resolution) / coarse.resolution;
+    // misses. The count needs only the signs, so the coarse grid's band is
+    // the narrowest: fewer voxels near the surface to evaluate, and
+    // smaller boxes' tapes for them.
+    const int coarseResolution = std::min(options.resolution, kCoarseResolution);
+    voxel::VolumeFrame coarseFrame;
+    if (std::string why = voxel::makeFrame(box, coarseResolution, voxel::kMinBand, coarseFrame); !why.empty())
+        return why;
+    const double coarseScale = plan.normalization * coarseFrame.voxelSize / plan.frame.voxelSize;
+    const voxel::Volume coarse = voxel::sampleRegion(model, coarseFrame, coarseScale, coarseFrame.indexBox);
+    const double scale = static_cast<double>(options.resolution) / coarseResolution;
     const double margin = scale > 1.0 ? 1.1 : 1.0;
     plan.expectedTriangles =
-        static_cast<std::uint64_t>(static_cast<double>(meshVolume(*sampled.volume).triangleCount()) * scale * scale * margin);
+        static_cast<std::uint64_t>(static_cast<double>(meshVolume(coarse).triangleCount()) * scale * scale * margin);
     plan.meshBytes = plan.expectedTriangles * options.bytesPerTriangle;
 
     std::vector<int> sizes(std::begin(kTileSizes), std::end(kTileSizes));
@@ -144,7 +152,6 @@ std::string planTiledMesh(const frep::Model& model, const frep::Box3& box, const
 
     const CellRange range = cellRange(plan.frame, plan.tileSize);
     for (int a = 0; a < 3; ++a) plan.tileCounts[a] = (range.hi[a] - range.origin[a] + plan.tileSize) / plan.tileSize;
-    plan.normalization = voxel::estimateNormalization(model, plan.frame).scale;
     return "";
 }
 
@@ -152,6 +159,7 @@ TiledMeshResult meshModelTiled(const frep::Model& model, const frep::Box3& box, 
     const auto start = Clock::now();
     TiledMeshResult r;
     r.error = planTiledMesh(model, box, options, r.plan);
+    r.stats.planSeconds = std::chrono::duration<double>(Clock::now() - start).count();
     if (!r.error.empty()) return r;
     const TiledMeshPlan& plan = r.plan;
     const int t = plan.tileSize;
@@ -166,6 +174,8 @@ TiledMeshResult meshModelTiled(const frep::Model& model, const frep::Box3& box, 
     std::vector<std::uint64_t> edges;
     const std::size_t total = plan.tiles();
     std::size_t done = 0;
+    double leafTapeSum = 0.0;
+    std::uint64_t leafTapes = 0;
     for (int tz = 0; tz < plan.tileCounts[2]; ++tz)
         for (int ty = 0; ty < plan.tileCounts[1]; ++ty)
             for (int tx = 0; tx < plan.tileCounts[0]; ++tx) {
@@ -183,6 +193,9 @@ TiledMeshResult meshModelTiled(const frep::Model& model, const frep::Box3& box, 
                 voxel::SampleStats s;
                 const voxel::Volume volume = voxel::sampleRegion(model, plan.frame, plan.normalization, region, &s);
                 r.stats.samples += s.samples;
+                leafTapeSum += s.leafTapeMean * static_cast<double>(s.leafTapes);
+                leafTapes += s.leafTapes;
+                r.stats.leafTapeMax = std::max(r.stats.leafTapeMax, s.leafTapeMax);
                 r.stats.peakTileBytes = std::max<std::uint64_t>(r.stats.peakTileBytes, volume.memoryBytes());
                 auto t1 = Clock::now();
                 const Mesh tile = meshVolume(volume, window);
@@ -203,6 +216,7 @@ TiledMeshResult meshModelTiled(const frep::Model& model, const frep::Box3& box, 
                 if (options.progress) options.progress(static_cast<double>(++done) / static_cast<double>(total));
             }
     if (out.empty()) r.error = "the model has no surface inside the box";
+    r.stats.leafTapeMean = leafTapes ? leafTapeSum / static_cast<double>(leafTapes) : 0.0;
     r.stats.seconds = std::chrono::duration<double>(Clock::now() - start).count();
     return r;
 }

@@ -73,7 +73,11 @@ struct TiledMeshStats {
     std::uint64_t peakTileBytes = 0;  // the largest tile grid, as OpenVDB counts it
     std::uint64_t samples = 0;        // points evaluated
     std::size_t sharedVertices = 0;   // vertices welded to an earlier tile's
+    // The tape each evaluated leaf ran (voxel::SampleStats), over all tiles.
+    double leafTapeMean = 0.0;
+    std::uint64_t leafTapeMax = 0;
     double seconds = 0.0;             // all of it, planning included
+    double planSeconds = 0.0;         // of which the plan: coarse sampling and normalization
     double sampleSeconds = 0.0;       // of which sampling tiles
     double meshSeconds = 0.0;         // meshing them
     double weldSeconds = 0.0;         // welding them on

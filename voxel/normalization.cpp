@@ -6,7 +6,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <map>
+#include <iterator>
+#include <tuple>
 #include <memory>
 #include <vector>
 
@@ -93,30 +94,79 @@ std::vector<double> surfacePoints(const Probe& p) {
     return kept;
 }
 
-// Surface samples grouped by the block of probe cells they fall in, and
-// within it by a smaller block, so that each group's gradients run a tape
-// specialized to its box (the outer block's tape specialized further).
-constexpr int kOuterBlockCells = 8, kInnerBlockCells = 2;
+// Surface samples grouped by the block of probe cells they fall in, then by
+// smaller and smaller blocks within it, so that each group's gradients run
+// a tape specialized to its box, the enclosing block's tape specialized
+// further (docs/hyperfun.md, "Evaluation specialized to a region").
+constexpr int kBlockCells[] = {8, 4, 2};
+constexpr std::size_t kLevels = std::size(kBlockCells);
 
 struct GradientWorker {
-    explicit GradientWorker(const frep::Tape& t) : outer(t), inner(t), grad(t) {}
-    frep::IntervalEvaluator outer, inner;
+    explicit GradientWorker(const frep::Tape& t) : grad(t) {
+        for (std::size_t l = 0; l < kLevels; ++l) interval.emplace_back(t);
+    }
+    std::vector<frep::IntervalEvaluator> interval;  // per level, bound to the tape it specializes
     frep::GradientEvaluator grad;
     frep::TapeSpecializer specializer;
     frep::IntervalTrace trace;
-    frep::SpecializedTape outerTape, innerTape;
+    frep::SpecializedTape tapes[kLevels];
+    std::vector<double> x, y, z;
+    std::vector<frep::Gradient> g;
 };
 
 // The box of the samples `group` (indices into `pts`, xyz triples).
-std::array<frep::Interval, 3> boxOf(const std::vector<double>& pts, const std::vector<std::size_t>& group) {
+std::array<frep::Interval, 3> boxOf(const std::vector<double>& pts, const std::size_t* group, std::size_t n) {
     std::array<frep::Interval, 3> box;
     for (std::size_t a = 0; a < 3; ++a) box[a] = frep::Interval(pts[3 * group[0] + a]);
-    for (std::size_t i : group)
+    for (std::size_t s = 0; s < n; ++s)
         for (std::size_t a = 0; a < 3; ++a) {
-            box[a].lo = std::min(box[a].lo, pts[3 * i + a]);
-            box[a].hi = std::max(box[a].hi, pts[3 * i + a]);
+            box[a].lo = std::min(box[a].lo, pts[3 * group[s] + a]);
+            box[a].hi = std::max(box[a].hi, pts[3 * group[s] + a]);
         }
     return box;
+}
+
+// |grad f| at the samples order[begin, end) (all in one block of level
+// `level`, evaluated with `tape`) into `all`, splitting into the next
+// level's blocks (keys[level + 1]) where specialization is on.
+void gradientsOf(GradientWorker& w, const frep::Tape& tape, const std::vector<double>& pts,
+                 const std::vector<std::array<std::array<int, 3>, kLevels>>& keys, const std::vector<std::size_t>& order,
+                 std::size_t begin, std::size_t end, std::size_t level, bool specialize, std::vector<double>& all) {
+    const frep::Tape* own = &tape;
+    if (specialize) {
+        const auto box = boxOf(pts, order.data() + begin, end - begin);
+        frep::IntervalEvaluator& interval = w.interval[level];
+        interval.evaluate(box[0], box[1], box[2], &w.trace);
+        if (w.specializer.specialize(tape, interval.affine(), w.trace, frep::Precision::Gradient, w.tapes[level]))
+            own = &w.tapes[level].tape;
+        if (level + 1 < kLevels) {
+            if (own == &tape) w.interval[level + 1].rebind(tape, interval.affine());
+            else w.interval[level + 1].rebind(*own, w.tapes[level].affine);
+            for (std::size_t i = begin; i < end;) {
+                std::size_t j = i + 1;
+                while (j < end && keys[order[j]][level + 1] == keys[order[i]][level + 1]) ++j;
+                gradientsOf(w, *own, pts, keys, order, i, j, level + 1, specialize, all);
+                i = j;
+            }
+            return;
+        }
+    }
+    // A failing point has a zero gradient, as has one whose derivative is
+    // undefined: neither counts.
+    const std::size_t n = end - begin;
+    w.x.resize(n); w.y.resize(n); w.z.resize(n); w.g.resize(n);
+    for (std::size_t s = 0; s < n; ++s) {
+        const std::size_t i = order[begin + s];
+        w.x[s] = pts[3 * i]; w.y[s] = pts[3 * i + 1]; w.z[s] = pts[3 * i + 2];
+    }
+    w.grad.rebind(*own);
+    frep::ErrorReport errors;
+    w.grad.evaluate(w.x.data(), w.y.data(), w.z.data(), w.g.data(), n, errors);
+    for (std::size_t s = 0; s < n; ++s) {
+        const frep::Gradient& gr = w.g[s];
+        const double m = std::sqrt(gr.dx * gr.dx + gr.dy * gr.dy + gr.dz * gr.dz);
+        if (std::isfinite(m) && m > 0.0) all[order[begin + s]] = m;
+    }
 }
 
 std::vector<double> gradientMagnitudes(const frep::Model& model, const std::vector<double>& pts, double h,
@@ -126,71 +176,33 @@ std::vector<double> gradientMagnitudes(const frep::Model& model, const std::vect
     mags.reserve(n);
     frep::ErrorReport errors;
     if (const frep::Tape* tape = model.tape()) {
-        // groups[outer][inner] = sample indices, in a fixed order.
-        std::vector<std::vector<std::vector<std::size_t>>> groups;
-        {
-            std::map<std::array<int, 3>, std::size_t> outerIndex;
-            std::vector<std::map<std::array<int, 3>, std::size_t>> innerIndex;
-            for (std::size_t i = 0; i < n; ++i) {
-                std::array<int, 3> cell;
-                for (std::size_t a = 0; a < 3; ++a)
-                    cell[a] = static_cast<int>(std::floor((pts[3 * i + a] - probe.lo[a]) / probe.step));
-                std::array<int, 3> outerKey, innerKey;
-                for (std::size_t a = 0; a < 3; ++a) {
-                    outerKey[a] = cell[a] >= 0 ? cell[a] / kOuterBlockCells : -1;
-                    innerKey[a] = cell[a] >= 0 ? cell[a] / kInnerBlockCells : -1;
-                }
-                auto [o, freshOuter] = outerIndex.emplace(outerKey, groups.size());
-                if (freshOuter) {
-                    groups.emplace_back();
-                    innerIndex.emplace_back();
-                }
-                auto [in, freshInner] = innerIndex[o->second].emplace(innerKey, groups[o->second].size());
-                if (freshInner) groups[o->second].emplace_back();
-                groups[o->second][in->second].push_back(i);
+        // Each sample's block at every level, and the samples in the order
+        // of their blocks (a fixed order); the outermost blocks are tasks.
+        std::vector<std::array<std::array<int, 3>, kLevels>> keys(n);
+        for (std::size_t i = 0; i < n; ++i)
+            for (std::size_t a = 0; a < 3; ++a) {
+                const int cell = static_cast<int>(std::floor((pts[3 * i + a] - probe.lo[a]) / probe.step));
+                for (std::size_t l = 0; l < kLevels; ++l) keys[i][l][a] = cell >= 0 ? cell / kBlockCells[l] : -1;
             }
-        }
+        std::vector<std::size_t> order(n);
+        for (std::size_t i = 0; i < n; ++i) order[i] = i;
+        std::sort(order.begin(), order.end(),
+                  [&](std::size_t p, std::size_t q) { return std::tie(keys[p], p) < std::tie(keys[q], q); });
+        std::vector<std::size_t> starts;
+        for (std::size_t i = 0; i < n; ++i)
+            if (i == 0 || keys[order[i]][0] != keys[order[i - 1]][0]) starts.push_back(i);
+        starts.push_back(n);
         // In parallel, each magnitude written at its sample's index so the
         // result does not depend on the number of threads. The specialized
         // tapes give the same values, bit for bit (frep/tape_specializer.h).
         std::vector<double> all(n, 0.0);
         const bool specialize = frep::specializationEnabled();
         tbb::enumerable_thread_specific<std::unique_ptr<GradientWorker>> workers;
-        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, groups.size(), 1), [&](const tbb::blocked_range<std::size_t>& r) {
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, starts.size() - 1, 1), [&](const tbb::blocked_range<std::size_t>& r) {
             auto& w = workers.local();
             if (!w) w = std::make_unique<GradientWorker>(*tape);
-            frep::ErrorReport pointErrors;
-            for (std::size_t g = r.begin(); g != r.end(); ++g) {
-                const frep::Tape* outerTape = tape;
-                if (specialize) {
-                    std::vector<std::size_t> every;
-                    for (const auto& inner : groups[g]) every.insert(every.end(), inner.begin(), inner.end());
-                    const auto box = boxOf(pts, every);
-                    w->outer.evaluate(box[0], box[1], box[2], &w->trace);
-                    if (w->specializer.specialize(*tape, w->outer.affine(), w->trace, frep::Precision::Gradient, w->outerTape)) {
-                        outerTape = &w->outerTape.tape;
-                        w->inner.rebind(w->outerTape.tape, w->outerTape.affine);
-                    } else {
-                        w->inner.rebind(*tape, w->outer.affine());
-                    }
-                }
-                for (const auto& group : groups[g]) {
-                    w->grad.rebind(*outerTape);
-                    if (specialize) {
-                        const auto box = boxOf(pts, group);
-                        w->inner.evaluate(box[0], box[1], box[2], &w->trace);
-                        if (w->specializer.specialize(*outerTape, w->inner.affine(), w->trace, frep::Precision::Gradient,
-                                                      w->innerTape))
-                            w->grad.rebind(w->innerTape.tape);
-                    }
-                    for (std::size_t i : group) {
-                        std::uint64_t before = pointErrors.count;
-                        frep::Gradient gr = w->grad.evaluate(pts[3 * i], pts[3 * i + 1], pts[3 * i + 2], pointErrors);
-                        double m = std::sqrt(gr.dx * gr.dx + gr.dy * gr.dy + gr.dz * gr.dz);
-                        if (pointErrors.count == before && std::isfinite(m) && m > 0.0) all[i] = m;
-                    }
-                }
-            }
+            for (std::size_t g = r.begin(); g != r.end(); ++g)
+                gradientsOf(*w, *tape, pts, keys, order, starts[g], starts[g + 1], 0, specialize, all);
         });
         for (double m : all)
             if (m > 0.0) mags.push_back(m);

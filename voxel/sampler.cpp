@@ -71,6 +71,7 @@ void copyStats(const Walk& walk, SampleStats& stats) {
     stats.samples = walk.counters.samples;
     stats.leaves = walk.counters.leaves;
     stats.leafTapeMax = walk.counters.leafTapeMax;
+    stats.leafTapes = walk.counters.leafTapes;
     stats.leafTapeMean = walk.counters.leafTapes
                              ? static_cast<double>(walk.counters.leafTapeSum) / static_cast<double>(walk.counters.leafTapes)
                              : 0.0;

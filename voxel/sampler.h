@@ -37,6 +37,7 @@ struct SampleStats {
     // (frep/tape_specializer.h): mean and longest, against the full tape.
     double leafTapeMean = 0.0;
     std::uint64_t leafTapeMax = 0;
+    std::uint64_t leafTapes = 0;      // leaves batch-evaluated with a tape (the mean's count)
     double seconds = 0.0;
     frep::ErrorReport errors;         // domain errors at sampled points
 

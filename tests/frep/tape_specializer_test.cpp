@@ -1,10 +1,11 @@
 // The tape specialized to a box (frep/tape_specializer.h) computes the
-// full tape's values bit for bit, in float and in double, with the same
-// failures: every conformance program, corpus program and our own content
-// over random boxes of every size, boxes nested inside specialized boxes,
-// and a program of many bounded edits (min and max against clamped pieces,
-// the shape an exported sculpture has), where it must also shorten the
-// tape a lot.
+// full tape's values bit for bit, in float, in double and in gradients
+// (derivatives equal, magnitudes bit for bit), with the same
+// failures, the first one named alike: every conformance program, corpus
+// program and our own content over random boxes of every size, boxes nested
+// inside specialized boxes, and a program of many bounded edits (min and
+// max against clamped pieces, the shape an exported sculpture has), where it
+// must also shorten the tape a lot.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,10 +13,12 @@
 #include <filesystem>
 #include <random>
 #include <string>
+#include <utility>
 
 #include "conformance_data.h"
 #include "frep/compiler.h"
 #include "frep/eval_batch.h"
+#include "frep/eval_gradient.h"
 #include "frep/eval_interval.h"
 #include "frep/parser.h"
 #include "frep/tape_specializer.h"
@@ -106,6 +109,48 @@ void expectSameValues(const Tape& full, const Tape& shorter, const double lo[3],
     ASSERT_EQ(std::memcmp(a.data(), b.data(), a.size() * sizeof(T)), 0) << what;
     ASSERT_EQ(fa, fb) << what;
     EXPECT_EQ(ea.count, eb.count) << what;
+    // The first failure is named alike: a specialized tape keeps only its
+    // own instructions' failure sites, renumbered.
+    EXPECT_EQ(ea.first, eb.first) << what;
+    EXPECT_EQ(ea.firstLoc.line, eb.firstLoc.line) << what;
+    EXPECT_EQ(ea.firstLoc.column, eb.firstLoc.column) << what;
+}
+
+// The gradient evaluator on the specialized tape: the same values bit for
+// bit, the same derivatives (a zero may have the other sign, where a tie
+// between two flat operands was pruned) and so the same magnitudes bit for
+// bit, at the same kind of points as above.
+void expectSameGradients(const Tape& full, const Tape& shorter, const double lo[3], const double hi[3], std::mt19937& rng,
+                         const std::string& what) {
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    GradientEvaluator fullGrad(full), shortGrad(shorter);
+    ErrorReport ea, eb;
+    for (int i = 0; i < 200; ++i) {
+        const int c = i < 8 ? i : -1;
+        double p[3];
+        for (int k = 0; k < 3; ++k) {
+            const double t = c >= 0 ? ((c >> k) & 1) : (i % 5 == 0 ? std::round(u(rng)) : u(rng));
+            p[k] = std::min(lo[k] + (hi[k] - lo[k]) * t, hi[k]);
+        }
+        const Gradient a = fullGrad.evaluate(p[0], p[1], p[2], ea);
+        const Gradient b = shortGrad.evaluate(p[0], p[1], p[2], eb);
+        ASSERT_EQ(std::memcmp(&a.value, &b.value, sizeof a.value), 0) << what << " point " << i;
+        for (const auto& [da, db] : {std::pair{a.dx, b.dx}, std::pair{a.dy, b.dy}, std::pair{a.dz, b.dz}})
+            ASSERT_TRUE(da == db || (std::isnan(da) && std::isnan(db))) << what << " point " << i << ": " << da << " " << db;
+        const double ma = std::sqrt(a.dx * a.dx + a.dy * a.dy + a.dz * a.dz);
+        const double mb = std::sqrt(b.dx * b.dx + b.dy * b.dy + b.dz * b.dz);
+        ASSERT_EQ(std::memcmp(&ma, &mb, sizeof ma), 0) << what << " point " << i;
+    }
+    EXPECT_EQ(ea.count, eb.count) << what;
+}
+
+void expectSame(Precision precision, const Tape& full, const Tape& shorter, const double lo[3], const double hi[3],
+                std::mt19937& rng, const std::string& what) {
+    switch (precision) {
+        case Precision::Float: expectSameValues<float>(full, shorter, lo, hi, rng, what); break;
+        case Precision::Double: expectSameValues<double>(full, shorter, lo, hi, rng, what); break;
+        case Precision::Gradient: expectSameGradients(full, shorter, lo, hi, rng, what); break;
+    }
 }
 
 struct Shortening {
@@ -134,8 +179,7 @@ void checkProgram(const Case& c, Precision precision, std::mt19937& rng, Shorten
         s.sum += static_cast<double>(one.tape.size()) / static_cast<double>(c.tape.size());
         s.shortest = std::min(s.shortest, one.tape.size());
         const std::string what = c.name + " box " + std::to_string(box);
-        if (precision == Precision::Float) expectSameValues<float>(c.tape, one.tape, lo, hi, rng, what);
-        else expectSameValues<double>(c.tape, one.tape, lo, hi, rng, what);
+        expectSame(precision, c.tape, one.tape, lo, hi, rng, what);
         // A half of it, specialized from the specialized tape.
         double lo2[3], hi2[3];
         for (int k = 0; k < 3; ++k) {
@@ -152,8 +196,7 @@ void checkProgram(const Case& c, Precision precision, std::mt19937& rng, Shorten
         SpecializedTape two;
         if (!specializer.specialize(one.tape, one.affine, trace2, precision, two)) continue;
         EXPECT_LT(two.tape.size(), one.tape.size());
-        if (precision == Precision::Float) expectSameValues<float>(c.tape, two.tape, lo2, hi2, rng, what + " half");
-        else expectSameValues<double>(c.tape, two.tape, lo2, hi2, rng, what + " half");
+        expectSame(precision, c.tape, two.tape, lo2, hi2, rng, what + " half");
     }
 }
 
@@ -161,10 +204,11 @@ TEST(TapeSpecializer, EveryProgramGivesTheSameValuesOnEveryBoxInFloatAndDouble) 
     const std::vector<Case> cases = programs();
     ASSERT_GT(cases.size(), 40u);
     std::mt19937 rng(11);
-    Shortening f, d;
+    Shortening f, d, g;
     for (const Case& c : cases) {
         checkProgram(c, Precision::Float, rng, f);
         checkProgram(c, Precision::Double, rng, d);
+        checkProgram(c, Precision::Gradient, rng, g);
     }
     // Programs with min and max do get shortened somewhere.
     EXPECT_GT(f.specialized, 20u);
@@ -179,13 +223,57 @@ TEST(TapeSpecializer, ManyBoundedEditsShortenToTheFewThatReachTheBox) {
     ASSERT_TRUE(cr.tape);
     const Case c{"edited", std::move(*cr.tape)};
     std::mt19937 rng(3);
-    for (Precision p : {Precision::Float, Precision::Double}) {
+    for (Precision p : {Precision::Float, Precision::Double, Precision::Gradient}) {
         Shortening s;
         for (int i = 0; i < 4; ++i) checkProgram(c, p, rng, s);
         ASSERT_GT(s.specialized, 40u);
         // Small boxes meet a handful of the 300 edits.
         EXPECT_LT(s.shortest, c.tape.size() / 10) << "full " << c.tape.size();
         EXPECT_LT(s.sum / static_cast<double>(s.specialized), 0.6);
+    }
+}
+
+// For gradients, max(f, c) where f reaches c at the box's edge may become f
+// only where f's derivative is zero wherever it equals c (a clamp at its
+// floor): at x = 0.5, max(x, 0.5) returns the constant, whose derivative is
+// 0, not x's 1. A running field clamped to -3 against a piece at its floor
+// -3 is pruned: both are flat there.
+TEST(TapeSpecializer, GradientsPruneATieOnlyWhereBothSidesAreFlat) {
+    const auto tapeOf = [](const char* source) {
+        ParseResult r = parseProgram(source, "tie.hf");
+        EXPECT_TRUE(r.ok());
+        CompileResult c = compile(*r.program, 0, {0.0});
+        EXPECT_TRUE(c.tape);
+        return std::move(*c.tape);
+    };
+    std::mt19937 rng(2);
+    TapeSpecializer specializer;
+    IntervalTrace trace;
+    {
+        const Tape steep = tapeOf("m(x[3], a[1]) { m = max(x[1], 0.5) * (1 + x[2] * x[2]); }");
+        const double lo[3] = {0.5, 0.0, 0.0}, hi[3] = {0.7, 1.0, 1.0};
+        IntervalEvaluator interval(steep);
+        interval.evaluate(Interval(lo[0], hi[0]), Interval(lo[1], hi[1]), Interval(lo[2], hi[2]), &trace);
+        SpecializedTape out;
+        EXPECT_FALSE(specializer.specialize(steep, interval.affine(), trace, Precision::Gradient, out));
+        // Double has no derivatives to keep: the tie is taken there.
+        ASSERT_TRUE(specializer.specialize(steep, interval.affine(), trace, Precision::Double, out));
+        GradientEvaluator full(steep), shorter(out.tape);
+        ErrorReport errors;
+        EXPECT_EQ(full.evaluate(0.5, 0.5, 0.5, errors).dx, 0.0);
+        EXPECT_EQ(shorter.evaluate(0.5, 0.5, 0.5, errors).dx, 1.25);
+    }
+    {
+        const Tape clamped = tapeOf(
+            "m(x[3], a[1]) { f = max(min(x[1] * 10, 3), -3); p = max(min((0.01 - (x[2] - 5)^2) * 100, 3), -3);"
+            " m = max(f, p); }");
+        const double lo[3] = {-1.0, -1.0, -1.0}, hi[3] = {1.0, 1.0, 1.0};
+        IntervalEvaluator interval(clamped);
+        interval.evaluate(Interval(lo[0], hi[0]), Interval(lo[1], hi[1]), Interval(lo[2], hi[2]), &trace);
+        SpecializedTape out;
+        ASSERT_TRUE(specializer.specialize(clamped, interval.affine(), trace, Precision::Gradient, out));
+        EXPECT_LT(out.tape.size(), clamped.size() / 2) << clamped.dump() << out.tape.dump();
+        expectSameGradients(clamped, out.tape, lo, hi, rng, "clamped");
     }
 }
 

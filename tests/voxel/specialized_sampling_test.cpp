@@ -6,10 +6,13 @@
 
 #include <cstring>
 #include <filesystem>
+#include <array>
 #include <random>
+#include <vector>
 
 #include "frep/tape_specializer.h"
 #include "test_models.h"
+#include "voxel/lattice_evaluation.h"
 #include "voxel/sampler.h"
 
 namespace hg::voxel {
@@ -61,13 +64,18 @@ std::string editedBall(int edits) {
     return "edited(x[3], a[1]) {\n" + body + "  edited = f;\n}\n";
 }
 
-TEST(SpecializedSampling, GridsAreTheSameBitForBit) {
-    std::vector<std::pair<std::string, frep::Model>> models;
+// Our content, the bounded files and a ball of 400 edits.
+std::vector<std::pair<std::string, frep::Model>> models() {
+    std::vector<std::pair<std::string, frep::Model>> out;
     for (const fs::path& dir : {fs::path(HG_SOURCE_DIR) / "content" / "hyperfun", fs::path(HG_TEST_DATA_DIR) / "bounded"})
         for (const auto& e : fs::directory_iterator(dir))
-            if (e.path().extension() == ".hf") models.emplace_back(e.path().stem().string(), test::modelFromFile(e.path().string(), {0.4}));
-    models.emplace_back("edited", test::modelFromSource(editedBall(400).c_str()));
-    for (const auto& [name, model] : models) {
+            if (e.path().extension() == ".hf") out.emplace_back(e.path().stem().string(), test::modelFromFile(e.path().string(), {0.4}));
+    out.emplace_back("edited", test::modelFromSource(editedBall(400).c_str()));
+    return out;
+}
+
+TEST(SpecializedSampling, GridsAreTheSameBitForBit) {
+    for (const auto& [name, model] : models()) {
         SCOPED_TRACE(name);
         const Sampled full = sample(model, 72, false), fast = sample(model, 72, true);
         EXPECT_EQ(full.volume.normalization, fast.volume.normalization);
@@ -81,6 +89,38 @@ TEST(SpecializedSampling, GridsAreTheSameBitForBit) {
                 << fast.stats.leafTapeMean << " of " << full.stats.leafTapeMean;
         }
     }
+}
+
+// The lattice (the normalization's probe, the dense source cache) is
+// evaluated in blocks, each with the tape specialized to its box: the same
+// values, failures and error count as the full tape at every point, on a
+// lattice whose sides are no multiple of the blocks and whose points are
+// not evenly spaced.
+TEST(SpecializedSampling, LatticesAreTheSameBitForBit) {
+    std::mt19937 rng(4);
+    std::uniform_real_distribution<float> step(0.01f, 0.09f);
+    std::array<std::vector<float>, 3> axes;
+    const std::size_t counts[3] = {37, 29, 45};
+    for (std::size_t a = 0; a < 3; ++a) {
+        float v = -1.3f;
+        for (std::size_t i = 0; i < counts[a]; ++i, v += step(rng)) axes[a].push_back(v);
+    }
+    const std::size_t n = counts[0] * counts[1] * counts[2];
+    std::size_t specialized = 0;
+    for (const auto& [name, model] : models()) {
+        SCOPED_TRACE(name);
+        std::vector<float> full(n), fast(n);
+        std::vector<std::uint8_t> fullFailed(n), fastFailed(n);
+        frep::setSpecialization(false);
+        const frep::ErrorReport fullErrors = evaluateLattice(model, axes, full.data(), fullFailed.data(), 3.5f);
+        frep::setSpecialization(true);
+        const frep::ErrorReport fastErrors = evaluateLattice(model, axes, fast.data(), fastFailed.data(), 3.5f);
+        EXPECT_EQ(std::memcmp(full.data(), fast.data(), n * sizeof(float)), 0);
+        EXPECT_EQ(fullFailed, fastFailed);
+        EXPECT_EQ(fullErrors.count, fastErrors.count);
+        specialized += model.tape() != nullptr;
+    }
+    EXPECT_GT(specialized, 10u);
 }
 
 }  // namespace
