@@ -173,9 +173,11 @@ void main() {
     vec3 base = toLinear(uBaseColor);
     vec3 specular = vec3(uSpecular);
     float shininess = uShininess, metallic = uMetallic;
-    vec3 q = vModel / uDetailScale;
-    float pixel = max(length(fwidth(q)), 1e-6);
-    surfaceDetail(q, n, pixel, base, specular, shininess, metallic);
+    if (uKind != 0) {  // the plain material pays nothing for the others' detail
+        vec3 q = vModel / uDetailScale;
+        float pixel = max(length(fwidth(q)), 1e-6);
+        surfaceDetail(q, n, pixel, base, specular, shininess, metallic);
+    }
     // A metal's highlight is its own colour and strong; its diffuse light
     // fades (Blinn-Phong's stand-in for a metal's missing diffuse term).
     specular = mix(specular, base * (0.6 + specular), metallic);
