@@ -170,9 +170,14 @@ void main() {
     vec3 base = toLinear(surface.rgb);
     vec3 specular = vec3(surface.a);
     float shininess = finish.x, metallic = detail.y;
-    vec3 q = vModel / detail.z;
-    float pixel = max(length(fwidth(q)), 1e-6);
-    surfaceDetail(int(detail.x + 0.5), q, n, pixel, base, specular, shininess, metallic);
+    int kind = int(detail.x + 0.5);
+    // The plain material pays nothing for the others' detail. (A draw's
+    // kind is the same over a triangle, so fwidth below stays defined.)
+    if (kind != 0) {
+        vec3 q = vModel / detail.z;
+        float pixel = max(length(fwidth(q)), 1e-6);
+        surfaceDetail(kind, q, n, pixel, base, specular, shininess, metallic);
+    }
     // A metal's highlight is its own colour and strong; its diffuse light
     // fades (Blinn-Phong's stand-in for a metal's missing diffuse term).
     specular = mix(specular, base * (0.6 + specular), metallic);
