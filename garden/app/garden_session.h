@@ -258,8 +258,9 @@ public:
     // The sculpture's mirror plane (model frame; none: off): strokes and
     // perturbations made while it is set act on both sides of it.
     void setMirror(int sculpture, std::optional<MirrorPlane> plane);
-    // Removes every edit of a sculpture (the morph result's strokes, say),
-    // for good: they cannot be redone (a DiscardAction).
+    // Takes every edit of a sculpture out (the morph result's strokes, say):
+    // one action (a DiscardAction), so undo puts them all back and redo
+    // takes them out again.
     void discardEdits(int sculpture);
     std::size_t editCount(int sculpture) const;
 
@@ -328,10 +329,17 @@ private:
     // move, a replacement), with what undoing it needs beyond the edit
     // list's own history (the placement or the perturbation before it).
     struct UndoEntry {
+        UndoEntry(int s, Action a, std::optional<Placement> before = std::nullopt,
+                  std::optional<Perturbation> replaced = std::nullopt)
+            : sculpture(s), action(std::move(a)), placementBefore(std::move(before)), replacedBefore(std::move(replaced)) {}
         int sculpture = -1;
         Action action;
         std::optional<Placement> placementBefore;     // a MoveAction's
         std::optional<Perturbation> replacedBefore;   // a ReplaceAction's
+        // A DiscardAction's while it stands: the edits it took out, in list
+        // order, and their entries (undoing it puts both back).
+        std::vector<Edit> discardedEdits;
+        std::vector<UndoEntry> discardedEntries;
     };
     // A sculpture from the garden file (name, placement, source; missing
     // when its file is), then sampled and given its meshing caches.
@@ -358,6 +366,13 @@ private:
     // `done`, redo cleared, journalled): what every finished edit but a
     // live stroke goes through.
     void appendEdit(int sculpture, Edit e, const Action& done);
+    // discardEdits, or a journal's discard (`undoable` false: one written
+    // before discards could be undone, played as it was made, for good).
+    void discard(int sculpture, bool undoable);
+    // The sculpture's edits and their undo entries moved into `entry`, a
+    // discard's; putBackEdits moves them back, the entries where it stood.
+    void takeEdits(UndoEntry& entry);
+    void putBackEdits(UndoEntry& entry, std::vector<UndoEntry>& undoOrder, std::size_t at);
     void applyMorphWeights(const MorphWeightsAction& m);
     // The sculpture an action names: its index, or why it cannot take the
     // action (none by that name, missing).
