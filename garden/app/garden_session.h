@@ -40,6 +40,11 @@ namespace hg::garden {
 class MorphBlender;
 class SculptureLoader;
 struct MorphSources;
+}  // namespace hg::garden
+namespace hg::voxel {
+struct VolumeRequest;
+}
+namespace hg::garden {
 
 // The scales a sculpture may be given, metres per model unit.
 constexpr double kMinSculptureScale = 1e-3;
@@ -264,6 +269,19 @@ public:
     void discardEdits(int sculpture);
     std::size_t editCount(int sculpture) const;
 
+    // --- sources edited on disk (garden/app/session_reloading.cpp) -------
+    // Each sculpture of the garden file whose HyperFun file changed on disk
+    // (its modification time) since it was read is read again: a good file
+    // is sampled and replaces the unedited grid, the sculpture's edits
+    // applied again on it (nothing the user made is lost); a broken one
+    // keeps the last good grid and the parser's message in the sculpture's
+    // sourceProblem. What happened, a line each ("" : nothing changed).
+    struct SourceReload {
+        std::string sculpture;
+        std::string problem;  // "": read again and shown; else why the last good one stays
+    };
+    std::vector<SourceReload> reloadChangedSources();
+
     // --- the journal (garden/session) ------------------------------------
     // Called with every finished action (a stroke at its end, a
     // perturbation, undo, redo, discard, a morph weight change once the
@@ -350,6 +368,12 @@ private:
     void attachLoaded();
     // The pyramid, layout and queue of a sampled sculpture, its coarsest level meshed.
     void attachMeshing(Sculpture& s) const;
+    static voxel::VolumeRequest volumeRequest(const SculptureSpec& spec);
+    // A file's modification time as a number (0: none); reloading compares them.
+    static std::int64_t sourceStamp(const std::string& path);
+    // Sculpture `index`'s grid replaced by `fresh` (same frame), its edits
+    // applied again: "" or why not (nothing changed then).
+    std::string replaceSource(std::size_t index, SculptureLoad loaded, voxel::Volume fresh);
     std::string applyAddModel(const AddAction& a);
     void buildMorph();
     void restartMorph();
@@ -451,6 +475,9 @@ private:
     // Progressive loading (null when nothing is left to sample). Last: it
     // reads load_'s models and stops before they go.
     std::unique_ptr<SculptureLoader> loader_;
+    // Sculptures from the garden file (those added later hold their text in
+    // their AddAction and are not watched on disk).
+    std::size_t fileSculptures_ = 0;
 };
 
 }  // namespace hg::garden

@@ -94,6 +94,12 @@ bool gardenPanel(GardenSession& session, bool headset, const std::string& headse
             }
             if (ImGui::Selectable(s.name.c_str(), session.selected() == static_cast<int>(i)))
                 session.select(session.selected() == static_cast<int>(i) ? -1 : static_cast<int>(i));
+            if (!s.sourceProblem.empty()) {
+                // Its file as it is now is not shown: the last good one is.
+                ImGui::SameLine();
+                ImGui::TextColored(ImVec4(1.0f, 0.6f, 0.3f, 1.0f), "(file not read again)");
+                if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", s.sourceProblem.c_str());
+            }
         }
         ImGui::EndListBox();
     }
@@ -334,6 +340,8 @@ int runDesktopOn(GardenSession& session, GardenWindow& gardenWindow, const Deskt
     };
     cursorNow();
     auto last = std::chrono::steady_clock::now();
+    // Sources edited on disk are looked at once a second (their files' times).
+    auto sourcesLookedAt = last;
     // The window's close button, like Esc, asks first when work is not saved.
     const auto closing = [&] {
         if (!window.shouldClose()) return false;
@@ -357,6 +365,15 @@ int runDesktopOn(GardenSession& session, GardenWindow& gardenWindow, const Deskt
         FrameInput input;
         input.dt = dt;
         input.commands = [&](GardenSession&, Hands& hands) {
+            if (now - sourcesLookedAt >= std::chrono::seconds(1)) {
+                sourcesLookedAt = now;
+                for (const GardenSession::SourceReload& r : session.reloadChangedSources()) {
+                    const std::string text = r.problem.empty() ? "read '" + r.sculpture + "' again from its changed file"
+                                                               : "'" + r.sculpture + "' kept as it was: " + r.problem;
+                    std::cerr << (r.problem.empty() ? "note: " : "warning: ") << text << "\n";
+                    notice = {text, !r.problem.empty(), now + std::chrono::seconds(r.problem.empty() ? 4 : 8)};
+                }
+            }
             DesktopInput in;
             GLFWwindow* w = window.handle();
             const bool keys = !overlay.wantsKeyboard(), mouse = !overlay.wantsMouse();

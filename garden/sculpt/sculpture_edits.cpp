@@ -197,6 +197,15 @@ std::vector<Edit> SculptureEdits::takeAll(std::vector<voxel::IndexBox>& changed)
     return taken;
 }
 
+std::vector<voxel::IndexBox> SculptureEdits::rebase() {
+    base_ = std::make_unique<voxel::Volume>(shown_.clone());
+    dropCopies();  // they hold the old grid
+    const bool wasDeferred = deferred_;
+    deferred_ = true;
+    for (const Edit& e : list_.edits()) update(voxelsOf(e.reach));
+    return wasDeferred ? std::vector<voxel::IndexBox>{} : flush();
+}
+
 std::vector<voxel::IndexBox> SculptureEdits::putBack(std::vector<Edit> edits) {
     const bool wasDeferred = deferred_;
     deferred_ = true;

@@ -59,6 +59,11 @@ public:
     // redo stack left as it is: a discard, which undo brings back with
     // putBack. Returns the boxes recomputed (none while deferred: flush).
     std::vector<Edit> takeAll(std::vector<voxel::IndexBox>& changed);
+    // The shown grid was replaced by a new unedited one of the same frame
+    // (its source file read again): it becomes the base, and every edit is
+    // applied again on it, each voxel once. The boxes recomputed (none while
+    // deferred: flush).
+    std::vector<voxel::IndexBox> rebase();
     // Edits taken out appended again, their ids kept and the redo stack
     // left as it is; each voxel they reach is recomputed once.
     std::vector<voxel::IndexBox> putBack(std::vector<Edit> edits);
