@@ -447,6 +447,8 @@ int runDesktopOn(GardenSession& session, GardenWindow& gardenWindow, const Deskt
             }
         }
         window.swapBuffers();
+        if (link && link->recorder && options.goToSession)
+            if (std::string to = options.goToSession(frame); !to.empty()) link->goTo = std::move(to);
         const bool toHeadset = headsetButton || pressed.headset || (options.onFrame && options.onFrame(session, frame));
         if (toHeadset && options.headset) {
             enterHeadset(session, gardenWindow, options, headsetMessage);

@@ -52,6 +52,10 @@ struct DesktopOptions {
     // Called at the end of every desktop frame with its index; true asks
     // for the headset as F9 does (tests, scripts).
     std::function<bool(GardenSession&, int)> onFrame;
+    // Called at the end of every desktop frame on a session folder; a
+    // folder returned is gone on in, as the Session section's Save As and
+    // recent sessions do (tests, scripts).
+    std::function<std::string(int)> goToSession;
     // The desktop's user settings file (desktop_settings.h); none: the
     // user's (desktopSettingsPath()).
     std::optional<std::string> settingsPath;

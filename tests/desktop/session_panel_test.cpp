@@ -138,6 +138,56 @@ TEST_F(SessionPanelTest, ADesktopRunKeepsTheViewAndTheNextOpensThere) {
 }
 
 
+// Going on in another session from a running window (Save As, a recent
+// session): it is opened, this one closed (its lock released, its view
+// kept), and the window goes on with the other's garden and edits.
+TEST_F(SessionPanelTest, TheWindowGoesOnInAnotherSessionAndClosesThisOne) {
+    HG_REQUIRE_DISPLAY();
+    const std::string garden = writeGarden();
+    const std::string other = (dir / "other").string();
+    {
+        OpenedSession b = openSession({other, garden}, test::smallSessionSettings());
+        ASSERT_EQ(b.error, "");
+        ASSERT_EQ(b.session->applyStroke(b.session->findSculpture("c"), StrokeTool::Carve,
+                                         {{2.45, 0.9, 1.3}, {2.5, 0.6, 1.4}}, 0.1),
+                  "");
+    }
+    DesktopOptions o;
+    o.garden = garden;
+    o.session = (dir / "first").string();
+    o.width = 320;
+    o.height = 240;
+    o.vsync = false;
+    o.frames = 4;
+    o.settingsPath = (dir / "desktop.json").string();
+    bool asked = false;
+    o.goToSession = [&](int frame) {
+        if (frame != 1 || asked) return std::string();
+        asked = true;
+        return other;
+    };
+    std::vector<std::size_t> edits;
+    std::string firstOpenAgain = "not tried";
+    o.onFrame = [&](GardenSession& s, int) {
+        edits.push_back(s.editCount(s.findSculpture("c")));
+        // In the other session (its stroke shows), the first is closed.
+        if (edits.back() == 1u && firstOpenAgain == "not tried")
+            firstOpenAgain = openSession({(dir / "first").string(), garden}, test::smallSessionSettings()).error;
+        return false;
+    };
+    ASSERT_EQ(runDesktopGarden(o), 0);
+    ASSERT_GE(edits.size(), 6u) << "frames in both sessions";
+    EXPECT_EQ(edits.front(), 0u) << "the first session has no edits";
+    EXPECT_EQ(edits.back(), 1u) << "the other session's stroke";
+    EXPECT_EQ(firstOpenAgain, "") << "the first session was closed: its lock is free";
+    EXPECT_TRUE(std::filesystem::exists(dir / "first" / kSessionViewFile)) << "its view kept";
+    std::string warning;
+    const std::vector<std::string> recent = loadRecentSessions(recentSessionsPath(), warning);
+    ASSERT_EQ(recent.size(), 2u);
+    EXPECT_EQ(std::filesystem::path(recent[0]), dir / "other");
+    EXPECT_EQ(std::filesystem::path(recent[1]), dir / "first");
+}
+
 // The section drawn through ImGui without a window: its buttons, clicked
 // with a synthetic mouse, copy and name the folder to go on in.
 class SessionPanelClicks : public SessionPanelTest {
