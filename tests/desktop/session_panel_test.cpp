@@ -40,6 +40,19 @@ protected:
         else ::unsetenv("XDG_CONFIG_HOME");
         SmallGarden::TearDown();
     }
+    // A small window on session folder `session` for `frames` frames, its
+    // desktop settings file the test's own.
+    DesktopOptions smallWindow(const std::string& garden, const std::string& session, int frames) const {
+        DesktopOptions o;
+        o.garden = garden;
+        o.session = (dir / session).string();
+        o.width = 320;
+        o.height = 240;
+        o.vsync = false;
+        o.frames = frames;
+        o.settingsPath = (dir / "desktop.json").string();
+        return o;
+    }
     std::optional<std::string> savedConfig;
 };
 
@@ -98,14 +111,7 @@ TEST_F(SessionPanelTest, DuplicateAndSaveAsCopyTheSessionWithTheView) {
 
 TEST_F(SessionPanelTest, ADesktopRunKeepsTheViewAndTheNextOpensThere) {
     HG_REQUIRE_DISPLAY();
-    DesktopOptions o;
-    o.garden = writeGarden();
-    o.session = (dir / "week").string();
-    o.width = 320;
-    o.height = 240;
-    o.vsync = false;
-    o.frames = 3;
-    o.settingsPath = (dir / "desktop.json").string();
+    DesktopOptions o = smallWindow(writeGarden(), "week", 3);
     o.onFrame = [](GardenSession& s, int frame) {
         if (frame == 0) {
             s.navigator().setMode(NavigationMode::Fly);
@@ -152,14 +158,7 @@ TEST_F(SessionPanelTest, TheWindowGoesOnInAnotherSessionAndClosesThisOne) {
                                          {{2.45, 0.9, 1.3}, {2.5, 0.6, 1.4}}, 0.1),
                   "");
     }
-    DesktopOptions o;
-    o.garden = garden;
-    o.session = (dir / "first").string();
-    o.width = 320;
-    o.height = 240;
-    o.vsync = false;
-    o.frames = 4;
-    o.settingsPath = (dir / "desktop.json").string();
+    DesktopOptions o = smallWindow(garden, "first", 4);
     bool asked = false;
     o.goToSession = [&](int frame) {
         if (frame != 1 || asked) return std::string();
