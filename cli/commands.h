@@ -40,7 +40,10 @@ struct MeshOptions {
     std::vector<double> box;
     std::string output;
     bool ascii = false;
-    double mmPerUnit = 1.0;
+    // Millimetres per model unit: model units as metres by default, as a
+    // garden places a file without a scale and as `export` writes it, so
+    // the same file meshed by `mesh` and by `export` is the same size.
+    double mmPerUnit = 1000.0;
 };
 
 struct ReplayCommandOptions {

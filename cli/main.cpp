@@ -116,7 +116,7 @@ int main(int argc, char** argv) {
     meshCmd->add_option("--box", meshBox, "Model box x0,y0,z0,x1,y1,z1 (default: as for voxelize)");
     meshCmd->add_option("-o,--output", meshOpts.output, "Output .stl file")->required();
     meshCmd->add_flag("--ascii", meshOpts.ascii, "Write ASCII STL instead of binary");
-    meshCmd->add_option("--mm-per-unit", meshOpts.mmPerUnit, "Millimetres per model unit (default 1)");
+    meshCmd->add_option("--mm-per-unit", meshOpts.mmPerUnit, "Millimetres per model unit (default 1000: model units as metres, as export writes them)");
 
     ReplayCommandOptions replayOpts;
     std::string offscreen;

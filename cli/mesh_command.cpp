@@ -76,7 +76,8 @@ int runMesh(const MeshOptions& o) {
         std::cerr << "error: " << why << "\n";
         return 1;
     }
-    std::printf("wrote %s (%s STL, %g mm per model unit)\n", o.output.c_str(), o.ascii ? "ASCII" : "binary", o.mmPerUnit);
+    std::printf("wrote %s (%s STL in mm, %g mm per model unit%s)\n", o.output.c_str(), o.ascii ? "ASCII" : "binary",
+                o.mmPerUnit, o.mmPerUnit == 1000.0 ? ": model units as metres" : "");
     return report.ok() ? 0 : 1;
 }
 

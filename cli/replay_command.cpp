@@ -7,6 +7,7 @@
 #include "garden/app/garden_session.h"
 #include "cli/commands.h"
 #include "garden/desktop/offscreen_garden.h"
+#include "garden/export/export_file.h"
 #include "garden/render/render_quality.h"
 #include "garden/replay/replay_runner.h"
 #include "garden/scene/json_reader.h"
@@ -76,6 +77,15 @@ int runReplay(const ReplayCommandOptions& options) {
     ReplayOptions ro;
     ro.screenshotEvery = options.screenshotEvery;
     ro.screenshotDir = options.screenshotDir;
+    // {"export": ...} writes as the desktop's Export panel does.
+    ro.exporter = [](const GardenSession& s, int index, const std::string& path, int resolution, std::string& summary) {
+        ExportFileOptions eo;
+        eo.resolution = resolution;
+        ExportFileReport report;
+        const std::string why = exportSculptureFile(s, index, path, eo, report);
+        summary = report.summary + (report.warning.empty() ? "" : " (" + report.warning + ")");
+        return why;
+    };
     if (!std::filesystem::exists(ro.screenshotDir)) std::filesystem::create_directories(ro.screenshotDir);
     ReplayResult result = hg::garden::runReplay(script, session, offscreen.get(), ro);
     for (const std::string& n : result.notes) std::cerr << "note: " << n << "\n";

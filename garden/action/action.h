@@ -62,7 +62,14 @@ struct UndoAction {
     std::string sculpture;  // "": the last action, whichever sculpture it was on
 };
 struct RedoAction {};
-struct DiscardAction { std::string sculpture; };
+// Every edit of a sculpture taken out (the morph result back to its pure
+// blend): undo puts them back, redo takes them out again. Journals written
+// before discards could be undone hold no `undoable` and play theirs for
+// good, as they were made.
+struct DiscardAction {
+    std::string sculpture;
+    bool undoable = true;
+};
 // The selector as barycentric coordinates and the balancing factors it was
 // weighed with (the blend's weights follow from both).
 struct MorphWeightsAction {

@@ -98,6 +98,7 @@ std::string actionJson(const Action& record) {
         if (!u->sculpture.empty()) j["sculpture"] = u->sculpture;
     } else if (const auto* d = std::get_if<DiscardAction>(&record)) {
         j["sculpture"] = d->sculpture;
+        if (d->undoable) j["undoable"] = true;
     } else if (const auto* m = std::get_if<MorphWeightsAction>(&record)) {
         j["barycentric"] = point(m->barycentric);
         j["balance"] = point(m->balance);
@@ -200,8 +201,9 @@ Action readAction(const nlohmann::json& v, const std::string& path) {
         return RedoAction{};
     }
     if (action == "discard") {
-        ObjectReader r(v, path, {"action", "sculpture"});
-        DiscardAction d{readString(r.required("sculpture"), r.pathOf("sculpture"))};
+        ObjectReader r(v, path, {"action", "sculpture", "undoable"});
+        DiscardAction d{readString(r.required("sculpture"), r.pathOf("sculpture")), false};
+        if (const auto* u = r.optional("undoable")) d.undoable = readBool(*u, r.pathOf("undoable"));
         r.finish();
         return d;
     }

@@ -52,7 +52,7 @@ void GardenSession::resetView() {
     navigator_.setPose(eye, std::atan2(dir.x, -dir.z), std::asin(std::clamp(dir.y, -1.0f, 1.0f)));
 }
 
-static voxel::VolumeRequest volumeRequest(const SculptureSpec& spec) {
+voxel::VolumeRequest GardenSession::volumeRequest(const SculptureSpec& spec) {
     voxel::VolumeRequest request;
     request.box = spec.box;
     request.resolution = spec.resolution;
@@ -92,6 +92,8 @@ GardenSession::GardenSession(GardenLoad load, SessionSettings settings)
         loader_ = std::make_unique<SculptureLoader>(std::move(jobs), std::array<double, 3>{eye.x, eye.y, eye.z});
     }
     recorded_ = 0;  // the garden's own first weights are no action of the user's
+    fileSculptures_ = g.sculptures.size();
+    for (std::size_t i = 0; i < fileSculptures_; ++i) sculptures_[i].sourceStamp = sourceStamp(g.sculptures[i].file);
 }
 
 GardenSession::~GardenSession() = default;

@@ -40,6 +40,11 @@ namespace hg::garden {
 class MorphBlender;
 class SculptureLoader;
 struct MorphSources;
+}  // namespace hg::garden
+namespace hg::voxel {
+struct VolumeRequest;
+}
+namespace hg::garden {
 
 // The scales a sculpture may be given, metres per model unit.
 constexpr double kMinSculptureScale = 1e-3;
@@ -262,10 +267,24 @@ public:
     // The sculpture's mirror plane (model frame; none: off): strokes and
     // perturbations made while it is set act on both sides of it.
     void setMirror(int sculpture, std::optional<MirrorPlane> plane);
-    // Removes every edit of a sculpture (the morph result's strokes, say),
-    // for good: they cannot be redone (a DiscardAction).
+    // Takes every edit of a sculpture out (the morph result's strokes, say):
+    // one action (a DiscardAction), so undo puts them all back and redo
+    // takes them out again.
     void discardEdits(int sculpture);
     std::size_t editCount(int sculpture) const;
+
+    // --- sources edited on disk (garden/app/session_reloading.cpp) -------
+    // Each sculpture of the garden file whose HyperFun file changed on disk
+    // (its modification time) since it was read is read again: a good file
+    // is sampled and replaces the unedited grid, the sculpture's edits
+    // applied again on it (nothing the user made is lost); a broken one
+    // keeps the last good grid and the parser's message in the sculpture's
+    // sourceProblem. What happened, a line each ("" : nothing changed).
+    struct SourceReload {
+        std::string sculpture;
+        std::string problem;  // "": read again and shown; else why the last good one stays
+    };
+    std::vector<SourceReload> reloadChangedSources();
 
     // --- the journal (garden/session) ------------------------------------
     // Called with every finished action (a stroke at its end, a
@@ -332,11 +351,22 @@ private:
     // move, a replacement), with what undoing it needs beyond the edit
     // list's own history (the placement or the perturbation before it).
     struct UndoEntry {
+        UndoEntry(int s, Action a, std::optional<Placement> before = std::nullopt,
+                  std::optional<Perturbation> replaced = std::nullopt, std::optional<Material> material = std::nullopt)
+            : sculpture(s),
+              action(std::move(a)),
+              placementBefore(std::move(before)),
+              replacedBefore(std::move(replaced)),
+              materialBefore(std::move(material)) {}
         int sculpture = -1;
         Action action;
         std::optional<Placement> placementBefore;     // a MoveAction's
         std::optional<Perturbation> replacedBefore;   // a ReplaceAction's
         std::optional<Material> materialBefore;       // a MaterialAction's
+        // A DiscardAction's while it stands: the edits it took out, in list
+        // order, and their entries (undoing it puts both back).
+        std::vector<Edit> discardedEdits;
+        std::vector<UndoEntry> discardedEntries;
     };
     // A sculpture from the garden file (name, placement, source; missing
     // when its file is), then sampled and given its meshing caches.
@@ -347,6 +377,12 @@ private:
     void attachLoaded();
     // The pyramid, layout and queue of a sampled sculpture, its coarsest level meshed.
     void attachMeshing(Sculpture& s) const;
+    static voxel::VolumeRequest volumeRequest(const SculptureSpec& spec);
+    // A file's modification time as a number (0: none); reloading compares them.
+    static std::int64_t sourceStamp(const std::string& path);
+    // Sculpture `index`'s grid replaced by `fresh` (same frame), its edits
+    // applied again: "" or why not (nothing changed then).
+    std::string replaceSource(std::size_t index, SculptureLoad loaded, voxel::Volume fresh);
     std::string applyAddModel(const AddAction& a);
     void buildMorph();
     void restartMorph();
@@ -363,6 +399,13 @@ private:
     // `done`, redo cleared, journalled): what every finished edit but a
     // live stroke goes through.
     void appendEdit(int sculpture, Edit e, const Action& done);
+    // discardEdits, or a journal's discard (`undoable` false: one written
+    // before discards could be undone, played as it was made, for good).
+    void discard(int sculpture, bool undoable);
+    // The sculpture's edits and their undo entries moved into `entry`, a
+    // discard's; putBackEdits moves them back, the entries where it stood.
+    void takeEdits(UndoEntry& entry);
+    void putBackEdits(UndoEntry& entry, std::vector<UndoEntry>& undoOrder, std::size_t at);
     void applyMorphWeights(const MorphWeightsAction& m);
     // The sculpture an action names: its index, or why it cannot take the
     // action (none by that name, missing).
@@ -441,6 +484,9 @@ private:
     // Progressive loading (null when nothing is left to sample). Last: it
     // reads load_'s models and stops before they go.
     std::unique_ptr<SculptureLoader> loader_;
+    // Sculptures from the garden file (those added later hold their text in
+    // their AddAction and are not watched on disk).
+    std::size_t fileSculptures_ = 0;
 };
 
 }  // namespace hg::garden

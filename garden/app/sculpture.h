@@ -5,6 +5,7 @@
 // sculptures instead of a HyperFun body.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -64,6 +65,11 @@ struct Sculpture {
     Sculpture& operator=(Sculpture&&) noexcept;
 
     bool loading = false;              // sampled in the background (progressive loading): no caches yet
+    // Its HyperFun file on disk (GardenSession::reloadChangedSources): the
+    // modification time it was last read at, and why the file as it is now
+    // is not shown ("": it is; else the parser's message, the last good one kept).
+    std::int64_t sourceStamp = 0;
+    std::string sourceProblem;
 
     bool missing() const { return !error.empty(); }
     // Its adding was undone (AddAction): not shown, picked, edited or found

@@ -59,7 +59,7 @@ std::string GardenSession::apply(const Action& action) {
     }
     if (const auto* a = std::get_if<DiscardAction>(&action)) {
         const int i = actionSculpture(a->sculpture, why);
-        if (why.empty()) discardEdits(i);
+        if (why.empty()) discard(i, a->undoable);
         return why;
     }
     if (const auto* a = std::get_if<MoveAction>(&action)) {

@@ -49,21 +49,62 @@ SculptureEdits& GardenSession::editsOf(int sculpture) {
     return *s.edits;
 }
 
-void GardenSession::discardEdits(int sculpture) {
+void GardenSession::discardEdits(int sculpture) { discard(sculpture, true); }
+
+void GardenSession::discard(int sculpture, bool undoable) {
     if (stroking()) endStroke();
     if (sculpture < 0 || sculpture >= static_cast<int>(sculptures_.size())) return;
     Sculpture& s = sculptures_[static_cast<std::size_t>(sculpture)];
     if (!s.edits) return;
-    while (const auto box = s.edits->undo()) showChanged(sculpture, *box);
-    s.edits->clearRedo();
-    const auto isEdit = [sculpture](const UndoEntry& u) {
-        return u.sculpture == sculpture && !std::holds_alternative<MoveAction>(u.action) &&
-               !std::holds_alternative<MaterialAction>(u.action);
-    };
-    // (replacements go too: the edits they replaced are gone)
-    undoOrder_.erase(std::remove_if(undoOrder_.begin(), undoOrder_.end(), isEdit), undoOrder_.end());
-    redoOrder_.erase(std::remove_if(redoOrder_.begin(), redoOrder_.end(), isEdit), redoOrder_.end());
-    record(DiscardAction{s.name});
+    UndoEntry entry(sculpture, DiscardAction{s.name, undoable});
+    if (undoable) {
+        takeEdits(entry);
+        redoOrder_.clear();  // a new action, as any other
+        undoOrder_.push_back(std::move(entry));
+    } else {
+        // As such a discard was made: the edits, their redo and every entry
+        // of the sculpture but its moves and materials (its add too) gone.
+        std::vector<voxel::IndexBox> changed;
+        s.edits->takeAll(changed);
+        for (const voxel::IndexBox& box : changed) showChanged(sculpture, box);
+        s.edits->clearRedo();
+        const auto gone = [sculpture](const UndoEntry& u) {
+            return u.sculpture == sculpture && !std::holds_alternative<MoveAction>(u.action) &&
+                   !std::holds_alternative<MaterialAction>(u.action);
+        };
+        undoOrder_.erase(std::remove_if(undoOrder_.begin(), undoOrder_.end(), gone), undoOrder_.end());
+        redoOrder_.erase(std::remove_if(redoOrder_.begin(), redoOrder_.end(), gone), redoOrder_.end());
+    }
+    record(DiscardAction{s.name, undoable});
+}
+
+void GardenSession::takeEdits(UndoEntry& entry) {
+    Sculpture& s = sculptures_[static_cast<std::size_t>(entry.sculpture)];
+    std::vector<voxel::IndexBox> changed;
+    entry.discardedEdits = s.edits->takeAll(changed);
+    for (const voxel::IndexBox& box : changed) showChanged(entry.sculpture, box);
+    // The entries of the edit list's history (replacements and earlier
+    // discards too); the sculpture's moves, materials and its add stay undoable.
+    std::vector<UndoEntry> kept;
+    for (UndoEntry& u : undoOrder_) {
+        const bool ofList = u.sculpture == entry.sculpture && !std::holds_alternative<MoveAction>(u.action) &&
+                            !std::holds_alternative<AddAction>(u.action) &&
+                            !std::holds_alternative<MaterialAction>(u.action);
+        (ofList ? entry.discardedEntries : kept).push_back(std::move(u));
+    }
+    undoOrder_ = std::move(kept);
+}
+
+void GardenSession::putBackEdits(UndoEntry& entry, std::vector<UndoEntry>& undoOrder, std::size_t at) {
+    Sculpture& s = sculptures_[static_cast<std::size_t>(entry.sculpture)];
+    for (const voxel::IndexBox& box : s.edits->putBack(std::move(entry.discardedEdits))) showChanged(entry.sculpture, box);
+    // Together where the discard stood: each sculpture's entries keep their
+    // own order, which is what undo on one sculpture needs.
+    undoOrder.insert(undoOrder.begin() + static_cast<std::ptrdiff_t>(at),
+                     std::make_move_iterator(entry.discardedEntries.begin()),
+                     std::make_move_iterator(entry.discardedEntries.end()));
+    entry.discardedEdits.clear();
+    entry.discardedEntries.clear();
 }
 
 void GardenSession::showChanged(int sculpture, const voxel::IndexBox& box) {
@@ -252,10 +293,14 @@ bool GardenSession::stepHistory(std::vector<UndoEntry>& from, std::vector<UndoEn
         return static_cast<std::ptrdiff_t>(-1);
     };
     for (std::ptrdiff_t at = next(); at >= 0; at = next()) {
-        UndoEntry entry = from[static_cast<std::size_t>(at)];
+        UndoEntry entry = std::move(from[static_cast<std::size_t>(at)]);
         from.erase(from.begin() + at);
         Sculpture& s = sculptures_[static_cast<std::size_t>(entry.sculpture)];
-        if (const auto* move = std::get_if<MoveAction>(&entry.action)) {
+        if (std::holds_alternative<DiscardAction>(entry.action)) {
+            // (only undoable discards have entries)
+            if (undoing) putBackEdits(entry, from, static_cast<std::size_t>(at));
+            else takeEdits(entry);
+        } else if (const auto* move = std::get_if<MoveAction>(&entry.action)) {
             placeSculpture(entry.sculpture, undoing ? *entry.placementBefore : move->placement);
         } else if (const auto* material = std::get_if<MaterialAction>(&entry.action)) {
             s.material = undoing ? *entry.materialBefore : material->material;

@@ -23,6 +23,8 @@
 #include "garden/desktop/export_panel.h"
 #include "garden/desktop/garden_view.h"
 #include "garden/desktop/garden_window.h"
+#include "garden/desktop/recent_sessions.h"
+#include "garden/desktop/session_panel.h"
 #include "garden/desktop/view_framing.h"
 #include "garden/hands/desktop_hands.h"
 #include "garden/render/gl_context.h"
@@ -32,6 +34,7 @@
 #include "garden/render/screenshot.h"
 #include "garden/render/tool_gizmo.h"
 #include "garden/session/open_session.h"
+#include "garden/session/session_view.h"
 
 namespace hg::garden {
 
@@ -93,6 +96,12 @@ bool gardenPanel(GardenSession& session, ViewLook& look, bool headset, const std
             }
             if (ImGui::Selectable(s.name.c_str(), session.selected() == static_cast<int>(i)))
                 session.select(session.selected() == static_cast<int>(i) ? -1 : static_cast<int>(i));
+            if (!s.sourceProblem.empty()) {
+                // Its file as it is now is not shown: the last good one is.
+                ImGui::SameLine();
+                ImGui::TextColored(ImVec4(1.0f, 0.6f, 0.3f, 1.0f), "(file not read again)");
+                if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", s.sourceProblem.c_str());
+            }
         }
         ImGui::EndListBox();
     }
@@ -153,6 +162,19 @@ void enterHeadset(GardenSession& session, GardenWindow& window, const DesktopOpt
     if (r == HeadsetReturn::Quit) window.window().setShouldClose(true);
 }
 
+// A session opens where it was left (its view.json), remembered among the
+// recent sessions; else, and without a session, at the garden's start. The
+// tools start sized to the sculpture in view.
+void startView(OpenedSession& opened, const std::string& dir, SessionPanel& panel) {
+    if (opened.recorder) {
+        panel.opened(dir);
+        std::string warning;
+        readSessionView(dir, opened.session->navigator(), warning);
+        if (!warning.empty()) std::cerr << "warning: " << warning << "\n";
+    }
+    sizeToolsToView(*opened.session);
+}
+
 }  // namespace
 
 std::string screenshotFolder(const DesktopOptions& options) {
@@ -197,16 +219,38 @@ int runDesktopGarden(const DesktopOptions& options) {
             std::cerr << "error: " << opened.error << "\n";
             return opened.exitStatus;
         }
-        for (const std::string& m : openedMessages(opened)) std::cerr << m << "\n";
-        // Sessions keep no tool settings yet: the tools start sized to the
-        // sculpture in view (a few percent of it).
-        sizeToolsToView(*opened.session);
-        reportSaveChangesOnStderr(opened);
-        int status = runDesktopOn(*opened.session, window, options);
-        std::vector<std::string> last;
-        const int saved = closeSession(opened, last);
-        for (const std::string& line : last) std::cerr << line << "\n";
-        return status != 0 ? status : saved;
+        DesktopOptions here = options;  // here.session: the folder open now
+        SessionPanel sessionPanel(options.recentSessionsPath ? *options.recentSessionsPath : recentSessionsPath());
+        for (;;) {
+            for (const std::string& m : openedMessages(opened)) std::cerr << m << "\n";
+            startView(opened, here.session, sessionPanel);
+            reportSaveChangesOnStderr(opened);
+            DesktopSessionLink link{opened.recorder.get(), &sessionPanel, ""};
+            const int status = runDesktopOn(*opened.session, window, here, &link);
+            // The view goes with the session, for its next opening.
+            if (opened.recorder)
+                if (const std::string why = writeSessionView(here.session, opened.session->navigator()); !why.empty())
+                    std::cerr << "warning: the view is not kept: " << why << "\n";
+            if (link.goTo.empty() || status != 0) {
+                std::vector<std::string> last;
+                const int saved = closeSession(opened, last);
+                for (const std::string& line : last) std::cerr << line << "\n";
+                return status != 0 ? status : saved;
+            }
+            // Another folder: opened before this one closes, so that a
+            // refusal leaves the user where they were.
+            OpenedSession next = openSession({link.goTo, here.garden, false, "hypergarden (desktop)"}, settings);
+            if (!next.error.empty()) {
+                std::cerr << "error: " << next.error << "\n";
+                sessionPanel.setStatus("cannot open " + link.goTo + ": " + next.error, true);
+                continue;
+            }
+            std::vector<std::string> last;
+            closeSession(opened, last);
+            for (const std::string& line : last) std::cerr << line << "\n";
+            opened = std::move(next);
+            here.session = link.goTo;
+        }
     } catch (const GlError& e) {
         std::cerr << "error: " << e.what() << "\n";
         return 1;
@@ -219,7 +263,8 @@ void showAsDesktop(GardenWindow& window, const DesktopOptions& options) {
     window.window().setVsync(options.vsync);
 }
 
-int runDesktopOn(GardenSession& session, GardenWindow& gardenWindow, const DesktopOptions& options) {
+int runDesktopOn(GardenSession& session, GardenWindow& gardenWindow, const DesktopOptions& options,
+                 DesktopSessionLink* link) {
     GlWindow& window = gardenWindow.window();
     Overlay& overlay = *gardenWindow.overlay();
     bool showHelp = false;  // the key list (F1)
@@ -271,6 +316,7 @@ int runDesktopOn(GardenSession& session, GardenWindow& gardenWindow, const Deskt
         headsetButton = gardenPanel(session, view.look(), static_cast<bool>(options.headset), headsetMessage, addPanel);
         ImGui::Begin("Garden");  // the same window: its Export section
         exportPanel.draw(session);
+        if (link && link->panel) link->goTo = link->panel->draw(session, link->recorder);
         ImGui::End();
         drawToolPanel(session);
         drawStatsPanel(session.scheduler().history(), pressed.stats);
@@ -300,6 +346,8 @@ int runDesktopOn(GardenSession& session, GardenWindow& gardenWindow, const Deskt
     };
     cursorNow();
     auto last = std::chrono::steady_clock::now();
+    // Sources edited on disk are looked at once a second (their files' times).
+    auto sourcesLookedAt = last;
     // The window's close button, like Esc, asks first when work is not saved.
     const auto closing = [&] {
         if (!window.shouldClose()) return false;
@@ -308,7 +356,8 @@ int runDesktopOn(GardenSession& session, GardenWindow& gardenWindow, const Deskt
         askQuit = true;
         return false;
     };
-    for (int frame = 0; !closing() && (options.frames == 0 || frame < options.frames); ++frame) {
+    const auto leaving = [&] { return link && !link->goTo.empty(); };
+    for (int frame = 0; !leaving() && !closing() && (options.frames == 0 || frame < options.frames); ++frame) {
         pollEvents();
         const auto now = std::chrono::steady_clock::now();
         const double dt = std::min(0.1, std::chrono::duration<double>(now - last).count());
@@ -322,6 +371,15 @@ int runDesktopOn(GardenSession& session, GardenWindow& gardenWindow, const Deskt
         FrameInput input;
         input.dt = dt;
         input.commands = [&](GardenSession&, Hands& hands) {
+            if (now - sourcesLookedAt >= std::chrono::seconds(1)) {
+                sourcesLookedAt = now;
+                for (const GardenSession::SourceReload& r : session.reloadChangedSources()) {
+                    const std::string text = r.problem.empty() ? "read '" + r.sculpture + "' again from its changed file"
+                                                               : "'" + r.sculpture + "' kept as it was: " + r.problem;
+                    std::cerr << (r.problem.empty() ? "note: " : "warning: ") << text << "\n";
+                    notice = {text, !r.problem.empty(), now + std::chrono::seconds(r.problem.empty() ? 4 : 8)};
+                }
+            }
             DesktopInput in;
             GLFWwindow* w = window.handle();
             const bool keys = !overlay.wantsKeyboard(), mouse = !overlay.wantsMouse();
@@ -397,6 +455,8 @@ int runDesktopOn(GardenSession& session, GardenWindow& gardenWindow, const Deskt
             }
         }
         window.swapBuffers();
+        if (link && link->recorder && options.goToSession)
+            if (std::string to = options.goToSession(frame); !to.empty()) link->goTo = std::move(to);
         const bool toHeadset = headsetButton || pressed.headset || (options.onFrame && options.onFrame(session, frame));
         if (toHeadset && options.headset) {
             enterHeadset(session, gardenWindow, options, headsetMessage);

@@ -17,6 +17,8 @@ namespace hg::garden {
 
 class GardenSession;
 class GardenWindow;
+class SessionPanel;
+class SessionRecorder;
 
 // How a headset run that the desktop started came back.
 enum class HeadsetReturn {
@@ -50,9 +52,16 @@ struct DesktopOptions {
     // Called at the end of every desktop frame with its index; true asks
     // for the headset as F9 does (tests, scripts).
     std::function<bool(GardenSession&, int)> onFrame;
+    // Called at the end of every desktop frame on a session folder; a
+    // folder returned is gone on in, as the Session section's Save As and
+    // recent sessions do (tests, scripts).
+    std::function<std::string(int)> goToSession;
     // The desktop's user settings file (desktop_settings.h); none: the
     // user's (desktopSettingsPath()).
     std::optional<std::string> settingsPath;
+    // The recent-sessions file (recent_sessions.h); none: the user's
+    // (recentSessionsPath()).
+    std::optional<std::string> recentSessionsPath;
 };
 
 // Runs until the window closes. 0 on a normal close, 1 when the window or
@@ -62,7 +71,16 @@ int runDesktopGarden(const DesktopOptions& options);
 // The desktop loop on a garden and window already open (a headset run's
 // "back to the desktop"): until the window closes or `options.frames`
 // desktop frames. 0, or 1 when a screenshot cannot be written.
-int runDesktopOn(GardenSession& session, GardenWindow& window, const DesktopOptions& options);
+// `link`: the session folder the window writes and the Session section
+// (session_panel.h); when the user picks another folder to go on in (Save
+// As, a recent session) the loop ends with it in link->goTo.
+struct DesktopSessionLink {
+    const SessionRecorder* recorder = nullptr;
+    SessionPanel* panel = nullptr;
+    std::string goTo;
+};
+int runDesktopOn(GardenSession& session, GardenWindow& window, const DesktopOptions& options,
+                 DesktopSessionLink* link = nullptr);
 
 // The desktop window's size and title for `options` (a window the headset
 // opened as its mirror takes them when the user goes to the desktop).

@@ -26,11 +26,18 @@ std::string safeName(const std::string& name) {
     return out.empty() ? "sculpture" : out;
 }
 
+// Thrown from the progress callback to stop a mesh under way: it unwinds
+// the mesher on the worker (before anything is written) and is caught there.
+struct Cancelled {};
+
+constexpr const char* kCancelledWhy = "cancelled; nothing was written";
+
 }  // namespace
 
 struct ExportPanel::Work {
     ExportJob job;
     std::atomic<double> progress{0.0};
+    std::atomic<bool> cancel{false};
     std::future<std::string> result;
     ExportFileReport report;
 };
@@ -41,6 +48,21 @@ ExportPanel::~ExportPanel() {
     if (work_ && work_->result.valid()) work_->result.wait();
 }
 
+void ExportPanel::setFolder(const std::string& folder) {
+    const std::size_t n = std::min(folder.size(), sizeof folderField_ - 1);
+    folder.copy(folderField_, n);
+    folderField_[n] = '\0';
+}
+
+std::string ExportPanel::exportFolder() const {
+    if (folderField_[0] != '\0') return folderField_;
+    return (std::filesystem::path(folder_.empty() ? "." : folder_) / "exports").string();
+}
+
+void ExportPanel::cancel() {
+    if (busy()) work_->cancel = true;
+}
+
 bool ExportPanel::busy() const {
     return work_ && work_->result.valid() &&
            work_->result.wait_for(std::chrono::seconds(0)) != std::future_status::ready;
@@ -49,7 +71,7 @@ bool ExportPanel::busy() const {
 const std::string& ExportPanel::status() {
     if (work_ && work_->result.valid() && !busy()) {
         const std::string why = work_->result.get();
-        status_ = why.empty() ? work_->report.summary : "error: " + why;
+        status_ = why.empty() ? work_->report.summary : why == kCancelledWhy ? "export " + why : "error: " + why;
         if (!why.empty()) lastPath_.clear();
         work_.reset();
     }
@@ -67,7 +89,7 @@ bool ExportPanel::start(const GardenSession& session, int index, const std::stri
         status_ = "error: select a sculpture to export";
         return false;
     }
-    const std::filesystem::path dir = std::filesystem::path(folder_.empty() ? "." : folder_) / "exports";
+    const std::filesystem::path dir = exportFolder();
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
     if (ec) {
@@ -91,8 +113,16 @@ bool ExportPanel::start(const GardenSession& session, int index, const std::stri
         return false;
     }
     Work* w = work.get();
-    w->result = std::async(std::launch::async, [w] {
-        return writeExport(w->job, w->report, [w](double f) { w->progress = f; });
+    w->result = std::async(std::launch::async, [w]() -> std::string {
+        try {
+            // Meshing reports before it writes; at 1 the file is being written.
+            return writeExport(w->job, w->report, [w](double f) {
+                w->progress = f;
+                if (w->cancel && f < 1.0) throw Cancelled{};
+            });
+        } catch (const Cancelled&) {
+            return kCancelledWhy;
+        }
     });
     work_ = std::move(work);
     lastPath_ = path;
@@ -119,14 +149,20 @@ void ExportPanel::draw(const GardenSession& session) {
                                  sizeof nameField_))
         fileName_ = nameField_;
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("written to %s/exports/; letters, digits, - and _ are kept, the rest become _",
-                          folder_.empty() ? "." : folder_.c_str());
+        ImGui::SetTooltip("written into the folder below; letters, digits, - and _ are kept, the rest become _");
+    const std::string defaultFolder = (std::filesystem::path(folder_.empty() ? "." : folder_) / "exports").string();
+    ImGui::InputTextWithHint("folder", defaultFolder.c_str(), folderField_, sizeof folderField_);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("the folder the file goes into (made when missing); empty: %s", defaultFolder.c_str());
     const bool can = selected >= 0 && !busy();
     if (!can) ImGui::BeginDisabled();
     if (ImGui::Button("Export the selected sculpture")) start(session, selected, kFormats[format_], resolution_);
     if (!can) ImGui::EndDisabled();
     if (selected < 0) ImGui::TextDisabled("select a sculpture in the list above");
-    if (busy()) ImGui::ProgressBar(static_cast<float>(work_->progress.load()));
+    if (busy()) {
+        ImGui::ProgressBar(static_cast<float>(work_->progress.load()));
+        if (work_->cancel) ImGui::TextDisabled("cancelling...");
+        else if (ImGui::Button("Cancel")) cancel();
+    }
     const std::string& s = status();
     if (!s.empty()) ImGui::TextWrapped("%s", s.c_str());
 }

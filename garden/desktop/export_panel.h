@@ -1,7 +1,9 @@
 // The desktop's Export panel (docs/design.md §7): the selected sculpture written
-// next to the session (or the working folder without one) in the format
-// picked. HyperFun is written at once; meshes are made on a worker thread
-// from the exported FRep while the garden goes on, with a progress bar.
+// into the folder named in the panel (by default exports/ next to the
+// session, or in the working folder without one) in the format picked.
+// HyperFun is written at once; meshes are made on a worker thread from the
+// exported FRep while the garden goes on, with a progress bar and a Cancel
+// button.
 #pragma once
 
 #include <atomic>
@@ -15,7 +17,7 @@ class GardenSession;
 
 class ExportPanel {
 public:
-    // `folder`: where exports go (an `exports/` folder is made in it).
+    // `folder`: where exports go by default (an `exports/` folder is made in it).
     explicit ExportPanel(std::string folder);
     ~ExportPanel();  // waits for an export under way
     ExportPanel(const ExportPanel&) = delete;
@@ -25,13 +27,21 @@ public:
     void draw(const GardenSession& session);
     // Starts exporting sculpture `index` as `extension` (".hf", ".stl", ...)
     // at `resolution` (0: the grid's); false (and status() says why) when it
-    // cannot start. The path is exports/FILE.EXT in the folder, FILE the
-    // name given (fileName, letters, digits, - and _ kept) or else the
-    // sculpture's name and the time.
+    // cannot start. The path is FOLDER/FILE.EXT, FOLDER exportFolder() (made
+    // when missing), FILE the name given (fileName, letters, digits, - and _
+    // kept) or else the sculpture's name and the time.
     bool start(const GardenSession& session, int index, const std::string& extension, int resolution);
     // The file name the next export takes ("": NAME-TIME).
     void setFileName(const std::string& name) { fileName_ = name; }
+    // The folder the next export goes into ("": the default, exports/ in
+    // the constructor's folder), as typed in the panel's folder field.
+    void setFolder(const std::string& folder);
+    std::string exportFolder() const;
     bool busy() const;
+    // Stops the export under way at its next step (a mesh between tiles):
+    // nothing is written, and status() says it was cancelled. A mesh that
+    // is already being written is let finish.
+    void cancel();
     // The last export's outcome ("" before any); collects a finished worker.
     const std::string& status();
     const std::string& lastPath() const { return lastPath_; }
@@ -45,6 +55,7 @@ private:
     int resolution_ = 0;
     std::string fileName_;
     char nameField_[128] = {};
+    char folderField_[512] = {};
     int shownFor_ = -1;  // the selection the status line was about
     std::unique_ptr<Work> work_;
 };

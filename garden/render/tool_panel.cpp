@@ -196,8 +196,8 @@ void selectionSection(GardenSession& session, const ToolWidgetLook& look) {
     if (ImGui::Button("discard edits", ImVec2(look.choiceWidth, 0.0f))) session.discardEdits(selected);
     ImGui::EndDisabled();
     if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
-        ImGui::SetTooltip(s.morphResult() ? "back to the pure blend: the edits go for good (no redo)"
-                                          : "back to the unedited sculpture: the edits go for good (no redo)");
+        ImGui::SetTooltip(s.morphResult() ? "back to the pure blend; undo (Ctrl+Z) puts the edits back"
+                                          : "back to the unedited sculpture; undo (Ctrl+Z) puts the edits back");
     ImGui::SameLine();
     ImGui::Text("%zu edit%s", edits, edits == 1 ? "" : "s");
     materialChoice(session, selected, look);

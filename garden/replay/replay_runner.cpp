@@ -31,6 +31,18 @@ std::string apply(const ReplayCommand& c, GardenSession& s, FrameRenderer* rende
         shotsThisFrame.push_back(screenshotPath(o, c.text));
         return "";
     }
+    if (c.kind == ReplayCommand::Kind::Export) {
+        const int i = c.text.empty() ? s.selected() : s.findSculpture(c.text);
+        if (i < 0)
+            return c.text.empty() ? "export: no sculpture named and none selected" : "export: no sculpture named '" + c.text + "'";
+        if (!o.exporter) return "export: this program cannot export from a replay";
+        std::string summary;
+        if (std::string why = o.exporter(s, i, c.file, static_cast<int>(c.number), summary); !why.empty())
+            return "export: " + why;
+        result.notes.push_back("frame " + std::to_string(result.frames) + ": " + summary);
+        result.exports.push_back(c.file);
+        return "";
+    }
     return runReplayCommand(c, s);
 }
 
@@ -74,6 +86,8 @@ std::string runReplayCommand(const ReplayCommand& c, GardenSession& s) {
             return "";
         case ReplayCommand::Kind::Sculpt:
             return runSculptCommand(c.sculpt, s);
+        case ReplayCommand::Kind::Export:  // the caller's (apply above)
+            return "export: only `hypergarden replay` exports from a script";
     }
     return "";
 }
@@ -236,6 +250,7 @@ std::string statsJson(const ReplayScript& script, const ReplayResult& result) {
                           {"summary", {{"frames", result.stats.size()}, {"mean_total_ms", totalSum / n},
                                        {"max_total_ms", totalWorst}, {"mean_stage_ms", mean}, {"max_stage_ms", maxima}}},
                           {"screenshots", result.screenshots},
+                          {"exports", result.exports},
                           {"notes", result.notes},
                           {"error", result.error}};
     return doc.dump(1) + "\n";

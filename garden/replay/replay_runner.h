@@ -4,6 +4,7 @@
 // and drawn, and screenshots are written.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -20,9 +21,18 @@ public:
     virtual std::string screenshot(const std::string& path) = 0;
 };
 
+// What an {"export": ...} command calls (garden/export sits beside this
+// folder, so the program plugs it in: `hypergarden replay` passes
+// exportSculptureFile): sculpture `index` written to `path` at
+// `resolution` (0: the grid's), as the desktop's Export panel writes it.
+// "" and the report's line in `summary`, or why not.
+using ReplayExporter = std::function<std::string(const GardenSession& session, int index, const std::string& path,
+                                                 int resolution, std::string& summary)>;
+
 struct ReplayOptions {
     int screenshotEvery = 0;         // also a screenshot every N frames (0: only the script's)
     std::string screenshotDir = ".";  // where screenshots go (relative names)
+    ReplayExporter exporter;         // none: an export command fails, saying so
 };
 
 struct ReplayResult {
@@ -30,6 +40,7 @@ struct ReplayResult {
     int frames = 0;
     std::vector<FrameStats> stats;   // one per frame
     std::vector<std::string> screenshots;
+    std::vector<std::string> exports;  // the files export commands wrote
     std::vector<std::string> notes;  // what was skipped (screenshots when headless)
 
     bool ok() const { return error.empty(); }

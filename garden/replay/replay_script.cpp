@@ -125,7 +125,7 @@ ReplayCommand readCommand(const nlohmann::json& v, const std::string& path) {
     if (!v.is_object() || v.size() != 1)
         throw JsonError(path, "expected an object with one command: morph, morph_weights, screenshot, detail, pose, select, "
                               "orbit, budget_ms, stroke, perturb, edit_perturbation, impacts, reapply_impacts, undo, redo, sculpt_tool, "
-                              "action, sketch or add");
+                              "action, sketch, add or export");
     ReplayCommand c;
     for (const char* key :
          {"stroke", "perturb", "edit_perturbation", "impacts", "reapply_impacts", "undo", "redo", "sculpt_tool", "action", "sketch", "add"})
@@ -136,7 +136,7 @@ ReplayCommand readCommand(const nlohmann::json& v, const std::string& path) {
         }
     ObjectReader r(v, path, {"morph", "morph_weights", "screenshot", "detail", "pose", "select", "orbit", "budget_ms",
                              "stroke", "perturb", "edit_perturbation", "impacts", "reapply_impacts", "undo", "redo",
-                             "sculpt_tool", "action", "sketch", "add"});
+                             "sculpt_tool", "action", "sketch", "add", "export"});
     if (const auto* m = r.optional("morph")) {
         c.kind = ReplayCommand::Kind::Morph;
         const auto xz = readVec2(*m, r.pathOf("morph"));
@@ -175,6 +175,13 @@ ReplayCommand readCommand(const nlohmann::json& v, const std::string& path) {
     } else if (const auto* b = r.optional("budget_ms")) {
         c.kind = ReplayCommand::Kind::Budget;
         c.number = readNumber(*b, r.pathOf("budget_ms"), 0.1, 1000.0);
+    } else if (const auto* e = r.optional("export")) {
+        c.kind = ReplayCommand::Kind::Export;
+        ObjectReader er(*e, r.pathOf("export"), {"sculpture", "path", "res"});
+        if (const auto* n = er.optional("sculpture")) c.text = readString(*n, er.pathOf("sculpture"));
+        c.file = readString(er.required("path"), er.pathOf("path"));
+        if (const auto* res = er.optional("res")) c.number = readInt(*res, er.pathOf("res"), 0, 4096);
+        er.finish();
     }
     r.finish();
     return c;

@@ -25,12 +25,14 @@ struct ReplayCommand {
         Orbit,         // orbit the selection (`flag`), or stop
         Budget,        // the frame budget, milliseconds (`number`)
         Sculpt,        // a sculpting command (`sculpt`)
+        Export,        // sculpture `text` ("" : the selected one) written to `file` at resolution `number` (0: the grid's)
     };
     Kind kind = Kind::Morph;
     std::array<double, 3> vec{};
     std::array<double, 2> pair{};
     double number = 0.0;
     std::string text;
+    std::string file;
     bool flag = false;
     SculptCommand sculpt;
 };

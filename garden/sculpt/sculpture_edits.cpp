@@ -182,6 +182,37 @@ std::optional<voxel::IndexBox> SculptureEdits::undo() {
     return box;
 }
 
+std::vector<Edit> SculptureEdits::takeAll(std::vector<voxel::IndexBox>& changed) {
+    // Deferred, so that each voxel is recomputed once however many edits go.
+    const bool wasDeferred = deferred_;
+    deferred_ = true;
+    std::vector<Edit> taken;
+    while (!list_.empty()) {
+        taken.push_back(list_.removeLast());
+        update(voxelsOf(taken.back().reach));
+    }
+    before_.clear();
+    std::reverse(taken.begin(), taken.end());
+    if (!wasDeferred) changed = flush();
+    return taken;
+}
+
+std::vector<voxel::IndexBox> SculptureEdits::rebase() {
+    base_ = std::make_unique<voxel::Volume>(shown_.clone());
+    dropCopies();  // they hold the old grid
+    const bool wasDeferred = deferred_;
+    deferred_ = true;
+    for (const Edit& e : list_.edits()) update(voxelsOf(e.reach));
+    return wasDeferred ? std::vector<voxel::IndexBox>{} : flush();
+}
+
+std::vector<voxel::IndexBox> SculptureEdits::putBack(std::vector<Edit> edits) {
+    const bool wasDeferred = deferred_;
+    deferred_ = true;
+    for (Edit& e : edits) applyAppended(std::move(e));
+    return wasDeferred ? std::vector<voxel::IndexBox>{} : flush();
+}
+
 std::optional<voxel::IndexBox> SculptureEdits::redo() {
     if (redo_.empty()) return std::nullopt;
     Edit again = std::move(redo_.back());

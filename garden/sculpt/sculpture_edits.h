@@ -55,6 +55,18 @@ public:
     // Puts `edit` in place of edit `index` and recomputes where either
     // reaches; `replaced` receives the edit it replaced (to put back).
     voxel::IndexBox replace(std::size_t index, Edit edit, Edit& replaced);
+    // Every edit taken out (the grid back to its base), in list order, the
+    // redo stack left as it is: a discard, which undo brings back with
+    // putBack. Returns the boxes recomputed (none while deferred: flush).
+    std::vector<Edit> takeAll(std::vector<voxel::IndexBox>& changed);
+    // The shown grid was replaced by a new unedited one of the same frame
+    // (its source file read again): it becomes the base, and every edit is
+    // applied again on it, each voxel once. The boxes recomputed (none while
+    // deferred: flush).
+    std::vector<voxel::IndexBox> rebase();
+    // Edits taken out appended again, their ids kept and the redo stack
+    // left as it is; each voxel they reach is recomputed once.
+    std::vector<voxel::IndexBox> putBack(std::vector<Edit> edits);
 
     // The shown grid's `box` recomputed from the base and the edits that
     // reach it.

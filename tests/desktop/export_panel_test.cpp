@@ -1,6 +1,7 @@
 // The desktop's Export panel: the selected sculpture written next to the
-// session, HyperFun at once and a mesh on a worker thread while the garden
-// goes on; refusals say why and write nothing.
+// session (or into the folder typed), HyperFun at once and a mesh on a
+// worker thread while the garden goes on, which Cancel stops with nothing
+// written; refusals say why and write nothing.
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -75,6 +76,36 @@ TEST_F(ExportPanelTest, WithoutASelectionOrWithAMissingSculptureNothingIsWritten
     EXPECT_NE(panel.status().find("missing"), std::string::npos) << panel.status();
     const std::filesystem::path exports = dir / "session" / "exports";
     EXPECT_TRUE(!std::filesystem::exists(exports) || std::filesystem::is_empty(exports));
+}
+
+TEST_F(ExportPanelTest, AFolderOfTheUsersOwnAndCancelLeavesNothing) {
+    auto session = open();
+    const int c = session->findSculpture("c");
+    ExportPanel panel((dir / "session").string());
+    EXPECT_EQ(std::filesystem::path(panel.exportFolder()), dir / "session" / "exports");
+    panel.setFolder((dir / "prints" / "week 2").string());
+    panel.setFileName("ball");
+    ASSERT_TRUE(panel.start(*session, c, ".hf", 0)) << panel.status();
+    finish(panel);
+    EXPECT_EQ(std::filesystem::path(panel.lastPath()), dir / "prints" / "week 2" / "ball.hf");
+    EXPECT_TRUE(std::filesystem::exists(panel.lastPath())) << "the folder is made";
+
+    // A mesh of many tiles, cancelled as soon as it starts: no file, no
+    // temporary, and the panel says so; the next export runs as usual.
+    panel.setFileName("big");
+    ASSERT_TRUE(panel.start(*session, c, ".stl", 1024)) << panel.status();
+    const std::string big = panel.lastPath();
+    panel.cancel();
+    finish(panel);
+    EXPECT_NE(panel.status().find("cancelled"), std::string::npos) << panel.status();
+    EXPECT_FALSE(std::filesystem::exists(big));
+    for (const auto& e : std::filesystem::directory_iterator(dir / "prints" / "week 2"))
+        EXPECT_EQ(e.path().filename().string().find("big"), std::string::npos) << e.path();
+    panel.cancel();  // nothing under way: nothing happens
+    panel.setFileName("small");
+    ASSERT_TRUE(panel.start(*session, c, ".stl", 32)) << panel.status();
+    finish(panel);
+    EXPECT_EQ(panel.status().rfind("wrote ", 0), 0u) << panel.status();
 }
 
 // A name of the user's own (kept to letters, digits, - and _), and a

@@ -1,13 +1,16 @@
 // `hypergarden replay` as a user runs it: offscreen with screenshots and
 // stats, headless with screenshots skipped, a garden with a missing
 // sculpture still plays, and bad scripts and gardens are refused with their
-// JSON path.
+// JSON path; an {"export": ...} command writes a sculpture as the desktop's
+// Export panel does.
 #include <fstream>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
 
 #include "../cli_fixture.h"
+#include "polygonizer/mesh_validation.h"
+#include "polygonizer/stl_io.h"
 #include "../garden/session_garden.h"
 
 namespace hg::garden {
@@ -50,6 +53,51 @@ TEST_F(ReplayCli, OffscreenWritesScreenshotsAndStats) {
     for (const auto& f : j["frames"]) drawn = std::max<std::size_t>(drawn, f["triangles_drawn"].get<std::size_t>());
     EXPECT_GT(drawn, 100u) << "offscreen frames draw the sculptures";
     EXPECT_GT(j["summary"]["mean_stage_ms"]["render"].get<double>(), 0.0);
+}
+
+TEST_F(ReplayCli, AnExportCommandWritesTheSculptureAsThePanelDoes) {
+    const std::string stl = (dir / "out" / "ball-c.stl").string();
+    const std::string hf = (dir / "a.hf").string();
+    const std::string s = script(R"([{"frames": 2},
+        {"commands": [{"stroke": {"sculpture": "c", "tool": "carve", "radius": 0.1, "path": [[2.45, 0.9, 1.3], [2.5, 0.6, 1.4]]}},
+                      {"export": {"sculpture": "c", "path": ")" + stl + R"(", "res": 48}}]},
+        {"commands": [{"select": "a"}, {"export": {"path": ")" + hf + R"("}}]}])");
+    std::filesystem::create_directories(dir / "out");
+    auto r = ::hg::test::runHypergarden("replay " + s + " --headless --stats " + path("stats.json"));
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("wrote " + stl), std::string::npos) << r.output;
+    // A closed mesh of ball c (radius 0.6 m), in millimetres as STL is.
+    const poly::StlReadResult read = poly::readStl(stl);
+    ASSERT_EQ(read.error, "");
+    const poly::MeshReport m = poly::validateMesh(poly::weldByPosition(read.mesh));
+    EXPECT_GT(m.triangles, 500u);
+    EXPECT_EQ(m.boundaryEdges, 0u);
+    EXPECT_NEAR(m.boxMax[1] - m.boxMin[1], 1200.0, 60.0) << "the ball's height in mm";
+    // The selected sculpture when none is named; HyperFun with its name.
+    std::ifstream hfIn(hf);
+    std::stringstream hfText;
+    hfText << hfIn.rdbuf();
+    EXPECT_NE(hfText.str().find("my_model"), std::string::npos) << hfText.str();
+    std::ifstream in(dir / "stats.json");
+    const nlohmann::json j = nlohmann::json::parse(in);
+    ASSERT_EQ(j["exports"].size(), 2u);
+    EXPECT_EQ(j["exports"][0], stl);
+
+    // Refused with the reason: a sculpture that is not there, a format that
+    // is not one, an unknown key (with its JSON path).
+    r = ::hg::test::runHypergarden("replay " + script(R"([{"commands": [{"export": {"sculpture": "nobody", "path": "x.stl"}}]}])") +
+                                   " --headless");
+    EXPECT_EQ(r.status, 1);
+    EXPECT_NE(r.output.find("export: no sculpture named 'nobody'"), std::string::npos) << r.output;
+    r = ::hg::test::runHypergarden("replay " + script(R"([{"commands": [{"export": {"sculpture": "c", "path": ")" +
+                                                      (dir / "x.docx").string() + R"("}}]}])") + " --headless");
+    EXPECT_EQ(r.status, 1);
+    EXPECT_NE(r.output.find("export: "), std::string::npos) << r.output;
+    EXPECT_FALSE(exists("x.docx"));
+    r = ::hg::test::runHypergarden("replay " + script(R"([{"commands": [{"export": {"sculptur": "c", "path": "x.stl"}}]}])") +
+                                   " --headless");
+    EXPECT_NE(r.status, 0);
+    EXPECT_NE(r.output.find("$.steps[0].commands[0].export.sculptur"), std::string::npos) << r.output;
 }
 
 TEST_F(ReplayCli, HeadlessSkipsScreenshotsAndSaysSo) {

@@ -123,5 +123,41 @@ TEST_F(ExportCliTest, AnEditedSculptureIsMeshedFromItsExportedFRepInEveryFormat)
     EXPECT_GT(carved, whole * 0.95);
 }
 
+
+// `mesh` and `export` agree on units: a file meshed by `mesh` at its
+// defaults and the same sculpture exported from a garden at scale 1 are STLs
+// of the same size in millimetres, and each report states its sizes in the
+// file's units (mm for STL, m for OBJ).
+TEST_F(ExportCliTest, MeshAndExportWriteTheSameSizeAndReportInTheFilesUnits) {
+    const std::string g = garden();  // ball c: radius 0.6 units at 1 m per unit
+    ::hg::test::CommandRun e = ::hg::test::runHypergarden("export " + g + " --sculpture c --res 48 -o " + path("e.stl"));
+    ASSERT_EQ(e.status, 0) << e.output;
+    ::hg::test::CommandRun m = ::hg::test::runHypergarden("mesh " + path("g/ball.hf") +
+                                                          " --a 0.36 --box -0.6,-0.1,-0.6,0.6,1.1,0.6 --res 48 -o " + path("m.stl"));
+    ASSERT_EQ(m.status, 0) << m.output;
+    EXPECT_NE(m.output.find("STL in mm, 1000 mm per model unit: model units as metres"), std::string::npos) << m.output;
+    poly::MeshReport sizes[2];
+    int k = 0;
+    for (const char* name : {"e.stl", "m.stl"}) {
+        const poly::StlReadResult stl = poly::readStl((dir / name).string());
+        ASSERT_EQ(stl.error, "") << name;
+        sizes[k++] = poly::validateMesh(poly::weldByPosition(stl.mesh));
+    }
+    for (int a = 0; a < 3; ++a) {
+        const double exported = sizes[0].boxMax[a] - sizes[0].boxMin[a], meshed = sizes[1].boxMax[a] - sizes[1].boxMin[a];
+        EXPECT_NEAR(exported, 1200.0, 30.0) << "axis " << a << ": the ball's 1.2 m in mm";
+        EXPECT_NEAR(meshed, exported, 30.0) << "axis " << a << ": within a voxel (25 mm) of each other";
+    }
+    // Each report in its file's units: the STL's 1.2 m as about 1200 mm,
+    // the OBJ's as about 1.2 m.
+    EXPECT_NE(e.output.find("size 1199.9"), std::string::npos) << e.output;
+    EXPECT_NE(e.output.find(" mm\n"), std::string::npos) << e.output;
+    EXPECT_NE(m.output.find("size: 1199.9"), std::string::npos) << m.output;
+    ::hg::test::CommandRun o = ::hg::test::runHypergarden("export " + g + " --sculpture c --res 48 -o " + path("e.obj"));
+    ASSERT_EQ(o.status, 0) << o.output;
+    EXPECT_NE(o.output.find(" m\n"), std::string::npos) << o.output;
+    EXPECT_NE(o.output.find("size 1.1"), std::string::npos) << o.output;
+}
+
 }  // namespace
 }  // namespace hg::garden

@@ -152,10 +152,15 @@ TEST_F(SessionSculptingTest, EditsOnTheMorphResultPersistWhenTheWeightsChangeAnd
     EXPECT_EQ(test::differingVoxels(r.edits->base(), *blend), 0);
     EXPECT_EQ(test::differingVoxels(*r.volume, *r.edits->rebuild()), 0);
     EXPECT_GT(test::differingVoxels(*r.volume, *blend), 100);
+    const voxel::Volume edited = r.volume->clone();
     s.discardEdits(m);
     EXPECT_EQ(s.editCount(m), 0u);
     EXPECT_FALSE(s.redo());
     EXPECT_EQ(test::differingVoxels(*r.volume, *blend), 0);
+    // And undo brings the edits back over the blend.
+    ASSERT_TRUE(s.undo());
+    EXPECT_EQ(s.editCount(m), 2u);
+    EXPECT_EQ(test::differingVoxels(*r.volume, edited), 0);
 }
 
 // Every action goes through apply() and is journalled in the model frame;

@@ -136,16 +136,19 @@ TEST_F(HandPanelPages, TheSculpturePageMirrorsAndDiscardsTheSelectedSculpturesEd
     // Run 2, the session reopened: select 'a' again and discard its edits.
     std::unique_ptr<voxel::Volume> after;
     bool redone = true;
+    std::string lastAction;
     run("[" + press(panelPageCenter(PanelPage::Sculpture)) + ", " + press(panelActionCenter(PanelAction::NextSculpture)) + ", " +
             press(panelActionCenter(PanelAction::DiscardEdits)) + R"(, {"frames": 2}])",
         [&](garden::GardenSession& xr) {
             const int a = xr.findSculpture("a");
             edits = xr.editCount(a);
             redone = xr.redo();
+            if (!xr.history().empty()) lastAction = xr.history().back().action;
             after = std::make_unique<voxel::Volume>(xr.sculptures()[static_cast<std::size_t>(a)].volume->clone());
         });
     EXPECT_EQ(edits, 0u) << "discarded on the panel";
-    EXPECT_FALSE(redone) << "discarded for good, as on the desktop";
+    EXPECT_FALSE(redone) << "a new action: nothing to redo";
+    EXPECT_EQ(lastAction, "discard") << "one action in the history, undoable as on the desktop";
     // The grid is the unedited sculpture's, and the discard is journalled.
     garden::OpenedSession fresh = garden::openSession({(dir / "fresh").string(), gardenFile}, {});
     ASSERT_TRUE(fresh.error.empty()) << fresh.error;

@@ -1,0 +1,26 @@
+// The view a session was left with (issue 23, docs/session-format.md): the
+// desktop writes DIR/view.json when it closes a session and reads it when
+// it opens one, so a reopened session looks where the user left off.
+//   {"mode": "walk" | "fly", "eye": [x, y, z], "yaw": degrees, "pitch": degrees}
+// (an orbit is kept as flying from where it stood: its target may be gone).
+// The view is not an action: it is not journalled and undo leaves it alone.
+#pragma once
+
+#include <string>
+
+namespace hg::garden {
+
+class Navigator;
+
+constexpr const char* kSessionViewFile = "view.json";
+
+// Writes the navigator's pose to DIR/view.json atomically; "" or why not.
+std::string writeSessionView(const std::string& dir, const Navigator& navigator);
+
+// Sets the navigator from DIR/view.json: true when it did. False with
+// `warning` "" when the session has no view yet; false with `warning`
+// naming the file and the fault when the file is unreadable or wrong (the
+// navigator is left as it was).
+bool readSessionView(const std::string& dir, Navigator& navigator, std::string& warning);
+
+}  // namespace hg::garden
