@@ -31,6 +31,7 @@
 #include "garden/render/key_table.h"
 #include "garden/render/overlay.h"
 #include "garden/render/panels.h"
+#include "garden/render/quality_governor.h"
 #include "garden/render/screenshot.h"
 #include "garden/render/tool_gizmo.h"
 #include "garden/session/open_session.h"
@@ -283,7 +284,17 @@ int runDesktopOn(GardenSession& session, GardenWindow& gardenWindow, const Deskt
     };
     bool askQuit = false, quitConfirmed = false;  // Esc or the close button with work not saved
     Renderer& renderer = gardenWindow.renderer();
-    renderer.setQuality(options.autoQuality ? qualityOf(rendererPreset(GlWindow::glVersionString())) : options.quality);
+    // --quality auto: the renderer's preset as the ceiling, then stepped
+    // down and up by the GPU's measured time against the monitor's period.
+    std::optional<QualityGovernor> governor;
+    if (options.autoQuality) {
+        const GLFWvidmode* mode = glfwGetVideoMode(glfwGetPrimaryMonitor());
+        const double hz = mode && mode->refreshRate > 0 ? mode->refreshRate : 60.0;
+        governor.emplace(rendererPreset(GlWindow::glVersionString()), 1000.0 / hz);
+        renderer.setQuality(governor->quality());
+    } else {
+        renderer.setQuality(options.quality);
+    }
     GardenView& view = gardenWindow.view();
     WindowEvents& events = gardenWindow.events();
     events = WindowEvents{};
@@ -446,6 +457,8 @@ int runDesktopOn(GardenSession& session, GardenWindow& gardenWindow, const Deskt
             return true;
         };
         session.frame(input, views);
+        if (governor)
+            if (const auto q = governor->observe(session.stats().gpuMs)) renderer.setQuality(*q);
         const bool lastFrame = options.frames > 0 && frame + 1 == options.frames;
         if (lastFrame && !options.exitScreenshot.empty()) {
             const std::string why = writeFramebufferPng(options.exitScreenshot, fb.x, fb.y);

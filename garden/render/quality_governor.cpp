@@ -1,0 +1,71 @@
+#include "garden/render/quality_governor.h"
+
+#include <algorithm>
+#include <numeric>
+
+namespace hg::garden {
+namespace {
+
+constexpr double kDownShare = 0.85;  // of the budget: step down above this
+constexpr double kUpShare = 0.5;     // step up only while every frame stays under this
+
+// From `top` down to the low preset, each step giving up the least visible
+// thing that costs the most (bench_look's columns: full-resolution occlusion
+// is the dearest pass on a GPU, then the shadow lookups).
+std::vector<RenderQuality> ladderFrom(QualityPreset top) {
+    std::vector<RenderQuality> ladder;
+    RenderQuality q = qualityOf(top);
+    ladder.push_back(q);
+    if (top == QualityPreset::Low) return ladder;
+    if (q.ambientOcclusion && (!q.aoHalfResolution || q.aoSamples > 8)) {
+        q.aoHalfResolution = true;
+        q.aoSamples = 8;
+        ladder.push_back(q);
+    }
+    if (q.shadows && q.shadowMapSize > 1024) {
+        q.shadowMapSize = 1024;
+        ladder.push_back(q);
+    }
+    if (q.msaaSamples > 2) {
+        q.msaaSamples = 2;
+        ladder.push_back(q);
+    }
+    q.ambientOcclusion = false;
+    ladder.push_back(q);
+    q.shadows = false;
+    ladder.push_back(q);
+    ladder.push_back(qualityOf(QualityPreset::Low));
+    return ladder;
+}
+
+}  // namespace
+
+QualityGovernor::QualityGovernor(QualityPreset ceiling, double budgetMs)
+    : ladder_(ladderFrom(ceiling)), budgetMs_(budgetMs > 0.0 ? budgetMs : 1000.0 / 60.0) {}
+
+std::optional<RenderQuality> QualityGovernor::observe(double gpuMs) {
+    if (gpuMs < 0.0) return std::nullopt;
+    recent_.push_back(gpuMs);
+    if (recent_.size() > kUpWindow) recent_.pop_front();
+    ++sinceChange_;
+    if (sinceChange_ < kSettle) return std::nullopt;
+
+    const auto change = [&](std::size_t to) {
+        step_ = to;
+        sinceChange_ = 0;
+        recent_.clear();  // what was measured belongs to the old quality
+        return std::optional<RenderQuality>(ladder_[step_]);
+    };
+    if (recent_.size() >= kDownWindow && step_ + 1 < ladder_.size()) {
+        const double mean =
+            std::accumulate(recent_.end() - static_cast<std::ptrdiff_t>(kDownWindow), recent_.end(), 0.0) /
+            static_cast<double>(kDownWindow);
+        if (mean > kDownShare * budgetMs_) return change(step_ + 1);
+    }
+    if (recent_.size() >= kUpWindow && step_ > 0 &&
+        *std::max_element(recent_.begin(), recent_.end()) < kUpShare * budgetMs_)
+        return change(step_ - 1);
+    return std::nullopt;
+}
+
+}  // namespace hg::garden

@@ -1,0 +1,51 @@
+// `--quality auto`: keeps the GPU's time for a frame inside the display's
+// budget by stepping the render quality down and back up a ladder
+// (docs/rendering.md, "Quality"). It reads the renderer's own timer
+// queries (FrameStats::gpuMs), so it steers by what the GPU spends, not by
+// the CPU's frame time. Steps are cheapest-first in picture lost: occlusion
+// at half resolution with fewer samples, a smaller shadow map, the medium
+// preset, no occlusion, no shadows, no multisampling. Hysteresis keeps it
+// from flickering: down when the recent mean passes 85 % of the budget, up
+// only after a long stretch under half of it, and never two changes close
+// together.
+#pragma once
+
+#include <cstddef>
+#include <deque>
+#include <optional>
+#include <vector>
+
+#include "garden/render/render_quality.h"
+
+namespace hg::garden {
+
+class QualityGovernor {
+public:
+    // `ceiling`: the best it may use (rendererPreset's: high on a GPU, low
+    // on a software renderer); `budgetMs`: the display's period.
+    QualityGovernor(QualityPreset ceiling, double budgetMs);
+
+    // One frame's GPU time (-1: not measured, ignored). The quality to use
+    // from now on when it changes, else nothing.
+    std::optional<RenderQuality> observe(double gpuMs);
+
+    const RenderQuality& quality() const { return ladder_[step_]; }
+    std::size_t step() const { return step_; }          // 0: the ceiling
+    std::size_t steps() const { return ladder_.size(); }
+    double budgetMs() const { return budgetMs_; }
+
+    // Frames averaged before stepping down, frames under half the budget
+    // before stepping up, and frames after any change before the next.
+    static constexpr std::size_t kDownWindow = 30;
+    static constexpr std::size_t kUpWindow = 180;
+    static constexpr std::size_t kSettle = 60;
+
+private:
+    std::vector<RenderQuality> ladder_;
+    std::size_t step_ = 0;
+    double budgetMs_;
+    std::deque<double> recent_;  // the last kUpWindow measurements
+    std::size_t sinceChange_ = 0;
+};
+
+}  // namespace hg::garden

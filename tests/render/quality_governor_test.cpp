@@ -1,0 +1,78 @@
+// --quality auto's governor: it steps down when the GPU's time passes the
+// budget, all the way to low if need be and never past it, climbs back only
+// after a long quiet stretch, ignores frames without a measurement, and
+// does not flicker at the threshold.
+#include <gtest/gtest.h>
+
+#include "garden/render/quality_governor.h"
+
+namespace hg::garden::test {
+namespace {
+
+// Frames of `gpuMs` until the quality changes (or `limit` frames pass).
+std::size_t framesUntilChange(QualityGovernor& g, double gpuMs, std::size_t limit = 10000) {
+    for (std::size_t f = 1; f <= limit; ++f)
+        if (g.observe(gpuMs)) return f;
+    return 0;
+}
+
+TEST(QualityGovernor, StepsDownToLowUnderLoadAndNoFurther) {
+    QualityGovernor g(QualityPreset::High, 11.1);
+    EXPECT_EQ(g.step(), 0u);
+    EXPECT_GT(g.steps(), 4u);
+    EXPECT_EQ(g.quality().aoSamples, qualityOf(QualityPreset::High).aoSamples);
+    int cost = 0;  // each step must give something up
+    while (g.step() + 1 < g.steps()) {
+        const RenderQuality before = g.quality();
+        const std::size_t frames = framesUntilChange(g, 20.0);
+        ASSERT_GT(frames, 0u) << "a frame over budget steps down, at step " << g.step();
+        EXPECT_GE(frames, QualityGovernor::kSettle) << "not before the last change has settled";
+        const RenderQuality& after = g.quality();
+        cost += (after.msaaSamples < before.msaaSamples) + (after.shadowMapSize < before.shadowMapSize) +
+                (!after.shadows && before.shadows) + (!after.ambientOcclusion && before.ambientOcclusion) +
+                (after.aoSamples < before.aoSamples) + (after.aoHalfResolution && !before.aoHalfResolution);
+    }
+    EXPECT_GE(cost, static_cast<int>(g.steps()) - 1);
+    const RenderQuality low = qualityOf(QualityPreset::Low);
+    EXPECT_EQ(g.quality().msaaSamples, low.msaaSamples);
+    EXPECT_FALSE(g.quality().shadows);
+    EXPECT_FALSE(g.quality().ambientOcclusion);
+    EXPECT_EQ(framesUntilChange(g, 50.0, 1000), 0u) << "low is the floor";
+}
+
+TEST(QualityGovernor, ClimbsBackOnlyAfterALongQuietStretch) {
+    QualityGovernor g(QualityPreset::High, 11.1);
+    ASSERT_GT(framesUntilChange(g, 20.0), 0u);
+    ASSERT_GT(framesUntilChange(g, 20.0), 0u);
+    ASSERT_EQ(g.step(), 2u);
+    // Inside the budget but over half of it: stays where it is.
+    EXPECT_EQ(framesUntilChange(g, 7.0, 2000), 0u);
+    // Well under: back up, one step per quiet stretch.
+    const std::size_t frames = framesUntilChange(g, 2.0);
+    EXPECT_GE(frames, QualityGovernor::kUpWindow);
+    EXPECT_EQ(g.step(), 1u);
+    ASSERT_GT(framesUntilChange(g, 2.0), 0u);
+    EXPECT_EQ(g.step(), 0u);
+    EXPECT_EQ(framesUntilChange(g, 1.0, 2000), 0u) << "the ceiling is the top";
+}
+
+TEST(QualityGovernor, UnmeasuredFramesChangeNothingAndTheThresholdDoesNotFlicker) {
+    QualityGovernor g(QualityPreset::High, 10.0);
+    for (int f = 0; f < 1000; ++f) EXPECT_FALSE(g.observe(-1.0));
+    EXPECT_EQ(g.step(), 0u);
+    // Alternating just over and just under the step-down line: the mean
+    // sits under it, so nothing changes.
+    int changes = 0;
+    for (int f = 0; f < 3000; ++f) changes += g.observe(f % 2 ? 8.9 : 7.9) ? 1 : 0;
+    EXPECT_EQ(changes, 0);
+}
+
+TEST(QualityGovernor, ASoftwareRendererStartsLowAndStaysThere) {
+    QualityGovernor g(QualityPreset::Low, 16.7);
+    EXPECT_EQ(g.steps(), 1u);
+    EXPECT_EQ(framesUntilChange(g, 400.0, 500), 0u);
+    EXPECT_EQ(framesUntilChange(g, 1.0, 500), 0u);
+}
+
+}  // namespace
+}  // namespace hg::garden::test
