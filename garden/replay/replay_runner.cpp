@@ -240,6 +240,16 @@ std::string statsJson(const ReplayScript& script, const ReplayResult& result) {
                           {"gpu_ms", f.gpuMs}});
     }
     const double n = std::max<double>(1.0, static_cast<double>(result.stats.size()));
+    // The GPU's time over the frames that have a measurement (none headless,
+    // and the first few of a renderer's: timer results come views later).
+    double gpuSum = 0.0, gpuWorst = 0.0;
+    std::size_t gpuFrames = 0;
+    for (const FrameStats& f : result.stats)
+        if (f.gpuMs >= 0.0) {
+            gpuSum += f.gpuMs;
+            gpuWorst = std::max(gpuWorst, f.gpuMs);
+            ++gpuFrames;
+        }
     nlohmann::json mean = nlohmann::json::object(), maxima = nlohmann::json::object();
     for (int s = 0; s < kStageCount; ++s) {
         mean[stageName(static_cast<Stage>(s))] = sum[static_cast<std::size_t>(s)] / n;
@@ -248,7 +258,11 @@ std::string statsJson(const ReplayScript& script, const ReplayResult& result) {
     nlohmann::json doc = {{"script", script.file},
                           {"frames", frames},
                           {"summary", {{"frames", result.stats.size()}, {"mean_total_ms", totalSum / n},
-                                       {"max_total_ms", totalWorst}, {"mean_stage_ms", mean}, {"max_stage_ms", maxima}}},
+                                       {"max_total_ms", totalWorst}, {"mean_stage_ms", mean}, {"max_stage_ms", maxima},
+                                       {"gpu_frames", gpuFrames},
+                                       {"mean_gpu_ms", gpuFrames ? nlohmann::json(gpuSum / static_cast<double>(gpuFrames))
+                                                                 : nlohmann::json()},
+                                       {"max_gpu_ms", gpuFrames ? nlohmann::json(gpuWorst) : nlohmann::json()}}},
                           {"screenshots", result.screenshots},
                           {"exports", result.exports},
                           {"notes", result.notes},

@@ -53,6 +53,17 @@ TEST_F(ReplayCli, OffscreenWritesScreenshotsAndStats) {
     for (const auto& f : j["frames"]) drawn = std::max<std::size_t>(drawn, f["triangles_drawn"].get<std::size_t>());
     EXPECT_GT(drawn, 100u) << "offscreen frames draw the sculptures";
     EXPECT_GT(j["summary"]["mean_stage_ms"]["render"].get<double>(), 0.0);
+    // The GPU's own time, from the renderer's timer queries: most frames
+    // have a measurement (the first few wait for their results).
+    std::size_t measured = 0;
+    for (const auto& f : j["frames"]) measured += f["gpu_ms"].get<double>() > 0.0 ? 1 : 0;
+    EXPECT_GT(measured, j["frames"].size() / 2);
+    EXPECT_EQ(j["summary"]["gpu_frames"].get<std::size_t>(), measured);
+    EXPECT_GT(j["summary"]["mean_gpu_ms"].get<double>(), 0.0);
+    EXPECT_GE(j["summary"]["max_gpu_ms"].get<double>(), j["summary"]["mean_gpu_ms"].get<double>());
+    std::size_t chunks = 0;
+    for (const auto& f : j["frames"]) chunks = std::max<std::size_t>(chunks, f["chunks_drawn"].get<std::size_t>());
+    EXPECT_GT(chunks, 0u);
 }
 
 TEST_F(ReplayCli, AnExportCommandWritesTheSculptureAsThePanelDoes) {
