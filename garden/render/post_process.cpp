@@ -1,5 +1,7 @@
 #include "garden/render/post_process.h"
 
+#include <algorithm>
+
 #include "garden/render/shaders.h"
 
 namespace hg::garden {
@@ -12,7 +14,8 @@ uniform sampler2D uOcclusion;
 uniform int uSamples;
 uniform float uExposure;
 uniform bool uUseOcclusion;
-uniform vec2 uSize;
+uniform vec2 uSize;     // the scene's pixels
+uniform vec2 uToScene;  // output pixel to scene pixel (the render scale)
 out vec4 fragColor;
 // Khronos PBR Neutral's highlight roll-off without its toe: colours below
 // 0.76 pass unchanged (the garden file's colours stay what they say),
@@ -29,8 +32,9 @@ vec3 toneMap(vec3 color) {
     return mix(color, vec3(newPeak), g);
 }
 void main() {
-    ivec2 p = ivec2(gl_FragCoord.xy);
-    float open = uUseOcclusion ? texture(uOcclusion, gl_FragCoord.xy / uSize).r : 1.0;
+    vec2 s = gl_FragCoord.xy * uToScene;
+    ivec2 p = ivec2(s);
+    float open = uUseOcclusion ? texture(uOcclusion, s / uSize).r : 1.0;
     vec3 sum = vec3(0.0);
     for (int i = 0; i < uSamples; ++i) {
         vec4 c = texelFetch(uColor, p, i);
@@ -54,14 +58,17 @@ PostProcess::PostProcess()
     exposure_ = program_.uniform("uExposure");
     useOcclusion_ = program_.uniform("uUseOcclusion");
     size_ = program_.uniform("uSize");
+    toScene_ = program_.uniform("uToScene");
 }
 
-void PostProcess::composite(const SceneTargets& scene, GLuint occlusion, float exposure) {
+void PostProcess::composite(const SceneTargets& scene, GLuint occlusion, float exposure, glm::ivec2 output) {
     program_.use();
     glUniform1i(samples_, scene.samples());
     glUniform1f(exposure_, exposure);
     glUniform1i(useOcclusion_, occlusion != 0 ? 1 : 0);
     glUniform2f(size_, static_cast<float>(scene.size().x), static_cast<float>(scene.size().y));
+    glUniform2f(toScene_, static_cast<float>(scene.size().x) / static_cast<float>(std::max(output.x, 1)),
+                static_cast<float>(scene.size().y) / static_cast<float>(std::max(output.y, 1)));
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, scene.colorTexture());
     glActiveTexture(GL_TEXTURE1);

@@ -21,12 +21,14 @@ public:
 
     // Draws into the bound framebuffer, whose viewport the caller has set
     // to the scene's size. `occlusion`: an R8 texture (1 = open), or 0.
-    void composite(const SceneTargets& scene, GLuint occlusion, float exposure);
+    // `output`: the pixels of the bound framebuffer's view, which the scene
+    // (drawn at the render scale) is stretched over, nearest sample.
+    void composite(const SceneTargets& scene, GLuint occlusion, float exposure, glm::ivec2 output);
 
 private:
     ShaderProgram program_;
     gl::VertexArray empty_;  // the fullscreen triangle comes from gl_VertexID
-    GLint samples_ = -1, exposure_ = -1, useOcclusion_ = -1, size_ = -1;
+    GLint samples_ = -1, exposure_ = -1, useOcclusion_ = -1, size_ = -1, toScene_ = -1;
 };
 
 }  // namespace hg::garden

@@ -16,7 +16,17 @@ std::vector<RenderQuality> ladderFrom(QualityPreset top) {
     std::vector<RenderQuality> ladder;
     RenderQuality q = qualityOf(top);
     ladder.push_back(q);
-    if (top == QualityPreset::Low) return ladder;
+    // Last, whatever the top: fewer pixels (the scene drawn smaller and
+    // stretched), which is what keeps a software renderer interactive.
+    const auto smaller = [&ladder] {
+        for (float scale : {0.75f, 0.5f}) {
+            RenderQuality low = qualityOf(QualityPreset::Low);
+            low.renderScale = scale;
+            ladder.push_back(low);
+        }
+        return ladder;
+    };
+    if (top == QualityPreset::Low) return smaller();
     if (q.ambientOcclusion && (!q.aoHalfResolution || q.aoSamples > 8)) {
         q.aoHalfResolution = true;
         q.aoSamples = 8;
@@ -35,7 +45,7 @@ std::vector<RenderQuality> ladderFrom(QualityPreset top) {
     q.shadows = false;
     ladder.push_back(q);
     ladder.push_back(qualityOf(QualityPreset::Low));
-    return ladder;
+    return smaller();
 }
 
 }  // namespace

@@ -4,7 +4,8 @@
 // queries (FrameStats::gpuMs), so it steers by what the GPU spends, not by
 // the CPU's frame time. Steps are cheapest-first in picture lost: occlusion
 // at half resolution with fewer samples, a smaller shadow map, the medium
-// preset, no occlusion, no shadows, no multisampling. Hysteresis keeps it
+// preset, no occlusion, no shadows, no multisampling, then the scene drawn
+// at three quarters and at half the window's size (renderScale). Hysteresis keeps it
 // from flickering: down when the recent mean passes 85 % of the budget, up
 // only after a long stretch under half of it, and never two changes close
 // together.

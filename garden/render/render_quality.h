@@ -17,6 +17,7 @@ struct RenderQuality {
     bool aoHalfResolution = false;   // AO computed at half width and height, then upsampled
     float aoRadius = 0.25f;          // metres: the largest hollow that darkens
     float exposure = 1.0f;           // linear scale before tone mapping
+    float renderScale = 1.0f;        // the scene drawn at this share of the window's width and height (0.25..1)
 };
 
 }  // namespace hg::garden

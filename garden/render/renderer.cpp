@@ -430,7 +430,7 @@ bool Renderer::renderShadows(const glm::vec3& lo, const glm::vec3& hi) {
 void Renderer::renderScene(bool shadowed) {
     timers_->begin(GpuPass::Scene);
     glBindFramebuffer(GL_FRAMEBUFFER, targets_->framebuffer());
-    glViewport(0, 0, view_.viewport.x, view_.viewport.y);
+    glViewport(0, 0, targets_->size().x, targets_->size().y);
     glDisable(GL_SCISSOR_TEST);
     glDisable(GL_BLEND);
     glEnable(GL_MULTISAMPLE);
@@ -473,7 +473,10 @@ void Renderer::finishView() {
     if (!viewOpen_) return;
     viewOpen_ = false;
     timers_->nextView();
-    targets_->ensure(view_.viewport, quality_.msaaSamples);
+    // The scene at the render scale; the composite scales it to the output.
+    const float scale = std::clamp(quality_.renderScale, 0.25f, 1.0f);
+    const glm::ivec2 sceneSize = glm::max(glm::ivec2(1), glm::ivec2(glm::round(glm::vec2(view_.viewport) * scale)));
+    targets_->ensure(sceneSize, quality_.msaaSamples);
 
     glm::vec3 lo, hi;
     gatherChunks(lo, hi);
@@ -489,7 +492,7 @@ void Renderer::finishView() {
     timers_->begin(GpuPass::Post);
     glBindFramebuffer(GL_FRAMEBUFFER, output_);
     glViewport(0, 0, view_.viewport.x, view_.viewport.y);
-    post_->composite(*targets_, occlusion, quality_.exposure);
+    post_->composite(*targets_, occlusion, quality_.exposure, view_.viewport);
     if (!flatDraws_.empty()) {
         flatProgram_.use();
         setMat4(flat_.view, view_.view);

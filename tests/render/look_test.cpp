@@ -307,6 +307,25 @@ TEST_F(LookTest, TheLawnVariesInWorldSpace) {
     EXPECT_GT(first.g, first.r) << "green";
 }
 
+TEST_F(LookTest, ARenderScaleDrawsFewerPixelsStretchedOverTheSameView) {
+    renderer_->upload(1, 1, uvSphereMesh(1.0f, 96, 48));
+    const View view = makeView({0, 0, 5}, {0, 0, 0});
+    RenderQuality q = plainQuality();
+    render(view, q, false, glm::mat4(1.0f), kRed);
+    const int full = count(reddish);
+    auto pairsDiffer = [&] {
+        int n = 0;
+        for (int y = 0; y < kHeight; ++y)
+            for (int x = 0; x + 1 < kWidth; x += 2) n += pixel(x, y).sum() != pixel(x + 1, y).sum() ? 1 : 0;
+        return n;
+    };
+    EXPECT_GT(pairsDiffer(), 100) << "at full size neighbouring pixels are shaded apart";
+    q.renderScale = 0.5f;
+    render(view, q, false, glm::mat4(1.0f), kRed);
+    EXPECT_NEAR(count(reddish), full, 0.05 * full) << "the same disc, drawn at half the resolution";
+    EXPECT_EQ(pairsDiffer(), 0) << "each scene pixel covers two output pixels in x (and y)";
+}
+
 TEST(RenderQualityTest, PresetsSwitchTheEffectsAndParseByName) {
     EXPECT_EQ(parseQualityPreset("low"), QualityPreset::Low);
     EXPECT_EQ(parseQualityPreset("medium"), QualityPreset::Medium);

@@ -30,14 +30,16 @@ TEST(QualityGovernor, StepsDownToLowUnderLoadAndNoFurther) {
         const RenderQuality& after = g.quality();
         cost += (after.msaaSamples < before.msaaSamples) + (after.shadowMapSize < before.shadowMapSize) +
                 (!after.shadows && before.shadows) + (!after.ambientOcclusion && before.ambientOcclusion) +
-                (after.aoSamples < before.aoSamples) + (after.aoHalfResolution && !before.aoHalfResolution);
+                (after.aoSamples < before.aoSamples) + (after.aoHalfResolution && !before.aoHalfResolution) +
+                (after.renderScale < before.renderScale);
     }
     EXPECT_GE(cost, static_cast<int>(g.steps()) - 1);
     const RenderQuality low = qualityOf(QualityPreset::Low);
     EXPECT_EQ(g.quality().msaaSamples, low.msaaSamples);
     EXPECT_FALSE(g.quality().shadows);
     EXPECT_FALSE(g.quality().ambientOcclusion);
-    EXPECT_EQ(framesUntilChange(g, 50.0, 1000), 0u) << "low is the floor";
+    EXPECT_FLOAT_EQ(g.quality().renderScale, 0.5f) << "then fewer pixels";
+    EXPECT_EQ(framesUntilChange(g, 50.0, 1000), 0u) << "low at half size is the floor";
 }
 
 TEST(QualityGovernor, ClimbsBackOnlyAfterALongQuietStretch) {
@@ -67,11 +69,18 @@ TEST(QualityGovernor, UnmeasuredFramesChangeNothingAndTheThresholdDoesNotFlicker
     EXPECT_EQ(changes, 0);
 }
 
-TEST(QualityGovernor, ASoftwareRendererStartsLowAndStaysThere) {
+TEST(QualityGovernor, ASoftwareRendererStartsLowAndDrawsFewerPixelsWhenSlow) {
     QualityGovernor g(QualityPreset::Low, 16.7);
-    EXPECT_EQ(g.steps(), 1u);
+    EXPECT_EQ(g.steps(), 3u);
+    EXPECT_FLOAT_EQ(g.quality().renderScale, 1.0f);
+    ASSERT_GT(framesUntilChange(g, 400.0), 0u);
+    EXPECT_FLOAT_EQ(g.quality().renderScale, 0.75f);
+    ASSERT_GT(framesUntilChange(g, 400.0), 0u);
+    EXPECT_FLOAT_EQ(g.quality().renderScale, 0.5f);
+    EXPECT_FALSE(g.quality().shadows);
     EXPECT_EQ(framesUntilChange(g, 400.0, 500), 0u);
-    EXPECT_EQ(framesUntilChange(g, 1.0, 500), 0u);
+    ASSERT_GT(framesUntilChange(g, 1.0), 0u);
+    EXPECT_FLOAT_EQ(g.quality().renderScale, 0.75f);
 }
 
 }  // namespace
