@@ -736,9 +736,9 @@ void scaleTable(const Options& o, nlohmann::json& json) {
                     "frames over 11.1 ms | chunks tested by LOD (mean) | triangles shown (mean) | %snew mesh KiB per frame (max) | "
                     "peak memory (MiB) |\n",
                     gl ? "draw | " : "", gl ? "upload | render | GPU ms | " : "",
-                    gl ? "chunks drawn (mean) | draw calls (mean) | " : "");
+                    gl ? "chunks drawn (mean) | triangles drawn (mean) | draw calls (mean) | " : "");
         std::printf("|---:|---:|---:|---:|---:|%s---|---|---|%s---|---:|---:|---:|%s---:|---:|\n", gl ? "---|" : "",
-                    gl ? "---|---|---|" : "", gl ? "---:|---:|" : "");
+                    gl ? "---|---|---|" : "", gl ? "---:|---:|---:|" : "");
     };
     for (int n : o.scaleCounts) {
         const std::string name = "scale/" + std::to_string(n);
@@ -812,7 +812,7 @@ void scaleTable(const Options& o, nlohmann::json& json) {
                 continue;
             }
             std::array<std::vector<double>, kStageCount> perStage;
-            std::vector<double> totals, visited, shown, gpu, calls, drawn;
+            std::vector<double> totals, visited, shown, gpu, calls, drawn, triangles;
             std::size_t over = 0, bytesMax = 0;
             for (std::size_t i = 0; i < run.frames.size(); ++i) {
                 const FrameStats& f = run.frames[i];
@@ -823,6 +823,7 @@ void scaleTable(const Options& o, nlohmann::json& json) {
                 if (f.gpuMs >= 0.0) gpu.push_back(f.gpuMs);
                 calls.push_back(static_cast<double>(f.drawCalls));
                 drawn.push_back(static_cast<double>(f.chunksDrawn));
+                triangles.push_back(static_cast<double>(f.trianglesDrawn));
                 over += f.totalMs > 11.1 ? 1 : 0;
                 bytesMax = std::max(bytesMax, f.meshBytesShown);
             }
@@ -837,7 +838,8 @@ void scaleTable(const Options& o, nlohmann::json& json) {
                 glColumns = spreadCell(stage(Stage::Upload)) + " | " + spreadCell(stage(Stage::Render)) + " | " +
                             (gpu.empty() ? std::string("-") : spreadCell(spread(gpu))) + " | ";
                 char b[96];
-                std::snprintf(b, sizeof b, "%.0f | %.1f | ", spread(drawn).mean, spread(calls).mean);
+                std::snprintf(b, sizeof b, "%.0f | %.0f | %.1f | ", spread(drawn).mean, spread(triangles).mean,
+                              spread(calls).mean);
                 countColumns = b;
             }
             head();
@@ -861,6 +863,7 @@ void scaleTable(const Options& o, nlohmann::json& json) {
                                      {"stage_ms", stages}, {"total_ms", spreadJson(spread(totals))},
                                      {"gpu_ms", spreadJson(spread(gpu))}, {"draw_calls", spreadJson(spread(calls))},
                                      {"chunks_drawn", spreadJson(spread(drawn))},
+                                     {"triangles_drawn", spreadJson(spread(triangles))},
                                      {"frames_over_budget", over}, {"lod_chunks_visited", spreadJson(spread(visited))},
                                      {"triangles_shown", spreadJson(spread(shown))}, {"peak_resident_bytes", peakResidentBytes()}});
         }
