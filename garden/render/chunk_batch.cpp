@@ -30,13 +30,11 @@ void ChunkBatch::clear() {
     commands_.clear();
     recordOf_.clear();
     records_.clear();
-    sent_ = false;
 }
 
 std::size_t ChunkBatch::addRecord(const DrawRecord& record) {
     const std::size_t index = records();
     for (const glm::vec4& texel : record) records_.insert(records_.end(), {texel.x, texel.y, texel.z, texel.w});
-    sent_ = false;
     return index;
 }
 
@@ -51,12 +49,10 @@ void ChunkBatch::add(const ArenaSlot& slot, std::size_t record) {
     c.baseInstance = 0;  // set per group in send()
     commands_.push_back(c);
     recordOf_.push_back(record);
-    sent_ = false;
 }
 
 void ChunkBatch::send(std::size_t first, std::size_t count, std::size_t recordFirst, std::size_t recordCount,
                       bool commands) {
-    if (sent_ && sentFirst_ == first && sentCount_ == count && (sentCommands_ || !commands)) return;
     constexpr std::size_t kFloats = 4 * kDrawRecordTexels;
     // Orphan and refill: the previous view's draws may still be reading.
     glBindBuffer(GL_TEXTURE_BUFFER, recordBuffer_.get());
@@ -74,10 +70,6 @@ void ChunkBatch::send(std::size_t first, std::size_t count, std::size_t recordFi
                      commands_.data() + first, GL_STREAM_DRAW);
         glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
     }
-    sentCommands_ = commands;
-    sent_ = true;
-    sentFirst_ = first;
-    sentCount_ = count;
 }
 
 std::size_t ChunkBatch::draw(ChunkArena& arena, bool multiDraw) {

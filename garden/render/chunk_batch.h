@@ -68,7 +68,7 @@ private:
     };
     // Sends the records [recordFirst, recordFirst + recordCount) and, for a
     // multi-draw, the commands [first, first + count) with base instances
-    // counted from recordFirst, unless they are on the GPU already.
+    // counted from recordFirst.
     void send(std::size_t first, std::size_t count, std::size_t recordFirst, std::size_t recordCount, bool commands);
 
     std::vector<Command> commands_;
@@ -78,9 +78,6 @@ private:
     gl::Texture recordTexture_;
     gl::Buffer commandBuffer_;
     std::size_t maxRecords_ = 0;  // what one texture buffer can hold
-    std::size_t sentFirst_ = 0, sentCount_ = 0;
-    bool sent_ = false;
-    bool sentCommands_ = false;
 };
 
 }  // namespace hg::garden

@@ -378,6 +378,7 @@ void Renderer::gatherChunks(glm::vec3& lo, glm::vec3& hi) {
     // share one record, made when the placement or material changes.
     const SceneDraw* previous = nullptr;
     bool previousNormals = false;
+    DrawRecord current{};
     std::size_t record = 0, shadowRecord = 0;
     bool shadowRecordMade = false;
     float stretch = 1.0f;  // the model matrix's largest scale, for chunk radii
@@ -387,14 +388,11 @@ void Renderer::gatherChunks(glm::vec3& lo, glm::vec3& hi) {
         const ArenaSlot* slot = arena_->slot(d.id);
         if (found == chunks_.end() || slot == nullptr) continue;  // dropped or emptied since recorded
         const ChunkRecord& c = found->second;
-        const RenderMaterial& pm = previous ? previous->material : d.material;
         const bool same = previous && previousNormals == c.hasNormals && previous->model == d.model &&
-                          pm.baseColor == d.material.baseColor && pm.specular == d.material.specular &&
-                          pm.shininess == d.material.shininess && pm.kind == d.material.kind &&
-                          pm.metallic == d.material.metallic && pm.detailScale == d.material.detailScale;
+                          previous->material == d.material;
         if (!same) {
-            const DrawRecord r = drawRecord(d.model, d.material, c.hasNormals);
-            record = batch_->addRecord(r);
+            current = drawRecord(d.model, d.material, c.hasNormals);
+            record = batch_->addRecord(current);
             shadowRecordMade = false;
             stretch = std::max({glm::length(glm::vec3(d.model[0])), glm::length(glm::vec3(d.model[1])),
                                 glm::length(glm::vec3(d.model[2]))});
@@ -408,7 +406,7 @@ void Renderer::gatherChunks(glm::vec3& lo, glm::vec3& hi) {
         const float radius = 0.5f * glm::length(c.hi - c.lo) * stretch;
         if (glm::length(centre - view_.eye) - radius > shadowReach) continue;
         if (!shadowRecordMade) {
-            shadowRecord = shadowBatch_->addRecord(drawRecord(d.model, d.material, c.hasNormals));
+            shadowRecord = shadowBatch_->addRecord(current);
             shadowRecordMade = true;
         }
         shadowBatch_->add(*slot, shadowRecord);

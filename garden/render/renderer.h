@@ -69,6 +69,11 @@ struct RenderMaterial {
     float detailScale = 1.0f;                // model units per unit of the detail's pattern (about a tenth of
                                              // the sculpture: veins, rings, patches)
     int edges = 0;                           // 1: its triangles' edges drawn over it (the wireframe overlay)
+
+    bool operator==(const RenderMaterial& o) const {
+        return baseColor == o.baseColor && specular == o.specular && shininess == o.shininess && kind == o.kind &&
+               metallic == o.metallic && detailScale == o.detailScale && edges == o.edges;
+    }
 };
 
 struct DirectionalLight {

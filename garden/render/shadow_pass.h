@@ -17,9 +17,9 @@ class ShadowPass {
 public:
     ShadowPass();  // throws GlError naming a shader that fails
 
-    // Renders the depth of the batch's chunks (the view's own batch: the
-    // casters are what the view draws) as seen from `toLight` (towards the
-    // sun) over the world box [lo, hi], into a map of `size` texels a side.
+    // Renders the depth of the casters' chunks (those of the view's chunks
+    // within the shadow distance) as seen from `toLight` (towards the sun)
+    // over the world box [lo, hi], into a map of `size` texels a side.
     // Leaves its framebuffer bound; returns the draw calls made.
     std::size_t render(ChunkBatch& casters, ChunkArena& arena, bool multiDraw, const glm::vec3& lo,
                        const glm::vec3& hi, const glm::vec3& toLight, int size);
