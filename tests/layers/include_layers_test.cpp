@@ -27,7 +27,7 @@ const std::map<std::string, int>& layers() {
         {"polygonizer", 2},
         {"garden/scene", 3},   {"garden/sketch", 3},
         {"garden/sculpt", 4},  {"garden/morph", 4}, {"garden/hands", 4},
-        {"garden/gesture", 4},
+        {"garden/gesture", 4}, {"garden/deform", 4},
         {"garden/action", 5},
         {"garden/app", 6},
         {"garden/session", 7}, {"garden/replay", 7}, {"garden/export", 7},
