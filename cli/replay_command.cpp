@@ -8,6 +8,7 @@
 #include "cli/commands.h"
 #include "garden/desktop/offscreen_garden.h"
 #include "garden/export/export_file.h"
+#include "garden/export/part_export.h"
 #include "garden/render/render_quality.h"
 #include "garden/replay/replay_runner.h"
 #include "garden/scene/json_reader.h"
@@ -86,6 +87,7 @@ int runReplay(const ReplayCommandOptions& options) {
         summary = report.summary + (report.warning.empty() ? "" : " (" + report.warning + ")");
         return why;
     };
+    ro.extractor = extractPart;  // {"extract": ...}
     if (!std::filesystem::exists(ro.screenshotDir)) std::filesystem::create_directories(ro.screenshotDir);
     ReplayResult result = hg::garden::runReplay(script, session, offscreen.get(), ro);
     for (const std::string& n : result.notes) std::cerr << "note: " << n << "\n";

@@ -196,6 +196,9 @@ garden::Hands Controllers::read(XrSpace space, XrTime time, float floorOffset, b
     const int tool = leftHanded_ ? 0 : 1;
     hands.tool = readHand(tool, space, time, floorOffset);
     hands.navigation = readHand(1 - tool, space, time, floorOffset);
+    // The gesture button: the other hand's trigger held while the tool hand
+    // points and draws (the navigation hand's trigger has no other use).
+    if (hands.navigation.tracked && hands.navigation.trigger > 0.5f) hands.tool.buttons |= garden::kButtonGesture;
     return hands;
 }
 

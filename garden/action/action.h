@@ -110,9 +110,34 @@ struct MaterialAction {
     Material material;
 };
 
+// A deformable model sketched around a sculpture (issue 22,
+// docs/sketching.md "Selections"): the outline as drawn and its plane's
+// normal (the sculpture's model frame), inflated and meshed when applied.
+// It becomes the active model, which circling gestures deform.
+struct ModelAction {
+    std::string name;       // the model's, unique among the session's models
+    std::string sculpture;  // the sculpture it surrounds
+    std::vector<ModelPoint> points;
+    ModelPoint normal{0.0, 0.0, 1.0};
+    double thickness = 1.0;
+};
+// Iterations of a model's snake against its sculpture (shrink-wrap or
+// blow-up); its selection then becomes the sculpture's.
+struct DeformAction {
+    std::string model;
+    bool shrink = true;
+    int iterations = 1;
+};
+// The sculpture's selection set to a model's (`model` "": cleared).
+// Selections are not undone (undo takes back what was made with them).
+struct SelectAction {
+    std::string sculpture;
+    std::string model;
+};
 using Action =
     std::variant<StrokeAction, PerturbAction, UndoAction, RedoAction, DiscardAction, MorphWeightsAction, MoveAction,
-                 ImpactsAction, ReplaceAction, SketchAction, AddAction, MaterialAction>;
+                 ImpactsAction, ReplaceAction, SketchAction, AddAction, MaterialAction, ModelAction, DeformAction,
+                 SelectAction>;
 
 std::string actionKind(const Action& r);
 
@@ -122,5 +147,7 @@ std::string actionJson(const Action& r);
 Action parseAction(const std::string& json, const std::string& path);
 // The same from JSON already read (a replay script's "action" command).
 Action readAction(const nlohmann::json& v, const std::string& path);
+// "shrink" (true) or "grow" (false); throws JsonError otherwise.
+bool readDeformMode(const nlohmann::json& v, const std::string& path);
 
 }  // namespace hg::garden

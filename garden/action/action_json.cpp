@@ -24,6 +24,17 @@ double finite(const nlohmann::json& v, const std::string& path) {
     return d;
 }
 
+}  // namespace
+
+bool readDeformMode(const nlohmann::json& v, const std::string& path) {
+    const std::string m = readString(v, path);
+    if (m == "shrink") return true;
+    if (m == "grow") return false;
+    throw JsonError(path, "expected \"shrink\" or \"grow\", not '" + m + "'");
+}
+
+namespace {
+
 ModelPoint readPoint(const nlohmann::json& v, const std::string& path) {
     const auto p = readVec3(v, path);
     for (std::size_t i = 0; i < 3; ++i)
@@ -71,7 +82,8 @@ Placement readPlacement(ObjectReader& r) {
 
 std::string actionKind(const Action& r) {
     static const char* const names[] = {"stroke", "perturb", "undo",    "redo",    "discard",
-                                        "morph",  "move",    "impacts", "replace", "sketch", "add", "material"};
+                                        "morph",  "move",    "impacts", "replace", "sketch", "add", "material",
+                                        "model",  "deform",  "select"};
     return names[r.index()];
 }
 
@@ -123,6 +135,21 @@ std::string actionJson(const Action& record) {
         j["normal"] = point(k->normal);
         j["thickness"] = k->thickness;
         if (k->mirror) j["mirror"] = mirrorJson(*k->mirror);
+    } else if (const auto* md = std::get_if<ModelAction>(&record)) {
+        j["name"] = md->name;
+        j["sculpture"] = md->sculpture;
+        nlohmann::json points = nlohmann::json::array();
+        for (const ModelPoint& q : md->points) points.push_back(point(q));
+        j["points"] = std::move(points);
+        j["normal"] = point(md->normal);
+        j["thickness"] = md->thickness;
+    } else if (const auto* df = std::get_if<DeformAction>(&record)) {
+        j["model"] = df->model;
+        j["mode"] = df->shrink ? "shrink" : "grow";
+        j["iterations"] = df->iterations;
+    } else if (const auto* se = std::get_if<SelectAction>(&record)) {
+        j["sculpture"] = se->sculpture;
+        j["model"] = se->model;
     } else if (const auto* mv = std::get_if<MoveAction>(&record)) {
         j["sculpture"] = mv->sculpture;
         writePlacement(mv->placement, j);
@@ -303,9 +330,39 @@ Action readAction(const nlohmann::json& v, const std::string& path) {
         r.finish();
         return k;
     }
+    if (action == "model") {
+        ObjectReader r(v, path, {"action", "name", "sculpture", "points", "normal", "thickness"});
+        ModelAction m;
+        m.name = readString(r.required("name"), r.pathOf("name"));
+        m.sculpture = readString(r.required("sculpture"), r.pathOf("sculpture"));
+        const nlohmann::json& points = r.required("points");
+        if (!points.is_array() || points.size() < 3) throw JsonError(r.pathOf("points"), "expected an array of 3 or more points");
+        for (std::size_t i = 0; i < points.size(); ++i) m.points.push_back(readPoint(points[i], indexPath(r.pathOf("points"), i)));
+        m.normal = readPoint(r.required("normal"), r.pathOf("normal"));
+        if (r.has("thickness")) m.thickness = readPositive(r.required("thickness"), r.pathOf("thickness"));
+        r.finish();
+        return m;
+    }
+    if (action == "deform") {
+        ObjectReader r(v, path, {"action", "model", "mode", "iterations"});
+        DeformAction d;
+        d.model = readString(r.required("model"), r.pathOf("model"));
+        d.shrink = readDeformMode(r.required("mode"), r.pathOf("mode"));
+        d.iterations = readInt(r.required("iterations"), r.pathOf("iterations"), 1, 100000);
+        r.finish();
+        return d;
+    }
+    if (action == "select") {
+        ObjectReader r(v, path, {"action", "sculpture", "model"});
+        SelectAction s;
+        s.sculpture = readString(r.required("sculpture"), r.pathOf("sculpture"));
+        s.model = readString(r.required("model"), r.pathOf("model"));
+        r.finish();
+        return s;
+    }
     throw JsonError(childPath(path, "action"), "unknown action '" + action +
                                                    "' (expected stroke, perturb, replace, impacts, undo, redo, discard, "
-                                                   "morph, move, sketch, add or material)");
+                                                   "morph, move, sketch, add, material, model, deform or select)");
 }
 
 }  // namespace hg::garden

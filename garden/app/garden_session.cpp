@@ -7,6 +7,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "garden/gesture/gesture_recognizer.h"
 #include "garden/app/sculpture_loader.h"
 #include "garden/morph/garden_morph.h"
 #include "garden/morph/morph_blend.h"

@@ -22,11 +22,13 @@
 #include <vector>
 
 #include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
 
 #include "garden/app/frame_scheduler.h"
 #include "garden/app/navigator.h"
 #include "garden/app/sculpture.h"
 #include "garden/app/view_sink.h"
+#include "garden/gesture/stroke.h"
 #include "garden/morph/morph_weights.h"
 #include "garden/scene/garden_file.h"
 #include "garden/sculpt/edit.h"
@@ -40,6 +42,8 @@ namespace hg::garden {
 class MorphBlender;
 class SculptureLoader;
 struct MorphSources;
+struct GestureRecognizer;
+namespace deform { class DeformableModel; }
 }  // namespace hg::garden
 namespace hg::voxel {
 struct VolumeRequest;
@@ -84,6 +88,8 @@ struct SessionSettings {
     // Groups of touching chunks are shown whole (a split would show a
     // crack), so a group larger than this is shown alone in its frame.
     std::size_t uploadBytesPerFrame = 0;
+    // The gesture recognizer's weights ("": content/gestures/weights.json).
+    std::string gestureWeights;
 };
 
 // What one frame is given: the hands (world frame), the time since the
@@ -193,6 +199,11 @@ public:
     // `name` ("" : "sketch", made unique) standing where it was drawn.
     ActionOrWhy sketchNewFromWorld(const std::string& name, const std::vector<std::array<double, 3>>& worldPoints,
                                    const std::array<double, 3>& worldNormal, double thickness = 1.0) const;
+    // A deformable model sketched around a sculpture (issue 22): the
+    // outline on its plane (world points, the normal) inflated and meshed,
+    // named `name` ("": "model", made unique among the models).
+    ActionOrWhy modelFromWorld(int sculpture, const std::string& name, const std::vector<std::array<double, 3>>& worldPoints,
+                               const std::array<double, 3>& worldNormal, double thickness = 1.0) const;
     // `wanted` if no sculpture has that name, else the first free `wanted-N`.
     std::string uniqueName(const std::string& wanted) const;
     // A point on the ground `distance` metres ahead of the viewer: where
@@ -255,6 +266,50 @@ public:
     std::string moveSculptureLive(int sculpture, const Placement& placement);
     void endLiveMove();
     bool movingLive() const { return liveMove_ >= 0; }
+    // --- gestures and selections (garden/app/session_gestures.cpp,
+    // session_selection.cpp; docs/sketching.md "Selections") ----------
+    // A stroke in screen pixels (y down) recognized as the gesture button
+    // would: the sketch tool takes the gesture's mode, or a loop deforms
+    // the model in hand (kDeformIterationsPerTurn a turn). "" when it was
+    // a gesture, else why not (also gestureMessage()).
+    std::string applyGesture(const StrokePoints& points);
+    const std::string& gestureMessage() const { return gestureMessage_; }
+    const StrokePoints& gesturePath() const { return gesture_.points; }
+    // The gesture as drawn, a metre along the ray from its hand (for the gizmo).
+    const std::vector<glm::vec3>& gestureTrail() const { return gesture_.trail; }
+    bool gestureDrawing() const { return gesture_.drawing; }
+    // Deformable models: `iterations` of the snake against the model's
+    // sculpture (a DeformAction); the model's selection then becomes the
+    // sculpture's. "" or why not.
+    std::string deformModel(const std::string& model, bool shrink, int iterations);
+    // The selection a model makes now (its balls fitted to its mesh, in
+    // its sculpture's model frame), or why there is none.
+    std::optional<SelectionMask> modelMask(const std::string& model, std::string& why) const;
+    // An extracted part as a new sculpture (garden/export/part_export.h
+    // writes `text`, the part of `from` inside `mask` as HyperFun): named
+    // `name` ("": FROM-part, made unique), in `from`'s model frame and
+    // voxel size, its box the mask's within `from`'s, standing beside it.
+    ActionOrWhy partFromText(int from, const std::string& name, std::string text, const SelectionMask& mask,
+                             const std::string& origin) const;
+    // The sculpture's selection: edits made while it is set act only
+    // inside it. `model` "" clears it (a SelectAction).
+    std::string selectWithModel(const std::string& sculpture, const std::string& model);
+    const std::optional<SelectionMask>& selectionOf(int sculpture) const;
+    // The models: name, the sculpture each surrounds, its mesh (model frame
+    // of that sculpture) for drawing.
+    struct ModelView {
+        std::string name;
+        int sculpture = -1;
+        const std::vector<glm::dvec3>* vertices = nullptr;
+        const std::vector<std::array<std::uint32_t, 3>>* triangles = nullptr;
+        int iterations = 0;
+        bool settled = false;
+    };
+    std::vector<ModelView> models() const;
+    const std::string& activeModel() const { return activeModel_; }
+    static constexpr double kDeformIterationsPerTurn = 20.0;
+    static constexpr int kLiveDeformIterations = 6;
+
     // The sketch tool's outline while the button is held (world points on
     // its plane, garden/app/session_sketching.cpp), for the gizmo; empty
     // otherwise. The last sketch's refusal ("" after one that was made).
@@ -427,6 +482,19 @@ private:
     void moveWithHands(const HandState& h);
     void sketchWithHands(const HandState& h);
     void recordMorph();
+    // Gestures (session_gestures.cpp) and models (session_selection.cpp).
+    const GestureRecognizer* recognizer();
+    void gestureWithHands(const HandState& h);
+    void circleLive();
+    void deformLiveStep();
+    bool deformModelLive(const std::string& model, bool shrink, int iterations);
+    void commitLiveDeform();
+    std::string applyModelAction(const ModelAction& a);
+    std::string applyDeformAction(const DeformAction& a);
+    std::string applySelectAction(const SelectAction& a);
+    // The selection edit `e` of `sculpture` is made with now (none: off),
+    // its box grown by the edit's reach beyond the balls (its floor).
+    std::optional<SelectionMask> maskFor(int sculpture, const Edit& e) const;
 
     GardenLoad load_;
     SessionSettings settings_;
@@ -477,6 +545,45 @@ private:
     };
     SketchDraw sketch_;
     std::string sketchMessage_;
+    // The gesture under way: its projection frame and points; circling: a
+    // loop recognized in deform mode, deforming the active model as it goes.
+    struct GestureDraw {
+        bool drawing = false;
+        glm::vec3 forward{0.0f, 0.0f, -1.0f}, right{1.0f, 0.0f, 0.0f}, up{0.0f, 1.0f, 0.0f};
+        StrokePoints points;
+        std::vector<glm::vec3> trail;
+        bool circling = false;
+        bool shrink = true;
+        double owed = 0.0;  // iterations the circling has earned and not run
+    };
+    GestureDraw gesture_;
+    std::string gestureMessage_;
+    std::unique_ptr<GestureRecognizer> gestureRecognizer_;
+    // Deformable models, in the order made.
+    struct ModelEntry {
+        std::string name;
+        std::string sculpture;
+        std::unique_ptr<deform::DeformableModel> model;
+        ModelEntry();
+        ~ModelEntry();
+        ModelEntry(ModelEntry&&) noexcept;
+        ModelEntry& operator=(ModelEntry&&) noexcept;
+    };
+    std::vector<ModelEntry> models_;
+    std::string activeModel_;  // the model circling deforms: the last made
+    // Iterations run live on the active model, not yet journalled.
+    struct LiveDeform {
+        std::string model;
+        bool shrink = true;
+        int iterations = 0;
+    };
+    LiveDeform liveDeform_;
+    ModelEntry* findModel(const std::string& name);
+    const ModelEntry* findModel(const std::string& name) const;
+    // The model's sculpture (its index), or why it cannot be deformed against.
+    int modelSculpture(const ModelEntry& m, std::string& why) const;
+    // The model's selection made its sculpture's.
+    void selectModel(const ModelEntry& m);
     std::string toolMessage_;  // toolMessage()
     int liveMove_ = -1;                // the sculpture moved live, or -1
     Placement liveMoveFrom_;           // its placement before the drag

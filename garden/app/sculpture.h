@@ -46,6 +46,9 @@ struct Sculpture {
     std::string error;                 // non-empty: missing (shown as such), no caches
     Placement placement;               // where it stands in the garden
     std::optional<MirrorPlane> mirror; // strokes act on both sides of it (model frame)
+    // The selection edits act inside (a deformable model's, by name): none, everywhere.
+    std::optional<SelectionMask> selection;
+    std::string selectionModel;
     Material material;
     glm::mat4 modelToWorld{1.0f};      // the placement as a matrix
     double scale = 1.0;                // metres per model unit

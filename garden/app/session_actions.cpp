@@ -76,6 +76,9 @@ std::string GardenSession::apply(const Action& action) {
         return why.empty() ? applySketchModel(i, *a) : why;
     }
     if (const auto* a = std::get_if<AddAction>(&action)) return applyAddModel(*a);
+    if (const auto* a = std::get_if<ModelAction>(&action)) return applyModelAction(*a);
+    if (const auto* a = std::get_if<DeformAction>(&action)) return applyDeformAction(*a);
+    if (const auto* a = std::get_if<SelectAction>(&action)) return applySelectAction(*a);
     if (const auto* u = std::get_if<UndoAction>(&action)) {
         if (u->sculpture.empty()) return undo() ? "" : "nothing to undo";
         const int i = findSculpture(u->sculpture);

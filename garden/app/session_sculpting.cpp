@@ -138,6 +138,7 @@ std::string GardenSession::startStroke(int sculpture, Stroke stroke) {
     extendStrokeSegments(stroke, 0, edits.units());
     Edit e;
     e.op = std::move(stroke);
+    e.mask = maskFor(sculpture, e);
     showChanged(sculpture, edits.append(std::move(e)));
     strokeSculpture_ = sculpture;
     // The entry's action is the whole stroke once it ends (endStroke).
@@ -220,6 +221,7 @@ std::string GardenSession::applySketchModel(int sculpture, const SketchAction& a
 }
 
 void GardenSession::appendEdit(int sculpture, Edit e, const Action& done) {
+    e.mask = maskFor(sculpture, e);
     showChanged(sculpture, editsOf(sculpture).append(std::move(e)));
     undoOrder_.push_back(UndoEntry{sculpture, done, std::nullopt, std::nullopt, std::nullopt});
     redoOrder_.clear();
@@ -257,6 +259,7 @@ std::string GardenSession::replacePerturbationModel(int sculpture, std::size_t e
     const Perturbation before = *old;
     Edit e;
     e.op = p;
+    e.mask = s.edits->list().edits()[edit].mask;  // made inside a selection, it stays there
     Edit replaced;
     showChanged(sculpture, s.edits->replace(edit, std::move(e), replaced));
     const ReplaceAction done{s.name, edit, p};
@@ -405,6 +408,14 @@ void GardenSession::sculptWithHands(const Hands& hands) {
     lastButtons_ = h.buttons;
     if (pressedNow & kButtonUndo) undo();
     if (pressedNow & kButtonRedo) redo();
+    // The gesture button takes the tool hand's ray while it is held.
+    const bool gesturing = gesture_.drawing;
+    gestureWithHands(h);
+    deformLiveStep();
+    if (gesturing || gesture_.drawing) {
+        if (stroking()) endStroke();
+        return;
+    }
     if (tool_.kind == ToolSettings::Kind::Move) {
         moveWithHands(h);
         return;

@@ -34,6 +34,15 @@ void GardenSession::sketchWithHands(const HandState& h) {
         if (!toolArmed_) return;  // one sketch per press
         toolArmed_ = false;
         const auto hit = toolHit(h.aim);
+        const auto use = tool_.sketchUse;
+        if (!hit && (use == ToolSettings::SketchUse::Join || use == ToolSettings::SketchUse::Cut)) {
+            sketchMessage_ = "begin the outline on a sculpture: it is joined to or cut from the one it starts on";
+            return;
+        }
+        if (!hit && use == ToolSettings::SketchUse::Model && selected_ < 0) {
+            sketchMessage_ = "begin the model's outline on a sculpture, or select one first";
+            return;
+        }
         sketch_.drawing = true;
         sketch_.sculpture = hit ? hit->first : -1;
         sketch_.origin = hit ? hit->second : h.aim.position + kAirSketchDistance * h.aim.forward();
@@ -58,14 +67,22 @@ void GardenSession::sketchWithHands(const HandState& h) {
     sketch_ = SketchDraw{};
     std::vector<std::array<double, 3>> points;
     for (const glm::vec3& p : done.points) points.push_back({p.x, p.y, p.z});
-    if (done.sculpture < 0) {
-        const ActionOrWhy a = sketchNewFromWorld("", points, {done.normal.x, done.normal.y, done.normal.z});
+    const std::array<double, 3> normal{done.normal.x, done.normal.y, done.normal.z};
+    using Use = ToolSettings::SketchUse;
+    if (tool_.sketchUse == Use::Model) {
+        const int around = done.sculpture >= 0 ? done.sculpture : selected_;
+        const ActionOrWhy a = modelFromWorld(around, "", points, normal);
+        sketchMessage_ = a.action ? apply(*a.action) : a.why;
+        return;
+    }
+    if (done.sculpture < 0 || tool_.sketchUse == Use::New) {
+        const ActionOrWhy a = sketchNewFromWorld("", points, normal);
         sketchMessage_ = a.action ? apply(*a.action) : a.why;
         if (sketchMessage_.empty()) select(static_cast<int>(sculptures_.size()) - 1);
         return;
     }
-    sketchMessage_ = applySketch(done.sculpture, tool_.reverse ? SketchMode::Cut : SketchMode::Add, points,
-                                 {done.normal.x, done.normal.y, done.normal.z});
+    const bool cut = (tool_.sketchUse == Use::Cut) != tool_.reverse;
+    sketchMessage_ = applySketch(done.sculpture, cut ? SketchMode::Cut : SketchMode::Add, points, normal);
 }
 
 }  // namespace hg::garden

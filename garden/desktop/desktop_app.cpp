@@ -411,6 +411,7 @@ int runDesktopOn(GardenSession& session, GardenWindow& gardenWindow, const Deskt
             // A release lost to the window (focus taken mid-drag) leaves no button stuck.
             pointer.toolDown = pointer.toolDown && glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
             pointer.lookDown = pointer.lookDown && glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS;
+            pointer.gestureDown = pointer.gestureDown && glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_MIDDLE) == GLFW_PRESS;
             const glm::ivec2 ws = window.size();
             // Mouse in framebuffer pixels (HiDPI: window and framebuffer differ).
             const glm::vec2 toFb(static_cast<float>(fb.x) / static_cast<float>(std::max(ws.x, 1)),

@@ -27,8 +27,13 @@ void onCursor(GLFWwindow* w, double x, double y) {
 }
 
 void onMouseButton(GLFWwindow* w, int button, int action, int) {
-    if (button != GLFW_MOUSE_BUTTON_LEFT && button != GLFW_MOUSE_BUTTON_RIGHT) return;
-    const PointerButton b = button == GLFW_MOUSE_BUTTON_LEFT ? PointerButton::Tool : PointerButton::Look;
+    PointerButton b = PointerButton::Tool;
+    switch (button) {
+        case GLFW_MOUSE_BUTTON_LEFT: b = PointerButton::Tool; break;
+        case GLFW_MOUSE_BUTTON_RIGHT: b = PointerButton::Look; break;
+        case GLFW_MOUSE_BUTTON_MIDDLE: b = PointerButton::Gesture; break;
+        default: return;
+    }
     const auto kind = action == GLFW_PRESS ? PointerEvent::Kind::Press : PointerEvent::Kind::Release;
     eventsOf(w)->pointer.push_back({kind, b, cursorOf(w)});
 }

@@ -221,7 +221,7 @@ std::string morphBodies(const GardenSession& session, const std::string& name, s
     return out;
 }
 
-HyperFunExport exportOrThrow(const GardenSession& session, int index) {
+HyperFunExport exportOrThrow(const GardenSession& session, int index, const SelectionMask* part) {
     HyperFunExport r;
     if (index < 0 || index >= static_cast<int>(session.sculptures().size()))
         throw std::runtime_error("no sculpture with index " + std::to_string(index));
@@ -229,7 +229,9 @@ HyperFunExport exportOrThrow(const GardenSession& session, int index) {
     if (s.removed) throw std::runtime_error("sculpture '" + s.name + "' was removed");
     if (s.missing()) throw std::runtime_error("sculpture '" + s.name + "' is missing: " + s.error);
     if (!s.volume) throw std::runtime_error("sculpture '" + s.name + "' has no grid");
-    const bool edited = s.edits && !s.edits->list().empty();
+    // A part is written as an edited sculpture is, in voxels, then cut to the mask.
+    const bool edited = (s.edits && !s.edits->list().empty()) || part;
+    const FieldUnits units = s.edits ? s.edits->units() : unitsOf(*s.volume);
     const voxel::VolumeFrame& frame = s.volume->frame;
 
     std::ostringstream head;
@@ -248,8 +250,11 @@ HyperFunExport exportOrThrow(const GardenSession& session, int index) {
         head << "-- Unedited: my_model " << (s.morphResult() ? "is the morph's blend" : "evaluates as the source body")
              << ".\n";
     else
-        head << "-- Edited: my_model is the grid's field in voxels, clamped to +-" << num(s.edits->units().band)
-             << ",\n--   after " << s.edits->list().size() << " edits, in order.\n";
+        head << "-- Edited: my_model is the grid's field in voxels, clamped to +-" << num(units.band)
+             << ",\n--   after " << (s.edits ? s.edits->list().size() : 0) << " edits, in order.\n";
+    if (part)
+        head << "-- A part: the sculpture inside a selection of " << part->balls.size()
+             << " balls (min with the balls' field in voxels).\n";
     std::string out = head.str() + "\n";
 
     std::string base;  // the body the edits start from
@@ -281,18 +286,24 @@ HyperFunExport exportOrThrow(const GardenSession& session, int index) {
             r.statements = w.st.statementCount();
             return r;
         }
-        const double normalization = s.edits->base().normalization;
+        const double normalization = s.edits ? s.edits->base().normalization : s.volume->normalization;
         w.st.comment("the grid's field: clamp(f * " + num(normalization) + ", -band, band), in voxels");
-        f = normalizedSourceField(f, normalization, s.edits->units().band);
+        f = normalizedSourceField(f, normalization, units.band);
     }
     const HfText x = HfText::named(w.st, "x[1]"), y = HfText::named(w.st, "x[2]"), z = HfText::named(w.st, "x[3]");
-    const EditList& edits = s.edits->list();
-    for (const EditPick& pick : edits.all()) {
-        const Edit& e = edits.edits()[pick.edit];
-        w.st.comment(describeEdit(e));
-        f = applyEdit(f, x, y, z, e, pick.pieces, edits.units());
-        ++r.edits;
-        r.pieces += pick.pieces.size();
+    if (s.edits) {
+        const EditList& edits = s.edits->list();
+        for (const EditPick& pick : edits.all()) {
+            const Edit& e = edits.edits()[pick.edit];
+            w.st.comment(describeEdit(e));
+            f = applyEdit(f, x, y, z, e, pick.pieces, edits.units());
+            ++r.edits;
+            r.pieces += pick.pieces.size();
+        }
+    }
+    if (part) {
+        w.st.comment("inside the selection");
+        f = insideMask(f, x, y, z, *part, units);
     }
     out += "-- the edited sculpture\n";
     out += w.finish("my_model", f);
@@ -307,9 +318,19 @@ HyperFunExport exportOrThrow(const GardenSession& session, int index) {
 
 }  // namespace
 
+HyperFunExport exportHyperFunPart(const GardenSession& session, int sculpture, const SelectionMask& mask) {
+    try {
+        return exportOrThrow(session, sculpture, &mask);
+    } catch (const std::exception& e) {
+        HyperFunExport r;
+        r.error = e.what();
+        return r;
+    }
+}
+
 HyperFunExport exportHyperFun(const GardenSession& session, int sculpture) {
     try {
-        return exportOrThrow(session, sculpture);
+        return exportOrThrow(session, sculpture, nullptr);
     } catch (const std::exception& e) {
         HyperFunExport r;
         r.error = e.what();

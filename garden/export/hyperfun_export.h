@@ -22,6 +22,8 @@
 
 namespace hg::garden {
 
+struct SelectionMask;
+
 class GardenSession;
 
 struct HyperFunExport {
@@ -38,6 +40,11 @@ struct HyperFunExport {
 
 // The sculpture with index `sculpture` in session.sculptures().
 HyperFunExport exportHyperFun(const GardenSession& session, int sculpture);
+
+// The part of sculpture `sculpture` inside `mask` (an extraction,
+// garden/export/part_export.h): its field in voxels, then min with the
+// mask's balls' field.
+HyperFunExport exportHyperFunPart(const GardenSession& session, int sculpture, const SelectionMask& mask);
 
 // A finished export's text written to `path` atomically (a failure leaves
 // no file): "" on success, else why not.

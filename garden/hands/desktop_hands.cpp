@@ -26,6 +26,7 @@ Pose rayThroughPixel(glm::vec2 pixel, glm::vec2 viewport, const glm::mat4& view,
 void applyPointer(DesktopInput& in, const PointerFrame& p, glm::vec2 windowToFramebuffer, bool free) {
     in.toolButton = free && p.toolButton;
     in.lookButton = free && p.lookButton;
+    in.gestureButton = free && p.gestureButton;
     in.mouse = p.toolPosition * windowToFramebuffer;
     in.mouseDelta = p.lookDelta;
 }
@@ -49,6 +50,7 @@ Hands mapDesktop(const DesktopInput& in, const glm::mat4& view, const glm::mat4&
     if (in.undo) h.tool.buttons |= kButtonUndo;
     if (in.redo) h.tool.buttons |= kButtonRedo;
     if (in.turn) h.tool.buttons |= kButtonSecondary;
+    if (in.gestureButton) h.tool.buttons |= kButtonGesture;
 
     if (in.lookButton) h.look = glm::vec2(in.mouseDelta.x, -in.mouseDelta.y) * m.lookRadiansPerPixel;
     h.speedScale = previousSpeedScale * std::pow(m.speedStep, in.wheel);

@@ -22,6 +22,7 @@ struct DesktopInput {
     bool forward = false, back = false, left = false, right = false, up = false, down = false;
     bool lookButton = false;   // right button held
     bool toolButton = false;   // left button held
+    bool gestureButton = false;  // middle button held: the mouse draws a gesture
     bool flyToggle = false, orbitToggle = false, undo = false, redo = false;  // pressed this frame
     bool turn = false;         // Shift held
     glm::vec2 mouse{0.0f};     // pixels, origin top-left

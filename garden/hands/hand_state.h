@@ -38,6 +38,10 @@ enum HandButton : std::uint32_t {
     kButtonThumbstick = 1u << 3,  // stick click: fly / walk toggle
     kButtonUndo = 1u << 4,
     kButtonRedo = 1u << 5,
+    // Held, the tool hand's aim draws a gesture (issue 22, garden/app/session_gestures.cpp)
+    // instead of working the tool: the desktop's middle button, the headset's
+    // navigation-hand trigger.
+    kButtonGesture = 1u << 6,
 };
 
 struct HandState {

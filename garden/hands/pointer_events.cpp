@@ -4,7 +4,7 @@ namespace hg::garden {
 
 PointerFrame foldPointerEvents(const std::vector<PointerEvent>& events, PointerState& state) {
     PointerFrame f;
-    bool toolPressed = false, lookPressed = false;
+    bool toolPressed = false, lookPressed = false, gesturePressed = false;
     for (const PointerEvent& e : events) {
         switch (e.kind) {
             case PointerEvent::Kind::Move:
@@ -21,6 +21,9 @@ PointerFrame foldPointerEvents(const std::vector<PointerEvent>& events, PointerS
                         f.toolPosition = e.position;
                     }
                     state.toolDown = down;
+                } else if (e.button == PointerButton::Gesture) {
+                    gesturePressed = gesturePressed || down;
+                    state.gestureDown = down;
                 } else {
                     lookPressed = lookPressed || down;
                     state.lookDown = down;
@@ -32,6 +35,7 @@ PointerFrame foldPointerEvents(const std::vector<PointerEvent>& events, PointerS
     f.toolPressed = toolPressed;
     f.toolButton = state.toolDown || toolPressed;
     f.lookButton = state.lookDown || lookPressed;
+    f.gestureButton = state.gestureDown || gesturePressed;
     if (!toolPressed) f.toolPosition = state.position;
     return f;
 }

@@ -11,7 +11,7 @@
 
 namespace hg::garden {
 
-enum class PointerButton { Tool, Look };  // the left and the right button
+enum class PointerButton { Tool, Look, Gesture };  // the left, right and middle button
 
 struct PointerEvent {
     enum class Kind { Move, Press, Release } kind = Kind::Move;
@@ -21,7 +21,7 @@ struct PointerEvent {
 
 // What the buttons and the mouse were at the end of the last frame.
 struct PointerState {
-    bool toolDown = false, lookDown = false;
+    bool toolDown = false, lookDown = false, gestureDown = false;
     glm::vec2 position{0.0f};
 };
 
@@ -29,7 +29,7 @@ struct PointerState {
 struct PointerFrame {
     // Held this frame: down at its end, or pressed during it (a click
     // shorter than a frame is one frame of held, then released).
-    bool toolButton = false, lookButton = false;
+    bool toolButton = false, lookButton = false, gestureButton = false;
     bool toolPressed = false;    // a tool press came this frame
     glm::vec2 toolPosition{0.0f};  // where the tool points: the press's place in the frame of a press, else the end
     glm::vec2 lookDelta{0.0f};     // moves made while the look button was down (not those before its press)

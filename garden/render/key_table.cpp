@@ -29,6 +29,10 @@ std::vector<KeyRow> makeTable() {
          {{GLFW_KEY_W, 0, C::Forward}, {GLFW_KEY_A, 0, C::Left}, {GLFW_KEY_S, 0, C::Back}, {GLFW_KEY_D, 0, C::Right},
           {GLFW_KEY_Q, 0, C::Down}, {GLFW_KEY_E, 0, C::Up}}},
         {"right button drag", "look", {}},
+        {"middle button drag",
+         "draw a gesture: V sketch a new sculpture, U join, arch cut, Z select (the next sketch is a model to shrink onto "
+         "a sculpture); while selecting, circle clockwise to shrink the model, counter-clockwise to grow it",
+         {}},
         {"wheel",
          "walking speed; with the move tool and a selection, the selection's scale (notches less than 0.4 s apart: one "
          "undo step)",

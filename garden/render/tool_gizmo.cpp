@@ -240,8 +240,28 @@ void drawToolGizmos(Renderer& renderer, const GardenSession& session, const std:
     if (aim && hit && tool.kind != ToolSettings::Kind::None && tool.kind != ToolSettings::Kind::Move)
         for (GizmoLines& l : toolGizmo(tool, *hit, aim->position, aim->forward(), session.navigator().eye()))
             lines.push_back(std::move(l));
-    // The outline being sketched, as drawn so far.
+    // The outline being sketched, as drawn so far; the gesture as drawn.
     if (session.sketchPath().size() >= 2) addSeeThrough(lines, session.sketchPath(), toolColor(tool), LineMode::Strip);
+    if (session.gestureTrail().size() >= 2)
+        lines.push_back({session.gestureTrail(), LineMode::Strip, glm::vec4(0.6f, 0.85f, 1.0f, 1.0f), true});
+    // Deformable models as wireframes (the active one brighter): each
+    // triangle's edges once, in the garden's frame.
+    for (const GardenSession::ModelView& m : session.models()) {
+        if (m.sculpture < 0 || !session.sculptures()[static_cast<std::size_t>(m.sculpture)].onShow()) continue;
+        const glm::mat4& toWorld = session.sculptures()[static_cast<std::size_t>(m.sculpture)].modelToWorld;
+        std::vector<glm::vec3> segments;
+        segments.reserve(m.triangles->size() * 6);
+        const auto at = [&](std::uint32_t v) { return glm::vec3(toWorld * glm::vec4(glm::vec3((*m.vertices)[v]), 1.0f)); };
+        for (const auto& t : *m.triangles)
+            for (int e = 0; e < 3; ++e)
+                if (t[static_cast<std::size_t>(e)] < t[static_cast<std::size_t>((e + 1) % 3)]) {
+                    segments.push_back(at(t[static_cast<std::size_t>(e)]));
+                    segments.push_back(at(t[static_cast<std::size_t>((e + 1) % 3)]));
+                }
+        const bool active = m.name == session.activeModel();
+        addSeeThrough(lines, std::move(segments), active ? glm::vec4(0.3f, 0.9f, 1.0f, 1.0f) : glm::vec4(0.3f, 0.6f, 0.7f, 0.8f),
+                      LineMode::Segments);
+    }
     // Depth-tested lines first, then what shows over everything.
     for (const GizmoLines& l : lines)
         if (!l.overEverything) renderer.drawLines(l.points, l.color, l.mode, true);

@@ -11,6 +11,7 @@
 
 #include "garden/app/garden_session.h"
 #include "garden/app/sculpture_gizmos.h"
+#include "garden/export/part_export.h"
 #include "garden/render/panels.h"
 #include "garden/render/tool_panel.h"
 #include "garden/scene/materials.h"
@@ -164,8 +165,16 @@ void toolParameters(ToolSettings& t, const ToolWidgetLook& look) {
         case Kind::Melt: changed = strokeParameters(t, look); break;
         case Kind::Perturb: changed = perturbParameters(t, look); break;
         case Kind::Impacts: changed = impactParameters(t, look); break;
+        case Kind::Sketch: {
+            static const char* const kUses[] = {"auto", "new", "join", "cut", "model"};
+            chooseEnum("makes", t.sketchUse, kUses, look);
+            if (ImGui::IsItemHovered())
+                ImGui::SetTooltip("what the next outline makes (the gestures choose it too: V new, U join, arch cut, "
+                                  "Z model):\nauto: joined to the sculpture it starts on, a new one when begun in "
+                                  "the air\nmodel: a deformable model to shrink onto a sculpture, making a selection");
+            break;
+        }
         case Kind::Move:
-        case Kind::Sketch:
         case Kind::None: break;
     }
     // Whatever was typed or dragged stays within the bounds the keys, the
@@ -174,6 +183,42 @@ void toolParameters(ToolSettings& t, const ToolWidgetLook& look) {
     // Melt and impacts have no reverse.
     if (t.kind == Kind::Carve || t.kind == Kind::Add || t.kind == Kind::Perturb || t.kind == Kind::Sketch)
         ImGui::Checkbox(keyed("reverse (R)", "reverse", look), &t.reverse);
+}
+
+// The sculpture's deformable models and selection (issue 22): the active
+// model deformed by buttons as by circling gestures, the selection on or
+// off, and the selected part extracted as a sculpture of its own.
+void selectionOfModel(GardenSession& session, int selected, const ToolWidgetLook& look) {
+    const Sculpture& s = session.sculptures()[static_cast<std::size_t>(selected)];
+    const auto models = session.models();
+    const auto active = std::find_if(models.begin(), models.end(), [&](const GardenSession::ModelView& m) {
+        return m.name == session.activeModel() && m.sculpture == selected;
+    });
+    if (active != models.end()) {
+        ImGui::Text("model '%s': %d iterations%s", active->name.c_str(), active->iterations,
+                    active->settled ? ", settled" : "");
+        const int step = static_cast<int>(GardenSession::kDeformIterationsPerTurn);
+        if (ImGui::Button("shrink")) session.deformModel(active->name, true, step);
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("shrink-wrap the model onto the sculpture (as circling clockwise)");
+        ImGui::SameLine();
+        if (ImGui::Button("grow")) session.deformModel(active->name, false, step);
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("blow the model up to the surface (as circling counter-clockwise)");
+    }
+    // Why the last extraction failed, for the sculpture it was tried on.
+    static std::string extractProblem;
+    static std::string extractProblemOf;
+    if (!s.selection) return;
+    ImGui::Text("selection: '%s' (%zu balls)", s.selectionModel.c_str(), s.selection->balls.size());
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("edits of this sculpture act only inside the selection");
+    if (ImGui::Button("clear selection", ImVec2(look.choiceWidth, 0.0f))) session.selectWithModel(s.name, "");
+    ImGui::SameLine();
+    if (ImGui::Button("extract")) {
+        extractProblem = extractPart(session, s.name, s.selectionModel, "");
+        extractProblemOf = s.name;
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("the part inside the selection as a new sculpture beside this one");
+    if (!extractProblem.empty() && extractProblemOf == s.name)
+        ImGui::TextColored(ImVec4(1.0f, 0.6f, 0.3f, 1.0f), "%s", extractProblem.c_str());
 }
 
 void selectionSection(GardenSession& session, const ToolWidgetLook& look) {
@@ -200,6 +245,7 @@ void selectionSection(GardenSession& session, const ToolWidgetLook& look) {
                                           : "back to the unedited sculpture; undo (Ctrl+Z) puts the edits back");
     ImGui::SameLine();
     ImGui::Text("%zu edit%s", edits, edits == 1 ? "" : "s");
+    selectionOfModel(session, selected, look);
     materialChoice(session, selected, look);
     ImGui::TextDisabled("at (%.2f, %.2f, %.2f) m\nturned %.0f deg, scale %.3g", s.placement.position[0],
                         s.placement.position[1], s.placement.position[2], s.placement.yawDegrees, s.placement.scale);
@@ -230,6 +276,9 @@ void drawToolPanel(GardenSession& session) {
             ImGui::TextDisabled("the left button picks the blend\non the ground triangle");
         else if (t.kind == Kind::Sketch) {
             ImGui::TextDisabled("hold the button on a sculpture\nand draw round; let go: %s", t.reverse ? "cut" : "joined");
+            ImGui::TextDisabled("middle button: draw a gesture");
+            if (!session.gestureMessage().empty())
+                ImGui::TextColored(ImVec4(0.6f, 0.85f, 1.0f, 1.0f), "%s", session.gestureMessage().c_str());
             if (!session.sketchMessage().empty())
                 ImGui::TextColored(ImVec4(1.0f, 0.6f, 0.3f, 1.0f), "%s", session.sketchMessage().c_str());
         } else if (!session.toolMessage().empty()) {

@@ -31,6 +31,12 @@ std::string apply(const ReplayCommand& c, GardenSession& s, FrameRenderer* rende
         shotsThisFrame.push_back(screenshotPath(o, c.text));
         return "";
     }
+    if (c.kind == ReplayCommand::Kind::Sculpt)
+        if (const auto* x = std::get_if<ExtractCommand>(&c.sculpt)) {
+            if (!o.extractor) return "extract: this program cannot extract from a replay";
+            if (std::string why = o.extractor(s, x->from, x->by, x->name); !why.empty()) return "extract: " + why;
+            return "";
+        }
     if (c.kind == ReplayCommand::Kind::Export) {
         const int i = c.text.empty() ? s.selected() : s.findSculpture(c.text);
         if (i < 0)
@@ -96,6 +102,11 @@ std::string runSculptCommand(const SculptCommand& command, GardenSession& sessio
     if (const auto* a = std::get_if<ActionCommand>(&command)) return session.apply(a->action);
     if (const auto* c = std::get_if<SketchCommand>(&command)) {
         const int s = session.findSculpture(c->sculpture);
+        if (c->model) {
+            if (s < 0) return "no sculpture named '" + c->sculpture + "'";
+            const auto a = session.modelFromWorld(s, c->modelName, c->points, c->normal, c->thickness);
+            return a.action ? session.apply(*a.action) : a.why;
+        }
         if (c->newSculpture) {
             const auto a = session.sketchNewFromWorld(c->sculpture, c->points, c->normal, c->thickness);
             return a.action ? session.apply(*a.action) : a.why;
@@ -103,6 +114,17 @@ std::string runSculptCommand(const SculptCommand& command, GardenSession& sessio
         if (s < 0) return "no sculpture named '" + c->sculpture + "'";
         return session.applySketch(s, c->mode, c->points, c->normal, c->thickness);
     }
+    if (const auto* c = std::get_if<DeformCommand>(&command)) {
+        if (session.findSculpture(c->sculpture) < 0) return "no sculpture named '" + c->sculpture + "'";
+        const auto models = session.models();
+        const auto m = std::find_if(models.begin(), models.end(), [&](const auto& v) { return v.name == c->model; });
+        if (m != models.end() && m->sculpture != session.findSculpture(c->sculpture))
+            return "model '" + c->model + "' does not surround '" + c->sculpture + "'";
+        return session.deformModel(c->model, c->shrink, c->iterations);
+    }
+    if (std::holds_alternative<ExtractCommand>(command))
+        return "extract: this program cannot extract from a replay";  // the caller's (runReplay's options)
+    if (const auto* c = std::get_if<GestureCommand>(&command)) return session.applyGesture(c->points);
     if (const auto* c = std::get_if<AddCommand>(&command)) {
         Placement p;
         p.position = c->position ? *c->position : session.placeInView(3.0);

@@ -29,10 +29,16 @@ public:
 using ReplayExporter = std::function<std::string(const GardenSession& session, int index, const std::string& path,
                                                  int resolution, std::string& summary)>;
 
+// What an {"extract": ...} command calls (garden/export writes the part:
+// `hypergarden replay` passes extractPart): "" or why not.
+using ReplayExtractor = std::function<std::string(GardenSession& session, const std::string& from,
+                                                  const std::string& model, const std::string& name)>;
+
 struct ReplayOptions {
     int screenshotEvery = 0;         // also a screenshot every N frames (0: only the script's)
     std::string screenshotDir = ".";  // where screenshots go (relative names)
     ReplayExporter exporter;         // none: an export command fails, saying so
+    ReplayExtractor extractor;       // none: an extract command fails, saying so
 };
 
 struct ReplayResult {

@@ -37,7 +37,7 @@ std::uint32_t readButtons(const nlohmann::json& v, const std::string& path) {
     if (!v.is_array()) throw JsonError(path, "expected an array of button names");
     std::uint32_t bits = 0;
     const std::vector<std::pair<std::string, HandButton>> names = {
-        {"primary", kButtonPrimary}, {"secondary", kButtonSecondary}, {"menu", kButtonMenu},
+        {"primary", kButtonPrimary}, {"secondary", kButtonSecondary}, {"menu", kButtonMenu}, {"gesture", kButtonGesture},
         {"thumbstick", kButtonThumbstick}, {"undo", kButtonUndo}, {"redo", kButtonRedo}};
     for (std::size_t i = 0; i < v.size(); ++i) {
         const std::string name = readString(v[i], indexPath(path, i));
@@ -125,10 +125,10 @@ ReplayCommand readCommand(const nlohmann::json& v, const std::string& path) {
     if (!v.is_object() || v.size() != 1)
         throw JsonError(path, "expected an object with one command: morph, morph_weights, screenshot, detail, pose, select, "
                               "orbit, budget_ms, stroke, perturb, edit_perturbation, impacts, reapply_impacts, undo, redo, sculpt_tool, "
-                              "action, sketch, add or export");
+                              "action, sketch, add, deform, extract, gesture or export");
     ReplayCommand c;
     for (const char* key :
-         {"stroke", "perturb", "edit_perturbation", "impacts", "reapply_impacts", "undo", "redo", "sculpt_tool", "action", "sketch", "add"})
+         {"stroke", "perturb", "edit_perturbation", "impacts", "reapply_impacts", "undo", "redo", "sculpt_tool", "action", "sketch", "add", "deform", "extract", "gesture"})
         if (v.contains(key)) {
             c.kind = ReplayCommand::Kind::Sculpt;
             c.sculpt = readSculptCommand(key, v.at(key), childPath(path, key));
@@ -136,7 +136,7 @@ ReplayCommand readCommand(const nlohmann::json& v, const std::string& path) {
         }
     ObjectReader r(v, path, {"morph", "morph_weights", "screenshot", "detail", "pose", "select", "orbit", "budget_ms",
                              "stroke", "perturb", "edit_perturbation", "impacts", "reapply_impacts", "undo", "redo",
-                             "sculpt_tool", "action", "sketch", "add", "export"});
+                             "sculpt_tool", "action", "sketch", "add", "deform", "extract", "gesture", "export"});
     if (const auto* m = r.optional("morph")) {
         c.kind = ReplayCommand::Kind::Morph;
         const auto xz = readVec2(*m, r.pathOf("morph"));

@@ -71,17 +71,51 @@ SculptCommand readSculptCommand(const std::string& key, const nlohmann::json& v,
     }
     if (key == "action") return ActionCommand{readAction(v, path)};
     if (key == "sketch") {
-        ObjectReader r(v, path, {"sculpture", "mode", "points", "normal", "thickness"});
+        ObjectReader r(v, path, {"sculpture", "mode", "points", "normal", "thickness", "model"});
         SketchCommand c;
         c.sculpture = readString(r.required("sculpture"), r.pathOf("sculpture"));
         const nlohmann::json& mode = r.required("mode");
         c.newSculpture = mode.is_string() && mode.get<std::string>() == "new";
-        if (!c.newSculpture) c.mode = readSketchMode(mode, r.pathOf("mode"));
+        c.model = mode.is_string() && mode.get<std::string>() == "model";
+        if (c.model) c.modelName = readString(r.required("model"), r.pathOf("model"));
+        else if (r.has("model")) throw JsonError(r.pathOf("model"), "a model name goes with mode \"model\" only");
+        if (!c.newSculpture && !c.model) c.mode = readSketchMode(mode, r.pathOf("mode"));
         const nlohmann::json& p = r.required("points");
         if (!p.is_array() || p.size() < 3) throw JsonError(r.pathOf("points"), "expected an array of 3 or more [x, y, z] points");
         for (std::size_t i = 0; i < p.size(); ++i) c.points.push_back(readVec3(p[i], indexPath(r.pathOf("points"), i)));
         c.normal = readVec3(r.required("normal"), r.pathOf("normal"));
         if (r.has("thickness")) c.thickness = readNumber(r.required("thickness"), r.pathOf("thickness"), 0.05, 20.0);
+        r.finish();
+        return c;
+    }
+    if (key == "deform") {
+        ObjectReader r(v, path, {"sculpture", "model", "mode", "iterations"});
+        DeformCommand c;
+        c.sculpture = readString(r.required("sculpture"), r.pathOf("sculpture"));
+        c.model = readString(r.required("model"), r.pathOf("model"));
+        c.shrink = readDeformMode(r.required("mode"), r.pathOf("mode"));
+        c.iterations = readInt(r.required("iterations"), r.pathOf("iterations"), 1, 100000);
+        r.finish();
+        return c;
+    }
+    if (key == "extract") {
+        ObjectReader r(v, path, {"from", "by", "name"});
+        ExtractCommand c;
+        c.from = readString(r.required("from"), r.pathOf("from"));
+        c.by = readString(r.required("by"), r.pathOf("by"));
+        if (r.has("name")) c.name = readString(r.required("name"), r.pathOf("name"));
+        r.finish();
+        return c;
+    }
+    if (key == "gesture") {
+        ObjectReader r(v, path, {"points"});
+        GestureCommand c;
+        const nlohmann::json& p = r.required("points");
+        if (!p.is_array()) throw JsonError(r.pathOf("points"), "expected an array of [x, y] points");
+        for (std::size_t i = 0; i < p.size(); ++i) {
+            const auto xy = readVec2(p[i], indexPath(r.pathOf("points"), i));
+            c.points.push_back({xy[0], xy[1]});
+        }
         r.finish();
         return c;
     }

@@ -11,6 +11,7 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include "garden/action/action.h"
+#include "garden/gesture/stroke.h"
 #include "garden/sculpt/edit.h"
 #include "garden/sculpt/impacts.h"
 #include "garden/sculpt/tool_settings.h"
@@ -50,6 +51,9 @@ struct SketchCommand {
     std::string sculpture;
     SketchMode mode = SketchMode::Add;
     bool newSculpture = false;
+    // Mode "model": a deformable model named `model` around the sculpture.
+    bool model = false;
+    std::string modelName;
     std::vector<std::array<double, 3>> points;
     std::array<double, 3> normal{0, 0, 1};
     double thickness = 1.0;
@@ -66,6 +70,26 @@ struct AddCommand {
     double scale = 1.0;                             // metres per model unit
     int resolution = 128;
     std::string body;
+};
+
+// Iterations of a model's snake against its sculpture: shrink-wrap or blow-up.
+struct DeformCommand {
+    std::string sculpture;
+    std::string model;
+    bool shrink = true;
+    int iterations = 1;
+};
+
+// The part of a sculpture inside a model's selection made a new sculpture
+// (run by the program: garden/export writes the part, ReplayOptions::extractor).
+struct ExtractCommand {
+    std::string from, by, name;
+};
+
+// A stroke fed to the gesture recognizer as the gesture button would
+// (screen pixels, y down).
+struct GestureCommand {
+    StrokePoints points;
 };
 
 // The last impact series made on one sculpture fired again at another.
@@ -93,7 +117,8 @@ struct ToolCommand { ToolSettings settings; };
 struct ActionCommand { Action action; };
 
 using SculptCommand = std::variant<StrokeCommand, PerturbCommand, UndoCommand, RedoCommand, ToolCommand, ImpactsCommand,
-                                   ReapplyImpactsCommand, EditPerturbationCommand, ActionCommand, SketchCommand, AddCommand>;
+                                   ReapplyImpactsCommand, EditPerturbationCommand, ActionCommand, SketchCommand, AddCommand,
+                                   DeformCommand, ExtractCommand, GestureCommand>;
 
 // Reads the command under `key` (stroke, perturb, edit_perturbation,
 // impacts, reapply_impacts, undo, redo, sculpt_tool, action, sketch);

@@ -134,10 +134,29 @@ struct SketchSolid {
 
 using EditOp = std::variant<Stroke, Perturbation, ImpactSeries, SketchSolid>;
 
+// A selection made with the deformable model (issue 22, docs/sketching.md
+// "Selections"): a union of balls, model frame. An edit made while it is
+// on acts only inside it: its tool's field G is limited to min(G, M), M
+// the largest r - |p - c| over the balls in voxels, so the tool acts on
+// the intersection of tool and selection (garden/sculpt/edit_field.h).
+// Written into the edit, so undo, rebuilds and the export see the mask
+// the edit was made with.
+struct MaskBall {
+    ModelPoint centre{0.0, 0.0, 0.0};
+    double radius = 0.0;
+};
+struct SelectionMask {
+    std::vector<MaskBall> balls;
+    frep::Box3 box;  // the balls' hull grown by the edit's floor: beyond it the edit does nothing
+};
+// The hull of `balls` grown by `margin`.
+frep::Box3 maskBox(const std::vector<MaskBall>& balls, double margin);
+
 struct Edit {
     std::uint64_t id = 0;  // unique in the sculpture, in creation order
     EditOp op;
     frep::Box3 reach;      // the field changes only inside this box
+    std::optional<SelectionMask> mask;  // acts only inside the selection
 };
 
 // The constants every edit expression of one sculpture shares: they come

@@ -41,6 +41,23 @@ V clamp(const V& v, double lo, double hi) { return vmax(vmin(v, V(hi)), V(lo)); 
 
 }  // namespace editops
 
+// A selection limits a tool to its inside (garden/sculpt/edit.h,
+// SelectionMask): the tool's field G becomes min(G, M), M the mask's field
+// in voxels clamped like G to [floor, band], the intersection of tool and
+// selection. Where M is at its floor, min(G, M) is too and the edit leaves
+// f exactly as it was, as beyond any tool's reach; and since each piece's
+// G is limited alone, a stroke extended piece by piece still equals its
+// rebuild (min and max chains, in the same order).
+template <class V>
+std::optional<V> limitOf(const V* mask, double floor, double band) {
+    if (!mask) return std::nullopt;
+    return editops::clamp<V>(*mask, floor, band);
+}
+template <class V>
+V limited(const V& g, const std::optional<V>& m) {
+    return m ? editops::vmin(g, *m) : g;
+}
+
 // The floor a stroke's tool field is clamped to, voxels.
 inline double strokeFloor(const Stroke& s, const FieldUnits& u) {
     return s.tool == StrokeTool::Melt ? -(u.band + s.softness) : -u.band;
@@ -60,22 +77,23 @@ V segmentField(const V& x, const V& y, const V& z, const StrokeSegment& g, doubl
 // the caller evaluates: outside their reach).
 template <class V>
 V applyStroke(const V& f, const V& x, const V& y, const V& z, const Stroke& s, const std::vector<std::uint32_t>& segments,
-              const FieldUnits& u) {
+              const FieldUnits& u, const V* mask = nullptr) {
     using namespace editops;
     const double floor = strokeFloor(s, u);
+    const std::optional<V> m = limitOf(mask, floor, u.band);
     V out = f;
     switch (s.tool) {
         case StrokeTool::Carve:
-            for (std::uint32_t i : segments) out = vmin(out, -segmentField(x, y, z, s.segments[i], floor, u.band));
+            for (std::uint32_t i : segments) out = vmin(out, -limited(segmentField(x, y, z, s.segments[i], floor, u.band), m));
             return out;
         case StrokeTool::Add:
-            for (std::uint32_t i : segments) out = vmax(out, segmentField(x, y, z, s.segments[i], floor, u.band));
+            for (std::uint32_t i : segments) out = vmax(out, limited(segmentField(x, y, z, s.segments[i], floor, u.band), m));
             return out;
         case StrokeTool::Melt: {
             // min(f, -G) - k/6 h^3, h = max(k - |f + G|, 0) / k: the polynomial
             // smooth minimum, exactly min(f, -G) where |f + G| >= k.
             V g = V(floor);
-            for (std::uint32_t i : segments) g = vmax(g, segmentField(x, y, z, s.segments[i], floor, u.band));
+            for (std::uint32_t i : segments) g = vmax(g, limited(segmentField(x, y, z, s.segments[i], floor, u.band), m));
             const double k = s.softness;
             const V h = vmax(V(k) - vabs(f + g), V(0.0)) / V(k);
             return vmax(vmin(f, -g) - V(k / 6.0) * (h * h * h), V(-u.band));
@@ -121,9 +139,10 @@ V impactField(const V& x, const V& y, const V& z, const Impact& m, const FieldUn
 // The listed impacts of a series subtracted, in order.
 template <class V>
 V applyImpacts(const V& f, const V& x, const V& y, const V& z, const ImpactSeries& s,
-               const std::vector<std::uint32_t>& pieces, const FieldUnits& u) {
+               const std::vector<std::uint32_t>& pieces, const FieldUnits& u, const V* mask = nullptr) {
+    const std::optional<V> m = limitOf(mask, -u.band, u.band);
     V out = f;
-    for (std::uint32_t i : pieces) out = editops::vmin(out, -impactField(x, y, z, s.impacts[i], u));
+    for (std::uint32_t i : pieces) out = editops::vmin(out, -limited(impactField(x, y, z, s.impacts[i], u), m));
     return out;
 }
 
@@ -145,12 +164,17 @@ V quadric(const V& x, const V& y, const V& z, const Perturbation& p) {
 
 // The listed pieces of a perturbation (0: its quadric, 1: the mirrored
 // one), their terms added in order, then the field clamped.
+// Under a selection the quadric's term fades with the mask's weight w (1
+// half a voxel inside, 0 half a voxel outside): q w, cubed.
 template <class V>
 V applyPerturbation(const V& f, const V& x, const V& y, const V& z, const Perturbation& p,
-                    const std::vector<std::uint32_t>& pieces, const FieldUnits& u) {
+                    const std::vector<std::uint32_t>& pieces, const FieldUnits& u, const V* mask = nullptr) {
+    std::optional<V> w;
+    if (mask) w = editops::clamp<V>(*mask + V(0.5), 0.0, 1.0);
     V out = f;
     for (std::uint32_t piece : pieces) {
-        const V q = editops::vmax(quadric(x, y, z, piece == 0 ? p : mirrored(p)), V(0.0));
+        V q = editops::vmax(quadric(x, y, z, piece == 0 ? p : mirrored(p)), V(0.0));
+        if (w) q = q * *w;
         out = out + V(p.strength) * (q * q * q);
     }
     return editops::clamp<V>(out, -u.band, u.band);
@@ -176,9 +200,10 @@ V sketchPieceField(const V& u, const V& v, const V& ww, const sketch::ConePiece&
 // is exactly -band (and leaves f unchanged) outside its reach.
 template <class V>
 V applySketch(const V& f, const V& x, const V& y, const V& z, const SketchSolid& s,
-              const std::vector<std::uint32_t>& pieces, const FieldUnits& u) {
+              const std::vector<std::uint32_t>& pieces, const FieldUnits& u, const V* mask = nullptr) {
     using namespace editops;
     if (pieces.empty()) return f;
+    const std::optional<V> m = limitOf(mask, -u.band, u.band);
     const std::size_t n = s.solid.pieces.size();
     const double inv = 1.0 / u.voxelSize, across = 1.0 / s.solid.thickness;
     // Plane coordinates, computed once per plane that a listed piece is on.
@@ -201,18 +226,51 @@ V applySketch(const V& f, const V& x, const V& y, const V& z, const SketchSolid&
                                  -u.band, u.band);
         g = g ? vmax(*g, piece) : piece;
     }
-    return s.mode == SketchMode::Add ? vmax(f, *g) : vmin(f, -*g);
+    const V tool = limited(*g, m);
+    return s.mode == SketchMode::Add ? vmax(f, tool) : vmin(f, -tool);
 }
 
+// The weight of an edit under a selection mask at (x, y, z): 1 at least
+// half a voxel inside the balls, 0 at least half a voxel outside, linear
+// between (M, the largest r - |p - c| in voxels, plus one half, clamped).
+// The mask's balls' field: the largest r - |p - c| over the balls, in
+// list order, voxels (unclamped); -band with no balls.
+template <class V>
+V maskVoxels(const V& x, const V& y, const V& z, const SelectionMask& mask, const FieldUnits& u) {
+    using namespace editops;
+    std::optional<V> m;
+    for (const MaskBall& b : mask.balls) {
+        const V dx = x - V(b.centre[0]), dy = y - V(b.centre[1]), dz = z - V(b.centre[2]);
+        const V ball = V(b.radius) - vsqrt(dx * dx + dy * dy + dz * dz);
+        m = m ? vmax(*m, ball) : ball;
+    }
+    return m ? *m * V(1.0 / u.voxelSize) : V(-u.band);
+}
+// Whether an edit under the mask acts at (x, y, z) at all: its tools'
+// fields are limited to M (carve, add, melt, impacts, sketches), a
+// perturbation's term fades to 0 half a voxel outside.
+template <class V>
+V maskWeight(const V& x, const V& y, const V& z, const SelectionMask& mask, const FieldUnits& u) {
+    return editops::clamp<V>(maskVoxels(x, y, z, mask, u) + V(0.5), 0.0, 1.0);
+}
+// The part of a field inside the mask (an extracted part, in voxels):
+// min(f, M) with M clamped to the band like every stored field.
+template <class V>
+V insideMask(const V& f, const V& x, const V& y, const V& z, const SelectionMask& mask, const FieldUnits& u) {
+    return editops::vmin(f, editops::clamp<V>(maskVoxels(x, y, z, mask, u), -u.band, u.band));
+}
 // Any edit's listed pieces applied to the field before it: the one
 // dispatch of the grid's tape, the double reference and the export.
 template <class V>
 V applyEdit(const V& f, const V& x, const V& y, const V& z, const Edit& e, const std::vector<std::uint32_t>& pieces,
             const FieldUnits& u) {
-    if (const auto* s = std::get_if<Stroke>(&e.op)) return applyStroke(f, x, y, z, *s, pieces, u);
-    if (const auto* m = std::get_if<ImpactSeries>(&e.op)) return applyImpacts(f, x, y, z, *m, pieces, u);
-    if (const auto* k = std::get_if<SketchSolid>(&e.op)) return applySketch(f, x, y, z, *k, pieces, u);
-    return applyPerturbation(f, x, y, z, std::get<Perturbation>(e.op), pieces, u);
+    std::optional<V> m;
+    if (e.mask && !pieces.empty()) m = maskVoxels(x, y, z, *e.mask, u);
+    const V* mask = m ? &*m : nullptr;
+    if (const auto* s = std::get_if<Stroke>(&e.op)) return applyStroke(f, x, y, z, *s, pieces, u, mask);
+    if (const auto* i = std::get_if<ImpactSeries>(&e.op)) return applyImpacts(f, x, y, z, *i, pieces, u, mask);
+    if (const auto* k = std::get_if<SketchSolid>(&e.op)) return applySketch(f, x, y, z, *k, pieces, u, mask);
+    return applyPerturbation(f, x, y, z, std::get<Perturbation>(e.op), pieces, u, mask);
 }
 
 }  // namespace hg::garden

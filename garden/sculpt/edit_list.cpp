@@ -71,12 +71,27 @@ frep::Box3 perturbationReach(const Perturbation& p) {
     return b;
 }
 
-frep::Box3 pieceReach(const Edit& e, std::size_t piece) {
+namespace {
+
+frep::Box3 unmaskedReach(const Edit& e, std::size_t piece) {
     if (const auto* s = std::get_if<Stroke>(&e.op)) return s->segments[piece].reach;
     if (const auto* m = std::get_if<ImpactSeries>(&e.op)) return m->impacts[piece].reach;
-       if (const auto* k = std::get_if<SketchSolid>(&e.op)) return k->reach[piece];
+    if (const auto* k = std::get_if<SketchSolid>(&e.op)) return k->reach[piece];
     const auto& p = std::get<Perturbation>(e.op);
     return perturbationReach(piece == 0 ? p : mirrored(p));
+}
+
+}  // namespace
+
+frep::Box3 pieceReach(const Edit& e, std::size_t piece) {
+    frep::Box3 b = unmaskedReach(e, piece);
+    if (!e.mask) return b;
+    // Beyond the mask's box the masked edit returns the field before it.
+    for (int a = 0; a < 3; ++a) {
+        b.lo[a] = std::max(b.lo[a], e.mask->box.lo[a]);
+        b.hi[a] = std::max(b.lo[a], std::min(b.hi[a], e.mask->box.hi[a]));
+    }
+    return b;
 }
 
 EditList::EditList(FieldUnits units, double cellSize) : units_(units), cellSize_(cellSize) {
@@ -215,6 +230,18 @@ double editedValue(const EditList& list, double base, double x, double y, double
     double f = base;
     for (const EditPick& pick : list.all()) f = applyEdit(f, x, y, z, list.edits()[pick.edit], pick.pieces, list.units());
     return f;
+}
+
+frep::Box3 maskBox(const std::vector<MaskBall>& balls, double margin) {
+    frep::Box3 box;
+    for (std::size_t i = 0; i < balls.size(); ++i)
+        for (int a = 0; a < 3; ++a) {
+            const double lo = balls[i].centre[a] - balls[i].radius - margin;
+            const double hi = balls[i].centre[a] + balls[i].radius + margin;
+            box.lo[a] = i == 0 ? lo : std::min(box.lo[a], lo);
+            box.hi[a] = i == 0 ? hi : std::max(box.hi[a], hi);
+        }
+    return box;
 }
 
 std::string describe(const Edit& e) {

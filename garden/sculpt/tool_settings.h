@@ -24,6 +24,15 @@ struct ToolSettings {
     double strength = 2.0;       // perturb: voxels, > 0 pulls, < 0 pushes
     double perturbScale = 1.0;   // perturb: multiplies the radii (the live size of the quadric)
     bool reverse = false;        // the action reversed: carve <-> add, pull <-> push
+    // What the sketch tool's next outline makes; the gestures choose it
+    // (garden/app/session_gestures.cpp). Auto: joined to the sculpture it
+    // starts on (reverse: cut), a new sculpture when begun in the air. New:
+    // a new sculpture wherever it starts. Join, Cut: joined to or cut from
+    // the sculpture it starts on (reverse swaps them). Model: a deformable
+    // model around the sculpture it starts on, or the selected one, that
+    // circling gestures shrink onto it or grow, making a selection.
+    enum class SketchUse { Auto, New, Join, Cut, Model };
+    SketchUse sketchUse = SketchUse::Auto;
     // Impacts: sizes in metres, the volume in cubic centimetres.
     ImpactShape impactShape = ImpactShape::Sphere;
     double impactSize = 0.02;
