@@ -10,6 +10,8 @@
 
 #include <cmath>
 
+#include <glm/gtc/quaternion.hpp>
+
 #include "../gesture/gesture_shapes.h"
 #include "frep/model.h"
 #include "garden/app/garden_session.h"
@@ -225,6 +227,49 @@ TEST_F(SelectionTest, GesturesSwitchTheSketchToolAndCirclingDeformsTheModel) {
     EXPECT_FALSE(std::get<DeformAction>(journal.actions.back()).shrink) << "counter-clockwise grows";
     EXPECT_NE(session->applyGesture(test::lineShape()), "") << "a straight line is no gesture";
     EXPECT_EQ(session->tool().sketchUse, ToolSettings::SketchUse::Model) << "and changes nothing";
+}
+
+
+// The gesture button held while the tool hand's ray circles: the model
+// deforms frame by frame while the circling goes on, stops when the hand
+// stops, and the release journals the iterations run as one action.
+TEST_F(SelectionTest, CirclingWithTheGestureButtonDeformsLiveAndJournalsOnce) {
+    ASSERT_EQ(model("wrap", {kCx, kCy, kCz}, 0.9), "");
+    session->tool().kind = ToolSettings::Kind::Sketch;
+    session->tool().sketchUse = ToolSettings::SketchUse::Model;
+    const std::size_t journalled = journal.actions.size();
+    const glm::vec3 eye(static_cast<float>(kCx), 1.0f, 6.0f);
+    const glm::vec3 ahead(0.0f, 0.0f, -1.0f), up(0.0f, 1.0f, 0.0f), right(1.0f, 0.0f, 0.0f);
+    Hands h;
+    h.tool.tracked = true;
+    h.tool.aim.position = eye;
+    h.tool.buttons = kButtonGesture;
+    const auto aimAt = [&](float t) {  // clockwise on the screen: right, then down
+        const glm::vec3 d = glm::normalize(ahead + 0.1f * (std::cos(t) * right - std::sin(t) * up));
+        h.tool.aim.orientation = glm::quatLookAt(d, up);
+    };
+    std::vector<int> iterations;
+    for (int i = 0; i <= 120; ++i) {  // two turns, 60 frames each
+        aimAt(2.0f * 3.14159265f * static_cast<float>(i) / 60.0f);
+        session->frame(FrameInput(h, 1.0 / 90.0));
+        iterations.push_back(view("wrap").iterations);
+    }
+    EXPECT_TRUE(session->gestureDrawing());
+    EXPECT_GT(iterations[60], 0) << "deforming while circling";
+    EXPECT_GT(iterations[120], iterations[60] + 10) << "and going on with it";
+    const int moving = iterations.back();
+    for (int i = 0; i < 10; ++i) session->frame(FrameInput(h, 1.0 / 90.0));  // held still
+    EXPECT_LE(view("wrap").iterations, moving + GardenSession::kLiveDeformIterations) << "stops when the hand stops";
+    EXPECT_EQ(journal.actions.size(), journalled) << "nothing journalled while circling";
+    h.tool.buttons = 0;
+    session->frame(FrameInput(h, 1.0 / 90.0));
+    ASSERT_EQ(journal.actions.size(), journalled + 1);
+    const auto* d = std::get_if<DeformAction>(&journal.actions.back());
+    ASSERT_NE(d, nullptr);
+    EXPECT_TRUE(d->shrink) << "clockwise shrinks";
+    EXPECT_EQ(d->iterations, view("wrap").iterations) << "one action of every iteration run";
+    EXPECT_TRUE(session->selectionOf(c));
+    EXPECT_EQ(session->tool().sketchUse, ToolSettings::SketchUse::Model) << "a loop is not a mode switch";
 }
 
 }  // namespace

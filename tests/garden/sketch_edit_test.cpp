@@ -11,6 +11,7 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "garden/app/garden_session.h"
+#include "garden/export/part_export.h"
 #include "garden/replay/replay_runner.h"
 #include "garden/replay/replay_script.h"
 #include "garden/scene/json_reader.h"
@@ -223,13 +224,24 @@ TEST(SketchingReplay, TheContentReplayPlays) {
     settings.morphResolution = 32;
     settings.remeshChunksPerFrame = 0;
     GardenSession s(loadGarden(script.garden), settings);
-    const ReplayResult r = runReplay(script, s, nullptr, {});
+    ReplayOptions options;
+    options.extractor = extractPart;
+    const ReplayResult r = runReplay(script, s, nullptr, options);
     ASSERT_EQ(r.error, "");
+    EXPECT_GE(s.findSculpture("pebble"), 0) << "a new sculpture drawn in the air";
     const int column = s.findSculpture("column east");
     ASSERT_GE(column, 0);
     EXPECT_EQ(s.editCount(column), 2u) << "two joined; the cut undone (redoable)";
     const Sculpture& sc = s.sculptures()[static_cast<std::size_t>(column)];
     EXPECT_EQ(sc.edits->redoCount(), 1u);
+    // The west column's capital selected with a shrunk model, and extracted.
+    const int west = s.findSculpture("column west");
+    ASSERT_TRUE(s.selectionOf(west));
+    const int capital = s.findSculpture("capital");
+    ASSERT_GE(capital, 0);
+    const frep::Box3& box = s.sculptures()[static_cast<std::size_t>(capital)].volume->frame.modelBox;
+    EXPECT_GT(box.lo[1], 0.6) << "the capital only, not the shaft below it";
+    EXPECT_LT(box.hi[1], 1.3);
 }
 
 }  // namespace
