@@ -67,10 +67,10 @@ int main(int argc, char** argv) {
     constexpr double kFrameMs = 1000.0 / 90.0;
     nlohmann::json rows = nlohmann::json::array();
     std::printf("| vertices (target) | vertices (start .. end) | edge | 1 thread (ms / iteration) | TBB, %d threads (ms / "
-                "iteration) | TBB / 1 thread | iterations per 11.1 ms (TBB) | fit: worst (voxels) | selection balls | "
+                "iteration) | TBB / 1 thread | iterations per 11.1 ms (TBB) | TBB, no remeshing (ms / iteration) | fit: worst (voxels) | selection balls | "
                 "selectionBalls (ms) |\n",
                 kThreads);
-    std::printf("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+    std::printf("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
     for (int target : {1000, 10000}) {
         if (!args.matches(std::to_string(target))) continue;
         // A uniform triangulation of edge L on a sphere of radius r has
@@ -79,25 +79,30 @@ int main(int argc, char** argv) {
         const double edge = std::sqrt(4.0 * 3.141592653589793 * r * r / (std::sqrt(3.0) / 2.0 * target));
         const DeformMesh start = remeshUniform(sphereMesh(glm::dvec3(0.0), r, target > 3000 ? 5 : 3), edge, 6,
                                                [&](const glm::dvec3& p) { return r * glm::normalize(p); });
-        double ms[2] = {0.0, 0.0};
+        // 0: one thread, 1: TBB, 2: TBB without the remeshing rounds (what
+        // the snake step alone costs).
+        double ms[3] = {0.0, 0.0, 0.0};
         DeformMesh ended;
-        for (int parallel = 0; parallel < 2; ++parallel) {
+        for (int run = 0; run < 3; ++run) {
             DeformOptions options;
-            options.parallel = parallel == 1;
+            options.parallel = run >= 1;
+            if (run == 2) options.remeshEvery = 0;
+            DeformMesh last;
             const double seconds = hg::bench::bestOf(args.repeat, [&] {
                 DeformableModel model(start, edge, options);
                 for (int i = 0; i < iterations; ++i) model.deform(grid, DeformMode::Shrink, 1);
-                ended = model.mesh();
+                last = model.mesh();
             });
-            ms[parallel] = 1e3 * seconds / iterations;
+            ms[run] = 1e3 * seconds / iterations;
+            if (run == 1) ended = std::move(last);
         }
         double worst = 0.0;
         for (const glm::dvec3& p : ended.vertices) worst = std::max(worst, std::fabs(glm::length(p) - 0.6));
         std::vector<SelectionBall> balls;
         const double selectionSeconds = hg::bench::bestOf(args.repeat, [&] { balls = selectionBalls(ended, voxel); });
-        std::printf("| %d | %zu .. %zu | %.4f | %.3f | %.3f | %.2f | %.1f | %.2f | %zu | %.1f |\n", target,
+        std::printf("| %d | %zu .. %zu | %.4f | %.3f | %.3f | %.2f | %.1f | %.3f | %.2f | %zu | %.1f |\n", target,
                     start.vertices.size(), ended.vertices.size(), edge, ms[0], ms[1], ms[1] / ms[0],
-                    kFrameMs / ms[1], worst / voxel, balls.size(), 1e3 * selectionSeconds);
+                    kFrameMs / ms[1], ms[2], worst / voxel, balls.size(), 1e3 * selectionSeconds);
         rows.push_back({{"target_vertices", target},
                         {"start_vertices", start.vertices.size()},
                         {"end_vertices", ended.vertices.size()},
@@ -106,6 +111,7 @@ int main(int argc, char** argv) {
                         {"tbb_ms_per_iteration", ms[1]},
                         {"tbb_threads", kThreads},
                         {"iterations_per_frame", kFrameMs / ms[1]},
+                        {"tbb_no_remeshing_ms_per_iteration", ms[2]},
                         {"worst_fit_voxels", worst / voxel},
                         {"selection_balls", balls.size()},
                         {"selection_ms", 1e3 * selectionSeconds}});
