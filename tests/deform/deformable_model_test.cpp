@@ -146,3 +146,33 @@ TEST(DeformableModel, WithoutGradientItMovesAlongTheNormals) {
 
 }  // namespace
 }  // namespace hg::garden::deform
+
+namespace hg::garden::deform {
+namespace {
+
+// The seed's neighbourhood restriction: a vertex pulled far out of its
+// one-ring (caught on something its neighbours passed) goes back onto its
+// neighbours' centroid in one iteration; the others only take their step.
+TEST(DeformableModel, AVertexThatRanOffGoesBackToItsNeighbours) {
+    const voxel::Volume volume = gridOf(sphereSource(0.1), 0.2, kVoxel);  // no gradient near the model
+    DeformMesh mesh = sphereMesh(glm::dvec3(0.0), 1.0, 3);
+    const VertexLists ring = vertexNeighbours(meshEdges(mesh), mesh.vertices.size());
+    const std::uint32_t v = 100;
+    glm::dvec3 centroid(0.0);
+    for (std::uint32_t i = ring.offsets[v]; i < ring.offsets[v + 1]; ++i) centroid += mesh.vertices[ring.items[i]];
+    centroid /= static_cast<double>(ring.count(v));
+    mesh.vertices[v] *= 1.5;  // half a radius out: many edges from its ring
+    DeformOptions noRemesh;
+    noRemesh.remeshEvery = 0;
+    DeformableModel model(mesh, 0.15, noRemesh);
+    model.deform(volume, DeformMode::Shrink, 1);
+    EXPECT_LT(glm::length(model.mesh().vertices[v] - centroid), 1e-12);
+    EXPECT_LT(farthestFromNeighbours(model.mesh()), 0.1);
+    // Its neighbours were not dragged out after it: each moved about a
+    // step (0.015) plus a little smoothing toward it.
+    for (std::uint32_t i = ring.offsets[v]; i < ring.offsets[v + 1]; ++i)
+        EXPECT_LT(glm::length(model.mesh().vertices[ring.items[i]] - mesh.vertices[ring.items[i]]), 0.05);
+}
+
+}  // namespace
+}  // namespace hg::garden::deform
