@@ -48,36 +48,43 @@ DeformMesh sphereMesh(glm::dvec3 centre, double radius, int subdivisions) {
 }
 
 std::vector<MeshEdge> meshEdges(const DeformMesh& mesh) {
-    // One entry per triangle side, sorted, then runs of equal (a, b) merged.
-    struct Side {
-        std::uint32_t a, b, tri;
-    };
-    std::vector<Side> sides;
-    sides.reserve(mesh.triangles.size() * 3);
+    // Each triangle side filed under its lower vertex (a counting sort, in
+    // triangle order), each vertex's short list sorted by the upper vertex
+    // (a stable insertion sort keeps the triangles ascending), then runs of
+    // equal (a, b) merged: sorted by (a, b) without a full sort, which the
+    // snake would pay after every remeshing round.
+    const std::size_t n = mesh.vertices.size();
+    std::vector<std::uint32_t> offsets(n + 2, 0);
+    for (const auto& tri : mesh.triangles)
+        for (int k = 0; k < 3; ++k) ++offsets[std::min(tri[k], tri[(k + 1) % 3]) + 2];
+    for (std::size_t v = 2; v < offsets.size(); ++v) offsets[v] += offsets[v - 1];
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> sides(mesh.triangles.size() * 3);  // (b, triangle)
     for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t) {
         const auto& tri = mesh.triangles[t];
         for (int k = 0; k < 3; ++k) {
             const std::uint32_t p = tri[k], q = tri[(k + 1) % 3];
-            sides.push_back({std::min(p, q), std::max(p, q), t});
+            sides[offsets[std::min(p, q) + 1]++] = {std::max(p, q), t};
         }
     }
-    std::sort(sides.begin(), sides.end(), [](const Side& x, const Side& y) {
-        return x.a != y.a ? x.a < y.a : x.b != y.b ? x.b < y.b : x.tri < y.tri;
-    });
     std::vector<MeshEdge> edges;
     edges.reserve(sides.size() / 2 + 1);
-    for (std::size_t i = 0; i < sides.size();) {
-        MeshEdge e;
-        e.a = sides[i].a;
-        e.b = sides[i].b;
-        std::size_t j = i;
-        for (; j < sides.size() && sides[j].a == e.a && sides[j].b == e.b; ++j) {
-            if (e.uses == 0) e.t0 = sides[j].tri;
-            else if (e.uses == 1) e.t1 = sides[j].tri;
-            ++e.uses;
+    for (std::uint32_t a = 0; a < n; ++a) {
+        const auto begin = sides.begin() + offsets[a], end = sides.begin() + offsets[a + 1];
+        for (auto i = begin + (begin != end ? 1 : 0); i < end; ++i)
+            for (auto j = i; j > begin && (j - 1)->first > j->first; --j) std::iter_swap(j - 1, j);
+        for (auto i = begin; i < end;) {
+            MeshEdge e;
+            e.a = a;
+            e.b = i->first;
+            auto j = i;
+            for (; j < end && j->first == e.b; ++j) {
+                if (e.uses == 0) e.t0 = j->second;
+                else if (e.uses == 1) e.t1 = j->second;
+                ++e.uses;
+            }
+            edges.push_back(e);
+            i = j;
         }
-        edges.push_back(e);
-        i = j;
     }
     return edges;
 }

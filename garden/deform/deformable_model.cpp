@@ -100,6 +100,7 @@ void DeformableModel::rebuildTopology() {
 }
 
 void DeformableModel::deform(const voxel::Volume& volume, DeformMode mode, int iterations) {
+    if (!(volume.frame.voxelSize > 0.0)) return;  // an empty volume has no frame to step in
     for (int i = 0; i < iterations; ++i) step(volume, mode);
 }
 

@@ -16,6 +16,11 @@
 #pragma once
 
 #include "garden/deform/deform_mesh.h"
+// The rest of the deformable model's API, so that one include brings it:
+// uniform remeshing, the sketch's mesh, the selection.
+#include "garden/deform/remesh.h"
+#include "garden/deform/selection.h"
+#include "garden/deform/sketch_mesh.h"
 
 namespace hg::voxel {
 class Volume;
@@ -48,7 +53,8 @@ public:
     DeformableModel(DeformMesh mesh, double edgeLength, DeformOptions options = {});
 
     // `iterations` steps against `volume` (the sculpture's grid, in its
-    // model frame, the model's frame too).
+    // model frame, the model's frame too). Nothing moves on a volume with
+    // no frame (voxel size 0: an empty Volume()).
     void deform(const voxel::Volume& volume, DeformMode mode, int iterations);
 
     const DeformMesh& mesh() const { return mesh_; }

@@ -11,6 +11,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_reduce.h>
 
+#include "garden/sketch/inflation_field.h"
 #include "voxel/volume_vdb.h"
 
 namespace hg::garden::deform {
@@ -59,18 +60,85 @@ double distanceToMesh(const DeformMesh& mesh, const glm::dvec3& p) {
 // voxel: the peak of a parabola through the depth at the voxel and its two
 // neighbours, per axis, no farther than half a voxel. The voxel's own ball
 // can be most of a voxel smaller than the largest near it.
-openvdb::Vec3d refinedCentre(const openvdb::FloatGrid::ConstAccessor& accessor, const openvdb::Coord& ijk) {
+template <class Depth>
+openvdb::Vec3d refinedCentre(const Depth& depth, const openvdb::Coord& ijk) {
     openvdb::Vec3d at = ijk.asVec3d();
-    const double here = -static_cast<double>(accessor.getValue(ijk));
+    const double here = depth(ijk);
     for (int axis = 0; axis < 3; ++axis) {
         openvdb::Coord step(0, 0, 0);
         step[axis] = 1;
-        const double below = -static_cast<double>(accessor.getValue(ijk - step));
-        const double above = -static_cast<double>(accessor.getValue(ijk + step));
+        const double below = depth(ijk - step), above = depth(ijk + step);
         const double curvature = below - 2.0 * here + above;
-        if (curvature < 0.0) at[axis] += std::clamp(0.5 * (below - above) / curvature, -0.5, 0.5);
+        if (below >= 0.0 && above >= 0.0 && curvature < 0.0)
+            at[axis] += std::clamp(0.5 * (below - above) / curvature, -0.5, 0.5);
     }
     return at;
+}
+
+// The depth (voxels to the mesh) of every voxel in the mesh's index box,
+// -1 outside: exact within the narrow band OpenVDB's meshToLevelSet
+// computes, then carried inward by a chamfer distance transform (two
+// sweeps each way over the 26 neighbours, steps 1, sqrt 2, sqrt 3). The
+// chamfer only orders the candidates; every ball's radius is measured
+// exactly against the triangles.
+struct DepthField {
+    openvdb::CoordBBox box;
+    openvdb::Coord dim;
+    std::vector<float> depth;
+
+    std::size_t cell(const openvdb::Coord& c) const {
+        const openvdb::Coord d = c - box.min();
+        return (static_cast<std::size_t>(d.z()) * static_cast<std::size_t>(dim.y()) + static_cast<std::size_t>(d.y())) *
+                   static_cast<std::size_t>(dim.x()) +
+               static_cast<std::size_t>(d.x());
+    }
+    double at(const openvdb::Coord& c) const { return box.isInside(c) ? static_cast<double>(depth[cell(c)]) : -1.0; }
+};
+
+DepthField depthField(const openvdb::FloatGrid& levelSet, const openvdb::CoordBBox& box, double voxelSize,
+                      float halfWidth) {
+    DepthField f;
+    f.box = box;
+    f.dim = box.dim();
+    f.depth.assign(static_cast<std::size_t>(f.dim.x()) * f.dim.y() * f.dim.z(), -1.0f);
+    constexpr float kUnknown = 1e30f;
+    const auto accessor = levelSet.getConstAccessor();
+    const auto exactBelow = static_cast<float>((static_cast<double>(halfWidth) - 0.5) * voxelSize);
+    for (auto it = box.begin(); it; ++it) {
+        const float v = accessor.getValue(*it);
+        if (v >= 0.0f) continue;
+        f.depth[f.cell(*it)] = v > -exactBelow ? static_cast<float>(-static_cast<double>(v) / voxelSize) : kUnknown;
+    }
+    std::vector<std::pair<openvdb::Coord, float>> before;  // the 13 neighbours a forward sweep has visited
+    for (int dz = -1; dz <= 1; ++dz)
+        for (int dy = -1; dy <= 1; ++dy)
+            for (int dx = -1; dx <= 1; ++dx) {
+                const int order = dz * 9 + dy * 3 + dx;
+                if (order < 0)
+                    before.emplace_back(openvdb::Coord(dx, dy, dz), std::sqrt(static_cast<float>(dx * dx + dy * dy + dz * dz)));
+            }
+    const auto sweep = [&](int direction) {
+        const openvdb::Coord lo = box.min(), hi = box.max();
+        for (int k0 = 0; k0 < f.dim.z(); ++k0)
+            for (int j0 = 0; j0 < f.dim.y(); ++j0)
+                for (int i0 = 0; i0 < f.dim.x(); ++i0) {
+                    const openvdb::Coord c = direction > 0 ? openvdb::Coord(lo.x() + i0, lo.y() + j0, lo.z() + k0)
+                                                           : openvdb::Coord(hi.x() - i0, hi.y() - j0, hi.z() - k0);
+                    float& d = f.depth[f.cell(c)];
+                    if (d < 0.0f) continue;
+                    for (const auto& [offset, step] : before) {
+                        const openvdb::Coord n = direction > 0 ? c + offset : c - offset;
+                        if (!box.isInside(n)) continue;
+                        const float dn = f.depth[f.cell(n)];
+                        if (dn >= 0.0f && dn + step < d) d = dn + step;
+                    }
+                }
+    };
+    for (int round = 0; round < 2; ++round) {
+        sweep(1);
+        sweep(-1);
+    }
+    return f;
 }
 
 }  // namespace
@@ -80,65 +148,85 @@ std::vector<SelectionBall> selectionBalls(const DeformMesh& mesh, double voxelSi
     if (mesh.triangles.empty() || !(voxelSize > 0.0) || maxBalls <= 0 || !checkClosedManifold(mesh).empty())
         return balls;
     voxel::ensureOpenVdbInitialized();
-    // The signed distance to the mesh (negative inside) over the whole
-    // interior: OpenVDB's exact distance near the surface, then grown
-    // inward by its sweeps.
     const openvdb::math::Transform::Ptr transform = openvdb::math::Transform::createLinearTransform(voxelSize);
     std::vector<openvdb::Vec3s> points;
     points.reserve(mesh.vertices.size());
-    for (const glm::dvec3& v : mesh.vertices)
+    glm::dvec3 lo(1e300), hi(-1e300);
+    for (const glm::dvec3& v : mesh.vertices) {
         points.emplace_back(static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z));
+        lo = glm::min(lo, v);
+        hi = glm::max(hi, v);
+    }
     std::vector<openvdb::Vec3I> triangles;
     triangles.reserve(mesh.triangles.size());
     for (const auto& t : mesh.triangles) triangles.emplace_back(t[0], t[1], t[2]);
-    const openvdb::FloatGrid::Ptr distance = openvdb::tools::meshToSignedDistanceField<openvdb::FloatGrid>(
-        *transform, points, triangles, {}, 1.0f, std::numeric_limits<float>::max());
+    constexpr float kHalfWidth = 3.0f;
+    // Points in index space (the transform is a plain scale). No
+    // renormalization, trimming or removal of voxels where the surface
+    // crosses itself: the band only seeds the chamfer and orders the
+    // candidates (the balls' radii are exact), and they cost most of the
+    // conversion's time.
+    std::vector<openvdb::Vec3s> indexPoints(points.size());
+    for (std::size_t i = 0; i < points.size(); ++i) indexPoints[i] = points[i] * static_cast<float>(1.0 / voxelSize);
+    const openvdb::tools::QuadAndTriangleDataAdapter<openvdb::Vec3s, openvdb::Vec3I> adapter(indexPoints, triangles);
+    const openvdb::FloatGrid::Ptr levelSet = openvdb::tools::meshToVolume<openvdb::FloatGrid>(
+        adapter, *transform, kHalfWidth, kHalfWidth,
+        openvdb::tools::DISABLE_INTERSECTING_VOXEL_REMOVAL | openvdb::tools::DISABLE_RENORMALIZATION |
+            openvdb::tools::DISABLE_NARROW_BAND_TRIMMING);
+    const openvdb::CoordBBox box(
+        openvdb::Coord(static_cast<int>(std::floor(lo.x / voxelSize)) - 1, static_cast<int>(std::floor(lo.y / voxelSize)) - 1,
+                       static_cast<int>(std::floor(lo.z / voxelSize)) - 1),
+        openvdb::Coord(static_cast<int>(std::ceil(hi.x / voxelSize)) + 1, static_cast<int>(std::ceil(hi.y / voxelSize)) + 1,
+                       static_cast<int>(std::ceil(hi.z / voxelSize)) + 1));
+    const DepthField field = depthField(*levelSet, box, voxelSize, kHalfWidth);
 
     // The interior voxels, deepest first (ties by position: deterministic).
     struct Inside {
         openvdb::Coord ijk;
-        float depth;
+        float depth;  // voxels
     };
     std::vector<Inside> inside;
-    for (auto it = distance->cbeginValueOn(); it; ++it)
-        if (*it < 0.0f) inside.push_back({it.getCoord(), -*it});
+    for (auto it = box.begin(); it; ++it) {
+        const float d = field.depth[field.cell(*it)];
+        if (d >= 0.0f) inside.push_back({*it, d});
+    }
     if (inside.empty()) return balls;
     std::sort(inside.begin(), inside.end(), [](const Inside& a, const Inside& b) {
         if (a.depth != b.depth) return a.depth > b.depth;
         return a.ijk < b.ijk;
     });
-    openvdb::CoordBBox box;
-    for (const Inside& i : inside) box.expand(i.ijk);
-    const openvdb::Coord dim = box.dim();
-    const auto cell = [&](const openvdb::Coord& c) {
-        const openvdb::Coord d = c - box.min();
-        return (static_cast<std::size_t>(d.z()) * static_cast<std::size_t>(dim.y()) + static_cast<std::size_t>(d.y())) *
-                   static_cast<std::size_t>(dim.x()) +
-               static_cast<std::size_t>(d.x());
-    };
     // 0: outside, 1: inside and not covered, 2: covered.
-    std::vector<unsigned char> state(static_cast<std::size_t>(dim.x()) * dim.y() * dim.z(), 0);
-    for (const Inside& i : inside) state[cell(i.ijk)] = 1;
+    std::vector<unsigned char> state(field.depth.size(), 0);
+    for (const Inside& i : inside) state[field.cell(i.ijk)] = 1;
     const std::size_t goal =
         inside.size() - static_cast<std::size_t>(uncovered * static_cast<double>(inside.size()));
     std::size_t covered = 0;
-    const openvdb::FloatGrid::ConstAccessor accessor = distance->getConstAccessor();
     const auto toGlm = [](const openvdb::Vec3d& v) { return glm::dvec3(v.x(), v.y(), v.z()); };
+    const auto depthAt = [&](const openvdb::Coord& c) { return field.at(c); };
     for (const Inside& candidate : inside) {
         if (covered >= goal || static_cast<int>(balls.size()) >= maxBalls) break;
-        if (state[cell(candidate.ijk)] != 1) continue;
-        // Refined only where the move (under a voxel) cannot leave the mesh.
-        openvdb::Vec3d centreIndex = static_cast<double>(candidate.depth) > voxelSize ? refinedCentre(accessor, candidate.ijk)
-                                                                 : candidate.ijk.asVec3d();
+        if (state[field.cell(candidate.ijk)] != 1) continue;
+        // The voxel's own ball, or one a fraction of a voxel away if larger
+        // (refined only where the move, under a voxel, cannot leave the mesh).
+        openvdb::Vec3d centreIndex = candidate.ijk.asVec3d();
         glm::dvec3 centre = toGlm(transform->indexToWorld(centreIndex));
         double depth = distanceToMesh(mesh, centre);
-        if (depth < static_cast<double>(candidate.depth)) {  // the voxel's own ball was larger after all
-            centreIndex = candidate.ijk.asVec3d();
-            centre = toGlm(transform->indexToWorld(centreIndex));
-            depth = static_cast<double>(candidate.depth);
+        if (candidate.depth > 1.0f) {
+            const openvdb::Vec3d refined = refinedCentre(depthAt, candidate.ijk);
+            const glm::dvec3 refinedWorld = toGlm(transform->indexToWorld(refined));
+            const double refinedDepth = distanceToMesh(mesh, refinedWorld);
+            if (refinedDepth > depth) {
+                centreIndex = refined;
+                centre = refinedWorld;
+                depth = refinedDepth;
+            }
         }
         const double radiusVoxels = depth / voxelSize;
-        balls.push_back({centre, depth});
+        // Stored as the values HyperFun's lexer reads back from their
+        // 12-decimal text (sketch::hfDecimal), so the exported selection
+        // and selectionField agree bit for bit.
+        balls.push_back({glm::dvec3(sketch::hfConstant(centre.x), sketch::hfConstant(centre.y), sketch::hfConstant(centre.z)),
+                         sketch::hfConstant(depth)});
         const int reach = static_cast<int>(std::ceil(radiusVoxels));
         const openvdb::Coord c = openvdb::Coord::round(centreIndex);
         for (int k = std::max(c.z() - reach, box.min().z()); k <= std::min(c.z() + reach, box.max().z()); ++k)
@@ -146,7 +234,7 @@ std::vector<SelectionBall> selectionBalls(const DeformMesh& mesh, double voxelSi
                 for (int i = std::max(c.x() - reach, box.min().x()); i <= std::min(c.x() + reach, box.max().x()); ++i) {
                     const double dx = i - centreIndex.x(), dy = j - centreIndex.y(), dz = k - centreIndex.z();
                     if (dx * dx + dy * dy + dz * dz > radiusVoxels * radiusVoxels) continue;
-                    unsigned char& s = state[cell(openvdb::Coord(i, j, k))];
+                    unsigned char& s = state[field.cell(openvdb::Coord(i, j, k))];
                     if (s == 1) {
                         s = 2;
                         ++covered;

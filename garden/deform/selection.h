@@ -20,10 +20,11 @@ struct SelectionBall {
 // Greedy medial balls from the interior's distance field (sampled at
 // `voxelSize`): the deepest interior point not yet covered gets the
 // largest ball that stays inside the mesh, until the balls cover all but
-// `uncovered` of the interior's voxels or there are `maxBalls`. Empty for
-// an empty or open mesh.
+// `uncovered` of the interior's voxels or there are `maxBalls`. Centres and
+// radii are the values sketch::hfConstant gives (what HyperFun reads back
+// from sketch::hfDecimal's text). Empty for an empty or open mesh.
 std::vector<SelectionBall> selectionBalls(const DeformMesh& mesh, double voxelSize, int maxBalls = 256,
-                                          double uncovered = 0.01);
+                                          double uncovered = 0.03);
 
 // The selection's field at p: max over the balls, in list order, of
 // radius - sqrt(dx*dx + dy*dy + dz*dz) (>= 0 inside); -1e30 with no ball.

@@ -39,34 +39,35 @@ void run(DeformableModel& model, const voxel::Volume& volume, DeformMode mode, i
         model.deform(volume, mode, 1);
 }
 
-TEST(DeformableModel, ShrinkWrapsASphereOntoASmallerSphere) {
+// Runs the model from `start` onto the ball of radius 0.6 until it settles
+// and checks it ends within a voxel of the ball, settled, closed and
+// manifold, with edges no longer than 1.6 times the target.
+DeformMesh settleOntoTheBall(const char* name, const DeformMesh& start, DeformMode mode) {
     const voxel::Volume volume = gridOf(sphereSource(0.6), 0.7, kVoxel);
-    DeformableModel model(sphereMesh(glm::dvec3(0.0), 1.0, 4), 0.06);
-    run(model, volume, DeformMode::Shrink, 300);
+    DeformableModel model(start, 0.06);
+    run(model, volume, mode, 300);
     const Fit fit = fitOf(model.mesh(), [](glm::dvec3 p) { return sphereDistance(p, 0.6); }, kVoxel);
-    std::printf("shrink 1.0 -> 0.6: %d iterations, settled %d, %zu vertices, worst %.4f (%.2f voxels)\n",
-                model.iterationsRun(), model.settled(), model.mesh().vertices.size(), fit.worst, fit.worst / kVoxel);
+    std::printf("%s: %d iterations, settled %d, %zu vertices, worst %.4f (%.2f voxels)\n", name, model.iterationsRun(),
+                model.settled(), model.mesh().vertices.size(), fit.worst, fit.worst / kVoxel);
     EXPECT_LE(fit.worst, kVoxel);
     EXPECT_TRUE(model.settled());
     EXPECT_EQ(checkClosedManifold(model.mesh()), "");
-    const EdgeLengthRange edges = edgeLengthRange(model.mesh());
-    EXPECT_GT(edges.min, 0.3 * 0.06);
-    EXPECT_LT(edges.max, 1.6 * 0.06);
+    EXPECT_LT(edgeLengthRange(model.mesh()).max, 1.6 * 0.06);
+    return model.mesh();
+}
+
+TEST(DeformableModel, ShrinkWrapsASphereOntoASmallerSphere) {
+    const DeformMesh mesh = settleOntoTheBall("shrink 1.0 -> 0.6", sphereMesh(glm::dvec3(0.0), 1.0, 4), DeformMode::Shrink);
+    // It shrank: the triangulation was coarsened on the way, not crushed.
+    EXPECT_GT(edgeLengthRange(mesh).min, 0.3 * 0.06);
+    EXPECT_LT(mesh.vertices.size(), 2562u);
 }
 
 TEST(DeformableModel, BlowsUpASmallSphereOntoALargerOne) {
-    const voxel::Volume volume = gridOf(sphereSource(0.6), 0.7, kVoxel);
-    DeformableModel model(sphereMesh(glm::dvec3(0.02, -0.01, 0.03), 0.3, 3), 0.06);
-    run(model, volume, DeformMode::Grow, 300);
-    const Fit fit = fitOf(model.mesh(), [](glm::dvec3 p) { return sphereDistance(p, 0.6); }, kVoxel);
-    std::printf("grow 0.3 -> 0.6: %d iterations, settled %d, %zu vertices, worst %.4f (%.2f voxels)\n",
-                model.iterationsRun(), model.settled(), model.mesh().vertices.size(), fit.worst, fit.worst / kVoxel);
-    EXPECT_LE(fit.worst, kVoxel);
-    EXPECT_TRUE(model.settled());
-    EXPECT_EQ(checkClosedManifold(model.mesh()), "");
+    const DeformMesh mesh =
+        settleOntoTheBall("grow 0.3 -> 0.6", sphereMesh(glm::dvec3(0.02, -0.01, 0.03), 0.3, 3), DeformMode::Grow);
     // It grew: the triangulation was refined on the way, not stretched.
-    EXPECT_GT(model.mesh().vertices.size(), 1000u);
-    EXPECT_LT(edgeLengthRange(model.mesh()).max, 1.6 * 0.06);
+    EXPECT_GT(mesh.vertices.size(), 1000u);
 }
 
 // A box and two lobes: flat faces, edges, corners, a neck. After 200
@@ -141,6 +142,36 @@ TEST(DeformableModel, WithoutGradientItMovesAlongTheNormals) {
     grown.deform(volume, DeformMode::Grow, 10);
     for (const glm::dvec3& p : grown.mesh().vertices)
         EXPECT_NEAR(glm::length(p), 1.0 + 10 * normalsOnly.stepVoxels * kVoxel, 1e-4);
+}
+
+}  // namespace
+}  // namespace hg::garden::deform
+
+namespace hg::garden::deform {
+namespace {
+
+// The seed's neighbourhood restriction: a vertex pulled far out of its
+// one-ring (caught on something its neighbours passed) goes back onto its
+// neighbours' centroid in one iteration; the others only take their step.
+TEST(DeformableModel, AVertexThatRanOffGoesBackToItsNeighbours) {
+    const voxel::Volume volume = gridOf(sphereSource(0.1), 0.2, kVoxel);  // no gradient near the model
+    DeformMesh mesh = sphereMesh(glm::dvec3(0.0), 1.0, 3);
+    const VertexLists ring = vertexNeighbours(meshEdges(mesh), mesh.vertices.size());
+    const std::uint32_t v = 100;
+    glm::dvec3 centroid(0.0);
+    for (std::uint32_t i = ring.offsets[v]; i < ring.offsets[v + 1]; ++i) centroid += mesh.vertices[ring.items[i]];
+    centroid /= static_cast<double>(ring.count(v));
+    mesh.vertices[v] *= 1.5;  // half a radius out: many edges from its ring
+    DeformOptions noRemesh;
+    noRemesh.remeshEvery = 0;
+    DeformableModel model(mesh, 0.15, noRemesh);
+    model.deform(volume, DeformMode::Shrink, 1);
+    EXPECT_LT(glm::length(model.mesh().vertices[v] - centroid), 1e-12);
+    EXPECT_LT(farthestFromNeighbours(model.mesh()), 0.1);
+    // Its neighbours were not dragged out after it: each moved about a
+    // step (0.015) plus a little smoothing toward it.
+    for (std::uint32_t i = ring.offsets[v]; i < ring.offsets[v + 1]; ++i)
+        EXPECT_LT(glm::length(model.mesh().vertices[ring.items[i]] - mesh.vertices[ring.items[i]]), 0.05);
 }
 
 }  // namespace
