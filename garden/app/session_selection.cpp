@@ -35,6 +35,8 @@ constexpr double kModelEdgeVoxels = 2.5;
 // Between the stroke that sketched it and its first deformation, a model
 // this many triangles across its outline's extent at most.
 constexpr double kModelMaxEdgesAcross = 48.0;
+// The selection's balls grown by this many voxels of the sculpture.
+constexpr double kSelectionMarginVoxels = 2.0;
 
 }  // namespace
 
@@ -183,8 +185,12 @@ std::optional<SelectionMask> GardenSession::modelMask(const std::string& model, 
     if (!why.empty()) return std::nullopt;
     const double voxel = sculptures_[static_cast<std::size_t>(i)].volume->frame.voxelSize;
     SelectionMask mask;
+    // Grown a little: a shrunk model lies on the sculpture's surface, and
+    // the balls' bumpy hull just inside it would cut the surface it wraps;
+    // grown, the sculpture's own surface bounds the selection there and
+    // the balls only where the model cuts through the material.
     for (const deform::SelectionBall& b : deform::selectionBalls(m->model->mesh(), voxel))
-        mask.balls.push_back(MaskBall{{b.centre.x, b.centre.y, b.centre.z}, b.radius});
+        mask.balls.push_back(MaskBall{{b.centre.x, b.centre.y, b.centre.z}, b.radius + kSelectionMarginVoxels * voxel});
     if (mask.balls.empty()) {
         why = "model '" + model + "' encloses nothing";
         return std::nullopt;

@@ -24,6 +24,11 @@ struct GridSample {
     bool inBand = false;
 };
 
+// A vertex this far (voxels) on the far side of the surface holds its
+// place; nearer, it is a step that went a little past f = 0 and is brought
+// back like any other.
+constexpr double kFarSideVoxels = 0.5;
+
 class GridProbe {
 public:
     explicit GridProbe(const voxel::Volume& volume)
@@ -124,6 +129,18 @@ void DeformableModel::step(const voxel::Volume& volume, DeformMode mode) {
     for (const MeshEdge& e : edges_) edgeSum += glm::length(mesh_.vertices[e.a] - mesh_.vertices[e.b]);
     const double runOff = options_.runOffEdges * edgeSum / static_cast<double>(std::max<std::size_t>(1, edges_.size()));
 
+    // Which side of the surface is the far one: inside the material while
+    // shrinking (a shrink-wrap starts outside); while growing, the side
+    // fewer of the vertices are on (a blow-up starts inside an object, or
+    // in a cavity or empty space, and most of it stays there).
+    double farSideSign = 1.0;
+    if (mode == DeformMode::Grow) {
+        GridProbe probe(volume);
+        std::size_t inside = 0;
+        for (const glm::dvec3& p : mesh_.vertices)
+            if (probe.at(p).value > 0.0) ++inside;
+        farSideSign = 2 * inside > n ? -1.0 : 1.0;
+    }
     std::vector<glm::dvec3> moved(n);
     std::vector<double> moveLength(n);
     overVertices(n, options_.parallel, [&](std::size_t begin, std::size_t end) {
@@ -141,7 +158,16 @@ void DeformableModel::step(const voxel::Volume& volume, DeformMode mode) {
             glm::dvec3 force = towardNormal * stepLength * normal;
             const GridSample here = probe.at(p);
             const double g2 = glm::dot(here.gradient, here.gradient);
-            if (here.inBand && g2 > kNoGradient * kNoGradient) {
+            // A vertex on the far side of the surface (inside the material
+            // while shrinking, outside it while growing) began there: the
+            // model was drawn through the sculpture, and the vertex is on
+            // the cut that bounds the selection. It holds its place, or the
+            // cut would travel along the material (a model around a
+            // column's capital crawled down the shaft).
+            const bool farSide = farSideSign * here.value > kFarSideVoxels;
+            if (farSide) {
+                force = glm::dvec3(0.0);
+            } else if (here.inBand && g2 > kNoGradient * kNoGradient) {
                 force = (-here.value / g2) * voxel * here.gradient;
                 const double length = glm::length(force);
                 if (length > stepLength) force *= stepLength / length;

@@ -2,6 +2,10 @@
 // blow-up"): a mesh moved onto real grids sampled from HyperFun programs.
 #include <gtest/gtest.h>
 
+#include <sstream>
+
+#include <fstream>
+
 #include <cstdio>
 #include <functional>
 
@@ -124,6 +128,30 @@ TEST(DeformableModel, IterationsInOneCallOrManyGiveTheSameMesh) {
     }
     // And it did move: the test compares meshes in mid-flight.
     EXPECT_LT(glm::length(once.mesh().vertices[0]), 0.74);
+}
+
+// A model drawn through the sculpture (around the capital of our twisted
+// column, content/hyperfun/path_column.hf, its bottom cutting the shaft)
+// wraps the capital and keeps its cut across the shaft: the vertices
+// inside the material hold, so the model does not crawl down the shaft as
+// it shrinks (before the far-side rule it reached the plinth in 120
+// iterations), and the selection is the capital with the top of the shaft.
+TEST(DeformableModel, AModelDrawnThroughTheSculptureKeepsItsCut) {
+    std::ifstream in(std::string(HG_SOURCE_DIR) + "/content/hyperfun/path_column.hf");
+    std::stringstream text;
+    text << in.rdbuf();
+    voxel::VolumeRequest request;
+    request.box = frep::Box3{{-0.35, -0.05, -0.35}, {0.35, 1.2, 0.35}};
+    request.resolution = 64;
+    voxel::VoxelizeResult r = voxel::voxelize(hg::test::modelFromSource(text.str()), request);
+    ASSERT_TRUE(r.volume) << r.error;
+    const double voxel = r.volume->frame.voxelSize;
+    DeformableModel model(sphereMesh(glm::dvec3(0.0, 1.05, 0.0), 0.3, 4), 2.5 * voxel);
+    model.deform(*r.volume, DeformMode::Shrink, 120);
+    double lowest = 2.0;
+    for (const glm::dvec3& p : model.mesh().vertices) lowest = std::min(lowest, p.y);
+    EXPECT_GT(lowest, 0.75 - 2.0 * voxel) << "the cut across the shaft stays where it was drawn";
+    EXPECT_TRUE(checkClosedManifold(model.mesh()).empty());
 }
 
 // Out in empty space (no gradient anywhere) the model only moves along its
