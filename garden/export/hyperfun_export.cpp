@@ -229,6 +229,7 @@ HyperFunExport exportOrThrow(const GardenSession& session, int index) {
     if (s.removed) throw std::runtime_error("sculpture '" + s.name + "' was removed");
     if (s.missing()) throw std::runtime_error("sculpture '" + s.name + "' is missing: " + s.error);
     if (!s.volume) throw std::runtime_error("sculpture '" + s.name + "' has no grid");
+    if (s.scanned()) throw std::runtime_error(scanRefusal(session, s));
     const bool edited = s.edits && !s.edits->list().empty();
     const voxel::VolumeFrame& frame = s.volume->frame;
 
@@ -306,6 +307,13 @@ HyperFunExport exportOrThrow(const GardenSession& session, int index) {
 }
 
 }  // namespace
+
+std::string scanRefusal(const GardenSession& session, const Sculpture& s) {
+    const SculptureSpec& spec = session.garden().sculptures.at(static_cast<std::size_t>(s.source.spec));
+    return "sculpture '" + s.name + "' is made from a scanned volume (" + spec.fileAsWritten +
+           "), and HyperFun has no way to read a volume, so it cannot be written as exact HyperFun; export it as a "
+           "mesh or a level set instead (.stl, .obj, .glb or .vdb), made from its grid";
+}
 
 HyperFunExport exportHyperFun(const GardenSession& session, int sculpture) {
     try {

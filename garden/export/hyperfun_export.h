@@ -23,6 +23,7 @@
 namespace hg::garden {
 
 class GardenSession;
+struct Sculpture;
 
 struct HyperFunExport {
     std::string text;             // the program ("" on error)
@@ -36,8 +37,12 @@ struct HyperFunExport {
     std::string warning;
 };
 
-// The sculpture with index `sculpture` in session.sculptures().
+// The sculpture with index `sculpture` in session.sculptures(). A scanned
+// volume's sculpture is refused (scanRefusal): HyperFun cannot read a volume.
 HyperFunExport exportHyperFun(const GardenSession& session, int sculpture);
+
+// Why a scanned volume's sculpture has no HyperFun export, and what to use.
+std::string scanRefusal(const GardenSession& session, const Sculpture& sculpture);
 
 // A finished export's text written to `path` atomically (a failure leaves
 // no file): "" on success, else why not.
