@@ -1,6 +1,5 @@
 #include "voxel/scalar_volume.h"
 
-#include <openvdb/io/File.h>
 #include <openvdb/tools/LevelSetRebuild.h>
 
 #include <algorithm>
@@ -13,6 +12,7 @@
 #include <vector>
 
 #include "voxel/memory_guard.h"
+#include "voxel/vdb_grids.h"
 #include "voxel/volume_vdb.h"
 
 namespace hg::voxel {
@@ -102,16 +102,8 @@ std::string readRawVolume(const std::string& path, const RawVolumeLayout& layout
 }
 
 std::string readScalarVdb(const std::string& path, const std::string& gridName, ScalarVolume& out) {
-    ensureOpenVdbInitialized();
     openvdb::GridPtrVecPtr grids;
-    try {
-        openvdb::io::File file(path);
-        file.open();
-        grids = file.getGrids();
-        file.close();
-    } catch (const std::exception& e) {
-        return "cannot read " + path + ": " + e.what();
-    }
+    if (std::string why = readVdbGrids(path, grids); !why.empty()) return why;
     std::string names;
     openvdb::FloatGrid::Ptr found;
     for (const openvdb::GridBase::Ptr& base : *grids) {
