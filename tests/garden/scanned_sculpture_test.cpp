@@ -12,6 +12,8 @@
 
 #include "garden/export/export_file.h"
 #include "garden/export/hyperfun_export.h"
+#include "garden/replay/replay_runner.h"
+#include "garden/replay/replay_script.h"
 #include "garden/sculpt/sculpture_edits.h"
 #include "garden/session/open_session.h"
 #include "polygonizer/mesh_validation.h"
@@ -307,6 +309,22 @@ TEST(ScanContent, ThePhantomIsItsGeneratorsAndItsGardenOpens) {
         return (b.hi[0] - b.lo[0]) * (b.hi[1] - b.lo[1]) * (b.hi[2] - b.lo[2]);
     };
     EXPECT_GT(size("head"), size("skull"));
+}
+
+// content/replays/scan_session.json plays: its stroke carves the skin.
+TEST(ScanContent, TheReplayCarvesTheHead) {
+    const ReplayScript script = loadReplayScript(std::string(HG_SOURCE_DIR) + "/content/replays/scan_session.json");
+    SessionSettings settings = test::smallSessionSettings();
+    settings.sculptureResolution = 64;
+    settings.remeshChunksPerFrame = 0;
+    GardenSession s(loadGarden(script.garden), settings);
+    const int head = s.findSculpture("head");
+    ASSERT_GE(head, 0);
+    const voxel::Volume before = s.sculptures()[static_cast<std::size_t>(head)].volume->clone();
+    const ReplayResult r = runReplay(script, s, nullptr, {});
+    ASSERT_EQ(r.error, "");
+    EXPECT_EQ(s.editCount(head), 1u);
+    EXPECT_GT(test::differingVoxels(*s.sculptures()[static_cast<std::size_t>(head)].volume, before), 100);
 }
 
 #ifdef HG_HYPERGARDEN_EXE
