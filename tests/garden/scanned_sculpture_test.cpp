@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <iterator>
 
@@ -177,6 +178,19 @@ TEST_F(ScannedSculpture, AStrokeChangesItAndUndoRestoresItBitForBit) {
     ASSERT_TRUE(s.undo());
     EXPECT_EQ(test::differingVoxels(*st.volume, original), 0);
     ASSERT_TRUE(s.redo());
+    EXPECT_EQ(test::differingVoxels(*st.volume, carved), 0);
+    // A sketch joined to it (a disc drawn on the plane z = 1.6 in front of
+    // the ball, world (4, 1, 1.6)) is an edit like the stroke.
+    std::vector<std::array<double, 3>> disc;
+    for (int n = 0; n < 32; ++n) {
+        const double t = 2.0 * 3.14159265358979 * n / 32.0;
+        disc.push_back({4.0 + 0.15 * std::cos(t), 1.0 + 0.15 * std::sin(t), 1.6});
+    }
+    ASSERT_EQ(s.applySketch(scan, SketchMode::Add, disc, {0.0, 0.0, 1.0}), "");
+    EXPECT_EQ(s.editCount(scan), 2u);
+    EXPECT_GT(test::differingVoxels(*st.volume, carved), 50);
+    EXPECT_EQ(test::differingVoxels(*st.volume, *st.edits->rebuild()), 0);
+    ASSERT_TRUE(s.undo());
     EXPECT_EQ(test::differingVoxels(*st.volume, carved), 0);
 }
 
