@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <fstream>
 #include <iterator>
@@ -192,6 +193,46 @@ TEST_F(ScannedSculpture, AStrokeChangesItAndUndoRestoresItBitForBit) {
     EXPECT_EQ(test::differingVoxels(*st.volume, *st.edits->rebuild()), 0);
     ASSERT_TRUE(s.undo());
     EXPECT_EQ(test::differingVoxels(*st.volume, carved), 0);
+}
+
+// A volume rewritten on disk is read again like a changed .hf: with a box
+// given its grid is replaced in place and its edits applied again; a file
+// that no longer fits its entry keeps the last good grid and says why.
+TEST_F(ScannedSculpture, AVolumeChangedOnDiskIsReadAgain) {
+    const std::string garden = writeGarden();
+    nlohmann::json g = nlohmann::json::parse(std::ifstream(garden));
+    g["sculptures"][1]["box"] = {{"min", {0.3, 0.3, 0.3}}, {"max", {1.7, 1.7, 1.7}}};
+    std::ofstream(garden) << g.dump();
+    GardenSession s(loadGarden(garden), settings());
+    const int scan = s.findSculpture("scan");
+    ASSERT_EQ(s.applyStroke(scan, StrokeTool::Carve, {{3.8, 1.6, 1.0}, {4.2, 1.6, 1.0}}, 0.1), "");
+    const Sculpture& st = s.sculptures()[static_cast<std::size_t>(scan)];
+    const voxel::Volume before = st.volume->clone();
+    const auto touch = [&] {
+        const auto p = dir / "ball.raw";
+        std::filesystem::last_write_time(p, std::filesystem::last_write_time(p) + std::chrono::seconds(5));
+    };
+    ::hg::test::ScanBall smaller = ball;
+    smaller.radius = 0.5;
+    smaller.write((dir / "ball.raw").string(), false);
+    touch();
+    std::vector<GardenSession::SourceReload> r = s.reloadChangedSources();
+    ASSERT_EQ(r.size(), 1u);
+    EXPECT_EQ(r[0].sculpture, "scan");
+    EXPECT_EQ(r[0].problem, "");
+    EXPECT_GT(test::differingVoxels(*st.volume, before), 1000);
+    EXPECT_EQ(s.editCount(scan), 1u) << "the stroke is applied again on the new grid";
+    EXPECT_EQ(test::differingVoxels(*st.volume, *st.edits->rebuild()), 0);
+    // Cut short: the last good grid stays, with the entry's message.
+    const voxel::Volume good = st.volume->clone();
+    std::ofstream(dir / "ball.raw", std::ios::binary) << std::string(100, '\0');
+    touch();
+    r = s.reloadChangedSources();
+    ASSERT_EQ(r.size(), 1u);
+    EXPECT_NE(r[0].problem.find("$.sculptures[1].volume: "), std::string::npos) << r[0].problem;
+    EXPECT_NE(r[0].problem.find("100 bytes, but dims 40 x 40 x 40 of u8 need 64000 bytes"), std::string::npos)
+        << r[0].problem;
+    EXPECT_EQ(test::differingVoxels(*st.volume, good), 0);
 }
 
 TEST_F(ScannedSculpture, ASessionReopensWithTheSameGridAndItsVolumeCopiedIn) {
