@@ -56,6 +56,16 @@ void simplify(Mesh& mesh, double error, MeshExportReport& report) {
                               " triangles: a further collapse would have left the mesh not closed or not manifold";
 }
 
+// A grid's level set written as .vdb; the report's geometry from its mesh.
+std::string writeVdbOf(const voxel::Volume& volume, const MeshExportOptions& options, const std::string& path,
+                       MeshExportReport& report) {
+    const Mesh mesh = meshVolume(volume);
+    if (mesh.empty()) return "the model has no surface inside the box";
+    fillGeometry(validateMesh(mesh), report);
+    report.triangles = report.vertices = 0;
+    return voxel::writeLevelSet(volume, path, options.metresPerUnit);
+}
+
 std::string exportVdb(const frep::Model& model, const frep::Box3& box, const MeshExportOptions& options,
                       const std::string& path, MeshExportReport& report, const ExportProgress& progress) {
     voxel::VolumeRequest req;
@@ -71,12 +81,7 @@ std::string exportVdb(const frep::Model& model, const frep::Box3& box, const Mes
     report.limitBytes = voxel::memoryLimit(so.memoryLimit);
     report.peakTileBytes = v.volume->memoryBytes();
     if (progress) progress(0.5);
-    const Mesh mesh = meshVolume(*v.volume);
-    if (mesh.empty()) return "the model has no surface inside the box";
-    const MeshReport r = validateMesh(mesh);
-    fillGeometry(r, report);
-    report.triangles = report.vertices = 0;
-    if (std::string why = voxel::writeLevelSet(*v.volume, path, options.metresPerUnit); !why.empty()) return why;
+    if (std::string why = writeVdbOf(*v.volume, options, path, report); !why.empty()) return why;
     if (progress) progress(1.0);
     return "";
 }
@@ -106,10 +111,10 @@ const char* meshFormatName(MeshFormat format) {
     return "STL";
 }
 
-std::string exportMesh(const frep::Model& model, const frep::Box3& box, const MeshExportOptions& options,
-                       const std::string& path, MeshExportReport& report, const ExportProgress& progress) {
-    const auto start = Clock::now();
-    report = MeshExportReport{};
+namespace {
+
+// The checks that need no work: the format, its options, a writable path.
+std::string checkRequest(const MeshExportOptions& options, const std::string& path, MeshExportReport& report) {
     if (std::string why = meshFormatOf(path, report.format); !why.empty()) return why;
     const MeshFormat format = report.format;
     if (format == MeshFormat::Stl && !positiveFinite(options.mmPerUnit))
@@ -120,9 +125,38 @@ std::string exportMesh(const frep::Model& model, const frep::Box3& box, const Me
         return "the simplification error must be a finite number of model units, 0 or more";
     if (options.simplifyError > 0.0 && format == MeshFormat::Vdb) return "simplification applies to meshes, not to .vdb";
     if (options.ascii && format != MeshFormat::Stl) return "ASCII applies to STL only";
-    if (std::string why = io::checkWritable(path); !why.empty()) return why;
+    return io::checkWritable(path);
+}
 
-    if (format == MeshFormat::Vdb) {
+// A finished mesh validated (never written when not closed, manifold and
+// outward), optionally simplified, and written in the report's format.
+std::string writeMeshFile(Mesh& mesh, const MeshExportOptions& options, const std::string& path,
+                          MeshExportReport& report) {
+    const MeshFormat format = report.format;
+    MeshReport checked = validateMesh(mesh);
+    if (!checked.ok()) return describeUnfitMesh(checked, format, options);
+    if (options.simplifyError > 0.0) {
+        simplify(mesh, options.simplifyError, report);
+        if (report.simplified) checked = validateMesh(mesh);
+    }
+    fillGeometry(checked, report);
+    switch (format) {
+        case MeshFormat::Stl: return writeStl(mesh, path, options.ascii, options.mmPerUnit);
+        case MeshFormat::Obj: return writeObj(mesh, path, options.metresPerUnit);
+        case MeshFormat::Glb: return writeGlb(mesh, path, options.metresPerUnit);
+        case MeshFormat::Vdb: break;
+    }
+    return "";
+}
+
+}  // namespace
+
+std::string exportMesh(const frep::Model& model, const frep::Box3& box, const MeshExportOptions& options,
+                       const std::string& path, MeshExportReport& report, const ExportProgress& progress) {
+    const auto start = Clock::now();
+    report = MeshExportReport{};
+    if (std::string why = checkRequest(options, path, report); !why.empty()) return why;
+    if (report.format == MeshFormat::Vdb) {
         std::string why = exportVdb(model, box, options, path, report, progress);
         report.seconds = std::chrono::duration<double>(Clock::now() - start).count();
         return why;
@@ -146,23 +180,32 @@ std::string exportMesh(const frep::Model& model, const frep::Box3& box, const Me
     report.leafTapeMean = tiled.stats.leafTapeMean;
     report.leafTapeMax = tiled.stats.leafTapeMax;
     if (!tiled.error.empty()) return tiled.error;
-    Mesh& mesh = tiled.mesh;
+    std::string why = writeMeshFile(tiled.mesh, options, path, report);
+    report.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    return why;
+}
 
-    MeshReport checked = validateMesh(mesh);
-    if (!checked.ok()) return describeUnfitMesh(checked, format, options);
-    if (options.simplifyError > 0.0) {
-        simplify(mesh, options.simplifyError, report);
-        if (report.simplified) checked = validateMesh(mesh);
+std::string exportVolumeMesh(const voxel::Volume& volume, const MeshExportOptions& options, const std::string& path,
+                             MeshExportReport& report, const ExportProgress& progress) {
+    const auto start = Clock::now();
+    report = MeshExportReport{};
+    if (std::string why = checkRequest(options, path, report); !why.empty()) return why;
+    report.peakTileBytes = volume.memoryBytes();
+    report.limitBytes = voxel::memoryLimit(options.memoryLimitMiB << 20);
+    if (report.format == MeshFormat::Vdb) {
+        if (progress) progress(0.5);
+        std::string why = writeVdbOf(volume, options, path, report);
+        if (why.empty() && progress) progress(1.0);
+        report.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+        return why;
     }
-    fillGeometry(checked, report);
-
-    std::string why;
-    switch (format) {
-        case MeshFormat::Stl: why = writeStl(mesh, path, options.ascii, options.mmPerUnit); break;
-        case MeshFormat::Obj: why = writeObj(mesh, path, options.metresPerUnit); break;
-        case MeshFormat::Glb: why = writeGlb(mesh, path, options.metresPerUnit); break;
-        case MeshFormat::Vdb: break;
-    }
+    ExportStats stats;
+    Mesh mesh = meshVolume(volume, &stats);
+    report.meshSeconds = stats.seconds;
+    if (progress) progress(0.5);
+    if (mesh.empty()) return "the grid has no surface";
+    const std::string why = writeMeshFile(mesh, options, path, report);
+    if (why.empty() && progress) progress(1.0);
     report.seconds = std::chrono::duration<double>(Clock::now() - start).count();
     return why;
 }

@@ -24,6 +24,7 @@
 #include "frep/box.h"
 #include "frep/model.h"
 #include "polygonizer/mesh_validation.h"
+#include "voxel/volume.h"
 
 namespace hg::poly {
 
@@ -83,6 +84,14 @@ using ExportProgress = std::function<void(double)>;
 // validation, or a failed write. Nothing is left at `path` on failure.
 std::string exportMesh(const frep::Model& model, const frep::Box3& box, const MeshExportOptions& options,
                        const std::string& path, MeshExportReport& report, const ExportProgress& progress = {});
+
+// Exports a finished grid as it stands (a scanned volume's sculpture, which
+// has no FRep to sample at another resolution: docs/volumes.md, "Scanned
+// volumes"): its mesh at the grid's own resolution (export_mesher.h),
+// validated, optionally simplified and written like exportMesh's; .vdb
+// writes the grid's level set. The same messages and guarantees.
+std::string exportVolumeMesh(const voxel::Volume& volume, const MeshExportOptions& options, const std::string& path,
+                             MeshExportReport& report, const ExportProgress& progress = {});
 
 // A few lines for a person: format, triangles, volume and size in the
 // file's units, time, tiles and memory.

@@ -10,6 +10,7 @@
 #include <openvdb/tools/LevelSetRebuild.h>
 
 #include "io/checked_write.h"
+#include "voxel/vdb_grids.h"
 #include "voxel/volume_vdb.h"
 
 namespace hg::voxel {
@@ -138,9 +139,8 @@ std::string writeLevelSet(const Volume& volume, const std::string& path, double 
     return writeGrid(grid, path, io::WriteSite::Export);
 }
 
-std::string readVolume(const std::string& path, Volume& volume, const std::string& gridName) {
+std::string readVdbGrids(const std::string& path, openvdb::GridPtrVecPtr& grids) {
     ensureOpenVdbInitialized();
-    openvdb::GridPtrVecPtr grids;
     try {
         openvdb::io::File file(path);
         file.open();
@@ -149,6 +149,12 @@ std::string readVolume(const std::string& path, Volume& volume, const std::strin
     } catch (const std::exception& e) {
         return "cannot read " + path + ": " + e.what();
     }
+    return "";
+}
+
+std::string readVolume(const std::string& path, Volume& volume, const std::string& gridName) {
+    openvdb::GridPtrVecPtr grids;
+    if (std::string why = readVdbGrids(path, grids); !why.empty()) return why;
     for (const openvdb::GridBase::Ptr& base : *grids) {
         if (!gridName.empty() && base->getName() != gridName) continue;
         int format = 0;

@@ -9,6 +9,7 @@
 
 #include "garden/gesture/gesture_recognizer.h"
 #include "garden/app/sculpture_loader.h"
+#include "garden/app/sculpture_sampling.h"
 #include "garden/morph/garden_morph.h"
 #include "garden/morph/morph_blend.h"
 #include "garden/morph/morph_sources.h"
@@ -87,7 +88,8 @@ GardenSession::GardenSession(GardenLoad load, SessionSettings settings)
         for (std::size_t i : later) {
             sculptures_[i].loading = true;
             const glm::vec3 at = sculptures_[i].worldCentre();
-            jobs.push_back({i, std::make_shared<const frep::Model>(*load_.sculptures[i].model), volumeRequest(g.sculptures[i]), {at.x, at.y, at.z}});
+            jobs.push_back({i, std::make_shared<const SculptureLoad>(load_.sculptures[i]), g.sculptures[i],
+                            volumeRequest(g.sculptures[i]), {at.x, at.y, at.z}});
         }
         const glm::vec3 eye = navigator_.eye();
         loader_ = std::make_unique<SculptureLoader>(std::move(jobs), std::array<double, 3>{eye.x, eye.y, eye.z});
@@ -129,7 +131,7 @@ void GardenSession::describeSculpture(std::size_t index) {
     const SculptureSpec& spec = load_.garden->sculptures[index];
     Sculpture& s = sculptures_[index];
     s.name = spec.name;
-    s.source.kind = SculptureSource::Kind::HyperFun;
+    s.source.kind = spec.scan ? SculptureSource::Kind::Scan : SculptureSource::Kind::HyperFun;
     s.source.spec = static_cast<int>(index);
     s.placement = spec.placement;
     s.material = spec.material;
@@ -141,7 +143,8 @@ void GardenSession::describeSculpture(std::size_t index) {
 }
 
 void GardenSession::sampleSculpture(std::size_t index) {
-    voxel::VoxelizeResult r = voxel::voxelize(*load_.sculptures[index].model, volumeRequest(load_.garden->sculptures[index]));
+    const SculptureSpec& spec = load_.garden->sculptures[index];
+    voxel::VoxelizeResult r = sampleSculptureSource(spec, load_.sculptures[index], volumeRequest(spec));
     attachGrid(index, r.volume ? std::make_unique<voxel::Volume>(std::move(*r.volume)) : nullptr, r.error);
 }
 

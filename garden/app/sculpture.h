@@ -28,12 +28,16 @@ class SculptureEdits;
 
 // What a sculpture's field is made from.
 struct SculptureSource {
-    enum class Kind { HyperFun, Morph };
+    enum class Kind { HyperFun, Morph, Scan };
     Kind kind = Kind::HyperFun;
     // HyperFun: the garden's entry (file, body, a[], box, resolution) by its
     // index in Garden::sculptures and GardenLoad::sculptures (an index: a
     // sculpture added while the garden runs appends to both), and the
     // program read from it (null when the file is missing or broken).
+    // Scan: the same index; its entry's `scan` names the volume and the
+    // iso-value (docs/volumes.md, "Scanned volumes"), and its base grid is
+    // the iso-surface rebuilt as a level set. It has no program: it cannot
+    // be written as HyperFun, only meshed from its grid.
     int spec = -1;
     std::shared_ptr<const frep::Program> program;
     // Morph: the garden's triangle of sources; the weights live in the session.
@@ -83,6 +87,7 @@ struct Sculpture {
     // The grid and its meshing caches are there: neither missing nor loading.
     bool hasGrid() const { return !missing() && !loading; }
     bool morphResult() const { return source.kind == SculptureSource::Kind::Morph; }
+    bool scanned() const { return source.kind == SculptureSource::Kind::Scan; }
     glm::vec3 worldCentre() const;
 };
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <chrono>
 
-#include "frep/model.h"
+#include "garden/app/sculpture_sampling.h"
 
 namespace hg::garden {
 
@@ -38,7 +38,7 @@ void SculptureLoader::run() {
         }
         Loaded done;
         done.sculpture = job.sculpture;
-        voxel::VoxelizeResult r = voxel::voxelize(*job.model, job.request);
+        voxel::VoxelizeResult r = sampleSculptureSource(job.spec, *job.source, job.request);
         if (r.volume) done.volume = std::make_unique<voxel::Volume>(std::move(*r.volume));
         else done.error = r.error;
         std::lock_guard<std::mutex> lock(mutex_);

@@ -3,8 +3,8 @@
 // always the one nearest the viewer next, while the garden runs; the frame
 // takes the finished grids (GardenSession attaches a coarse mesh at once
 // and the finer levels stream in through the remesh queue). A grid sampled
-// here is the grid the session would sample at start: voxelize() is
-// deterministic.
+// here is the grid the session would sample at start: voxelize() and a
+// scan's rebuild are deterministic.
 #pragma once
 
 #include <array>
@@ -16,9 +16,8 @@
 #include <thread>
 #include <vector>
 
+#include "garden/scene/garden_file.h"
 #include "voxel/sampler.h"
-
-namespace hg::frep { class Model; }
 
 namespace hg::garden {
 
@@ -28,7 +27,8 @@ public:
         std::size_t sculpture = 0;      // the session's index
         // Shared, not pointed into the garden's load: sculptures added
         // while others load grow that vector (session_adding.cpp).
-        std::shared_ptr<const frep::Model> model;
+        std::shared_ptr<const SculptureLoad> source;
+        SculptureSpec spec;
         voxel::VolumeRequest request;
         std::array<double, 3> where{};  // world position, for the nearest-first order
     };

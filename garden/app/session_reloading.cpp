@@ -9,6 +9,7 @@
 #include <system_error>
 
 #include "garden/app/garden_session.h"
+#include "garden/app/sculpture_sampling.h"
 #include "garden/sculpt/sculpture_edits.h"
 #include "voxel/sampler.h"
 
@@ -41,7 +42,7 @@ std::vector<GardenSession::SourceReload> GardenSession::reloadChangedSources() {
             if (!loaded.ok()) {
                 problem = loaded.error;
             } else {
-                voxel::VoxelizeResult r = voxel::voxelize(*loaded.model, volumeRequest(spec));
+                voxel::VoxelizeResult r = sampleSculptureSource(spec, loaded, volumeRequest(spec));
                 if (!r.volume) problem = spec.file + ": cannot be sampled: " + r.error;
                 else problem = replaceSource(i, std::move(loaded), std::move(*r.volume));
             }

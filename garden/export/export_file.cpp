@@ -10,7 +10,9 @@
 #include "garden/app/garden_session.h"
 #include "garden/export/hyperfun_export.h"
 #include "garden/scene/model_file.h"
+#include "garden/sculpt/sculpture_edits.h"
 #include "polygonizer/mesh_export.h"
+#include "voxel/volume.h"
 
 namespace hg::garden {
 
@@ -20,6 +22,60 @@ std::string lowerExtension(const std::string& path) {
     std::string e = std::filesystem::path(path).extension().string();
     std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     return e;
+}
+
+// A scanned volume's sculpture: no FRep, so a mesh of its grid as it stands
+// (a copy, for the worker), at the grid's resolution and over its box.
+std::string prepareGridExport(const GardenSession& session, const Sculpture& s, const std::string& path, const ExportFileOptions& options,
+                              ExportJob& job, std::chrono::steady_clock::time_point start) {
+    if (lowerExtension(path) == ".hf") return scanRefusal(session, s);
+    const int grid = s.volume->frame.resolution;
+    if (options.resolution != 0 && options.resolution != grid)
+        return "sculpture '" + s.name + "' is a scanned volume: it is meshed from its grid, at the grid's " +
+               std::to_string(grid) + " voxels along its longest side (give no resolution, or " + std::to_string(grid) +
+               "; a finer grid comes from a finer \"resolution\" in the garden file)";
+    if (options.box) return "sculpture '" + s.name + "' is a scanned volume: it is meshed from its whole grid, not over a box";
+    job.path = path;
+    job.sculpture = s.name;
+    job.edits = s.edits ? s.edits->list().size() : 0;
+    job.box = s.volume->frame.modelBox;
+    job.gridResolution = grid;
+    job.metresPerUnit = s.scale;
+    job.options = options;
+    job.grid = std::make_shared<const voxel::Volume>(s.volume->clone());
+    job.prepareSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return "";
+}
+
+poly::MeshExportOptions meshOptionsOf(const ExportJob& job) {
+    const ExportFileOptions& o = job.options;
+    poly::MeshExportOptions mo;
+    mo.resolution = o.resolution > 0 ? o.resolution : job.gridResolution;
+    mo.ascii = o.ascii;
+    mo.metresPerUnit = job.metresPerUnit;
+    // A sculpture's true size unless the user asks for another scale.
+    mo.mmPerUnit = o.mmPerUnit ? *o.mmPerUnit : 1000.0 * job.metresPerUnit;
+    mo.simplifyError = o.simplifyError;
+    mo.memoryLimitMiB = static_cast<std::uint64_t>(std::max(0.0, o.memoryLimitMiB));
+    return mo;
+}
+
+std::string meshSummary(const ExportJob& job, const poly::MeshExportReport& mr, const poly::MeshExportOptions& mo) {
+    std::ostringstream out;
+    out << "wrote " << job.path << ": sculpture '" << job.sculpture << "', " << job.edits << " edits"
+        << (job.grid ? " (meshed from its grid)" : "") << "\n"
+        << poly::describe(mr, mo);
+    std::string summary = out.str();
+    while (!summary.empty() && summary.back() == '\n') summary.pop_back();
+    return summary;
+}
+
+std::string writeGridExport(const ExportJob& job, ExportFileReport& report, const std::function<void(double)>& progress) {
+    const poly::MeshExportOptions mo = meshOptionsOf(job);
+    poly::MeshExportReport mr;
+    if (std::string e = poly::exportVolumeMesh(*job.grid, mo, job.path, mr, progress); !e.empty()) return e;
+    report.summary = meshSummary(job, mr, mo);
+    return "";
 }
 
 }  // namespace
@@ -42,6 +98,7 @@ std::string prepareExport(const GardenSession& session, int index, const std::st
     if (options.resolution < 0) return "the resolution must be positive";
     if (!s.volume) return "sculpture '" + s.name + "' has no grid to take its model box from";
     const auto start = std::chrono::steady_clock::now();
+    if (s.scanned()) return prepareGridExport(session, s, path, options, job, start);
     HyperFunExport hf = exportHyperFun(session, index);
     if (!hf.error.empty()) return "cannot export sculpture '" + s.name + "': " + hf.error;
     report.warning = hf.warning;
@@ -74,6 +131,7 @@ std::string writeExport(const ExportJob& job, ExportFileReport& report, const st
         report.summary = out.str();
         return "";
     }
+    if (job.grid) return writeGridExport(job, report, progress);
     // A mesh is made from the exported FRep itself, not from the grid, so it
     // can be finer than the grid the sculpture was edited at and is the very
     // solid the .hf file describes.
@@ -88,21 +146,10 @@ std::string writeExport(const ExportJob& job, ExportFileReport& report, const st
     const int body = findBodyOrExplain(*program, "my_model", job.sculpture + ".hf", why);
     if (body < 0) return why;
     const frep::Model model(program, body, {});
-    const ExportFileOptions& o = job.options;
-    poly::MeshExportOptions mo;
-    mo.resolution = o.resolution > 0 ? o.resolution : job.gridResolution;
-    mo.ascii = o.ascii;
-    mo.metresPerUnit = job.metresPerUnit;
-    // A sculpture's true size unless the user asks for another scale.
-    mo.mmPerUnit = o.mmPerUnit ? *o.mmPerUnit : 1000.0 * job.metresPerUnit;
-    mo.simplifyError = o.simplifyError;
-    mo.memoryLimitMiB = static_cast<std::uint64_t>(std::max(0.0, o.memoryLimitMiB));
+    const poly::MeshExportOptions mo = meshOptionsOf(job);
     poly::MeshExportReport mr;
     if (std::string e = poly::exportMesh(model, job.box, mo, job.path, mr, progress); !e.empty()) return e;
-    out << "wrote " << job.path << ": sculpture '" << job.sculpture << "', " << job.edits << " edits\n"
-        << poly::describe(mr, mo);
-    report.summary = out.str();
-    while (!report.summary.empty() && report.summary.back() == '\n') report.summary.pop_back();
+    report.summary = meshSummary(job, mr, mo);
     return "";
 }
 

@@ -1,16 +1,21 @@
 // One sculpture of a running garden written to a file in any export format
 // (docs/design.md §7, docs/export.md): exact HyperFun (.hf), or a mesh meshed from
 // that exported FRep (.stl, .obj, .glb, .vdb: polygonizer/mesh_export.h), so
-// every format shows the same solid. The command line (`hypergarden
+// every format shows the same solid. A scanned volume's sculpture has no
+// FRep to write: its meshes come from its grid as it stands, at the grid's
+// resolution, and .hf is refused (docs/volumes.md, "Scanned volumes"). The command line (`hypergarden
 // export`) and the desktop panel's Export button both call this.
 #pragma once
 
 #include <cstddef>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 
 #include "frep/box.h"
+
+namespace hg::voxel { class Volume; }
 
 namespace hg::garden {
 
@@ -44,6 +49,9 @@ struct ExportJob {
     double metresPerUnit = 1.0;
     ExportFileOptions options;
     double prepareSeconds = 0.0;  // taking the HyperFun text from the session
+    // A scanned volume's sculpture: a copy of its grid, meshed instead of
+    // the HyperFun text (there is none).
+    std::shared_ptr<const voxel::Volume> grid;
 };
 // "" and the job, or why not (nothing is written yet).
 std::string prepareExport(const GardenSession& session, int index, const std::string& path,

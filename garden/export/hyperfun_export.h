@@ -25,6 +25,7 @@ namespace hg::garden {
 struct SelectionMask;
 
 class GardenSession;
+struct Sculpture;
 
 struct HyperFunExport {
     std::string text;             // the program ("" on error)
@@ -38,13 +39,17 @@ struct HyperFunExport {
     std::string warning;
 };
 
-// The sculpture with index `sculpture` in session.sculptures().
+// The sculpture with index `sculpture` in session.sculptures(). A scanned
+// volume's sculpture is refused (scanRefusal): HyperFun cannot read a volume.
 HyperFunExport exportHyperFun(const GardenSession& session, int sculpture);
 
 // The part of sculpture `sculpture` inside `mask` (an extraction,
 // garden/export/part_export.h): its field in voxels, then min with the
 // mask's balls' field.
 HyperFunExport exportHyperFunPart(const GardenSession& session, int sculpture, const SelectionMask& mask);
+
+// Why a scanned volume's sculpture has no HyperFun export, and what to use.
+std::string scanRefusal(const GardenSession& session, const Sculpture& sculpture);
 
 // A finished export's text written to `path` atomically (a failure leaves
 // no file): "" on success, else why not.

@@ -230,7 +230,8 @@ void selectionSection(GardenSession& session, const ToolWidgetLook& look) {
         return;
     }
     const Sculpture& s = session.sculptures()[static_cast<std::size_t>(selected)];
-    ImGui::Text("%s%s", s.name.c_str(), s.morphResult() ? " (the morph result)" : "");
+    ImGui::Text("%s%s", s.name.c_str(),
+                s.morphResult() ? " (the morph result)" : s.scanned() ? " (a scanned volume)" : "");
     if (s.missing()) return;
     bool mirror = s.mirror.has_value();
     if (ImGui::Checkbox(keyed("mirror plane (M)", "mirror plane", look), &mirror))

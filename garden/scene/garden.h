@@ -44,10 +44,26 @@ struct Placement {
     double scale = 1.0;               // metres per model unit
 };
 
+// A scanned scalar volume as a sculpture's source (docs/garden-format.md,
+// "volume"; docs/volumes.md, "Scanned volumes"): a raw 8- or 16-bit file or
+// a float grid of a .vdb, and the iso-value whose surface is the solid.
+struct ScanSpec {
+    enum class Format { Raw, Vdb };
+    Format format = Format::Raw;
+    std::string grid;                 // .vdb: the float grid's name ("": the first)
+    std::array<int, 3> dims{};        // raw: samples along x, y, z (x fastest)
+    bool sixteenBit = false;          // raw: u16 little-endian, else u8
+    Vec3 spacing = {1.0, 1.0, 1.0};   // raw: model units between samples
+    double iso = 0.0;
+    bool insideAbove = true;          // the solid is where samples exceed iso ("inside": "above")
+    std::string at;                   // "garden.json: $.sculptures[2].volume": where its messages point
+};
+
 struct SculptureSpec {
     std::string name;                 // unique in the garden
-    std::string file;                 // the .hf path resolved against the garden file's folder
+    std::string file;                 // the .hf path (or the scan's file) resolved against the garden file's folder
     std::string fileAsWritten;        // as in the garden file (for messages and saving)
+    std::optional<ScanSpec> scan;     // set: the source is this scanned volume, `file` its file
     std::string body;                 // "": my_model, else the first body
     std::vector<double> a;            // a[1], a[2], ... (missing items are 0)
     std::optional<frep::Box3> box;    // model box; none: voxel::resolveModelBox

@@ -1,5 +1,6 @@
 #include "garden/scene/garden_file.h"
 
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -13,6 +14,7 @@
 #include "garden/scene/json_reader.h"
 #include "garden/scene/materials.h"
 #include "garden/scene/model_file.h"
+#include "voxel/scalar_volume.h"
 #include "voxel/volume_frame.h"
 
 namespace hg::garden {
@@ -26,6 +28,7 @@ constexpr int kVersion = 1;
 constexpr double kMinTriangleArea = 1e-4;
 
 struct Reader {
+    std::string file;    // the garden file, for the messages a scan gives when it is read
     std::string folder;
     std::map<std::string, Material> materials;
 
@@ -87,12 +90,23 @@ struct Reader {
     }
 
     SculptureSpec sculpture(const json& v, const std::string& path, const Material& fallback) const {
-        ObjectReader o(v, path, {"name", "file", "body", "a", "box", "resolution", "band", "placement", "material"});
+        ObjectReader o(v, path, {"name", "file", "volume", "body", "a", "box", "resolution", "band", "placement", "material"});
         o.finish();
         SculptureSpec s;
         s.name = readString(o.required("name"), o.pathOf("name"));
-        s.fileAsWritten = readString(o.required("file"), o.pathOf("file"));
-        s.file = resolve(s.fileAsWritten);
+        if (o.has("file") && o.has("volume"))
+            throw JsonError(path, "give either 'file' (a HyperFun program) or 'volume' (a scanned volume), not both");
+        if (!o.has("file") && !o.has("volume"))
+            throw JsonError(path, "missing key 'file' (a HyperFun program) or 'volume' (a scanned volume)");
+        if (auto* x = o.optional("volume")) {
+            for (const char* key : {"body", "a"})
+                if (o.has(key))
+                    throw JsonError(o.pathOf(key), std::string("'") + key + "' applies to a HyperFun file, not to a volume");
+            s.scan = scan(*x, o.pathOf("volume"), s);
+        } else {
+            s.fileAsWritten = readString(o.required("file"), o.pathOf("file"));
+            s.file = resolve(s.fileAsWritten);
+        }
         if (auto* x = o.optional("body")) s.body = readString(*x, o.pathOf("body"));
         if (auto* x = o.optional("a")) s.a = readNumbers(*x, o.pathOf("a"));
         if (auto* x = o.optional("box")) s.box = box(*x, o.pathOf("box"));
@@ -102,6 +116,63 @@ struct Reader {
         s.material = fallback;
         if (auto* x = o.optional("material")) s.material = material(*x, o.pathOf("material"));
         return s;
+    }
+
+    // A scanned volume's entry (docs/garden-format.md, "volume"); its file
+    // is read with the sculptures (loadSculpture), so a missing or wrong
+    // file marks the sculpture missing instead of refusing the garden.
+    ScanSpec scan(const json& v, const std::string& path, SculptureSpec& s) const {
+        ObjectReader o(v, path, {"file", "grid", "dims", "type", "spacing", "iso", "inside"});
+        o.finish();
+        ScanSpec scan;
+        scan.at = file + ": " + path;
+        s.fileAsWritten = readString(o.required("file"), o.pathOf("file"));
+        s.file = resolve(s.fileAsWritten);
+        std::string ext = std::filesystem::path(s.fileAsWritten).extension().string();
+        for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        if (ext == ".vdb") scan.format = ScanSpec::Format::Vdb;
+        else if (ext != ".raw")
+            throw JsonError(o.pathOf("file"), "expected a raw volume (.raw) or an OpenVDB file (.vdb), found '" +
+                                                  s.fileAsWritten + "'");
+        const bool raw = scan.format == ScanSpec::Format::Raw;
+        for (const char* key : {"dims", "type", "spacing"})
+            if (!raw && o.has(key))
+                throw JsonError(o.pathOf(key), std::string("'") + key + "' applies to a raw volume; a .vdb grid has its own");
+        if (raw && o.has("grid")) throw JsonError(o.pathOf("grid"), "'grid' applies to a .vdb file");
+        if (auto* x = o.optional("grid")) scan.grid = readString(*x, o.pathOf("grid"));
+        if (raw) {
+            const json& dims = o.required("dims");
+            const std::string at = o.pathOf("dims");
+            if (!dims.is_array() || dims.size() != 3) throw JsonError(at, "expected an array of 3 integers [nx, ny, nz]");
+            for (std::size_t a = 0; a < 3; ++a)
+                scan.dims[a] = readInt(dims[a], indexPath(at, a), voxel::kMinRawDim, voxel::kMaxRawDim);
+        }
+        if (auto* x = o.optional("type")) {
+            const std::string type = readString(*x, o.pathOf("type"));
+            if (type != "u8" && type != "u16")
+                throw JsonError(o.pathOf("type"), "expected \"u8\" or \"u16\" (16 bits little-endian), found '" + type + "'");
+            scan.sixteenBit = type == "u16";
+        }
+        if (auto* x = o.optional("spacing")) {
+            if (x->is_number()) {
+                const double d = readPositive(*x, o.pathOf("spacing"));
+                scan.spacing = {d, d, d};
+            } else {
+                scan.spacing = readVec3(*x, o.pathOf("spacing"));
+                for (std::size_t a = 0; a < 3; ++a)
+                    if (!(scan.spacing[a] > 0.0))
+                        throw JsonError(indexPath(o.pathOf("spacing"), a), "expected a positive number");
+            }
+        }
+        scan.iso = readNumber(o.required("iso"), o.pathOf("iso"));
+        if (auto* x = o.optional("inside")) {
+            const std::string inside = readString(*x, o.pathOf("inside"));
+            if (inside != "above" && inside != "below")
+                throw JsonError(o.pathOf("inside"), "expected \"above\" (the solid is where samples exceed iso) or "
+                                                    "\"below\", found '" + inside + "'");
+            scan.insideAbove = inside == "above";
+        }
+        return scan;
     }
 
     PathSpec path(const json& v, const std::string& at, const Material& fallback) const {
@@ -293,6 +364,7 @@ Garden parseGarden(const std::string& text, const std::string& file, const std::
     if (auto* x = top.optional("name")) g.name = readString(*x, top.pathOf("name"), true);
 
     Reader r;
+    r.file = file;
     r.folder = folder;
     if (auto* x = top.optional("materials")) {
         std::string at = top.pathOf("materials");
@@ -360,9 +432,37 @@ SculptureLoad sculptureFrom(ModelFile mf, const SculptureSpec& spec) {
     return s;
 }
 
+// A scanned volume read and its iso-value checked against the samples (the
+// level set itself is built when the sculpture is sampled).
+SculptureLoad loadScan(const SculptureSpec& spec) {
+    const ScanSpec& scan = *spec.scan;
+    SculptureLoad s;
+    auto volume = std::make_shared<voxel::ScalarVolume>();
+    std::string why;
+    if (scan.format == ScanSpec::Format::Vdb) {
+        why = voxel::readScalarVdb(spec.file, scan.grid, *volume);
+    } else {
+        voxel::RawVolumeLayout layout;
+        layout.dims = scan.dims;
+        layout.type = scan.sixteenBit ? voxel::SampleType::U16 : voxel::SampleType::U8;
+        layout.spacing = scan.spacing;
+        why = voxel::readRawVolume(spec.file, layout, *volume);
+    }
+    if (why.empty() && !(scan.iso > volume->minValue && scan.iso < volume->maxValue))
+        why = "iso " + formatNumber(scan.iso) + " is outside the data's range (" + formatNumber(volume->minValue) +
+              " to " + formatNumber(volume->maxValue) + "): it must lie strictly between the lowest and the highest sample";
+    if (!why.empty()) {
+        s.error = scan.at + ": " + why + "\n";
+        return s;
+    }
+    s.scan = std::move(volume);
+    return s;
+}
+
 }  // namespace
 
 SculptureLoad loadSculpture(const SculptureSpec& spec) {
+    if (spec.scan) return loadScan(spec);
     return sculptureFrom(loadModelFile(spec.file, spec.body, spec.a), spec);
 }
 
@@ -400,8 +500,13 @@ GardenLoad loadGardenText(const std::string& text, const std::string& path) {
     std::map<std::string, std::size_t> first;
     for (const auto& spec : load.garden->sculptures) {
         std::ostringstream key;
+        key.precision(17);
         key << spec.file << '\n' << spec.body;
         for (double a : spec.a) key << ' ' << a;
+        if (const auto& c = spec.scan)
+            key << '\n' << c->grid << ' ' << c->dims[0] << ' ' << c->dims[1] << ' ' << c->dims[2] << ' ' << c->sixteenBit
+                << ' ' << c->spacing[0] << ' ' << c->spacing[1] << ' ' << c->spacing[2] << ' ' << c->iso << ' '
+                << c->insideAbove;
         const auto [it, fresh] = first.emplace(key.str(), load.sculptures.size());
         load.sculptures.push_back(fresh ? loadSculpture(spec) : load.sculptures[it->second]);
     }
@@ -409,6 +514,10 @@ GardenLoad loadGardenText(const std::string& text, const std::string& path) {
         for (std::size_t i = 0; i < 3; ++i)
             if (!load.sculptures[m->sourceIndex[i]].ok()) {
                 load.morphError = "morph source '" + m->sources[i] + "' is missing, so there is no metamorphosis";
+                break;
+            } else if (load.sculptures[m->sourceIndex[i]].scan) {
+                load.morphError = "morph source '" + m->sources[i] +
+                                  "' is a scanned volume; the metamorphosis blends HyperFun sculptures, so there is none";
                 break;
             }
     }

@@ -12,15 +12,19 @@
 #include "frep/model.h"
 #include "garden/scene/garden.h"
 
+namespace hg::voxel { class ScalarVolume; }
+
 namespace hg::garden {
 
-// One sculpture's HyperFun source, ready to sample, or why not.
+// One sculpture's source, ready to sample, or why not: its HyperFun body,
+// or the samples of a scanned volume (SculptureSpec::scan).
 struct SculptureLoad {
     std::shared_ptr<const frep::Program> program;
     std::optional<frep::Model> model;
-    std::string error;  // "" when `model` is set; else the messages (file:line:col, caret), ending in '\n'
+    std::shared_ptr<const voxel::ScalarVolume> scan;
+    std::string error;  // "" when `model` or `scan` is set; else the messages (file:line:col, caret), ending in '\n'
 
-    bool ok() const { return model.has_value(); }
+    bool ok() const { return model.has_value() || scan != nullptr; }
 };
 
 struct GardenLoad {
@@ -47,8 +51,9 @@ GardenLoad loadGarden(const std::string& path);
 // its relative sculpture files): a generated garden.
 GardenLoad loadGardenText(const std::string& text, const std::string& path);
 
-// The sculpture's model from its file, body and a[] (missing or broken
-// files give an error, not an exception). Used by loadGarden, and again when
+// The sculpture's model from its file, body and a[], or its scanned volume
+// read and its iso-value checked (missing or broken files give an error
+// naming the garden file's entry, not an exception). Used by loadGarden, and again when
 // a file changed on disk.
 SculptureLoad loadSculpture(const SculptureSpec& spec);
 // The same from the program's text instead of spec.file (a sculpture added

@@ -91,7 +91,10 @@ std::string makeSession(const std::string& dir, const std::string& gardenFile) {
     const fs::path gardenFolder = fs::path(gardenFile).parent_path();
     std::set<std::string> taken;
     if (garden.is_object() && garden.contains("sculptures") && garden["sculptures"].is_array()) {
-        for (auto& s : garden["sculptures"]) {
+        for (auto& entry : garden["sculptures"]) {
+            // A scanned volume's file is in its "volume" object.
+            const bool scan = entry.is_object() && entry.contains("volume") && entry["volume"].is_object();
+            nlohmann::json& s = scan ? entry["volume"] : entry;
             if (!s.is_object() || !s.contains("file") || !s["file"].is_string()) continue;
             const fs::path source = gardenFolder / s["file"].get<std::string>();
             std::string name = source.filename().string();

@@ -8,7 +8,7 @@
 //   DIR/session.json        {"format": "hypergarden-session", "version": 1}
 //   DIR/session.lock        the writer's lock and who holds it (io/folder_lock.h)
 //   DIR/garden.json         the garden, its "file" entries pointing into sources/
-//   DIR/sources/*.hf        the sculptures' HyperFun files as they were
+//   DIR/sources/            the sculptures' HyperFun files (and scanned volumes) as they were
 //   DIR/journal.hgj         garden/session/journal.h
 //   DIR/snapshots/          snapshot.json (the record count it covers and the
 //                           grids' files) and one NAME.RECORDS.vdb per edited

@@ -1,0 +1,28 @@
+#include "garden/app/sculpture_sampling.h"
+
+#include "voxel/scalar_volume.h"
+
+namespace hg::garden {
+
+voxel::VoxelizeResult sampleSculptureSource(const SculptureSpec& spec, const SculptureLoad& load,
+                                            const voxel::VolumeRequest& request) {
+    if (load.model) return voxel::voxelize(*load.model, request);
+    voxel::VoxelizeResult r;
+    if (!load.scan || !spec.scan) {
+        r.error = load.error.empty() ? "the sculpture has no source to sample" : load.error;
+        return r;
+    }
+    voxel::IsoSurfaceRequest iso;
+    iso.iso = spec.scan->iso;
+    iso.insideAbove = spec.scan->insideAbove;
+    iso.box = request.box;
+    iso.resolution = request.resolution;
+    iso.band = request.band;
+    iso.source = request.source;
+    if (iso.source.file.empty()) iso.source.file = spec.fileAsWritten;
+    r = voxel::levelSetFromScalar(*load.scan, iso);
+    if (!r.volume) r.error = spec.scan->at + ": " + r.error;
+    return r;
+}
+
+}  // namespace hg::garden

@@ -1,0 +1,18 @@
+// A sculpture's unedited grid from its source, whichever kind it is: the
+// HyperFun body sampled (voxel::voxelize) or a scanned volume's iso-surface
+// rebuilt as a level set (voxel::levelSetFromScalar, docs/volumes.md,
+// "Scanned volumes"). The session's start, the background loader and a
+// source read again after it changed on disk all come here.
+#pragma once
+
+#include "garden/scene/garden_file.h"
+#include "voxel/sampler.h"
+
+namespace hg::garden {
+
+// `request` is the spec's box, resolution and band (GardenSession::volumeRequest).
+// A scan's errors name the garden file's entry.
+voxel::VoxelizeResult sampleSculptureSource(const SculptureSpec& spec, const SculptureLoad& load,
+                                            const voxel::VolumeRequest& request);
+
+}  // namespace hg::garden
