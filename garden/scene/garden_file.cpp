@@ -83,8 +83,8 @@ struct Reader {
         return static_cast<float>(readNumber(v, path, voxel::kMinBand, voxel::kMaxBand));
     }
 
-    std::string resolve(const std::string& file) const {
-        std::filesystem::path p(file);
+    std::string resolve(const std::string& written) const {
+        std::filesystem::path p(written);
         if (p.is_absolute()) return p.lexically_normal().string();
         return (std::filesystem::path(folder) / p).lexically_normal().string();
     }

@@ -17,6 +17,7 @@
 #include "garden/replay/replay_runner.h"
 #include "garden/replay/replay_script.h"
 #include "garden/sculpt/sculpture_edits.h"
+#include "garden/export/part_export.h"
 #include "garden/session/open_session.h"
 #include "polygonizer/mesh_validation.h"
 #include "polygonizer/stl_io.h"
@@ -193,6 +194,48 @@ TEST_F(ScannedSculpture, AStrokeChangesItAndUndoRestoresItBitForBit) {
     EXPECT_EQ(test::differingVoxels(*st.volume, *st.edits->rebuild()), 0);
     ASSERT_TRUE(s.undo());
     EXPECT_EQ(test::differingVoxels(*st.volume, carved), 0);
+}
+
+// A scanned volume is the thing selected (issue 22): a model sketched
+// around the scanned ball shrinks onto it, its selection keeps a stroke
+// inside it, and extracting a part of a scan is refused with the reason.
+TEST_F(ScannedSculpture, AModelShrinksOntoItAndItsSelectionLimitsTheTools) {
+    GardenSession s(loadGarden(writeGarden()), settings());
+    const int scan = s.findSculpture("scan");
+    Sculpture& st = s.sculptures()[static_cast<std::size_t>(scan)];
+    // Around the ball's upper half: a circle of 0.5 m about world (4, 1.5, 1).
+    std::vector<std::array<double, 3>> circle;
+    for (int n = 0; n < 40; ++n) {
+        const double t = 2.0 * 3.14159265358979 * n / 40.0;
+        circle.push_back({4.0 + 0.5 * std::cos(t), 1.5 + 0.5 * std::sin(t), 1.0});
+    }
+    const auto m = s.modelFromWorld(scan, "top", circle, {0.0, 0.0, 1.0});
+    ASSERT_TRUE(m.action) << m.why;
+    ASSERT_EQ(s.apply(*m.action), "");
+    ASSERT_EQ(s.deformModel("top", true, 150), "");
+    const double voxel = st.volume->frame.voxelSize;
+    double worst = 0.0;
+    for (const auto& v : s.models())
+        if (v.name == "top")
+            for (const glm::dvec3& p : *v.vertices)
+                if (p.y > 1.45)  // the wrapped cap, above where the model was drawn through the ball
+                    worst = std::max(worst, std::fabs(glm::length(p - glm::dvec3(1.0, 1.0, 1.0)) - 0.6));
+    EXPECT_LT(worst, 2.0 * voxel) << "the model lies on the scanned surface";
+    ASSERT_TRUE(s.selectionOf(scan));
+    // A carve along the ball's equator: only the part inside the selection changes.
+    const voxel::Volume before = st.volume->clone();
+    ASSERT_EQ(s.applyStroke(scan, StrokeTool::Carve, {{3.3, 1.0, 1.0}, {4.7, 1.0, 1.0}}, 0.12), "");
+    EXPECT_EQ(test::differingVoxels(*st.volume, *st.edits->rebuild()), 0);
+    const int low = st.volume->frame.indexOf(1, 1.0 - 0.05);
+    int changedBelow = 0;
+    const voxel::IndexBox box = st.volume->frame.indexBox;
+    for (int i = box.lo[0]; i <= box.hi[0]; ++i)
+        for (int j = box.lo[1]; j <= low - 8; ++j)
+            for (int k = box.lo[2]; k <= box.hi[2]; ++k)
+                if (st.volume->value(i, j, k) != before.value(i, j, k)) ++changedBelow;
+    EXPECT_EQ(changedBelow, 0) << "nothing changes well below the selection";
+    EXPECT_GT(test::differingVoxels(*st.volume, before), 20);
+    EXPECT_NE(extractPart(s, "scan", "top", "").find("scanned volume"), std::string::npos);
 }
 
 // A volume rewritten on disk is read again like a changed .hf: with a box
