@@ -347,7 +347,12 @@ void HandPanelUi::toolPage(garden::GardenSession& session) {
     if (t.kind == Kind::None) ImGui::TextDisabled("the trigger picks the blend\non the ground triangle,\nor here");
     else if (t.kind == Kind::Move)
         ImGui::TextDisabled("the trigger on a sculpture\nselects and drags it,\non its ring turns it;\ntool stick up, down: its scale");
-    else ImGui::TextDisabled("tool stick: size, strength");
+    else if (t.kind == Kind::Sketch) {
+        // The gesture button is the other hand's trigger (xr/controllers.cpp).
+        ImGui::TextDisabled("other trigger held: draw a gesture\n(V new, U join, arch cut, Z model;\ncircle to shrink or grow it)");
+        if (!session.gestureMessage().empty()) ImGui::TextWrapped("%s", session.gestureMessage().c_str());
+        if (!session.sketchMessage().empty()) ImGui::TextWrapped("%s", session.sketchMessage().c_str());
+    } else ImGui::TextDisabled("tool stick: size, strength");
     ImGui::EndGroup();
     if (t.kind != Kind::None) return;
 
