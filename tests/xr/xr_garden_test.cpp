@@ -91,6 +91,45 @@ TEST_F(XrGarden, ScriptedRightHandCarvesTheGridTheReplayCarves) {
     EXPECT_GE(readback()["haptic_pulses"].get<int>(), 1) << "a pulse when the tool starts touching material";
 }
 
+// The headset's gesture button is the navigation hand's trigger: held
+// while the tool hand's ray draws a Z (seen from the hand, as on a
+// screen), it makes the sketch tool's next outline a deformable model
+// (issue 22), as the desktop's middle button does.
+TEST_F(XrGarden, TheOtherTriggerDrawsAGestureWithTheToolHand) {
+    nlohmann::json steps = nlohmann::json::array();
+    const auto at = [](double x, double y) {  // screen-like offsets: x right, y down
+        return nlohmann::json{{"position", {0.2, 1.2, -0.3}}, {"direction", {x, -y, -1.0}}};
+    };
+    const double corners[4][2] = {{-0.15, -0.15}, {0.15, -0.15}, {-0.15, 0.15}, {0.15, 0.15}};
+    for (int side = 0; side < 3; ++side)
+        for (int i = 0; i < 12; ++i) {
+            const double t = i / 12.0;
+            const double x = corners[side][0] + t * (corners[side + 1][0] - corners[side][0]);
+            const double y = corners[side][1] + t * (corners[side + 1][1] - corners[side][1]);
+            steps.push_back({{"frames", 1},
+                             {"navigation", {{"aim", {{"position", {-0.2, 1.0, -0.3}}}}, {"trigger", 1}}},
+                             {"tool", {{"aim", at(x, y)}}}});
+        }
+    steps.push_back({{"frames", 1},
+                     {"navigation", {{"aim", {{"position", {-0.2, 1.0, -0.3}}}}, {"trigger", 1}}},
+                     {"tool", {{"aim", at(0.15, 0.15)}}}});
+    steps.push_back({{"frames", 3}, {"tool", {{"aim", at(0.15, 0.15)}}}});
+    const std::string s = script(steps.dump());
+    ::setenv("HG_MOCK_XR_SCRIPT", s.c_str(), 1);
+    XrOptions o;
+    o.script = s;
+    o.mirror = false;
+    bool checked = false;
+    ASSERT_EQ(runXrGarden(o, [&](garden::GardenSession& xr, const XrRunInfo&) {
+                  EXPECT_EQ(xr.tool().kind, garden::ToolSettings::Kind::Sketch) << xr.gestureMessage();
+                  EXPECT_EQ(xr.tool().sketchUse, garden::ToolSettings::SketchUse::Model) << xr.gestureMessage();
+                  EXPECT_EQ(xr.editCount(xr.findSculpture("a")), 0u) << "the gesture sculpts nothing";
+                  checked = true;
+              }),
+              0);
+    EXPECT_TRUE(checked);
+}
+
 TEST_F(XrGarden, CarvingWhileTheLeftHandHoldsTheWorldMovedEqualsTheReplay) {
     // The left hand grabs the world and pulls it half a metre nearer, then
     // holds it there while the right hand carves. In the world, the right
