@@ -170,8 +170,14 @@ void startView(OpenedSession& opened, const std::string& dir, SessionPanel& pane
     if (opened.recorder) {
         panel.opened(dir);
         std::string warning;
-        readSessionView(dir, opened.session->navigator(), warning);
+        std::optional<ToolSettings> tool;
+        readSessionView(dir, opened.session->navigator(), warning, &tool);
         if (!warning.empty()) std::cerr << "warning: " << warning << "\n";
+        // The tool as it was left, its sizes too.
+        if (tool) {
+            opened.session->tool() = *tool;
+            return;
+        }
     }
     sizeToolsToView(*opened.session);
 }
@@ -230,7 +236,8 @@ int runDesktopGarden(const DesktopOptions& options) {
             const int status = runDesktopOn(*opened.session, window, here, &link);
             // The view goes with the session, for its next opening.
             if (opened.recorder)
-                if (const std::string why = writeSessionView(here.session, opened.session->navigator()); !why.empty())
+                if (const std::string why = writeSessionView(here.session, opened.session->navigator(), &opened.session->tool());
+                    !why.empty())
                     std::cerr << "warning: the view is not kept: " << why << "\n";
             if (link.goTo.empty() || status != 0) {
                 std::vector<std::string> last;

@@ -42,7 +42,7 @@ void SessionPanel::opened(const std::string& dir) {
 std::string SessionPanel::duplicate(const GardenSession& session, const SessionRecorder& recorder, const std::string& to) {
     std::string why = copySession(recorder, to);
     // The copy opens where the user is looking now.
-    if (why.empty()) why = writeSessionView(to, session.navigator());
+    if (why.empty()) why = writeSessionView(to, session.navigator(), &session.tool());
     if (why.empty()) setStatus("copied the session to " + to, false);
     else setStatus("no copy: " + why, true);
     return why;

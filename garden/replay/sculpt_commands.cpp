@@ -4,6 +4,7 @@
 
 #include "garden/scene/json_reader.h"
 #include "garden/sculpt/edit_names.h"
+#include "garden/sculpt/tool_settings_json.h"
 #include "voxel/volume_frame.h"
 
 namespace hg::garden {
@@ -139,25 +140,10 @@ SculptCommand readSculptCommand(const std::string& key, const nlohmann::json& v,
         if (key == "undo") return UndoCommand{times};
         return RedoCommand{times};
     }
-    // sculpt_tool
-    ObjectReader r(v, path, {"kind", "radius", "softness", "shape", "radii", "strength", "reverse"});
+    // sculpt_tool: the settings a session's view.json keeps, the kind required.
+    if (v.is_object() && !v.contains("kind")) throw JsonError(path, "missing key 'kind'");
     ToolCommand c;
-    const std::string kind = readString(r.required("kind"), r.pathOf("kind"));
-    using K = ToolSettings::Kind;
-    if (kind == "none") c.settings.kind = K::None;
-    else if (kind == "carve") c.settings.kind = K::Carve;
-    else if (kind == "add") c.settings.kind = K::Add;
-    else if (kind == "melt") c.settings.kind = K::Melt;
-    else if (kind == "perturb") c.settings.kind = K::Perturb;
-    else if (kind == "move") c.settings.kind = K::Move;
-    else throw JsonError(r.pathOf("kind"), "expected none, carve, add, melt, perturb or move");
-    if (r.has("radius")) c.settings.radius = readNumber(r.required("radius"), r.pathOf("radius"), 1e-6, 100.0);
-    if (r.has("softness")) c.settings.softness = readNumber(r.required("softness"), r.pathOf("softness"), 0.01, 64.0);
-    if (r.has("shape")) c.settings.shape = readQuadricShape(r.required("shape"), r.pathOf("shape"));
-    if (r.has("radii")) c.settings.radii = readVec3(r.required("radii"), r.pathOf("radii"));
-    if (r.has("strength")) c.settings.strength = readNumber(r.required("strength"), r.pathOf("strength"), -1000.0, 1000.0);
-    if (r.has("reverse")) c.settings.reverse = readBool(r.required("reverse"), r.pathOf("reverse"));
-    r.finish();
+    c.settings = readToolSettings(v, path);
     return c;
 }
 

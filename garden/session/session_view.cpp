@@ -9,6 +9,7 @@
 
 #include "garden/app/navigator.h"
 #include "garden/scene/json_reader.h"
+#include "garden/sculpt/tool_settings_json.h"
 #include "io/checked_write.h"
 #include "io/read_text.h"
 
@@ -22,17 +23,19 @@ constexpr double kDegrees = 180.0 / glm::pi<double>();
 
 }  // namespace
 
-std::string writeSessionView(const std::string& dir, const Navigator& navigator) {
+std::string writeSessionView(const std::string& dir, const Navigator& navigator, const ToolSettings* tool) {
     const glm::vec3& e = navigator.eye();
     nlohmann::json j;
     j["mode"] = navigator.mode() == NavigationMode::Walk ? "walk" : "fly";
     j["eye"] = {static_cast<double>(e.x), static_cast<double>(e.y), static_cast<double>(e.z)};
     j["yaw"] = static_cast<double>(navigator.yaw()) * kDegrees;
     j["pitch"] = static_cast<double>(navigator.pitch()) * kDegrees;
+    if (tool) j["tool"] = toolSettingsJson(*tool);
     return io::writeFileAtomically(viewPath(dir), j.dump(2) + "\n", io::WriteSite::SessionFile);
 }
 
-bool readSessionView(const std::string& dir, Navigator& navigator, std::string& warning) {
+bool readSessionView(const std::string& dir, Navigator& navigator, std::string& warning,
+                     std::optional<ToolSettings>* tool) {
     warning.clear();
     const std::string path = viewPath(dir);
     std::error_code ec;
@@ -44,7 +47,7 @@ bool readSessionView(const std::string& dir, Navigator& navigator, std::string& 
     }
     try {
         const nlohmann::json j = parseStrictJson(text);
-        ObjectReader r(j, "$", {"mode", "eye", "yaw", "pitch"});
+        ObjectReader r(j, "$", {"mode", "eye", "yaw", "pitch", "tool"});
         const std::string mode = readString(r.required("mode"), r.pathOf("mode"));
         if (mode != "walk" && mode != "fly") throw JsonError(r.pathOf("mode"), "expected \"walk\" or \"fly\"");
         const std::array<double, 3> eye = readVec3(r.required("eye"), r.pathOf("eye"));
@@ -52,7 +55,10 @@ bool readSessionView(const std::string& dir, Navigator& navigator, std::string& 
             if (!(std::fabs(v) <= 1e6)) throw JsonError(r.pathOf("eye"), "must be within a million metres");
         const double yaw = readNumber(r.required("yaw"), r.pathOf("yaw"), -1e6, 1e6);
         const double pitch = readNumber(r.required("pitch"), r.pathOf("pitch"), -90.0, 90.0);
+        std::optional<ToolSettings> inHand;
+        if (const auto* t = r.optional("tool")) inHand = readToolSettings(*t, r.pathOf("tool"));
         r.finish();
+        if (tool) *tool = inHand;
         navigator.setMode(mode == "walk" ? NavigationMode::Walk : NavigationMode::Fly);
         navigator.setPose(glm::vec3(static_cast<float>(eye[0]), static_cast<float>(eye[1]), static_cast<float>(eye[2])),
                           static_cast<float>(yaw / kDegrees), static_cast<float>(pitch / kDegrees));

@@ -1,12 +1,16 @@
 // The view a session was left with (issue 23, docs/session-format.md): the
 // desktop writes DIR/view.json when it closes a session and reads it when
 // it opens one, so a reopened session looks where the user left off.
-//   {"mode": "walk" | "fly", "eye": [x, y, z], "yaw": degrees, "pitch": degrees}
+//   {"mode": "walk" | "fly", "eye": [x, y, z], "yaw": degrees, "pitch": degrees,
+//    "tool": {the tool in hand and its settings, garden/sculpt/tool_settings_json.h}}
 // (an orbit is kept as flying from where it stood: its target may be gone).
 // The view is not an action: it is not journalled and undo leaves it alone.
 #pragma once
 
+#include <optional>
 #include <string>
+
+#include "garden/sculpt/tool_settings.h"
 
 namespace hg::garden {
 
@@ -14,13 +18,17 @@ class Navigator;
 
 constexpr const char* kSessionViewFile = "view.json";
 
-// Writes the navigator's pose to DIR/view.json atomically; "" or why not.
-std::string writeSessionView(const std::string& dir, const Navigator& navigator);
+// Writes the navigator's pose (and the tool in hand, when given) to
+// DIR/view.json atomically; "" or why not.
+std::string writeSessionView(const std::string& dir, const Navigator& navigator, const ToolSettings* tool = nullptr);
 
 // Sets the navigator from DIR/view.json: true when it did. False with
 // `warning` "" when the session has no view yet; false with `warning`
 // naming the file and the fault when the file is unreadable or wrong (the
 // navigator is left as it was).
-bool readSessionView(const std::string& dir, Navigator& navigator, std::string& warning);
+// `tool`, when given, receives the tool the file holds (none from a file
+// written before tools were kept).
+bool readSessionView(const std::string& dir, Navigator& navigator, std::string& warning,
+                     std::optional<ToolSettings>* tool = nullptr);
 
 }  // namespace hg::garden

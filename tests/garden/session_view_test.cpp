@@ -55,5 +55,53 @@ TEST_F(SessionViewTest, NoViewOpensAtTheStartAndABrokenOneIsNamed) {
     EXPECT_NE(warning.find("view.json"), std::string::npos) << warning;
 }
 
+// The tool in hand comes back with the view (issue 23): kind, sizes,
+// shapes, the reverse and what the sketch tool makes; a view written
+// before tools were kept gives none, and a bad tool is named by its path.
+TEST_F(SessionViewTest, TheToolAndItsSettingsComeBack) {
+    Navigator n;
+    ToolSettings t;
+    selectTool(t, ToolSettings::Kind::Impacts);
+    t.radius = 0.3;
+    t.radii = {0.2, 0.1, 0.05};
+    t.perturbScale = 1.5;
+    t.shape = QuadricShape::Torus;
+    t.strength = -4.0;
+    t.reverse = true;
+    t.impactShape = ImpactShape::Chisel;
+    t.impactSize = 0.04;
+    t.compactionCm3 = 2.0;
+    t.spread = ImpactSpread::Cone;
+    t.spreadSize = 12.0;
+    t.impactCount = 7;
+    t.sketchUse = ToolSettings::SketchUse::Model;
+    ASSERT_EQ(writeSessionView(dir.string(), n, &t), "");
+    std::optional<ToolSettings> back;
+    std::string warning;
+    ASSERT_TRUE(readSessionView(dir.string(), n, warning, &back)) << warning;
+    ASSERT_TRUE(back);
+    EXPECT_EQ(back->kind, ToolSettings::Kind::Impacts);
+    EXPECT_EQ(back->radius, 0.3);
+    EXPECT_EQ(back->radii, t.radii);
+    EXPECT_EQ(back->perturbScale, 1.5);
+    EXPECT_EQ(back->shape, QuadricShape::Torus);
+    EXPECT_EQ(back->strength, -4.0);
+    EXPECT_TRUE(back->reverse);
+    EXPECT_EQ(back->impactShape, ImpactShape::Chisel);
+    EXPECT_EQ(back->impactSize, 0.04);
+    EXPECT_EQ(back->compactionCm3, 2.0);
+    EXPECT_EQ(back->spread, ImpactSpread::Cone);
+    EXPECT_EQ(back->spreadSize, 12.0);
+    EXPECT_EQ(back->impactCount, 7);
+    EXPECT_EQ(back->sketchUse, ToolSettings::SketchUse::Model);
+    // Written before tools were kept: the view, and no tool.
+    ASSERT_EQ(writeSessionView(dir.string(), n), "");
+    ASSERT_TRUE(readSessionView(dir.string(), n, warning, &back)) << warning;
+    EXPECT_FALSE(back);
+    write(kSessionViewFile, R"({"mode": "fly", "eye": [1, 2, 3], "yaw": 0, "pitch": 0, "tool": {"kind": "chainsaw"}})");
+    EXPECT_FALSE(readSessionView(dir.string(), n, warning, &back));
+    EXPECT_NE(warning.find("$.tool.kind"), std::string::npos) << warning;
+}
+
 }  // namespace
 }  // namespace hg::garden
