@@ -37,6 +37,8 @@ constexpr double kModelEdgeVoxels = 2.5;
 constexpr double kModelMaxEdgesAcross = 48.0;
 // The selection's balls grown by this many voxels of the sculpture.
 constexpr double kSelectionMarginVoxels = 2.0;
+// The selection's balls are fitted at this many of the sculpture's voxels.
+constexpr double kSelectionFitVoxels = 2.0;
 
 }  // namespace
 
@@ -189,7 +191,11 @@ std::optional<SelectionMask> GardenSession::modelMask(const std::string& model, 
     // the balls' bumpy hull just inside it would cut the surface it wraps;
     // grown, the sculpture's own surface bounds the selection there and
     // the balls only where the model cuts through the material.
-    for (const deform::SelectionBall& b : deform::selectionBalls(m->model->mesh(), voxel))
+    // Fitted on a grid of twice the sculpture's voxel: most of the fit's
+    // time is the mesh's level set, and eight times fewer voxels keep the
+    // hitch when a circling gesture ends to a few tens of milliseconds;
+    // the growth below covers the coarser fit.
+    for (const deform::SelectionBall& b : deform::selectionBalls(m->model->mesh(), kSelectionFitVoxels * voxel))
         mask.balls.push_back(MaskBall{{b.centre.x, b.centre.y, b.centre.z}, b.radius + kSelectionMarginVoxels * voxel});
     if (mask.balls.empty()) {
         why = "model '" + model + "' encloses nothing";
