@@ -33,7 +33,7 @@ using Kind = garden::ToolSettings::Kind;
 constexpr int kButtonColumns = 5;
 constexpr float kCellX = static_cast<float>(kPanelPixelsX) / kButtonColumns, kCellY = 40.0f, kButtonInset = 4.0f;
 constexpr float kTop = 4.0f;
-constexpr float kPageCellX = kPanelPixelsX / 3.0f, kPageCellY = 30.0f;
+constexpr float kPageCellX = kPanelPixelsX / 4.0f, kPageCellY = 30.0f;
 constexpr float kPagesY = kTop + 2.0f * kCellY;
 constexpr float kBodyY = kPagesY + kPageCellY + 4.0f;
 constexpr float kMorphX = 300.0f, kMorphSide = 120.0f;
@@ -47,11 +47,13 @@ constexpr float kFrame = kFontLine + 2.0f * kFramePadY;
 constexpr float kRow = kFrame + kSpacingY;
 constexpr float kTextRow = kFontLine + kSpacingY;
 constexpr float kToggleStep = 130.0f;
+constexpr float kUndoSelectedWidth = 220.0f;
 constexpr garden::ToolWidgetLook kLook{220.0f, false, 104.0f};
 
 constexpr const char* kLabels[] = {"morph", "carve", "add", "melt", "perturb", "impacts", "move", "sketch", "undo", "redo"};
 static_assert(std::size(kLabels) == static_cast<std::size_t>(PanelButton::Count));
-constexpr const char* kPageLabels[] = {"tool", "sculpture", "settings"};
+constexpr const char* kPageLabels[] = {"tool", "sculpture", "settings", "history"};
+static_assert(std::size(kPageLabels) == static_cast<std::size_t>(PanelPage::Count));
 constexpr const char* kSnapLabels[] = {"15 deg", "30 deg", "45 deg", "90 deg"};
 static_assert(std::size(kSnapLabels) == std::size(kSnapAngles));
 
@@ -153,6 +155,7 @@ glm::vec2 panelActionCenter(PanelAction a) {
             return frameCenter(kButtonInset + kLook.choiceWidth + kSpacingX, rowTop(0), kLook.choiceWidth);
         // Below the name and the mirror plane.
         case PanelAction::DiscardEdits: return frameCenter(kButtonInset, rowTop(2) + kTextRow, kLook.choiceWidth);
+        case PanelAction::UndoSelected: return frameCenter(kButtonInset, rowTop(0), kUndoSelectedWidth);
     }
     return {};
 }
@@ -312,6 +315,7 @@ bool HandPanelUi::update(garden::GardenSession& session, const HandPanel& panel,
         case PanelPage::Tool: toolPage(session); break;
         case PanelPage::Sculpture: sculpturePage(session); break;
         case PanelPage::Settings: changed = settingsPage(profile, user); break;
+        case PanelPage::History: historyPage(session); break;
         case PanelPage::Count: break;
     }
     ImGui::End();
@@ -384,6 +388,24 @@ void HandPanelUi::sculpturePage(garden::GardenSession& session) {
     ImGui::SameLine();
     if (ImGui::Button("next >", ImVec2(size.x, size.y)) && count > 0) session.select((session.selected() + 1) % count);
     garden::selectionSection(session, kLook);
+    ImGui::EndGroup();
+}
+
+// The desktop's history panel (H) in the headset (issue 23): the global
+// undo and redo are the buttons above; here the selected sculpture's last
+// action alone, and the list of what was done.
+void HandPanelUi::historyPage(garden::GardenSession& session) {
+    const int selected = session.selected();
+    ImGui::SetCursorPos(ImVec2(kButtonInset, rowTop(0)));
+    ImGui::BeginDisabled(selected < 0);
+    const std::string own = selected >= 0
+                                ? "undo on " + session.sculptures()[static_cast<std::size_t>(selected)].name
+                                : std::string("undo on the selection");
+    if (ImGui::Button(own.c_str(), ImVec2(kUndoSelectedWidth, kFrame))) session.undoSculpture(selected);
+    ImGui::EndDisabled();
+    ImGui::SetCursorPos(ImVec2(kButtonInset, rowTop(1)));
+    ImGui::BeginGroup();
+    garden::historyList(session);
     ImGui::EndGroup();
 }
 

@@ -42,7 +42,7 @@ const char* panelButtonLabel(PanelButton b);
 // The board point of the morph triangle where the blend has these weights.
 glm::vec2 panelMorphPoint(const glm::vec3& weights);
 // The pages under the buttons, and the board point of a page's button.
-enum class PanelPage { Tool, Sculpture, Settings, Count };
+enum class PanelPage { Tool, Sculpture, Settings, History, Count };
 glm::vec2 panelPageCenter(PanelPage p);
 // The board point of a check box: on the settings page (left-handed,
 // seated, smooth turning) or the sculpture page (the selection's mirror
@@ -58,7 +58,8 @@ enum class PanelChoice { PerturbShape, ImpactShape, ImpactSpread, SnapAngle };
 glm::vec2 panelChoiceCenter(PanelChoice c, int option);
 // The board point of a button on the sculpture page ("discard edits" with
 // a sculpture selected).
-enum class PanelAction { PreviousSculpture, NextSculpture, DiscardEdits };
+// (the history page's undo of the selected sculpture's last action only).
+enum class PanelAction { PreviousSculpture, NextSculpture, DiscardEdits, UndoSelected };
 glm::vec2 panelActionCenter(PanelAction a);
 // The board point on the settings page's seated height slider that sets
 // it to `metres` (0 to kMaxSeatedHeightOffset).
@@ -91,6 +92,7 @@ private:
     void toolPage(garden::GardenSession& session);
     void sculpturePage(garden::GardenSession& session);
     bool settingsPage(const std::string& profile, XrUserSettings& user);
+    void historyPage(garden::GardenSession& session);
 };
 
 }  // namespace hg::xr

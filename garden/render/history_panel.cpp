@@ -36,6 +36,12 @@ void drawHistoryPanel(GardenSession& session, bool& open) {
     if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
         ImGui::SetTooltip("the selected sculpture's last action only; the others' stay (Ctrl+Alt+Z)");
     ImGui::Separator();
+    historyList(session);
+    ImGui::End();
+}
+
+void historyList(GardenSession& session) {
+    const int selected = session.selected();
     const std::vector<HistoryItem> items = session.history();
     if (items.empty()) ImGui::TextDisabled("nothing done yet");
     if (ImGui::BeginChild("##actions")) {
@@ -53,7 +59,6 @@ void drawHistoryPanel(GardenSession& session, bool& open) {
         if (ImGui::GetScrollY() >= ImGui::GetScrollMaxY()) ImGui::SetScrollHereY(1.0f);  // follow the newest
     }
     ImGui::EndChild();
-    ImGui::End();
 }
 
 }  // namespace hg::garden

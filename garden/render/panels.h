@@ -47,6 +47,9 @@ void drawKeyRows(const char* id, float keyWidth, const std::function<bool(const 
 // (the selection's highlighted, undone ones greyed), undo, redo and undo on
 // the selected sculpture alone. `open` goes false when closed.
 void drawHistoryPanel(GardenSession& session, bool& open);
+// The history's actions, newest at the bottom (the panel's list, and the
+// headset's history page).
+void historyList(GardenSession& session);
 
 // The first-run overlay: what the garden is, the few keys to start with
 // (from the key table) and a button that dismisses it. `open` goes false

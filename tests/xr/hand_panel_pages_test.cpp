@@ -111,6 +111,26 @@ TEST_F(HandPanelPages, ImpactShapeAndSpreadChosenOnThePanel) {
     EXPECT_EQ(tool.impactShape, garden::ImpactShape::Sphere) << "a new run starts from the defaults";
 }
 
+// The headset's history page (issue 23: the desktop's history panel where
+// it applies): after a carve on 'a', the page's "undo on a" takes back that
+// sculpture's last action alone, journalled as an undo naming it.
+TEST_F(HandPanelPages, TheHistoryPageUndoesTheSelectedSculpturesLastAction) {
+    std::size_t edits = 1;
+    std::vector<garden::HistoryItem> history;
+    run("[" + press(panelButtonCenter(PanelButton::Carve)) + R"(,
+      {"frames": 6, "tool": {"aim": {"position": [0.3, 1.2, -1.0], "direction": [-0.35, -0.6, -1.3]}, "trigger": 1}},
+      {"frames": 2}, )" + press(panelPageCenter(PanelPage::History)) + ", " +
+            press(panelActionCenter(PanelAction::UndoSelected)) + R"(, {"frames": 2}])",
+        [&](garden::GardenSession& xr) {
+            edits = xr.editCount(xr.findSculpture("a"));
+            history = xr.history();
+        });
+    EXPECT_EQ(edits, 0u) << "undone on the history page";
+    ASSERT_EQ(history.size(), 1u);
+    EXPECT_TRUE(history[0].undone) << "the carve waits in the redo list";
+    EXPECT_EQ(history[0].name, "a");
+}
+
 TEST_F(HandPanelPages, TheSculpturePageMirrorsAndDiscardsTheSelectedSculpturesEdits) {
     options.session = (dir / "session").string();
     // Run 1: carve 'a' (the carve button, then the trigger on it: the
