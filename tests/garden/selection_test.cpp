@@ -272,5 +272,36 @@ TEST_F(SelectionTest, CirclingWithTheGestureButtonDeformsLiveAndJournalsOnce) {
     EXPECT_EQ(session->tool().sketchUse, ToolSettings::SketchUse::Model) << "a loop is not a mode switch";
 }
 
+// Sketching on the morph result works like any edit there (issue 22): a
+// sketch joined to the blend, a model shrunk onto it and a stroke inside
+// its selection, all over the blend, which a new weight recomputes under
+// them; each time the grid equals the blend with every edit applied.
+TEST_F(SelectionTest, SketchesAndSelectionsOnTheMorphResult) {
+    const int m = session->findSculpture("metamorphosis");
+    ASSERT_GE(m, 0);
+    for (int f = 0; f < 2000 && !session->idle(); ++f) session->frame(FrameInput(Hands{}, 1.0 / 90.0));
+    ASSERT_TRUE(session->idle());
+    const glm::vec3 centre = session->sculptures()[static_cast<std::size_t>(m)].worldCentre();
+    const std::array<double, 3> at{centre.x, centre.y + 0.2, centre.z + 0.3};
+    ASSERT_EQ(session->applySketch(m, SketchMode::Add, circleZ(at, 0.15), {0, 0, 1}), "");
+    const auto a = session->modelFromWorld(m, "blend", circleZ({centre.x, centre.y, centre.z}, 0.8), {0, 0, 1});
+    ASSERT_TRUE(a.action) << a.why;
+    ASSERT_EQ(session->apply(*a.action), "");
+    ASSERT_EQ(session->deformModel("blend", true, 80), "");
+    ASSERT_TRUE(session->selectionOf(m));
+    ASSERT_EQ(session->applyStroke(m, StrokeTool::Carve, {{centre.x - 0.5, centre.y, centre.z}, {centre.x + 0.5, centre.y, centre.z}},
+                                   0.1),
+              "");
+    EXPECT_EQ(session->editCount(m), 2u);
+    const Sculpture& r = session->sculptures()[static_cast<std::size_t>(m)];
+    EXPECT_EQ(test::differingVoxels(*r.volume, *r.edits->rebuild()), 0);
+    EXPECT_TRUE(r.edits->list().edits().back().mask) << "the stroke carries the selection";
+    session->setMorphWeights({0.6, 0.2, 0.2});
+    for (int f = 0; f < 4000 && !session->idle(); ++f) session->frame(FrameInput(Hands{}, 1.0 / 90.0));
+    ASSERT_TRUE(session->idle());
+    EXPECT_EQ(test::differingVoxels(r.edits->base(), *session->blendFromScratch()), 0) << "the new blend underneath";
+    EXPECT_EQ(test::differingVoxels(*r.volume, *r.edits->rebuild()), 0) << "with the edits over it";
+}
+
 }  // namespace
 }  // namespace hg::garden
