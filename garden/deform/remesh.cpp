@@ -183,6 +183,8 @@ int flipTowardEvenValence(DeformMesh& mesh) {
         if (e.uses != 2) continue;
         const Triangle t0 = mesh.triangles[e.t0], t1 = mesh.triangles[e.t1];
         const int k = edgeCorner(t0, e.a, e.b);
+        // A triangle a flip earlier in this round rewrote no longer has the edge.
+        if (k < 0 || edgeCorner(t1, e.a, e.b) < 0) continue;
         // t0 runs p -> q -> r, t1 runs q -> p -> s: the quad p, s, q, r.
         const std::uint32_t p = t0[k], q = t0[(k + 1) % 3], r = t0[(k + 2) % 3], s = opposite(t1, p, q);
         if (dirty[p] || dirty[q] || dirty[r] || dirty[s] || r == s) continue;
