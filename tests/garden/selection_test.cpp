@@ -96,7 +96,8 @@ TEST_F(SelectionTest, EditsActOnlyInsideTheSelectionExactlyAndUndo) {
     // A model of 0.25 m about the ball's top, chosen as it is (not deformed).
     ASSERT_EQ(model("cap", {kCx, kCy + 0.6, kCz}, 0.25), "");
     ASSERT_EQ(session->selectWithModel("c", "cap"), "");
-    const auto& sel = session->selectionOf(c);
+    // A copy: the selection is cleared below, and the test goes on using it.
+    const std::optional<SelectionMask> sel = session->selectionOf(c);
     ASSERT_TRUE(sel);
     const voxel::Volume before = grid(c).clone();
     // A carve straight across the ball's top, far wider than the cap.
