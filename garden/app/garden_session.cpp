@@ -112,6 +112,13 @@ std::array<double, 3> GardenSession::toModel(const Sculpture& s, const glm::vec3
     return {m.x, m.y, m.z};
 }
 
+std::array<double, 3> GardenSession::toModelDirection(const Sculpture& s, const std::array<double, 3>& world) {
+    // The placement's scale is uniform, and a direction's length does not matter.
+    const glm::dvec3 n =
+        glm::dvec3(glm::inverse(glm::dmat4(s.modelToWorld)) * glm::dvec4(world[0], world[1], world[2], 0.0));
+    return {n.x, n.y, n.z};
+}
+
 // Builds the pyramid, layout and queue of a sampled sculpture, at the levels
 // the start pose selects.
 void GardenSession::attachMeshing(Sculpture& s) const {

@@ -442,6 +442,8 @@ private:
     void buildMorph();
     void restartMorph();
     std::array<double, 3> toModel(const Sculpture& s, const glm::vec3& world) const;
+    // A world direction (a sketch plane's normal) in the sculpture's model frame.
+    static std::array<double, 3> toModelDirection(const Sculpture& s, const std::array<double, 3>& world);
     std::string checkEditable(int sculpture) const;
     std::string startStroke(int sculpture, Stroke stroke);
     // apply()'s cases, each on a sculpture found by the action's name.

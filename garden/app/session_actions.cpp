@@ -237,11 +237,7 @@ ActionOrWhy GardenSession::sketchFromWorld(int sculpture, SketchMode mode,
         if (!finite3(p)) return refused("a sketch's point is not a finite position");
         a.points.push_back(toModel(s, toGlm(p)));
     }
-    // A direction: turned into the model frame (the scale is uniform, and
-    // the length does not matter).
-    const glm::dvec3 n = glm::dvec3(glm::inverse(glm::dmat4(s.modelToWorld)) *
-                                    glm::dvec4(worldNormal[0], worldNormal[1], worldNormal[2], 0.0));
-    a.normal = {n.x, n.y, n.z};
+    a.normal = toModelDirection(s, worldNormal);
     return {a, ""};
 }
 

@@ -10,8 +10,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include <glm/gtc/matrix_inverse.hpp>
-
 #include "garden/app/garden_session.h"
 #include "garden/deform/deformable_model.h"
 #include "garden/deform/selection.h"
@@ -67,9 +65,7 @@ ActionOrWhy GardenSession::modelFromWorld(int sculpture, const std::string& name
         if (!finite3(p)) return refused("a model's point is not a finite position");
         a.points.push_back(toModel(s, toGlm(p)));
     }
-    const glm::dvec3 n = glm::dvec3(glm::inverse(glm::dmat4(s.modelToWorld)) *
-                                    glm::dvec4(worldNormal[0], worldNormal[1], worldNormal[2], 0.0));
-    a.normal = {n.x, n.y, n.z};
+    a.normal = toModelDirection(s, worldNormal);
     return {a, ""};
 }
 
