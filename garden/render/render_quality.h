@@ -18,6 +18,7 @@ struct RenderQuality {
     float aoRadius = 0.25f;          // metres: the largest hollow that darkens
     float exposure = 1.0f;           // linear scale before tone mapping
     float renderScale = 1.0f;        // the scene drawn at this share of the window's width and height (0.25..1)
+    bool smoothUpscale = true;       // below scale 1, stretched bilinearly (false: nearest scene pixel)
 };
 
 }  // namespace hg::garden

@@ -490,7 +490,7 @@ void Renderer::finishView() {
     timers_->begin(GpuPass::Post);
     glBindFramebuffer(GL_FRAMEBUFFER, output_);
     glViewport(0, 0, view_.viewport.x, view_.viewport.y);
-    post_->composite(*targets_, occlusion, quality_.exposure, view_.viewport);
+    post_->composite(*targets_, occlusion, quality_.exposure, view_.viewport, quality_.smoothUpscale);
     if (!flatDraws_.empty()) {
         flatProgram_.use();
         setMat4(flat_.view, view_.view);

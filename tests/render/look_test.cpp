@@ -307,23 +307,71 @@ TEST_F(LookTest, TheLawnVariesInWorldSpace) {
     EXPECT_GT(first.g, first.r) << "green";
 }
 
-TEST_F(LookTest, ARenderScaleDrawsFewerPixelsStretchedOverTheSameView) {
+// The scene drawn at half the size is stretched bilinearly: the sphere's
+// hard silhouette (no multisampling) becomes a ramp over the stretched
+// pixels, where nearest sampling would repeat each scene pixel twice and
+// keep the full step between sky and sphere; lines drawn over it stay as
+// thin as at full size.
+TEST_F(LookTest, ARenderScaleIsStretchedSmoothlyAndLinesStaySharp) {
     renderer_->upload(1, 1, uvSphereMesh(1.0f, 96, 48));
     const View view = makeView({0, 0, 5}, {0, 0, 0});
-    RenderQuality q = plainQuality();
-    render(view, q, false, glm::mat4(1.0f), kRed);
-    const int full = count(reddish);
+    const glm::vec4 lineColor(1.0f, 1.0f, 0.0f, 1.0f);
+    const float lineY = 1.6f;  // above the sphere, across the sky
+    auto draw = [&](const RenderQuality& q) {
+        renderer_->setQuality(q);
+        target_->bind();
+        renderer_->beginFrame(view);
+        renderer_->drawChunk(1, glm::mat4(1.0f), kRed);
+        renderer_->drawLines({{-3.0f, lineY, 0.0f}, {3.0f, lineY, 0.0f}}, lineColor, LineMode::Segments);
+        renderer_->endFrame();
+        read();
+    };
+    // Over the rows through the sphere: the largest step in r + g + b
+    // between neighbouring pixels of a row, averaged; and the pairs of
+    // pixels (2k, 2k + 1) that differ.
+    const int top = worldToPixel(view, {0, 0.8f, 0}).y, bottom = worldToPixel(view, {0, -0.8f, 0}).y;
+    auto edgeStep = [&] {
+        double sum = 0.0;
+        for (int y = std::min(top, bottom); y <= std::max(top, bottom); ++y) {
+            int largest = 0;
+            for (int x = 0; x + 1 < kWidth; ++x) largest = std::max(largest, std::abs(pixel(x, y).sum() - pixel(x + 1, y).sum()));
+            sum += largest;
+        }
+        return sum / (std::abs(top - bottom) + 1);
+    };
     auto pairsDiffer = [&] {
         int n = 0;
         for (int y = 0; y < kHeight; ++y)
             for (int x = 0; x + 1 < kWidth; x += 2) n += pixel(x, y).sum() != pixel(x + 1, y).sum() ? 1 : 0;
         return n;
     };
-    EXPECT_GT(pairsDiffer(), 100) << "at full size neighbouring pixels are shaded apart";
+    const int lineColumn = worldToPixel(view, {0.0f, lineY, 0.0f}).x;
+    auto lineThickness = [&] {
+        int n = 0;
+        for (int y = 0; y < kHeight; ++y) {
+            const Rgba p = pixel(lineColumn, y);
+            n += p.r > 200 && p.g > 200 && p.b < 80 ? 1 : 0;
+        }
+        return n;
+    };
+    RenderQuality q = plainQuality();
+    draw(q);
+    const int full = count(reddish);
+    const double fullStep = edgeStep();
+    const int fullLine = lineThickness();
+    ASSERT_GT(fullStep, 100.0) << "a hard silhouette against the sky";
+    ASSERT_GT(fullLine, 0);
     q.renderScale = 0.5f;
-    render(view, q, false, glm::mat4(1.0f), kRed);
+    draw(q);
     EXPECT_NEAR(count(reddish), full, 0.05 * full) << "the same disc, drawn at half the resolution";
-    EXPECT_EQ(pairsDiffer(), 0) << "each scene pixel covers two output pixels in x (and y)";
+    EXPECT_LT(edgeStep(), 0.7 * fullStep) << "the silhouette is a ramp (nearest sampling keeps the whole step)";
+    EXPECT_GT(pairsDiffer(), 100) << "stretched pixels are not doubled";
+    EXPECT_EQ(lineThickness(), fullLine) << "lines are drawn at the output's size";
+    // Switched off: each scene pixel doubled, the whole step kept.
+    q.smoothUpscale = false;
+    draw(q);
+    EXPECT_EQ(pairsDiffer(), 0);
+    EXPECT_GT(edgeStep(), 0.9 * fullStep);
 }
 
 TEST(RenderQualityTest, PresetsSwitchTheEffectsAndParseByName) {
