@@ -83,7 +83,7 @@ DrawRecord drawRecord(const glm::mat4& model, const RenderMaterial& material, bo
     const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(model)));
     for (int c = 0; c < 3; ++c) r[static_cast<std::size_t>(4 + c)] = glm::vec4(normalMatrix[c], 0.0f);
     r[7] = glm::vec4(material.baseColor, material.specular);
-    r[8] = glm::vec4(material.shininess, hasNormals ? 1.0f : 0.0f, 0.0f, 0.0f);
+    r[8] = glm::vec4(material.shininess, hasNormals ? 1.0f : 0.0f, std::clamp(material.cavity, 0.0f, 1.0f), 0.0f);
     r[9] = glm::vec4(static_cast<float>(material.kind), material.metallic,
                      material.detailScale > 0.0f ? material.detailScale : 1.0f, 0.0f);
     return r;

@@ -160,11 +160,27 @@ void surfaceDetail(int kind, vec3 q, vec3 n, float pixel, inout vec3 base, inout
         base *= 0.94 + 0.12 * mix(0.5, streak, resolved(18.0, pixel));
     }
 }
+// Cavity shading (the clay view): the surface's curvature from how the
+// normal turns across the pixel, along each screen axis (positive where
+// the surface bends away, a ridge; negative in a groove), measured against
+// kCavityPixels pixels of surface, so a groove a few pixels across reads
+// fully at any distance, as in sculpting programs. A factor on the colour:
+// grooves down to 0.4, ridges up to 1.3 (linear light).
+const float kCavityPixels = 8.0;
+float cavityFactor(vec3 n, float strength) {
+    vec3 dpx = dFdx(vWorld), dpy = dFdy(vWorld);
+    float px = dot(dpx, dpx), py = dot(dpy, dpy);
+    if (px < 1e-20 || py < 1e-20) return 1.0;
+    float bend = dot(dFdx(n), dpx) / px + dot(dFdy(n), dpy) / py;  // about 2 / radius
+    float pixel = 0.5 * (sqrt(px) + sqrt(py));
+    float c = clamp(0.5 * bend * kCavityPixels * pixel, -1.0, 1.0);
+    return 1.0 + strength * (c < 0.0 ? 0.6 * c : 0.3 * c);
+}
 void main() {
     // Without vertex normals, the face normal from screen-space derivatives
     // (it faces the viewer, and culling leaves only front faces).
     vec4 surface = drawRecord(vDraw, 7);  // sRGB base colour, specular
-    vec4 finish = drawRecord(vDraw, 8);   // shininess, has normals
+    vec4 finish = drawRecord(vDraw, 8);   // shininess, has normals, cavity
     vec4 detail = drawRecord(vDraw, 9);   // SurfaceKind, metallic, detail scale
     vec3 n = finish.y > 0.5 ? normalize(vNormal) : normalize(cross(dFdx(vWorld), dFdy(vWorld)));
     vec3 base = toLinear(surface.rgb);
@@ -178,6 +194,8 @@ void main() {
         float pixel = max(length(fwidth(q)), 1e-6);
         surfaceDetail(kind, q, n, pixel, base, specular, shininess, metallic);
     }
+    // (A draw's cavity is the same over a triangle: derivatives defined.)
+    if (finish.z > 0.0) base *= cavityFactor(n, finish.z);
     // A metal's highlight is its own colour and strong; its diffuse light
     // fades (Blinn-Phong's stand-in for a metal's missing diffuse term).
     specular = mix(specular, base * (0.6 + specular), metallic);
