@@ -137,7 +137,7 @@ Renderer::Renderer()
     meshShadow_ = shadowed(meshProgram_);
     groundShadow_ = shadowed(groundProgram_);
     const ShaderProgram& m = meshProgram_;
-    mesh_ = {m.uniform("uViewProjection")};
+    mesh_ = {m.uniform("uViewProjection"), m.uniform("uBump")};
     m.use();
     glUniform1i(m.uniform("uDrawRecords"), kDrawRecordUnit);
     const ShaderProgram& g = groundProgram_;
@@ -452,6 +452,7 @@ void Renderer::renderScene(bool shadowed) {
     const glm::mat4 viewProjection = view_.projection * view_.view;
     meshProgram_.use();
     setMat4(mesh_.viewProjection, viewProjection);
+    glUniform1f(mesh_.bump, quality_.materialBump ? 1.0f : 0.0f);
     setLighting(meshLit_, meshShadow_, shadowed);
     groundProgram_.use();
     setMat4(ground_.viewProjection, viewProjection);

@@ -259,7 +259,7 @@ private:
     LitUniforms meshLit_{}, groundLit_{};
     ShadowUniforms meshShadow_{}, groundShadow_{};
     struct {
-        GLint viewProjection;
+        GLint viewProjection, bump;
     } mesh_{};
     struct {
         GLint viewProjection, groundColor, lineColor, spacing, lineWidth, majorEvery;
