@@ -20,16 +20,6 @@
 
 namespace hg::garden::cli {
 
-namespace {
-
-std::string lowerExtension(const std::string& path) {
-    std::string e = std::filesystem::path(path).extension().string();
-    for (char& c : e) c = static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
-    return e;
-}
-
-}  // namespace
-
 int runExport(const ExportOptions& options) {
     if (!isExportExtension(options.output)) {
         std::cerr << "error: " << options.output << ": unknown format '" << lowerExtension(options.output)
@@ -56,14 +46,9 @@ int runExport(const ExportOptions& options) {
     settings.maxLevel = 0;  // no window: the coarsest meshes are not wanted
     std::unique_ptr<GardenSession> session = openReadOnly(options.input, settings, "exporting", status);
     if (!session) return status;
-    const int index = findSculptureOrSay(*session, options.input, options.sculpture);
-    if (index < 0) return 2;
+    const int index = findUsableSculpture(*session, options.input, options.sculpture, status);
+    if (index < 0) return status;
     const Sculpture& s = session->sculptures()[static_cast<std::size_t>(index)];
-    if (s.missing()) {
-        std::cerr << "error: sculpture '" << s.name << "' is missing: " << s.error
-                  << (s.error.empty() || s.error.back() != '\n' ? "\n" : "");
-        return 1;
-    }
     fo.resolution = options.resolution;
     if (options.mmPerUnit > 0.0) fo.mmPerUnit = options.mmPerUnit;
     fo.ascii = options.ascii;

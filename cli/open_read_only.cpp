@@ -11,15 +11,11 @@
 
 namespace hg::garden::cli {
 
-namespace {
-
 std::string lowerExtension(const std::string& path) {
     std::string e = std::filesystem::path(path).extension().string();
     for (char& c : e) c = static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
     return e;
 }
-
-}  // namespace
 
 std::unique_ptr<GardenSession> openReadOnly(const std::string& input, const SessionSettings& settings,
                                             const std::string& doing, int& status) {
@@ -78,9 +74,17 @@ std::unique_ptr<GardenSession> openReadOnly(const std::string& input, const Sess
     return session;
 }
 
-int findSculptureOrSay(const GardenSession& session, const std::string& input, const std::string& name) {
+int findUsableSculpture(const GardenSession& session, const std::string& input, const std::string& name, int& status) {
     const int index = session.findSculpture(name);
-    if (index >= 0) return index;
+    if (index >= 0) {
+        const Sculpture& s = session.sculptures()[static_cast<std::size_t>(index)];
+        if (!s.missing()) return index;
+        std::cerr << "error: sculpture '" << s.name << "' is missing: " << s.error
+                  << (s.error.empty() || s.error.back() != '\n' ? "\n" : "");
+        status = 1;
+        return -1;
+    }
+    status = 2;
     std::vector<std::string> names;
     for (const Sculpture& s : session.sculptures())
         if (!s.removed) names.push_back(s.name);

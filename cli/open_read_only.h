@@ -17,8 +17,12 @@ namespace hg::garden::cli {
 std::unique_ptr<GardenSession> openReadOnly(const std::string& input, const SessionSettings& settings,
                                             const std::string& doing, int& status);
 
-// Sculpture `name` of `session`, or -1 after printing that there is none
-// (with the nearest name when it is a near miss, and the garden's names).
-int findSculptureOrSay(const GardenSession& session, const std::string& input, const std::string& name);
+// Sculpture `name` of `session` with a grid to use, or -1 after printing
+// why not, with `status` set: 2 when there is none (with the nearest name
+// when it is a near miss, and the garden's names), 1 when it is missing.
+int findUsableSculpture(const GardenSession& session, const std::string& input, const std::string& name, int& status);
+
+// The extension of `path` in lower case (".json").
+std::string lowerExtension(const std::string& path);
 
 }  // namespace hg::garden::cli

@@ -41,14 +41,9 @@ int runTurntable(const TurntableCommandOptions& options) {
     int status = 0;
     std::unique_ptr<GardenSession> session = openReadOnly(options.input, settings, "rendering", status);
     if (!session) return status;
-    const int index = findSculptureOrSay(*session, options.input, options.sculpture);
-    if (index < 0) return 2;
+    const int index = findUsableSculpture(*session, options.input, options.sculpture, status);
+    if (index < 0) return status;
     const Sculpture& s = session->sculptures()[static_cast<std::size_t>(index)];
-    if (s.missing()) {
-        std::cerr << "error: sculpture '" << s.name << "' is missing: " << s.error
-                  << (s.error.empty() || s.error.back() != '\n' ? "\n" : "");
-        return 1;
-    }
     std::filesystem::create_directories(options.output, ec);
     if (ec) {
         std::cerr << "error: -o " << options.output << ": cannot make the folder: " << ec.message() << "\n";
