@@ -102,6 +102,23 @@ struct ExportOptions {
 };
 int runExport(const ExportOptions& options);
 
+struct TurntableCommandOptions {
+    std::string input;                // a session folder or a garden file (.json)
+    std::string sculpture;            // its name in the garden
+    std::string output;               // the folder the frames go to (made when missing)
+    int frames = 36;
+    std::string size = "800x800";     // WIDTHxHEIGHT
+    std::string quality = "high";     // low|medium|high
+    double elevationDeg = 20.0;
+    double distance = 0.0;            // metres; 0: framed to the sculpture
+};
+int runTurntable(const TurntableCommandOptions& options);
+
+// "1280x720" -> 1280, 720, each 16 to 8192 pixels; false (nothing printed)
+// for anything else.
+constexpr int kMinImageSide = 16, kMaxImageSide = 8192;
+bool parseImageSize(const std::string& text, int& width, int& height);
+
 struct GestureCommandOptions {
     std::string file;                 // strokes (.json, docs/gestures.md)
     std::string weights;              // "" : content/gestures/weights.json

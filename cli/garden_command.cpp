@@ -91,8 +91,12 @@ int runGarden(const GardenOptions& given) {
     d.screenshotDir = options.screenshotDir;
     d.session = options.session;
     // "auto" (no preset) is decided once the window knows its GL renderer.
-    if (const auto preset = parseQualityPreset(options.quality)) d.quality = qualityOf(*preset);
-    else d.autoQuality = true;
+    if (const auto preset = parseQualityPreset(options.quality)) {
+        d.quality = qualityOf(*preset);
+        x.quality = d.quality;
+    } else {
+        d.autoQuality = x.autoQuality = true;
+    }
     // F9 takes the open garden into the headset and back.
     d.headset = xr::headsetFromDesktop(x);
     if (options.xr) {

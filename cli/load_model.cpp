@@ -1,5 +1,6 @@
 #include "cli/load_model.h"
 
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
@@ -21,6 +22,12 @@ bool parseNumberList(const std::string& text, std::vector<double>& out) {
         out.push_back(v);
     }
     return true;
+}
+
+bool parseImageSize(const std::string& text, int& width, int& height) {
+    char x = 0, extra = 0;
+    return std::sscanf(text.c_str(), "%d%c%d%c", &width, &x, &height, &extra) == 3 && x == 'x' &&
+           width >= kMinImageSide && height >= kMinImageSide && width <= kMaxImageSide && height <= kMaxImageSide;
 }
 
 int pickBody(const frep::Program& program, const std::string& name, const std::string& file) {

@@ -181,6 +181,25 @@ int main(int argc, char** argv) {
     gestureCmd->add_option("--threshold", gestureOpts.threshold, "Least confidence that counts (default: the weights file's)")
         ->check(CLI::Range(0.0, 1.0));
 
+    TurntableCommandOptions turntableOpts;
+    auto* turntableCmd = app.add_subcommand(
+        "turntable", "Write PNG frames of one sculpture turning once, for sharing (docs/rendering.md)");
+    turntableCmd->add_option("input", turntableOpts.input, "Session folder, or garden file (.json)")->required();
+    turntableCmd->add_option("--sculpture", turntableOpts.sculpture, "The sculpture's name in the garden")->required();
+    turntableCmd->add_option("-o,--output", turntableOpts.output, "Folder for the frames NAME-0000.png ... (made when missing)")
+        ->required();
+    turntableCmd->add_option("--frames", turntableOpts.frames, "Frames in the full turn (default 36)")
+        ->check(CLI::Range(1, 3600));
+    turntableCmd->add_option("--size", turntableOpts.size, "WIDTHxHEIGHT pixels (default 800x800)");
+    turntableCmd->add_option("--quality", turntableOpts.quality, "low, medium or high (default; docs/rendering.md)")
+        ->check(CLI::IsMember({"low", "medium", "high"}));
+    turntableCmd->add_option("--elevation", turntableOpts.elevationDeg,
+                             "Degrees the camera looks down at the sculpture's centre from (default 20)")
+        ->check(CLI::Range(-80.0, 89.0));
+    turntableCmd->add_option("--distance", turntableOpts.distance,
+                             "Metres from the sculpture's centre to the camera (default: the sculpture framed)")
+        ->check(CLI::PositiveNumber);
+
     bool keysMarkdown = false;
     auto* keysCmd = app.add_subcommand("keys", "List the garden window's keys and mouse (F1 shows them in the window)");
     keysCmd->add_flag("--markdown", keysMarkdown, "As the README's Markdown table");
@@ -219,9 +238,7 @@ int main(int argc, char** argv) {
                 std::cerr << "error: --headless and --offscreen exclude each other\n";
                 return 2;
             }
-            char x = 0;
-            if (std::sscanf(offscreen.c_str(), "%d%c%d", &replayOpts.width, &x, &replayOpts.height) != 3 || x != 'x' ||
-                replayOpts.width < 16 || replayOpts.height < 16 || replayOpts.width > 8192 || replayOpts.height > 8192) {
+            if (!parseImageSize(offscreen, replayOpts.width, replayOpts.height)) {
                 std::cerr << "error: --offscreen expects WIDTHxHEIGHT, each 16 to 8192 pixels, for example 1280x720\n";
                 return 2;
             }
@@ -233,6 +250,7 @@ int main(int argc, char** argv) {
     if (*gardenCmd) return runGardenAdd(addOpts);
     if (*gestureCmd) return runGestureCommand(gestureOpts);
     if (*keysCmd) return runKeysCommand(keysMarkdown);
+    if (*turntableCmd) return runTurntable(turntableOpts);
     if (*vox) {
         if (!parseNumberList(voxBox, voxOpts.box)) {
             std::cerr << "error: --box expects six numbers separated by commas: x0,y0,z0,x1,y1,z1\n";

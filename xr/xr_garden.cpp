@@ -8,6 +8,7 @@
 #include "garden/render/gl_objects.h"
 #include "garden/render/overlay.h"
 #include "garden/render/panels.h"
+#include "garden/render/quality_governor.h"
 #include "garden/render/tool_gizmo.h"
 #include "garden/replay/replay_runner.h"
 #include "garden/replay/replay_script.h"
@@ -108,6 +109,7 @@ public:
         if (options_.seated) user_.seated = *options_.seated;
         if (options_.smoothTurn) user_.smoothTurn = *options_.smoothTurn;
         applyTurning();
+        if (options_.quality) renderer_.setQuality(*options_.quality);
         if (options_.mirror) overlay_ = w.overlay();
         gardenWindow_.events() = garden::WindowEvents{};
         controllers_ = std::make_unique<Controllers>(headset_.instance(), user_.leftHanded);
@@ -180,6 +182,8 @@ public:
     XrRunInfo info() const {
         XrRunInfo i = info_;
         i.worldScale = scale_;
+        i.quality = renderer_.quality();
+        i.qualityBudgetMs = governor_ ? governor_->budgetMs() : 0.0;
         return i;
     }
     const std::string& error() const { return error_; }
@@ -232,6 +236,7 @@ private:
         const float hz = headset_.displayRefreshRate();
         const double budgetMs = hz > 0.0f ? 1000.0 / static_cast<double>(hz) : minPeriodMs_;
         if (budgetMs > 0.0) session_.scheduler().setBudgetMs(budgetMs);
+        if (options_.autoQuality && budgetMs > 0.0) steerQuality(budgetMs);
         const bool focused = headset_.focused();
         const double dt = periodMs > 0.0 ? periodMs / 1000.0 : 1.0 / 90.0;
         garden::FrameInput input;
@@ -285,6 +290,13 @@ private:
         eyes_ = &f;
         const garden::FrameStats& stats = session_.frame(input, *this);
         eyes_ = nullptr;
+        // Both eyes' GPU time (one endFrame after both), measured a few
+        // frames late by the renderer's timer queries.
+        if (governor_)
+            if (const auto q = governor_->observe(stats.gpuMs)) {
+                renderer_.setQuality(*q);
+                ++info_.qualityChanges;
+            }
         if (focused && options_.onFrame) options_.onFrame(stats, scriptFrame_ - 1);
         ++info_.framesSubmitted;
         if (options_.mirror) window_.swapBuffers();
@@ -398,7 +410,20 @@ private:
                           r.offset.y + r.size.y, GL_COLOR_BUFFER_BIT, GL_LINEAR);
     }
 
+    // The automatic quality, made at the first frame whose display period
+    // is known and then judged against the period as it changes.
+    void steerQuality(double budgetMs) {
+        if (!governor_) {
+            governor_.emplace(options_.autoCeiling.value_or(garden::rendererPreset(garden::GlWindow::glVersionString())),
+                              budgetMs);
+            renderer_.setQuality(governor_->quality());
+        } else if (budgetMs != governor_->budgetMs()) {
+            governor_->setBudgetMs(budgetMs);
+        }
+    }
+
     const XrOptions& options_;
+    std::optional<garden::QualityGovernor> governor_;
     garden::GardenSession& session_;
     Headset& headset_;
     garden::GardenWindow& gardenWindow_;

@@ -13,6 +13,7 @@
 #include <string>
 
 #include "garden/desktop/desktop_app.h"
+#include "garden/render/render_quality.h"
 
 namespace hg::garden {
 class GardenSession;
@@ -40,6 +41,14 @@ struct XrOptions {
     std::optional<bool> seated;
     std::optional<bool> smoothTurn;
     std::string settingsFile;  // the user's settings ("" : xrSettingsPath())
+    // What the eyes' picture spends (--quality): a preset kept all along, or
+    // with autoQuality a QualityGovernor stepping down from `autoCeiling`
+    // (unset: the GL renderer's preset, as the desktop's auto) by both eyes'
+    // GPU time against the headset's display period (docs/rendering.md).
+    // Neither: the renderer's quality as it is.
+    std::optional<garden::RenderQuality> quality;
+    bool autoQuality = false;
+    std::optional<garden::QualityPreset> autoCeiling;
     bool mirror = true;      // show the mirror window (hidden when false)
     // Called after every focused frame with its stats and its index from
     // the first focused frame (benchmarks).
@@ -64,6 +73,9 @@ struct XrRunInfo {
     std::string space;         // STAGE or LOCAL
     bool depthSubmitted = false;
     float worldScale = 1.0f;   // the stage rig's scale at the end (world metres per stage metre)
+    garden::RenderQuality quality;  // the eyes' at the end
+    int qualityChanges = 0;         // the automatic quality's steps
+    double qualityBudgetMs = 0.0;   // the period it steered by (0: none)
 };
 
 // Runs until the session ends. `atEnd` (if set) sees the garden session

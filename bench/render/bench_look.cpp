@@ -117,6 +117,15 @@ int main(int argc, char** argv) {
     rows.push_back({"+ AO 8, half", q});
     rows.push_back({"medium", qualityOf(QualityPreset::Medium)});
     rows.push_back({"high", qualityOf(QualityPreset::High)});
+    // The automatic mode's last rungs: fewer scene pixels, stretched
+    // bilinearly by the composite (four resolves per output pixel).
+    q = low();
+    q.renderScale = 0.75f;
+    rows.push_back({"low, scale 0.75", q});
+    q.renderScale = 0.5f;
+    rows.push_back({"low, scale 0.5", q});
+    q.smoothUpscale = false;
+    rows.push_back({"low, scale 0.5, nearest", q});
     rows.push_back({"low + materials", low(), Look::Materials});
     rows.push_back({"high + materials", qualityOf(QualityPreset::High), Look::Materials});
     rows.push_back({"high + clay view", qualityOf(QualityPreset::High), Look::Clay});

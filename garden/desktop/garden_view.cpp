@@ -138,7 +138,7 @@ void GardenView::render(const GardenSession& session, glm::ivec2 viewport, const
     const auto& sculptures = session.sculptures();
     for (std::size_t s = 0; s < sculptures.size(); ++s) {
         const Sculpture& st = sculptures[s];
-        if (st.removed) continue;
+        if (st.removed || (only_ >= 0 && s != static_cast<std::size_t>(only_))) continue;
         if (st.missing()) {
             renderer_.drawLines(cubeEdges(st.modelToWorld, static_cast<float>(st.scale)), glm::vec4(0.9f, 0.1f, 0.1f, 1.0f),
                                 LineMode::Segments);
@@ -169,6 +169,7 @@ void GardenView::render(const GardenSession& session, glm::ivec2 viewport, const
             renderer_.drawChunk(chunkId(s, c), st.modelToWorld, m);
         }
     }
+    if (only_ >= 0) return;  // one sculpture on show: no markers on the ground
     if (const auto t = session.morphTriangle()) {
         std::vector<glm::vec3> loop;
         for (const auto& c : t->corners) loop.emplace_back(static_cast<float>(c[0]), 0.02f, static_cast<float>(c[1]));

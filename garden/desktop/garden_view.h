@@ -46,9 +46,14 @@ public:
     ViewLook& look() { return look_; }
     const ViewLook& look() const { return look_; }
 
+    // Only sculpture `index` drawn (-1: every one), with the ground and the
+    // paths: a turntable shows one sculpture, with nothing passing in front.
+    void showOnly(int index) { only_ = index; }
+
 private:
     Renderer& renderer_;
     ViewLook look_;
+    int only_ = -1;
     // Per sculpture, the queue's shownGeneration() + 1 last uploaded (0:
     // never): a sculpture whose queue showed nothing new is not looked at.
     std::vector<std::uint64_t> uploaded_;

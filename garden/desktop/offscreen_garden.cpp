@@ -14,6 +14,7 @@ struct OffscreenGarden::Impl {
     OffscreenTarget target;
     Renderer renderer;
     GardenView view{renderer};
+    std::optional<Camera> camera;
 
     Impl(int width, int height)
         : window([] {
@@ -45,8 +46,11 @@ ViewUpload OffscreenGarden::upload(GardenSession& session, double allowanceMs) {
 
 ViewDraw OffscreenGarden::render(GardenSession& session) {
     impl_->target.bind();
-    impl_->view.render(session, {impl_->target.width(), impl_->target.height()},
-                       static_cast<float>(session.settings().fovY));
+    const glm::ivec2 viewport(impl_->target.width(), impl_->target.height());
+    if (const auto& c = impl_->camera)
+        impl_->view.render(session, viewport, c->view, c->projection, c->eye);
+    else
+        impl_->view.render(session, viewport, static_cast<float>(session.settings().fovY));
     const RenderStats r = impl_->renderer.endFrame();
     // The CPU cost of drawing includes waiting for llvmpipe here: a software
     // GPU; on hardware this is where the driver would queue the frame.
@@ -55,6 +59,10 @@ ViewDraw OffscreenGarden::render(GardenSession& session) {
 }
 
 void OffscreenGarden::setQuality(const RenderQuality& quality) { impl_->renderer.setQuality(quality); }
+
+void OffscreenGarden::setCamera(const std::optional<Camera>& camera) { impl_->camera = camera; }
+
+void OffscreenGarden::showOnly(int index) { impl_->view.showOnly(index); }
 
 bool OffscreenGarden::setMultiDraw(bool on) { return impl_->renderer.setMultiDraw(on) == on; }
 

@@ -4,7 +4,11 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
 
 #include "garden/render/render_quality.h"
 #include "garden/replay/replay_runner.h"
@@ -25,6 +29,17 @@ public:
     // Chunks in one multi-draw (the default where GL 4.3 is there) or a call
     // each; false when multi-draw was asked for and is missing.
     bool setMultiDraw(bool on);
+
+    // A camera of the caller's instead of the session's navigator (none:
+    // the navigator's, as the window shows it).
+    struct Camera {
+        glm::mat4 view{1.0f};
+        glm::mat4 projection{1.0f};
+        glm::vec3 eye{0.0f};
+    };
+    void setCamera(const std::optional<Camera>& camera);
+    // Only sculpture `index` drawn (-1: every one; GardenView::showOnly).
+    void showOnly(int index);
 
 private:
     struct Impl;

@@ -31,6 +31,7 @@ RenderMaterial clayViewMaterial() {
     r.baseColor = glm::vec3(0.68f, 0.66f, 0.63f);
     r.specular = 0.06f;
     r.shininess = 10.0f;
+    r.cavity = 1.0f;  // grooves darker, ridges lighter: form reads as in sculpting programs
     return r;
 }
 

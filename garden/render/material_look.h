@@ -27,8 +27,8 @@ RenderMaterial renderMaterial(const Material& m, float detailScale = 1.0f);
 // the pattern moves and scales with it.
 float detailScaleFor(double modelSize);
 
-// The clay view's material: a warm mid grey, matte, no detail, the same for
-// every sculpture (form alone reads).
+// The clay view's material: a warm mid grey, matte, no detail, with cavity
+// shading, the same for every sculpture (form alone reads).
 RenderMaterial clayViewMaterial();
 
 // What `look` makes of a sculpture's material.

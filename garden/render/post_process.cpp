@@ -14,6 +14,7 @@ uniform sampler2D uOcclusion;
 uniform int uSamples;
 uniform float uExposure;
 uniform bool uUseOcclusion;
+uniform bool uSmooth;   // the scene is stretched over more pixels than it has
 uniform vec2 uSize;     // the scene's pixels
 uniform vec2 uToScene;  // output pixel to scene pixel (the render scale)
 out vec4 fragColor;
@@ -31,17 +32,39 @@ vec3 toneMap(vec3 color) {
     float g = 1.0 - 1.0 / (desaturation * (peak - newPeak) + 1.0);
     return mix(color, vec3(newPeak), g);
 }
-void main() {
-    vec2 s = gl_FragCoord.xy * uToScene;
-    ivec2 p = ivec2(s);
-    float open = uUseOcclusion ? texture(uOcclusion, s / uSize).r : 1.0;
+// One scene pixel resolved: each sample exposed, dimmed by the occlusion
+// where it is ambient light, tone mapped, then averaged.
+vec3 resolved(ivec2 p, float open) {
     vec3 sum = vec3(0.0);
     for (int i = 0; i < uSamples; ++i) {
         vec4 c = texelFetch(uColor, p, i);
         // alpha: the share of this sample's light that occlusion dims.
         sum += toneMap(max(c.rgb, vec3(0.0)) * mix(1.0, open, c.a) * uExposure);
     }
-    fragColor = vec4(toSrgb(sum / float(uSamples)), 1.0);
+    return sum / float(uSamples);
+}
+vec3 resolvedAt(ivec2 p) {
+    float open = uUseOcclusion ? texture(uOcclusion, (vec2(p) + 0.5) / uSize).r : 1.0;
+    return resolved(p, open);
+}
+void main() {
+    vec2 s = gl_FragCoord.xy * uToScene;
+    ivec2 p = ivec2(s);
+    vec3 color;
+    if (uSmooth) {
+        // Stretched (render scale below 1): bilinear between the four scene
+        // pixels around, each resolved first, so a hard edge of the scene
+        // becomes a ramp instead of a staircase of doubled pixels.
+        vec2 t = s - 0.5;
+        ivec2 lo = ivec2(floor(t)), last = ivec2(uSize) - 1;
+        vec2 f = t - vec2(lo);
+        ivec2 a = clamp(lo, ivec2(0), last), b = clamp(lo + 1, ivec2(0), last);
+        color = mix(mix(resolvedAt(a), resolvedAt(ivec2(b.x, a.y)), f.x),
+                    mix(resolvedAt(ivec2(a.x, b.y)), resolvedAt(b), f.x), f.y);
+    } else {
+        color = resolvedAt(p);
+    }
+    fragColor = vec4(toSrgb(color), 1.0);
     gl_FragDepth = texelFetch(uDepth, p, 0).r;
 }
 )";
@@ -59,14 +82,17 @@ PostProcess::PostProcess()
     useOcclusion_ = program_.uniform("uUseOcclusion");
     size_ = program_.uniform("uSize");
     toScene_ = program_.uniform("uToScene");
+    smooth_ = program_.uniform("uSmooth");
 }
 
-void PostProcess::composite(const SceneTargets& scene, GLuint occlusion, float exposure, glm::ivec2 output) {
+void PostProcess::composite(const SceneTargets& scene, GLuint occlusion, float exposure, glm::ivec2 output,
+                            bool smooth) {
     program_.use();
     glUniform1i(samples_, scene.samples());
     glUniform1f(exposure_, exposure);
     glUniform1i(useOcclusion_, occlusion != 0 ? 1 : 0);
     glUniform2f(size_, static_cast<float>(scene.size().x), static_cast<float>(scene.size().y));
+    glUniform1i(smooth_, smooth && scene.size() != output ? 1 : 0);
     glUniform2f(toScene_, static_cast<float>(scene.size().x) / static_cast<float>(std::max(output.x, 1)),
                 static_cast<float>(scene.size().y) / static_cast<float>(std::max(output.y, 1)));
     glActiveTexture(GL_TEXTURE0);

@@ -22,13 +22,15 @@ public:
     // Draws into the bound framebuffer, whose viewport the caller has set
     // to the scene's size. `occlusion`: an R8 texture (1 = open), or 0.
     // `output`: the pixels of the bound framebuffer's view, which the scene
-    // (drawn at the render scale) is stretched over, nearest sample.
-    void composite(const SceneTargets& scene, GLuint occlusion, float exposure, glm::ivec2 output);
+    // (drawn at the render scale) is stretched over, bilinearly between
+    // resolved scene pixels (lines and panels, drawn afterwards at the
+    // output's size, stay sharp); `smooth` false: the nearest scene pixel.
+    void composite(const SceneTargets& scene, GLuint occlusion, float exposure, glm::ivec2 output, bool smooth);
 
 private:
     ShaderProgram program_;
     gl::VertexArray empty_;  // the fullscreen triangle comes from gl_VertexID
-    GLint samples_ = -1, exposure_ = -1, useOcclusion_ = -1, size_ = -1, toScene_ = -1;
+    GLint samples_ = -1, exposure_ = -1, useOcclusion_ = -1, size_ = -1, toScene_ = -1, smooth_ = -1;
 };
 
 }  // namespace hg::garden

@@ -34,6 +34,9 @@ public:
     std::size_t step() const { return step_; }          // 0: the ceiling
     std::size_t steps() const { return ladder_.size(); }
     double budgetMs() const { return budgetMs_; }
+    // The display's period changed (a headset's refresh rate): later frames
+    // are judged against the new one.
+    void setBudgetMs(double budgetMs) { budgetMs_ = budgetMs; }
 
     // Frames averaged before stepping down, frames under half the budget
     // before stepping up, and frames after any change before the next.

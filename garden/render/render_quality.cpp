@@ -9,6 +9,7 @@ RenderQuality qualityOf(QualityPreset preset) {
             q.msaaSamples = 1;
             q.shadows = false;
             q.ambientOcclusion = false;
+            q.materialBump = false;
             break;
         case QualityPreset::Medium:
             q.msaaSamples = 2;

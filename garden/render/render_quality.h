@@ -18,14 +18,16 @@ struct RenderQuality {
     float aoRadius = 0.25f;          // metres: the largest hollow that darkens
     float exposure = 1.0f;           // linear scale before tone mapping
     float renderScale = 1.0f;        // the scene drawn at this share of the window's width and height (0.25..1)
+    bool smoothUpscale = true;       // below scale 1, stretched bilinearly (false: nearest scene pixel)
+    bool materialBump = true;        // the materials' detail as relief too (the shading normal perturbed)
 };
 
 }  // namespace hg::garden
 
 namespace hg::garden {
 
-// low: no multisampling, shadows or occlusion (the old look, for software
-// rendering); medium: 2x MSAA, a 1024 shadow map, 8 occlusion samples at
+// low: no multisampling, shadows, occlusion or material relief (the old
+// look, for software rendering); medium: 2x MSAA, a 1024 shadow map, 8 occlusion samples at
 // half resolution; high: the defaults above with 16 samples.
 enum class QualityPreset { Low, Medium, High };
 

@@ -83,7 +83,7 @@ DrawRecord drawRecord(const glm::mat4& model, const RenderMaterial& material, bo
     const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(model)));
     for (int c = 0; c < 3; ++c) r[static_cast<std::size_t>(4 + c)] = glm::vec4(normalMatrix[c], 0.0f);
     r[7] = glm::vec4(material.baseColor, material.specular);
-    r[8] = glm::vec4(material.shininess, hasNormals ? 1.0f : 0.0f, 0.0f, 0.0f);
+    r[8] = glm::vec4(material.shininess, hasNormals ? 1.0f : 0.0f, std::clamp(material.cavity, 0.0f, 1.0f), 0.0f);
     r[9] = glm::vec4(static_cast<float>(material.kind), material.metallic,
                      material.detailScale > 0.0f ? material.detailScale : 1.0f, 0.0f);
     return r;
@@ -137,7 +137,7 @@ Renderer::Renderer()
     meshShadow_ = shadowed(meshProgram_);
     groundShadow_ = shadowed(groundProgram_);
     const ShaderProgram& m = meshProgram_;
-    mesh_ = {m.uniform("uViewProjection")};
+    mesh_ = {m.uniform("uViewProjection"), m.uniform("uBump")};
     m.use();
     glUniform1i(m.uniform("uDrawRecords"), kDrawRecordUnit);
     const ShaderProgram& g = groundProgram_;
@@ -452,6 +452,7 @@ void Renderer::renderScene(bool shadowed) {
     const glm::mat4 viewProjection = view_.projection * view_.view;
     meshProgram_.use();
     setMat4(mesh_.viewProjection, viewProjection);
+    glUniform1f(mesh_.bump, quality_.materialBump ? 1.0f : 0.0f);
     setLighting(meshLit_, meshShadow_, shadowed);
     groundProgram_.use();
     setMat4(ground_.viewProjection, viewProjection);
@@ -490,7 +491,7 @@ void Renderer::finishView() {
     timers_->begin(GpuPass::Post);
     glBindFramebuffer(GL_FRAMEBUFFER, output_);
     glViewport(0, 0, view_.viewport.x, view_.viewport.y);
-    post_->composite(*targets_, occlusion, quality_.exposure, view_.viewport);
+    post_->composite(*targets_, occlusion, quality_.exposure, view_.viewport, quality_.smoothUpscale);
     if (!flatDraws_.empty()) {
         flatProgram_.use();
         setMat4(flat_.view, view_.view);

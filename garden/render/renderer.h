@@ -69,10 +69,13 @@ struct RenderMaterial {
     float detailScale = 1.0f;                // model units per unit of the detail's pattern (about a tenth of
                                              // the sculpture: veins, rings, patches)
     int edges = 0;                           // 1: its triangles' edges drawn over it (the wireframe overlay)
+    float cavity = 0.0f;                     // 0..1: grooves darkened and ridges lightened by the surface's
+                                             // curvature on screen (the clay view's cavity shading)
 
     bool operator==(const RenderMaterial& o) const {
         return baseColor == o.baseColor && specular == o.specular && shininess == o.shininess && kind == o.kind &&
-               metallic == o.metallic && detailScale == o.detailScale && edges == o.edges;
+               metallic == o.metallic && detailScale == o.detailScale && edges == o.edges &&
+               cavity == o.cavity;
     }
 };
 
@@ -256,7 +259,7 @@ private:
     LitUniforms meshLit_{}, groundLit_{};
     ShadowUniforms meshShadow_{}, groundShadow_{};
     struct {
-        GLint viewProjection;
+        GLint viewProjection, bump;
     } mesh_{};
     struct {
         GLint viewProjection, groundColor, lineColor, spacing, lineWidth, majorEvery;

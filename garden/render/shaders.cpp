@@ -97,6 +97,7 @@ in vec3 vWorld;
 in vec3 vNormal;
 in vec3 vModel;
 flat in int vDraw;
+uniform float uBump;  // 1: the detail's relief tilts the shading normal (RenderQuality::materialBump)
 out vec4 fragColor;
 // Value noise in model space (hash after Dave Hoskins' hash13), and its sum
 // over four octaves, about 0..1 with mean 0.5.
@@ -126,45 +127,87 @@ float fbm(vec3 p) {
 float resolved(float frequency, float pixel) { return 1.0 - smoothstep(0.3, 0.8, frequency * pixel); }
 // The material's colour, highlight and metalness at model point q (in
 // pattern units) with world normal n; `pixel` is q's change across a pixel.
+// `height` (pattern units, out of the surface) is the same detail as
+// relief: grains stand out of stone, veins sink into marble, rings into
+// wood; it fades with the colour where a pattern shrinks below a pixel.
 void surfaceDetail(int kind, vec3 q, vec3 n, float pixel, inout vec3 base, inout vec3 specular,
-                   inout float shininess, inout float metallic) {
+                   inout float shininess, inout float metallic, out float height) {
+    height = 0.0;
     if (kind == 1) {  // stone: mottled, dark and light grains
-        base *= 0.82 + 0.36 * fbm(q * 0.5);
+        float mottle = fbm(q * 0.5);
+        base *= 0.82 + 0.36 * mottle;
         float grain = noise3(q * 9.0);
         float seen = resolved(9.0, pixel);
         base *= 1.0 - 0.5 * seen * smoothstep(0.72, 0.8, grain);
         base = mix(base, vec3(0.85), 0.35 * seen * (1.0 - smoothstep(0.18, 0.26, grain)));
+        height = 0.15 * mottle + 0.012 * seen * grain;
     } else if (kind == 2) {  // marble: thin dark veins winding through a pale body
         float t = dot(q, vec3(0.35, 0.22, 0.13)) + 2.2 * fbm(q * 0.35);
         float vein = pow(1.0 - abs(sin(t * 3.14159)), 10.0);
         float fine = pow(1.0 - abs(sin((t + 0.6 * fbm(q * 1.3 + 4.0)) * 7.3)), 24.0);
         base = mix(base, base * vec3(0.38, 0.40, 0.44), vein + 0.5 * fine * resolved(3.0, pixel));
         base *= 0.95 + 0.08 * fbm(q * 0.8 + 11.0);
+        height = -0.01 * vein;
     } else if (kind == 3) {  // bronze: metal under a green patina, more on faces turned up
         float patina = smoothstep(0.6, 0.82, fbm(q * 0.6) + 0.2 * n.y);
-        base *= 0.85 + 0.3 * noise3(q * 2.0);
+        float hammer = noise3(q * 2.0);
+        base *= 0.85 + 0.3 * hammer;
         base = mix(base, vec3(0.06, 0.13, 0.1), 0.85 * patina);
         metallic *= 1.0 - patina;
         specular *= 1.0 - 0.8 * patina;
         shininess = mix(shininess, 8.0, patina);
+        height = 0.02 * hammer + 0.01 * patina;
     } else if (kind == 4) {  // clay: faint smears of a darker and a lighter body
-        base *= 0.9 + 0.2 * fbm(q * vec3(0.6, 1.4, 0.6));
+        float smear = fbm(q * vec3(0.6, 1.4, 0.6));
+        base *= 0.9 + 0.2 * smear;
+        height = 0.1 * smear;
     } else if (kind == 5) {  // plaster: a faint fine grain
-        base *= 0.97 + 0.06 * mix(0.5, noise3(q * 14.0), resolved(14.0, pixel));
+        float grain = mix(0.5, noise3(q * 14.0), resolved(14.0, pixel));
+        base *= 0.97 + 0.06 * grain;
+        height = 0.004 * grain;
     } else if (kind == 6) {  // wood: growth rings round the model's vertical axis, fine grain along it
         vec2 warp = vec2(noise3(q * 0.25), noise3(q * 0.25 + 7.0)) - 0.5;
         float r = length(q.xz + 1.6 * warp) * 1.1 + 0.4 * noise3(q * vec3(0.6, 0.08, 0.6));
-        float ring = smoothstep(0.55, 0.95, fract(r));
-        base *= 1.0 - 0.38 * ring * resolved(1.1, pixel);
-        float streak = noise3(q * vec3(18.0, 0.9, 18.0));
-        base *= 0.94 + 0.12 * mix(0.5, streak, resolved(18.0, pixel));
+        float ring = smoothstep(0.55, 0.95, fract(r)) * resolved(1.1, pixel);
+        base *= 1.0 - 0.38 * ring;
+        float streak = mix(0.5, noise3(q * vec3(18.0, 0.9, 18.0)), resolved(18.0, pixel));
+        base *= 0.94 + 0.12 * streak;
+        height = -0.02 * ring + 0.004 * streak;
     }
+}
+// The shading normal tilted by the gradient of a height field h over the
+// surface (world units), from screen-space derivatives of h and of the
+// position: Mikkelsen's surface gradient ("Bump Mapping Unparametrized
+// Surfaces on the GPU", 2010), so no tangents are needed on our meshes.
+vec3 bumped(vec3 n, vec3 p, float h) {
+    vec3 dpx = dFdx(p), dpy = dFdy(p);
+    vec3 r1 = cross(dpy, n), r2 = cross(n, dpx);
+    float det = dot(dpx, r1);
+    if (abs(det) < 1e-20) return n;
+    vec3 gradient = sign(det) * (dFdx(h) * r1 + dFdy(h) * r2);
+    return normalize(abs(det) * n - gradient);
+}
+// Cavity shading (the clay view): the surface's curvature from how the
+// normal turns across the pixel, along each screen axis (positive where
+// the surface bends away, a ridge; negative in a groove), measured against
+// kCavityPixels pixels of surface, so a groove a few pixels across reads
+// fully at any distance, as in sculpting programs. A factor on the colour:
+// grooves down to 0.4, ridges up to 1.3 (linear light).
+const float kCavityPixels = 8.0;
+float cavityFactor(vec3 n, float strength) {
+    vec3 dpx = dFdx(vWorld), dpy = dFdy(vWorld);
+    float px = dot(dpx, dpx), py = dot(dpy, dpy);
+    if (px < 1e-20 || py < 1e-20) return 1.0;
+    float bend = dot(dFdx(n), dpx) / px + dot(dFdy(n), dpy) / py;  // about 2 / radius
+    float pixel = 0.5 * (sqrt(px) + sqrt(py));
+    float c = clamp(0.5 * bend * kCavityPixels * pixel, -1.0, 1.0);
+    return 1.0 + strength * (c < 0.0 ? 0.6 * c : 0.3 * c);
 }
 void main() {
     // Without vertex normals, the face normal from screen-space derivatives
     // (it faces the viewer, and culling leaves only front faces).
     vec4 surface = drawRecord(vDraw, 7);  // sRGB base colour, specular
-    vec4 finish = drawRecord(vDraw, 8);   // shininess, has normals
+    vec4 finish = drawRecord(vDraw, 8);   // shininess, has normals, cavity
     vec4 detail = drawRecord(vDraw, 9);   // SurfaceKind, metallic, detail scale
     vec3 n = finish.y > 0.5 ? normalize(vNormal) : normalize(cross(dFdx(vWorld), dFdy(vWorld)));
     vec3 base = toLinear(surface.rgb);
@@ -176,8 +219,14 @@ void main() {
     if (kind != 0) {
         vec3 q = vModel / detail.z;
         float pixel = max(length(fwidth(q)), 1e-6);
-        surfaceDetail(kind, q, n, pixel, base, specular, shininess, metallic);
+        float height;
+        surfaceDetail(kind, q, n, pixel, base, specular, shininess, metallic, height);
+        // The relief in world units: pattern units to model units to metres.
+        if (uBump > 0.0)
+            n = bumped(n, vWorld, uBump * height * detail.z * length(drawModel(vDraw)[0].xyz));
     }
+    // (A draw's cavity is the same over a triangle: derivatives defined.)
+    if (finish.z > 0.0) base *= cavityFactor(n, finish.z);
     // A metal's highlight is its own colour and strong; its diffuse light
     // fades (Blinn-Phong's stand-in for a metal's missing diffuse term).
     specular = mix(specular, base * (0.6 + specular), metallic);

@@ -14,6 +14,7 @@
 #include "frep/diagnostics.h"
 #include "frep/model.h"
 #include "frep/parser.h"
+#include "garden/render/material_look.h"
 #include "garden/render/screenshot.h"
 #include "garden/render/shapes.h"
 #include "gl_fixture.h"
@@ -30,23 +31,16 @@ glm::mat4 at(const glm::vec3& p, float scale = 1.0f) {
     return glm::scale(glm::translate(glm::mat4(1.0f), p), glm::vec3(scale));
 }
 
-// A real sculpture, carved: a 1 x 0.6 x 1 m block with a slot 0.12 m wide
-// and 0.15 m deep along z across its top, voxelized and meshed as the
-// garden does.
-poly::Mesh slottedBlock() {
-    const std::string source =
-        "slotted(x[3], a[1]) {\n"
-        "  block = (0.5 - x[1]) & (0.5 + x[1]) & (0.3 - x[2]) & (0.3 + x[2]) & (0.5 - x[3]) & (0.5 + x[3]);\n"
-        "  slot = (a[1] - x[1]) & (a[1] + x[1]) & (x[2] - 0.15);\n"
-        "  slotted = block \\ slot;\n"
-        "}\n";
-    frep::ParseResult r = frep::parseProgram(source, "slotted.hf");
+// A HyperFun body with one parameter a[1], voxelized at 96 and meshed as
+// the garden does.
+poly::Mesh meshedBody(const std::string& source, double a) {
+    frep::ParseResult r = frep::parseProgram(source, "carved.hf");
     if (!r.ok()) {
         ADD_FAILURE() << (r.errors.empty() ? "parse failed" : frep::formatDiagnostic(r.errors[0]));
         return {};
     }
     auto program = std::make_shared<const frep::Program>(std::move(*r.program));
-    frep::Model model(program, program->defaultBody(), {0.06});
+    frep::Model model(program, program->defaultBody(), {a});
     voxel::VolumeRequest request;
     request.resolution = 96;
     voxel::VoxelizeResult v = voxel::voxelize(model, request);
@@ -57,15 +51,37 @@ poly::Mesh slottedBlock() {
     return poly::meshVolume(*v.volume);
 }
 
+// A real sculpture, carved: a 1 x 0.6 x 1 m block with a slot 0.12 m wide
+// and 0.15 m deep along z across its top.
+poly::Mesh slottedBlock() {
+    return meshedBody("slotted(x[3], a[1]) {\n"
+                      "  block = (0.5 - x[1]) & (0.5 + x[1]) & (0.3 - x[2]) & (0.3 + x[2]) & (0.5 - x[3]) & (0.5 + x[3]);\n"
+                      "  slot = (a[1] - x[1]) & (a[1] + x[1]) & (x[2] - 0.15);\n"
+                      "  slotted = block \\ slot;\n"
+                      "}\n",
+                      0.06);
+}
+
+// The same block with a round-bottomed groove along z across its top: a
+// cylinder of radius a[1] whose axis lies in the top face.
+poly::Mesh groovedBlock(double radius) {
+    return meshedBody("grooved(x[3], a[1]) {\n"
+                      "  block = (0.5 - x[1]) & (0.5 + x[1]) & (0.3 - x[2]) & (0.3 + x[2]) & (0.5 - x[3]) & (0.5 + x[3]);\n"
+                      "  groove = a[1] * a[1] - x[1] * x[1] - (x[2] - 0.3) * (x[2] - 0.3);\n"
+                      "  grooved = block \\ groove;\n"
+                      "}\n",
+                      radius);
+}
+
 class LookTest : public GlTest {
 protected:
     void render(const View& view, const RenderQuality& quality, bool ground, const glm::mat4& model,
-                const RenderMaterial& material) {
+                const RenderMaterial& material, ChunkId chunk = 1) {
         renderer_->setQuality(quality);
         target_->bind();
         renderer_->beginFrame(view);
         if (ground) renderer_->drawGround(GroundStyle{});
-        renderer_->drawChunk(1, model, material);
+        renderer_->drawChunk(chunk, model, material);
         renderer_->endFrame();
         read();
         if (std::getenv("HG_LOOK_DUMP")) writePng(std::string(std::getenv("HG_LOOK_DUMP")) + std::to_string(dumps_++) + ".png", kWidth, kHeight, color_);
@@ -250,6 +266,35 @@ TEST_F(LookTest, AmbientOcclusionDarkensACarvedGrooveAndNotTheOpenTop) {
     EXPECT_LT(meanSum(groove, 1), grooveOpen - 30) << "at half resolution too";
 }
 
+// The clay view's cavity shading: the floor of a round-bottomed groove 8 cm
+// in radius reads darker with it than without, the flat top beside it the
+// same, and a small ball (a ridge all round) lighter. No occlusion or
+// shadows here: the curvature alone.
+TEST_F(LookTest, CavityShadingDarkensAGrooveAndLightensARidge) {
+    const poly::Mesh block = groovedBlock(0.08);
+    ASSERT_FALSE(block.empty());
+    renderer_->upload(1, 1, block);
+    const View view = makeView({0.0f, 1.9f, 1.5f}, {0, 0.45f, 0}, {0.0f, 1.0f, 0.0f});
+    const glm::mat4 model = at({0, 0.3f, 0});
+    const glm::ivec2 groove = worldToPixel(view, {0.0f, 0.3f + 0.3f - 0.08f, 0.1f});
+    const glm::ivec2 top = worldToPixel(view, {0.3f, 0.6f, 0.1f});
+    RenderMaterial flat = clayViewMaterial();
+    flat.cavity = 0.0f;
+    render(view, plain(), false, model, flat);
+    const double grooveFlat = meanSum(groove, 1), topFlat = meanSum(top, 1);
+    render(view, plain(), false, model, clayViewMaterial());
+    EXPECT_LT(meanSum(groove, 1), grooveFlat - 40) << "the groove reads darker";
+    EXPECT_NEAR(meanSum(top, 1), topFlat, 6) << "a flat top is left as it is";
+
+    renderer_->upload(2, 1, uvSphereMesh(0.15f, 48, 24));
+    const View ballView = makeView({0, 0, 5}, {0, 0, 0});
+    const glm::ivec2 centre = worldToPixel(ballView, {0, 0, 0});
+    render(ballView, plain(), false, glm::mat4(1.0f), flat, 2);
+    const double ballFlat = meanSum(centre, 1);
+    render(ballView, plain(), false, glm::mat4(1.0f), clayViewMaterial(), 2);
+    EXPECT_GT(meanSum(centre, 1), ballFlat + 15) << "a ridge reads lighter";
+}
+
 TEST_F(LookTest, TheSkyDeepensOverheadAndShowsTheSun) {
     const glm::vec3 sun(0.0f, 0.35f, -1.0f);  // low, ahead
     View view = makeView({0, 1, 0}, {0, 1.4f, -5}, sun);
@@ -307,23 +352,71 @@ TEST_F(LookTest, TheLawnVariesInWorldSpace) {
     EXPECT_GT(first.g, first.r) << "green";
 }
 
-TEST_F(LookTest, ARenderScaleDrawsFewerPixelsStretchedOverTheSameView) {
+// The scene drawn at half the size is stretched bilinearly: the sphere's
+// hard silhouette (no multisampling) becomes a ramp over the stretched
+// pixels, where nearest sampling would repeat each scene pixel twice and
+// keep the full step between sky and sphere; lines drawn over it stay as
+// thin as at full size.
+TEST_F(LookTest, ARenderScaleIsStretchedSmoothlyAndLinesStaySharp) {
     renderer_->upload(1, 1, uvSphereMesh(1.0f, 96, 48));
     const View view = makeView({0, 0, 5}, {0, 0, 0});
-    RenderQuality q = plainQuality();
-    render(view, q, false, glm::mat4(1.0f), kRed);
-    const int full = count(reddish);
+    const glm::vec4 lineColor(1.0f, 1.0f, 0.0f, 1.0f);
+    const float lineY = 1.6f;  // above the sphere, across the sky
+    auto draw = [&](const RenderQuality& q) {
+        renderer_->setQuality(q);
+        target_->bind();
+        renderer_->beginFrame(view);
+        renderer_->drawChunk(1, glm::mat4(1.0f), kRed);
+        renderer_->drawLines({{-3.0f, lineY, 0.0f}, {3.0f, lineY, 0.0f}}, lineColor, LineMode::Segments);
+        renderer_->endFrame();
+        read();
+    };
+    // Over the rows through the sphere: the largest step in r + g + b
+    // between neighbouring pixels of a row, averaged; and the pairs of
+    // pixels (2k, 2k + 1) that differ.
+    const int top = worldToPixel(view, {0, 0.8f, 0}).y, bottom = worldToPixel(view, {0, -0.8f, 0}).y;
+    auto edgeStep = [&] {
+        double sum = 0.0;
+        for (int y = std::min(top, bottom); y <= std::max(top, bottom); ++y) {
+            int largest = 0;
+            for (int x = 0; x + 1 < kWidth; ++x) largest = std::max(largest, std::abs(pixel(x, y).sum() - pixel(x + 1, y).sum()));
+            sum += largest;
+        }
+        return sum / (std::abs(top - bottom) + 1);
+    };
     auto pairsDiffer = [&] {
         int n = 0;
         for (int y = 0; y < kHeight; ++y)
             for (int x = 0; x + 1 < kWidth; x += 2) n += pixel(x, y).sum() != pixel(x + 1, y).sum() ? 1 : 0;
         return n;
     };
-    EXPECT_GT(pairsDiffer(), 100) << "at full size neighbouring pixels are shaded apart";
+    const int lineColumn = worldToPixel(view, {0.0f, lineY, 0.0f}).x;
+    auto lineThickness = [&] {
+        int n = 0;
+        for (int y = 0; y < kHeight; ++y) {
+            const Rgba p = pixel(lineColumn, y);
+            n += p.r > 200 && p.g > 200 && p.b < 80 ? 1 : 0;
+        }
+        return n;
+    };
+    RenderQuality q = plainQuality();
+    draw(q);
+    const int full = count(reddish);
+    const double fullStep = edgeStep();
+    const int fullLine = lineThickness();
+    ASSERT_GT(fullStep, 100.0) << "a hard silhouette against the sky";
+    ASSERT_GT(fullLine, 0);
     q.renderScale = 0.5f;
-    render(view, q, false, glm::mat4(1.0f), kRed);
+    draw(q);
     EXPECT_NEAR(count(reddish), full, 0.05 * full) << "the same disc, drawn at half the resolution";
-    EXPECT_EQ(pairsDiffer(), 0) << "each scene pixel covers two output pixels in x (and y)";
+    EXPECT_LT(edgeStep(), 0.7 * fullStep) << "the silhouette is a ramp (nearest sampling keeps the whole step)";
+    EXPECT_GT(pairsDiffer(), 100) << "stretched pixels are not doubled";
+    EXPECT_EQ(lineThickness(), fullLine) << "lines are drawn at the output's size";
+    // Switched off: each scene pixel doubled, the whole step kept.
+    q.smoothUpscale = false;
+    draw(q);
+    EXPECT_EQ(pairsDiffer(), 0);
+    EXPECT_GT(edgeStep(), 0.9 * fullStep);
 }
 
 TEST(RenderQualityTest, PresetsSwitchTheEffectsAndParseByName) {

@@ -46,8 +46,9 @@ poly::Mesh square(int n = 1) {
 
 class MaterialLookTest : public GlTest {
 protected:
-    void render(const View& view, const glm::mat4& model, const RenderMaterial& material) {
-        renderer_->setQuality(plainQuality());
+    void render(const View& view, const glm::mat4& model, const RenderMaterial& material,
+                const RenderQuality& quality = plainQuality()) {
+        renderer_->setQuality(quality);
         target_->bind();
         renderer_->beginFrame(view);
         renderer_->drawChunk(1, model, material);
@@ -72,6 +73,18 @@ protected:
         std::vector<int> sums;
         for (int x = x0; x <= x1; ++x) sums.push_back(pixel(x, kHeight / 2).sum());
         return sums;
+    }
+    // The variance of r + g + b over the square of (2k + 1) pixels about the centre.
+    double centreVariance(int k) const {
+        double sum = 0.0, sum2 = 0.0;
+        for (int y = kHeight / 2 - k; y <= kHeight / 2 + k; ++y)
+            for (int x = kWidth / 2 - k; x <= kWidth / 2 + k; ++x) {
+                const double v = pixel(x, y).sum();
+                sum += v;
+                sum2 += v * v;
+            }
+        const double n = double((2 * k + 1) * (2 * k + 1));
+        return sum2 / n - (sum / n) * (sum / n);
     }
     static int spread(const std::vector<int>& v) {
         return *std::max_element(v.begin(), v.end()) - *std::min_element(v.begin(), v.end());
@@ -152,6 +165,32 @@ TEST_F(MaterialLookTest, TheDetailMovesAndScalesWithTheSculpture) {
         for (std::size_t i = 0; i < home.size(); ++i) changed += std::abs(int(home[i]) - int(color_[i])) > 3 ? 1 : 0;
         EXPECT_GT(changed, static_cast<int>(home.size() / 20));
     }
+}
+
+// The procedural detail is relief too: on a flat square under a low light
+// stone, wood and clay vary more with the shading normal tilted by their
+// detail than with colour alone; a plain material has no relief, and the
+// low preset switches it off.
+TEST_F(MaterialLookTest, TheDetailStandsOutAsReliefUnlessSwitchedOff) {
+    renderer_->upload(1, 1, square());
+    const View view = makeView({0, 0, 2.2f}, {0, 0, 0}, {1.0f, 0.3f, 0.35f});  // low, from the side
+    RenderQuality flat = plainQuality();
+    flat.materialBump = false;
+    for (const char* name : {"stone", "wood", "clay"}) {
+        SCOPED_TRACE(name);
+        render(view, glm::mat4(1.0f), builtin(name), flat);
+        const double colourOnly = centreVariance(40);
+        const std::vector<std::uint8_t> without = color_;
+        render(view, glm::mat4(1.0f), builtin(name));
+        EXPECT_GT(centreVariance(40), 1.5 * colourOnly) << "colour only: " << colourOnly;
+        render(view, glm::mat4(1.0f), builtin(name), qualityOf(QualityPreset::Low));
+        EXPECT_EQ(color_, without) << "the low preset draws no relief";
+    }
+    const RenderMaterial plain{{0.7f, 0.7f, 0.7f}, 0.2f, 16.0f};
+    render(view, glm::mat4(1.0f), plain, flat);
+    const std::vector<std::uint8_t> without = color_;
+    render(view, glm::mat4(1.0f), plain);
+    EXPECT_EQ(color_, without) << "no detail, no relief";
 }
 
 TEST_F(MaterialLookTest, TheClayViewGivesEveryMaterialTheSamePixels) {
