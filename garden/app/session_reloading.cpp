@@ -24,6 +24,7 @@
 #include "garden/morph/morph_blend.h"
 #include "garden/morph/morph_sources.h"
 #include "garden/sculpt/impacts.h"
+#include "garden/sculpt/mask_margin.h"
 #include "garden/sculpt/sculpture_edits.h"
 #include "garden/sculpt/sketch_edit.h"
 #include "garden/sculpt/stroke_segments.h"
@@ -59,13 +60,7 @@ void rederive(Edit& e, const FieldUnits& u) {
     } else if (auto* k = std::get_if<SketchSolid>(&e.op)) {
         resolveSketch(*k, u);  // it resolved when made: the outline is the same
     }
-    if (e.mask) {
-        // As maskFor grows it: the band, a melt's softness below it.
-        double floor = u.band;
-        if (const auto* s = std::get_if<Stroke>(&e.op))
-            if (s->tool == StrokeTool::Melt) floor += s->softness;
-        e.mask->box = maskBox(e.mask->balls, (floor + 1.0) * u.voxelSize);
-    }
+    if (e.mask) e.mask->box = maskBox(e.mask->balls, maskMargin(e, u));
 }
 
 }  // namespace
