@@ -435,9 +435,19 @@ private:
     static voxel::VolumeRequest volumeRequest(const SculptureSpec& spec);
     // A file's modification time as a number (0: none); reloading compares them.
     static std::int64_t sourceStamp(const std::string& path);
-    // Sculpture `index`'s grid replaced by `fresh` (same frame), its edits
-    // applied again: "" or why not (nothing changed then).
+    // Sculpture `index`'s grid replaced by `fresh`, its edits applied
+    // again: "" or why not (nothing changed then).
+    // When the frame differs the sculpture is rebuilt in the new one (reframeSculpture).
     std::string replaceSource(std::size_t index, SculptureLoad loaded, voxel::Volume fresh);
+    // Sculpture `index`'s grid is in a new frame: its edits derived again in
+    // the new units and applied, its meshing caches made anew.
+    void reframeSculpture(std::size_t index);
+    // Sources of the metamorphosis read again (`changed`, with their loads
+    // and grids): replaced like any sculpture, then the morph's caches
+    // sampled again once and the result blended again (budgeted, frame by
+    // frame), its own edits applied after the blend.
+    std::string replaceMorphSources(const std::vector<std::size_t>& changed, std::vector<SculptureLoad> loads,
+                                    std::vector<voxel::Volume> grids);
     std::string applyAddModel(const AddAction& a);
     void buildMorph();
     void restartMorph();

@@ -77,6 +77,9 @@ struct Sculpture {
     // is not shown ("": it is; else the parser's message, the last good one kept).
     std::int64_t sourceStamp = 0;
     std::string sourceProblem;
+    // Counts the times the grid was replaced by one of another frame (its
+    // chunks are others then): a view drops the meshes it uploaded before.
+    std::uint64_t frameGeneration = 0;
 
     bool missing() const { return !error.empty(); }
     // Its adding was undone (AddAction): not shown, picked, edited or found

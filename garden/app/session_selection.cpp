@@ -15,6 +15,7 @@
 #include "garden/deform/selection.h"
 #include "garden/deform/sketch_mesh.h"
 #include "garden/scene/to_glm.h"
+#include "garden/sculpt/mask_margin.h"
 #include "garden/sculpt/sculpture_edits.h"
 #include "garden/sculpt/sketch_edit.h"
 #include "voxel/volume.h"
@@ -243,13 +244,7 @@ const std::optional<SelectionMask>& GardenSession::selectionOf(int sculpture) co
 std::optional<SelectionMask> GardenSession::maskFor(int sculpture, const Edit& e) const {
     std::optional<SelectionMask> mask = selectionOf(sculpture);
     if (!mask) return mask;
-    // A limited tool is at its floor (and leaves f as it was) this many
-    // voxels beyond the balls: the band, a melt's softness below it.
-    const FieldUnits u = unitsOf(*sculptures_[static_cast<std::size_t>(sculpture)].volume);
-    double floor = u.band;
-    if (const auto* s = std::get_if<Stroke>(&e.op))
-        if (s->tool == StrokeTool::Melt) floor += s->softness;
-    mask->box = maskBox(mask->balls, (floor + 1.0) * u.voxelSize);
+    mask->box = maskBox(mask->balls, maskMargin(e, unitsOf(*sculptures_[static_cast<std::size_t>(sculpture)].volume)));
     return mask;
 }
 

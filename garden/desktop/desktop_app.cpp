@@ -23,6 +23,7 @@
 #include "garden/desktop/export_panel.h"
 #include "garden/desktop/garden_view.h"
 #include "garden/desktop/garden_window.h"
+#include "garden/desktop/panel_layout.h"
 #include "garden/desktop/recent_sessions.h"
 #include "garden/desktop/session_panel.h"
 #include "garden/desktop/view_framing.h"
@@ -171,8 +172,10 @@ void startView(OpenedSession& opened, const std::string& dir, SessionPanel& pane
         panel.opened(dir);
         std::string warning;
         std::optional<ToolSettings> tool;
-        readSessionView(dir, opened.session->navigator(), warning, &tool);
+        std::optional<std::string> panels;
+        readSessionView(dir, opened.session->navigator(), warning, &tool, &panels);
         if (!warning.empty()) std::cerr << "warning: " << warning << "\n";
+        if (panels) restorePanelLayout(*panels);
         // The tool as it was left, its sizes too.
         if (tool) {
             opened.session->tool() = *tool;
@@ -236,7 +239,8 @@ int runDesktopGarden(const DesktopOptions& options) {
             const int status = runDesktopOn(*opened.session, window, here, &link);
             // The view goes with the session, for its next opening.
             if (opened.recorder)
-                if (const std::string why = writeSessionView(here.session, opened.session->navigator(), &opened.session->tool());
+                if (const std::string panels = panelLayout(), why = writeSessionView(here.session, opened.session->navigator(),
+                                                                                      &opened.session->tool(), &panels);
                     !why.empty())
                     std::cerr << "warning: the view is not kept: " << why << "\n";
             if (link.goTo.empty() || status != 0) {

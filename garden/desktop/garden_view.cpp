@@ -97,6 +97,13 @@ ViewUpload GardenView::upload(const GardenSession& session, double allowanceMs) 
         if (!st.onShow()) continue;
         const poly::RemeshQueue& q = *st.queue;
         if (uploaded_.size() <= s) uploaded_.resize(s + 1, 0);
+        if (frames_.size() <= s) frames_.resize(s + 1);
+        if (frames_[s].frameGeneration != st.frameGeneration) {
+            for (std::size_t c = 0; c < frames_[s].chunks; ++c) renderer_.drop(chunkId(s, c));
+            frames_[s].frameGeneration = st.frameGeneration;
+            uploaded_[s] = 0;
+        }
+        frames_[s].chunks = std::max(frames_[s].chunks, q.count());
         if (uploaded_[s] == q.shownGeneration() + 1) continue;  // nothing new on show
         if (spent) {
             ++done.pending;

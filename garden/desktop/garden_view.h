@@ -57,6 +57,14 @@ private:
     // Per sculpture, the queue's shownGeneration() + 1 last uploaded (0:
     // never): a sculpture whose queue showed nothing new is not looked at.
     std::vector<std::uint64_t> uploaded_;
+    // Per sculpture, the frameGeneration and chunk count of what was
+    // uploaded: a grid rebuilt in a new frame (its source read again) has
+    // other chunks, whose versions start again, so the old ones are dropped.
+    struct Uploaded {
+        std::uint64_t frameGeneration = 0;
+        std::size_t chunks = 0;
+    };
+    std::vector<Uploaded> frames_;
 };
 
 }  // namespace hg::garden

@@ -8,6 +8,7 @@
 
 #include "garden/app/garden_session.h"
 #include "garden/desktop/desktop_keys.h"
+#include "garden/desktop/panel_layout.h"
 #include "garden/desktop/recent_sessions.h"
 #include "garden/session/session_copy.h"
 #include "garden/session/session_folder.h"
@@ -42,7 +43,8 @@ void SessionPanel::opened(const std::string& dir) {
 std::string SessionPanel::duplicate(const GardenSession& session, const SessionRecorder& recorder, const std::string& to) {
     std::string why = copySession(recorder, to);
     // The copy opens where the user is looking now.
-    if (why.empty()) why = writeSessionView(to, session.navigator(), &session.tool());
+    const std::string panels = panelLayout();
+    if (why.empty()) why = writeSessionView(to, session.navigator(), &session.tool(), &panels);
     if (why.empty()) setStatus("copied the session to " + to, false);
     else setStatus("no copy: " + why, true);
     return why;

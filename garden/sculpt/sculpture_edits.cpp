@@ -206,6 +206,17 @@ std::vector<voxel::IndexBox> SculptureEdits::rebase() {
     return wasDeferred ? std::vector<voxel::IndexBox>{} : flush();
 }
 
+std::vector<voxel::IndexBox> SculptureEdits::reframe(const std::function<void(Edit&)>& rederive) {
+    std::vector<Edit> edits = list_.edits();
+    list_ = EditList(unitsOf(shown_), kEditIndexCellVoxels * shown_.frame.voxelSize);
+    for (Edit& e : edits) rederive(e);
+    for (Edit& e : redo_) rederive(e);
+    base_ = std::make_unique<voxel::Volume>(shown_.clone());
+    before_.clear();  // copies of the old frame's leaves
+    pending_.clear();
+    return putBack(std::move(edits));
+}
+
 std::vector<voxel::IndexBox> SculptureEdits::putBack(std::vector<Edit> edits) {
     const bool wasDeferred = deferred_;
     deferred_ = true;

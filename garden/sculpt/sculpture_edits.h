@@ -7,6 +7,7 @@
 // edit applied (rebuild()), bit for bit.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -64,6 +65,14 @@ public:
     // applied again on it, each voxel once. The boxes recomputed (none while
     // deferred: flush).
     std::vector<voxel::IndexBox> rebase();
+    // The shown grid was replaced by a new unedited one of another frame
+    // (its source file read again, the solid grown or shrunk): it becomes
+    // the base, the units are its own, and every edit (those in the redo
+    // stack too) is derived again in them by `rederive` (what a journal's
+    // replay derives: a stroke's segments, reaches, a mask's margin), its
+    // id kept, and applied again, each voxel once. Undo copies are dropped.
+    // The boxes recomputed (none while deferred: flush).
+    std::vector<voxel::IndexBox> reframe(const std::function<void(Edit&)>& rederive);
     // Edits taken out appended again, their ids kept and the redo stack
     // left as it is; each voxel they reach is recomputed once.
     std::vector<voxel::IndexBox> putBack(std::vector<Edit> edits);

@@ -23,7 +23,8 @@ constexpr double kDegrees = 180.0 / glm::pi<double>();
 
 }  // namespace
 
-std::string writeSessionView(const std::string& dir, const Navigator& navigator, const ToolSettings* tool) {
+std::string writeSessionView(const std::string& dir, const Navigator& navigator, const ToolSettings* tool,
+                             const std::string* panels) {
     const glm::vec3& e = navigator.eye();
     nlohmann::json j;
     j["mode"] = navigator.mode() == NavigationMode::Walk ? "walk" : "fly";
@@ -31,11 +32,12 @@ std::string writeSessionView(const std::string& dir, const Navigator& navigator,
     j["yaw"] = static_cast<double>(navigator.yaw()) * kDegrees;
     j["pitch"] = static_cast<double>(navigator.pitch()) * kDegrees;
     if (tool) j["tool"] = toolSettingsJson(*tool);
+    if (panels && !panels->empty()) j["panels"] = *panels;
     return io::writeFileAtomically(viewPath(dir), j.dump(2) + "\n", io::WriteSite::SessionFile);
 }
 
 bool readSessionView(const std::string& dir, Navigator& navigator, std::string& warning,
-                     std::optional<ToolSettings>* tool) {
+                     std::optional<ToolSettings>* tool, std::optional<std::string>* panels) {
     warning.clear();
     const std::string path = viewPath(dir);
     std::error_code ec;
@@ -47,7 +49,7 @@ bool readSessionView(const std::string& dir, Navigator& navigator, std::string& 
     }
     try {
         const nlohmann::json j = parseStrictJson(text);
-        ObjectReader r(j, "$", {"mode", "eye", "yaw", "pitch", "tool"});
+        ObjectReader r(j, "$", {"mode", "eye", "yaw", "pitch", "tool", "panels"});
         const std::string mode = readString(r.required("mode"), r.pathOf("mode"));
         if (mode != "walk" && mode != "fly") throw JsonError(r.pathOf("mode"), "expected \"walk\" or \"fly\"");
         const std::array<double, 3> eye = readVec3(r.required("eye"), r.pathOf("eye"));
@@ -57,8 +59,11 @@ bool readSessionView(const std::string& dir, Navigator& navigator, std::string& 
         const double pitch = readNumber(r.required("pitch"), r.pathOf("pitch"), -90.0, 90.0);
         std::optional<ToolSettings> inHand;
         if (const auto* t = r.optional("tool")) inHand = readToolSettings(*t, r.pathOf("tool"));
+        std::optional<std::string> layout;
+        if (const auto* p = r.optional("panels")) layout = readString(*p, r.pathOf("panels"));
         r.finish();
         if (tool) *tool = inHand;
+        if (panels) *panels = layout;
         navigator.setMode(mode == "walk" ? NavigationMode::Walk : NavigationMode::Fly);
         navigator.setPose(glm::vec3(static_cast<float>(eye[0]), static_cast<float>(eye[1]), static_cast<float>(eye[2])),
                           static_cast<float>(yaw / kDegrees), static_cast<float>(pitch / kDegrees));

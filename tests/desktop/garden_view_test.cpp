@@ -2,7 +2,9 @@
 // GardenView into an offscreen target. The ball in front covers its
 // projected disc, its depth is its distance, the ground is below and the
 // sky above; uploads happen once per shown mesh.
+#include <chrono>
 #include <filesystem>
+#include <fstream>
 
 #include "../garden/session_garden.h"
 #include "../render/gl_fixture.h"
@@ -83,6 +85,66 @@ TEST_F(GardenViewTest, TheSettledGardenShowsItsSculpturesAtTheirDepth) {
     EXPECT_LT(away.trianglesDrawn, 16u) << "the ground at most";
     read();
     EXPECT_EQ(count(test::reddish), 0);
+}
+
+// A sculpture without a box whose file changes its solid's extent (a ball
+// of radius 0.8 made a flat ellipsoid 1.6 by 0.8 by 0.8) is rebuilt in a
+// new frame with other chunks: the view drops the meshes it had uploaded
+// for the old ones and shows the new solid, none of the old.
+TEST_F(GardenViewTest, ASculptureRebuiltInANewFrameShowsItsNewMeshesOnly) {
+    const auto write = [&](const std::string& field) {
+        const std::filesystem::path p = scratch_ / "t.hf";
+        const bool existed = std::filesystem::exists(p);
+        const auto before = existed ? std::filesystem::last_write_time(p) : std::filesystem::file_time_type{};
+        std::ofstream(p) << "t(x[3], a[1]) { t = " << field << "; }\n";
+        if (existed) std::filesystem::last_write_time(p, before + std::chrono::seconds(1));
+    };
+    write("0.64 - (x[1]^2 + (x[2]-0.5)^2 + x[3]^2)");
+    std::ofstream(scratch_ / "garden.json") << R"({"version": 1, "name": "shrink", "materials": {"red": {"color": [0.9, 0.1, 0.1], "roughness": 0.6}},
+        "sculptures": [{"name": "t", "file": "t.hf", "resolution": 32, "material": "red", "placement": {"position": [0, 0, 0]}}],
+        "start": {"position": [0, 0.5, 3], "look_at": [0, 0.5, 0]}})";
+    SessionSettings settings;
+    settings.chunkSize = 16;
+    settings.maxLevel = 0;
+    settings.viewportHeight = kHeight;
+    settings.fovY = glm::radians(double(kFovY));
+    GardenSession session(loadGarden((scratch_ / "garden.json").string()), settings);
+    session.navigator().setMode(NavigationMode::Fly);
+    session.navigator().setPose({0.0f, 0.5f, 3.0f}, 0.0f, 0.0f);
+    const auto settle = [&] {
+        for (int f = 0; f < 500 && !session.idle(); ++f) session.frame(FrameInput(Hands{}, 1.0 / 90.0));
+        ASSERT_TRUE(session.idle());
+    };
+    const auto redPixels = [&](GardenView& view) {
+        view.upload(session, 1e9);
+        target_->bind();
+        view.render(session, {kWidth, kHeight}, glm::radians(kFovY));
+        renderer_->endFrame();
+        read();
+        int n = 0;
+        for (int y = 0; y < kHeight; ++y)
+            for (int x = 0; x < kWidth; ++x) n += test::reddish(pixel(x, y)) ? 1 : 0;
+        return n;
+    };
+    settle();
+    GardenView view(*renderer_);
+    const double big = discRadiusPixels(0.8, 3.0);
+    EXPECT_NEAR(redPixels(view), test::kPi * big * big, 0.08 * test::kPi * big * big);
+    const std::size_t chunksBefore = session.sculptures()[0].queue->count();
+
+    write("0.16 - (x[1]^2 / 4 + (x[2]-0.5)^2 + x[3]^2)");
+    ASSERT_EQ(session.reloadChangedSources().size(), 1u);
+    const Sculpture& t = session.sculptures()[0];
+    ASSERT_LT(t.queue->count(), chunksBefore) << "a flatter frame, fewer chunks";
+    settle();
+    const double wide = discRadiusPixels(0.8, 3.0), high = discRadiusPixels(0.4, 3.0);
+    EXPECT_NEAR(redPixels(view), test::kPi * wide * high, 0.08 * test::kPi * wide * high);
+    for (std::size_t c = t.queue->count(); c < chunksBefore; ++c)
+        EXPECT_FALSE(renderer_->has(GardenView::chunkId(0, c))) << "old chunk " << c << " dropped";
+    for (std::size_t c = 0; c < t.queue->count(); ++c) {
+        if (!t.queue->mesh(c)) continue;
+        EXPECT_TRUE(renderer_->has(GardenView::chunkId(0, c), t.queue->version(c))) << c;
+    }
 }
 
 }  // namespace

@@ -144,6 +144,58 @@ TEST_F(SessionPanelTest, ADesktopRunKeepsTheViewAndTheNextOpensThere) {
 }
 
 
+// The panel layout goes with the session: a panel moved and collapsed in
+// one run stands there, collapsed, in the next run on the same session (a
+// real window and ImGui context each time); a session whose view.json has
+// no layout opens with the defaults.
+TEST_F(SessionPanelTest, APanelMovedInASessionIsWhereItWasWhenTheSessionReopens) {
+    HG_REQUIRE_DISPLAY();
+    DesktopOptions o = smallWindow(writeGarden(), "layout", 3);
+    std::optional<ImVec2> defaultPos;
+    o.onFrame = [&](GardenSession&, int frame) {
+        ImGuiWindow* garden = ImGui::FindWindowByName("Garden");
+        if (frame == 0 && garden) defaultPos = garden->Pos;
+        if (frame == 1) {
+            ImGui::SetWindowPos("Garden", ImVec2(131.0f, 47.0f));
+            ImGui::SetWindowCollapsed("Garden", true);
+        }
+        return false;
+    };
+    ASSERT_EQ(runDesktopGarden(o), 0);
+    ASSERT_TRUE(defaultPos);
+    ASSERT_FALSE(defaultPos->x == 131.0f && defaultPos->y == 47.0f) << "the test must move it";
+    std::string warning;
+    Navigator n;
+    std::optional<std::string> panels;
+    ASSERT_TRUE(readSessionView((dir / "layout").string(), n, warning, nullptr, &panels)) << warning;
+    ASSERT_TRUE(panels);
+    EXPECT_NE(panels->find("[Window][Garden]"), std::string::npos) << *panels;
+
+    std::optional<ImVec2> pos;
+    bool collapsed = false;
+    o.onFrame = [&](GardenSession&, int frame) {
+        if (frame == 0)
+            if (ImGuiWindow* garden = ImGui::FindWindowByName("Garden")) {
+                pos = garden->Pos;
+                collapsed = garden->Collapsed;
+            }
+        return false;
+    };
+    ASSERT_EQ(runDesktopGarden(o), 0);
+    ASSERT_TRUE(pos);
+    EXPECT_EQ(pos->x, 131.0f);
+    EXPECT_EQ(pos->y, 47.0f);
+    EXPECT_TRUE(collapsed);
+
+    // A view.json from before layouts were kept: the defaults.
+    ASSERT_EQ(writeSessionView((dir / "layout").string(), n), "");
+    ASSERT_EQ(runDesktopGarden(o), 0);
+    ASSERT_TRUE(pos);
+    EXPECT_EQ(pos->x, defaultPos->x);
+    EXPECT_EQ(pos->y, defaultPos->y);
+    EXPECT_FALSE(collapsed);
+}
+
 // Going on in another session from a running window (Save As, a recent
 // session): it is opened, this one closed (its lock released, its view
 // kept), and the window goes on with the other's garden and edits.

@@ -4,6 +4,9 @@
 // place and changes nothing.
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <optional>
+
 #include "garden/app/navigator.h"
 #include "garden/session/session_view.h"
 #include "garden_test_util.h"
@@ -101,6 +104,28 @@ TEST_F(SessionViewTest, TheToolAndItsSettingsComeBack) {
     write(kSessionViewFile, R"({"mode": "fly", "eye": [1, 2, 3], "yaw": 0, "pitch": 0, "tool": {"kind": "chainsaw"}})");
     EXPECT_FALSE(readSessionView(dir.string(), n, warning, &back));
     EXPECT_NE(warning.find("$.tool.kind"), std::string::npos) << warning;
+}
+
+// The desktop's panel layout (ImGui's ini text) goes in "panels" and comes
+// back as written; a file without it (written before layouts were kept)
+// reads fine and gives none; a layout that is not a string is named.
+TEST_F(SessionViewTest, ThePanelLayoutIsKeptAndOldFilesWithoutItReadFine) {
+    Navigator n;
+    const std::string layout = "[Window][Garden]\nPos=131,47\nSize=300,400\nCollapsed=1\n\n";
+    ASSERT_EQ(writeSessionView(dir.string(), n, nullptr, &layout), "");
+    std::string warning;
+    std::optional<std::string> panels;
+    ASSERT_TRUE(readSessionView(dir.string(), n, warning, nullptr, &panels)) << warning;
+    ASSERT_TRUE(panels);
+    EXPECT_EQ(*panels, layout);
+
+    std::ofstream(dir / kSessionViewFile) << R"({"mode": "walk", "eye": [0, 1.7, 5], "yaw": 0, "pitch": 0})";
+    ASSERT_TRUE(readSessionView(dir.string(), n, warning, nullptr, &panels)) << warning;
+    EXPECT_FALSE(panels);
+
+    std::ofstream(dir / kSessionViewFile) << R"({"mode": "walk", "eye": [0, 1.7, 5], "yaw": 0, "pitch": 0, "panels": 3})";
+    EXPECT_FALSE(readSessionView(dir.string(), n, warning, nullptr, &panels));
+    EXPECT_NE(warning.find("$.panels"), std::string::npos) << warning;
 }
 
 }  // namespace
