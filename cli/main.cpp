@@ -162,11 +162,11 @@ int main(int argc, char** argv) {
     GardenAddOptions addOpts;
     auto* gardenCmd = app.add_subcommand("garden", "Change a garden file");
     gardenCmd->require_subcommand(1);
-    auto* gardenAdd = gardenCmd->add_subcommand("add", "Add a HyperFun file to a garden as a sculpture");
+    auto* gardenAdd = gardenCmd->add_subcommand("add", "Add a HyperFun file, a mesh (.stl, .obj, .ply) or an OpenVDB volume (.vdb) to a garden as a sculpture");
     gardenAdd->add_option("garden", addOpts.garden, "Garden file (.json)")->required();
-    gardenAdd->add_option("file", addOpts.file, "HyperFun file (.hf)")->required();
+    gardenAdd->add_option("file", addOpts.file, "HyperFun file (.hf), mesh (.stl, .obj, .ply) or OpenVDB volume (.vdb)")->required();
     gardenAdd->add_option("--name", addOpts.name, "The sculpture's name (default: the file's stem)");
-    gardenAdd->add_option("--body", addOpts.body, "The body to use (default: my_model, else the first)");
+    gardenAdd->add_option("--body", addOpts.body, "HyperFun: the body to use (default: my_model, else the first)");
     gardenAdd->add_option("--resolution", addOpts.resolution, "Voxels along the model box's longest side (default 128)")
         ->check(CLI::Range(4, 2048));
     gardenAdd->add_option("--size", addOpts.size, "Metres along the model box's longest side (default 1.5)")

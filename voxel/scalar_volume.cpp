@@ -124,6 +124,7 @@ std::string readScalarVdb(const std::string& path, const std::string& gridName, 
     }
     auto g = std::make_shared<ScalarGrid>();
     g->grid = found;
+    out.levelSet = found->getGridClass() == openvdb::GRID_LEVEL_SET;
     out.grid = std::move(g);
     out.minValue = static_cast<double>(lo);
     out.maxValue = static_cast<double>(hi);
@@ -224,10 +225,12 @@ frep::Box3 modelBoxOf(const openvdb::FloatGrid& field, const openvdb::CoordBBox&
     return box;
 }
 
+}  // namespace
+
 // Distance in model units (negative inside) to ours: voxels, positive
 // inside, clamped to the band; the invariants of volume.h (active exactly
 // inside the band, ±band elsewhere, nothing outside the index box).
-openvdb::FloatGrid::Ptr toOurGrid(const openvdb::FloatGrid& distance, const VolumeFrame& frame) {
+openvdb::FloatGrid::Ptr levelSetToOurGrid(const openvdb::FloatGrid& distance, const VolumeFrame& frame) {
     const double band = frame.band;
     const auto ours = [&](float d) {
         return static_cast<float>(std::clamp(-static_cast<double>(d) / frame.voxelSize, -band, band));
@@ -253,8 +256,6 @@ openvdb::FloatGrid::Ptr toOurGrid(const openvdb::FloatGrid& distance, const Volu
     tree.prune();
     return out;
 }
-
-}  // namespace
 
 VoxelizeResult levelSetFromScalar(const ScalarVolume& volume, const IsoSurfaceRequest& request) {
     VoxelizeResult result;
@@ -317,7 +318,7 @@ VoxelizeResult levelSetFromScalar(const ScalarVolume& volume, const IsoSurfaceRe
     v.normalization = 1.0 / frame.voxelSize;  // f is the distance in model units
     v.boxOrigin = result.modelBox.origin;
     v.source = request.source;
-    openvdb::FloatGrid::Ptr grid = toOurGrid(*distance, frame);
+    openvdb::FloatGrid::Ptr grid = levelSetToOurGrid(*distance, frame);
     grid->setName(request.source.body);
     v.grid().grid = grid;
     result.normalization.scale = v.normalization;

@@ -45,6 +45,7 @@ public:
     double minValue = 0.0;    // over every sample (a .vdb's background included)
     double maxValue = 0.0;
     std::string description;  // what was read, for messages and tooltips
+    bool levelSet = false;    // a .vdb grid of class level set (distance, negative inside)
     std::shared_ptr<const ScalarGrid> grid;
 };
 

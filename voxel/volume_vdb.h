@@ -29,6 +29,12 @@ inline IndexBox toIndexBox(const openvdb::CoordBBox& b) {
 // box's low corner.
 openvdb::math::Transform::Ptr frameTransform(const VolumeFrame& frame);
 
+// A level set in OpenVDB's convention (distance in model units, negative
+// inside) as a sculpture's grid: voxels, positive inside, clamped to the
+// frame's band, active exactly inside the band, nothing outside the index
+// box (volume.h). Scanned volumes and imported meshes end here.
+openvdb::FloatGrid::Ptr levelSetToOurGrid(const openvdb::FloatGrid& distance, const VolumeFrame& frame);
+
 // Makes sure openvdb::initialize() has run (idempotent, thread-safe).
 void ensureOpenVdbInitialized();
 

@@ -138,7 +138,9 @@ void GardenSession::describeSculpture(std::size_t index) {
     const SculptureSpec& spec = load_.garden->sculptures[index];
     Sculpture& s = sculptures_[index];
     s.name = spec.name;
-    s.source.kind = spec.scan ? SculptureSource::Kind::Scan : SculptureSource::Kind::HyperFun;
+    s.source.kind = spec.scan   ? SculptureSource::Kind::Scan
+                    : spec.mesh ? SculptureSource::Kind::Mesh
+                                : SculptureSource::Kind::HyperFun;
     s.source.spec = static_cast<int>(index);
     s.placement = spec.placement;
     s.material = spec.material;

@@ -28,7 +28,7 @@ class SculptureEdits;
 
 // What a sculpture's field is made from.
 struct SculptureSource {
-    enum class Kind { HyperFun, Morph, Scan };
+    enum class Kind { HyperFun, Morph, Scan, Mesh };
     Kind kind = Kind::HyperFun;
     // HyperFun: the garden's entry (file, body, a[], box, resolution) by its
     // index in Garden::sculptures and GardenLoad::sculptures (an index: a
@@ -38,6 +38,9 @@ struct SculptureSource {
     // iso-value (docs/volumes.md, "Scanned volumes"), and its base grid is
     // the iso-surface rebuilt as a level set. It has no program: it cannot
     // be written as HyperFun, only meshed from its grid.
+    // Mesh: the same index; its entry's `mesh` names an STL, OBJ or PLY
+    // file whose triangles became the base grid (voxel/mesh_volume.h), and
+    // like a scan it has no program.
     int spec = -1;
     std::shared_ptr<const frep::Program> program;
     // Morph: the garden's triangle of sources; the weights live in the session.
@@ -91,6 +94,10 @@ struct Sculpture {
     bool hasGrid() const { return !missing() && !loading; }
     bool morphResult() const { return source.kind == SculptureSource::Kind::Morph; }
     bool scanned() const { return source.kind == SculptureSource::Kind::Scan; }
+    bool meshed() const { return source.kind == SculptureSource::Kind::Mesh; }
+    // Made from a grid with no HyperFun behind it (a scan, a mesh): meshed
+    // from its grid for export, never written as HyperFun.
+    bool gridOnly() const { return scanned() || meshed(); }
     glm::vec3 worldCentre() const;
 };
 

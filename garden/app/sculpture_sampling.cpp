@@ -1,5 +1,7 @@
 #include "garden/app/sculpture_sampling.h"
 
+#include "polygonizer/mesh.h"
+#include "voxel/mesh_volume.h"
 #include "voxel/scalar_volume.h"
 
 namespace hg::garden {
@@ -8,6 +10,17 @@ voxel::VoxelizeResult sampleSculptureSource(const SculptureSpec& spec, const Scu
                                             const voxel::VolumeRequest& request) {
     if (load.model) return voxel::voxelize(*load.model, request);
     voxel::VoxelizeResult r;
+    if (load.mesh && spec.mesh) {
+        voxel::MeshLevelSetRequest m;
+        m.box = request.box;
+        m.resolution = request.resolution;
+        m.band = request.band;
+        m.source = request.source;
+        if (m.source.file.empty()) m.source.file = spec.fileAsWritten;
+        r = voxel::levelSetFromMesh(load.mesh->positions, load.mesh->indices, m);
+        if (!r.volume) r.error = spec.mesh->at + ": " + r.error;
+        return r;
+    }
     if (!load.scan || !spec.scan) {
         r.error = load.error.empty() ? "the sculpture has no source to sample" : load.error;
         return r;

@@ -1,7 +1,7 @@
 // A sculpture's unedited grid from its source, whichever kind it is: the
-// HyperFun body sampled (voxel::voxelize) or a scanned volume's iso-surface
+// HyperFun body sampled (voxel::voxelize), a scanned volume's iso-surface
 // rebuilt as a level set (voxel::levelSetFromScalar, docs/volumes.md,
-// "Scanned volumes"). The session's start, the background loader and a
+// "Scanned volumes") or a mesh's (voxel::levelSetFromMesh, "Imported meshes"). The session's start, the background loader and a
 // source read again after it changed on disk all come here.
 #pragma once
 

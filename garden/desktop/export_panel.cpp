@@ -141,8 +141,8 @@ void ExportPanel::draw(const GardenSession& session) {
     }
     if (!ImGui::CollapsingHeader("Export")) return;
     ImGui::Combo("format", &format_, kFormatNames, IM_ARRAYSIZE(kFormatNames));
-    if (format_ == 0 && selected >= 0 && session.sculptures()[static_cast<std::size_t>(selected)].scanned())
-        ImGui::TextWrapped("a scanned volume cannot be written as HyperFun (it cannot read a volume): "
+    if (format_ == 0 && selected >= 0 && session.sculptures()[static_cast<std::size_t>(selected)].gridOnly())
+        ImGui::TextWrapped("a scanned volume or a mesh cannot be written as HyperFun (it cannot read them): "
                            "pick a mesh or the VDB level set, made from its grid");
     if (format_ != 0) {
         ImGui::InputInt("resolution (0: the grid's)", &resolution_, 64, 256);

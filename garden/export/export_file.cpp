@@ -24,14 +24,14 @@ std::string lowerExtension(const std::string& path) {
     return e;
 }
 
-// A scanned volume's sculpture: no FRep, so a mesh of its grid as it stands
+// A scanned volume's or a mesh's sculpture: no FRep, so a mesh of its grid as it stands
 // (a copy, for the worker), at the grid's resolution and over its box.
 std::string prepareGridExport(const GardenSession& session, const Sculpture& s, const std::string& path, const ExportFileOptions& options,
                               ExportJob& job, std::chrono::steady_clock::time_point start) {
     if (lowerExtension(path) == ".hf") return scanRefusal(session, s);
     const int grid = s.volume->frame.resolution;
     if (options.resolution != 0 && options.resolution != grid)
-        return "sculpture '" + s.name + "' is a scanned volume: it is meshed from its grid, at the grid's " +
+        return "sculpture '" + s.name + "' is " + (s.meshed() ? "a mesh" : "a scanned volume") + ": it is meshed from its grid, at the grid's " +
                std::to_string(grid) + " voxels along its longest side (give no resolution, or " + std::to_string(grid) +
                "; a finer grid comes from a finer \"resolution\" in the garden file)";
     if (options.box) return "sculpture '" + s.name + "' is a scanned volume: it is meshed from its whole grid, not over a box";
@@ -98,7 +98,7 @@ std::string prepareExport(const GardenSession& session, int index, const std::st
     if (options.resolution < 0) return "the resolution must be positive";
     if (!s.volume) return "sculpture '" + s.name + "' has no grid to take its model box from";
     const auto start = std::chrono::steady_clock::now();
-    if (s.scanned()) return prepareGridExport(session, s, path, options, job, start);
+    if (s.gridOnly()) return prepareGridExport(session, s, path, options, job, start);
     HyperFunExport hf = exportHyperFun(session, index);
     if (!hf.error.empty()) return "cannot export sculpture '" + s.name + "': " + hf.error;
     report.warning = hf.warning;

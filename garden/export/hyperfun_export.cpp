@@ -229,7 +229,7 @@ HyperFunExport exportOrThrow(const GardenSession& session, int index, const Sele
     if (s.removed) throw std::runtime_error("sculpture '" + s.name + "' was removed");
     if (s.missing()) throw std::runtime_error("sculpture '" + s.name + "' is missing: " + s.error);
     if (!s.volume) throw std::runtime_error("sculpture '" + s.name + "' has no grid");
-    if (s.scanned()) throw std::runtime_error(scanRefusal(session, s));
+    if (s.gridOnly()) throw std::runtime_error(scanRefusal(session, s));
     // A part is written as an edited sculpture is, in voxels, then cut to the mask.
     const bool edited = (s.edits && !s.edits->list().empty()) || part;
     const FieldUnits units = s.edits ? s.edits->units() : unitsOf(*s.volume);
@@ -331,8 +331,10 @@ HyperFunExport exportHyperFunPart(const GardenSession& session, int sculpture, c
 
 std::string scanRefusal(const GardenSession& session, const Sculpture& s) {
     const SculptureSpec& spec = session.garden().sculptures.at(static_cast<std::size_t>(s.source.spec));
-    return "sculpture '" + s.name + "' is made from a scanned volume (" + spec.fileAsWritten +
-           "), and HyperFun has no way to read a volume, so it cannot be written as exact HyperFun; export it as a "
+    const char* what = s.meshed() ? "a mesh" : "a scanned volume";
+    const char* thing = s.meshed() ? "a mesh" : "a volume";
+    return "sculpture '" + s.name + "' is made from " + what + " (" + spec.fileAsWritten +
+           "), and HyperFun has no way to read " + thing + ", so it cannot be written as exact HyperFun; export it as a "
            "mesh or a level set instead (.stl, .obj, .glb or .vdb), made from its grid";
 }
 

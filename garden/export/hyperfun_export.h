@@ -40,7 +40,8 @@ struct HyperFunExport {
 };
 
 // The sculpture with index `sculpture` in session.sculptures(). A scanned
-// volume's sculpture is refused (scanRefusal): HyperFun cannot read a volume.
+// volume's or a mesh's sculpture is refused (scanRefusal): HyperFun cannot
+// read a volume or a mesh.
 HyperFunExport exportHyperFun(const GardenSession& session, int sculpture);
 
 // The part of sculpture `sculpture` inside `mask` (an extraction,
@@ -48,7 +49,8 @@ HyperFunExport exportHyperFun(const GardenSession& session, int sculpture);
 // mask's balls' field.
 HyperFunExport exportHyperFunPart(const GardenSession& session, int sculpture, const SelectionMask& mask);
 
-// Why a scanned volume's sculpture has no HyperFun export, and what to use.
+// Why a scanned volume's or a mesh's sculpture (Sculpture::gridOnly) has no
+// HyperFun export, and what to use.
 std::string scanRefusal(const GardenSession& session, const Sculpture& sculpture);
 
 // A finished export's text written to `path` atomically (a failure leaves

@@ -9,9 +9,10 @@ std::string extractPart(GardenSession& session, const std::string& from, const s
                         const std::string& name) {
     const int i = session.findSculpture(from);
     if (i < 0) return "no sculpture named '" + from + "'";
-    if (session.sculptures()[static_cast<std::size_t>(i)].scanned())
-        return "a part of a scanned volume cannot be made a sculpture yet: its program would have to read the "
-               "volume, which HyperFun cannot; the selection still keeps every tool inside it";
+    if (session.sculptures()[static_cast<std::size_t>(i)].gridOnly())
+        return std::string("a part of ") + (session.sculptures()[static_cast<std::size_t>(i)].meshed() ? "a mesh" : "a scanned volume") +
+               " cannot be made a sculpture yet: its program would have to read the "
+               "grid, which HyperFun cannot; the selection still keeps every tool inside it";
     std::string why;
     const auto mask = session.modelMask(model, why);
     if (!mask) return why;

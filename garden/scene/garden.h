@@ -59,11 +59,19 @@ struct ScanSpec {
     std::string at;                   // "garden.json: $.sculptures[2].volume": where its messages point
 };
 
+// A triangle mesh as a sculpture's source (docs/garden-format.md, "mesh"):
+// an STL, OBJ or PLY file whose coordinates are the model frame, turned
+// into the sculpture's level set by OpenVDB's mesh-to-volume.
+struct MeshSpec {
+    std::string at;                   // "garden.json: $.sculptures[2].mesh": where its messages point
+};
+
 struct SculptureSpec {
     std::string name;                 // unique in the garden
-    std::string file;                 // the .hf path (or the scan's file) resolved against the garden file's folder
+    std::string file;                 // the .hf path (or the scan's or mesh's file) resolved against the garden file's folder
     std::string fileAsWritten;        // as in the garden file (for messages and saving)
     std::optional<ScanSpec> scan;     // set: the source is this scanned volume, `file` its file
+    std::optional<MeshSpec> mesh;     // set: the source is this mesh, `file` its file
     std::string body;                 // "": my_model, else the first body
     std::vector<double> a;            // a[1], a[2], ... (missing items are 0)
     std::optional<frep::Box3> box;    // model box; none: voxel::resolveModelBox

@@ -14,6 +14,7 @@
 #include "garden/scene/json_reader.h"
 #include "garden/scene/materials.h"
 #include "garden/scene/model_file.h"
+#include "polygonizer/mesh_read.h"
 #include "voxel/scalar_volume.h"
 #include "voxel/volume_frame.h"
 
@@ -90,19 +91,26 @@ struct Reader {
     }
 
     SculptureSpec sculpture(const json& v, const std::string& path, const Material& fallback) const {
-        ObjectReader o(v, path, {"name", "file", "volume", "body", "a", "box", "resolution", "band", "placement", "material"});
+        ObjectReader o(v, path, {"name", "file", "volume", "mesh", "body", "a", "box", "resolution", "band", "placement", "material"});
         o.finish();
         SculptureSpec s;
         s.name = readString(o.required("name"), o.pathOf("name"));
-        if (o.has("file") && o.has("volume"))
-            throw JsonError(path, "give either 'file' (a HyperFun program) or 'volume' (a scanned volume), not both");
-        if (!o.has("file") && !o.has("volume"))
-            throw JsonError(path, "missing key 'file' (a HyperFun program) or 'volume' (a scanned volume)");
-        if (auto* x = o.optional("volume")) {
+        const int sources = int(o.has("file")) + int(o.has("volume")) + int(o.has("mesh"));
+        if (sources > 1)
+            throw JsonError(path, "give one of 'file' (a HyperFun program), 'volume' (a scanned volume) or 'mesh' "
+                                  "(an STL, OBJ or PLY mesh), not several");
+        if (sources == 0)
+            throw JsonError(path, "missing key 'file' (a HyperFun program), 'volume' (a scanned volume) or 'mesh' "
+                                  "(an STL, OBJ or PLY mesh)");
+        const char* grid = o.has("volume") ? "volume" : o.has("mesh") ? "mesh" : nullptr;
+        if (grid)
             for (const char* key : {"body", "a"})
                 if (o.has(key))
-                    throw JsonError(o.pathOf(key), std::string("'") + key + "' applies to a HyperFun file, not to a volume");
+                    throw JsonError(o.pathOf(key), std::string("'") + key + "' applies to a HyperFun file, not to a " + grid);
+        if (auto* x = o.optional("volume")) {
             s.scan = scan(*x, o.pathOf("volume"), s);
+        } else if (auto* m = o.optional("mesh")) {
+            s.mesh = mesh(*m, o.pathOf("mesh"), s);
         } else {
             s.fileAsWritten = readString(o.required("file"), o.pathOf("file"));
             s.file = resolve(s.fileAsWritten);
@@ -173,6 +181,20 @@ struct Reader {
             scan.insideAbove = inside == "above";
         }
         return scan;
+    }
+
+    // A mesh's entry (docs/garden-format.md, "mesh"); like a scan's, its
+    // file is read with the sculptures.
+    MeshSpec mesh(const json& v, const std::string& path, SculptureSpec& s) const {
+        ObjectReader o(v, path, {"file"});
+        o.finish();
+        MeshSpec m;
+        m.at = file + ": " + path;
+        s.fileAsWritten = readString(o.required("file"), o.pathOf("file"));
+        s.file = resolve(s.fileAsWritten);
+        if (!poly::isMeshFileName(s.fileAsWritten))
+            throw JsonError(o.pathOf("file"), "expected a mesh file (.stl, .obj or .ply), found '" + s.fileAsWritten + "'");
+        return m;
     }
 
     PathSpec path(const json& v, const std::string& at, const Material& fallback) const {
@@ -461,8 +483,21 @@ SculptureLoad loadScan(const SculptureSpec& spec) {
 
 }  // namespace
 
+// A mesh read (the level set is built when the sculpture is sampled).
+SculptureLoad loadMesh(const SculptureSpec& spec) {
+    SculptureLoad s;
+    poly::MeshReadResult read = poly::readMeshFile(spec.file);
+    if (!read.error.empty()) {
+        s.error = spec.mesh->at + ": " + read.error + "\n";
+        return s;
+    }
+    s.mesh = std::make_shared<const poly::Mesh>(std::move(read.mesh));
+    return s;
+}
+
 SculptureLoad loadSculpture(const SculptureSpec& spec) {
     if (spec.scan) return loadScan(spec);
+    if (spec.mesh) return loadMesh(spec);
     return sculptureFrom(loadModelFile(spec.file, spec.body, spec.a), spec);
 }
 
@@ -503,6 +538,7 @@ GardenLoad loadGardenText(const std::string& text, const std::string& path) {
         key.precision(17);
         key << spec.file << '\n' << spec.body;
         for (double a : spec.a) key << ' ' << a;
+        if (spec.mesh) key << "\nmesh";
         if (const auto& c = spec.scan)
             key << '\n' << c->grid << ' ' << c->dims[0] << ' ' << c->dims[1] << ' ' << c->dims[2] << ' ' << c->sixteenBit
                 << ' ' << c->spacing[0] << ' ' << c->spacing[1] << ' ' << c->spacing[2] << ' ' << c->iso << ' '
@@ -518,6 +554,10 @@ GardenLoad loadGardenText(const std::string& text, const std::string& path) {
             } else if (load.sculptures[m->sourceIndex[i]].scan) {
                 load.morphError = "morph source '" + m->sources[i] +
                                   "' is a scanned volume; the metamorphosis blends HyperFun sculptures, so there is none";
+                break;
+            } else if (load.sculptures[m->sourceIndex[i]].mesh) {
+                load.morphError = "morph source '" + m->sources[i] +
+                                  "' is a mesh; the metamorphosis blends HyperFun sculptures, so there is none";
                 break;
             }
     }

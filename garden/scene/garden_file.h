@@ -13,18 +13,21 @@
 #include "garden/scene/garden.h"
 
 namespace hg::voxel { class ScalarVolume; }
+namespace hg::poly { struct Mesh; }
 
 namespace hg::garden {
 
 // One sculpture's source, ready to sample, or why not: its HyperFun body,
-// or the samples of a scanned volume (SculptureSpec::scan).
+// the samples of a scanned volume (SculptureSpec::scan) or the triangles of
+// a mesh (SculptureSpec::mesh).
 struct SculptureLoad {
     std::shared_ptr<const frep::Program> program;
     std::optional<frep::Model> model;
     std::shared_ptr<const voxel::ScalarVolume> scan;
-    std::string error;  // "" when `model` or `scan` is set; else the messages (file:line:col, caret), ending in '\n'
+    std::shared_ptr<const poly::Mesh> mesh;
+    std::string error;  // "" when `model`, `scan` or `mesh` is set; else the messages (file:line:col, caret), ending in '\n'
 
-    bool ok() const { return model.has_value() || scan != nullptr; }
+    bool ok() const { return model.has_value() || scan != nullptr || mesh != nullptr; }
 };
 
 struct GardenLoad {
@@ -51,8 +54,8 @@ GardenLoad loadGarden(const std::string& path);
 // its relative sculpture files): a generated garden.
 GardenLoad loadGardenText(const std::string& text, const std::string& path);
 
-// The sculpture's model from its file, body and a[], or its scanned volume
-// read and its iso-value checked (missing or broken files give an error
+// The sculpture's model from its file, body and a[], its scanned volume
+// read and its iso-value checked, or its mesh read (missing or broken files give an error
 // naming the garden file's entry, not an exception). Used by loadGarden, and again when
 // a file changed on disk.
 SculptureLoad loadSculpture(const SculptureSpec& spec);

@@ -1,15 +1,19 @@
 #include "garden/scene/garden_making.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 
 #include <nlohmann/json.hpp>
 
 #include "garden/scene/garden_file.h"
 #include "garden/scene/json_reader.h"
 #include "garden/scene/model_file.h"
+#include "polygonizer/mesh_read.h"
 #include "voxel/model_box.h"
+#include "voxel/scalar_volume.h"
 
 namespace hg::garden {
 
@@ -18,23 +22,112 @@ namespace {
 namespace fs = std::filesystem;
 using ojson = nlohmann::ordered_json;
 
-bool sizeModelFile(const ModelToPlace& m, double x, double z, SizedModel& out, std::string& error) {
-    const ModelFile mf = loadModelFile(m.file, m.body, {});
-    if (!mf.ok()) {
-        error = mf.error;
+std::string lowerExtension(const std::string& file) {
+    std::string ext = fs::path(file).extension().string();
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return ext;
+}
+
+// A volume's iso-value and side when the user names only its file: a level
+// set's zero with the inside below it, otherwise (a fog volume, densities)
+// the middle of its values with the inside above.
+struct VolumeDefaults {
+    double iso = 0.0;
+    bool insideAbove = false;
+};
+
+// The box of a mesh's points (no margin: it is sized and stood on the ground).
+frep::Box3 boundsOf(const std::vector<float>& positions) {
+    frep::Box3 b;
+    for (int a = 0; a < 3; ++a) {
+        b.lo[a] = std::numeric_limits<double>::max();
+        b.hi[a] = std::numeric_limits<double>::lowest();
+    }
+    for (std::size_t i = 0; i + 2 < positions.size(); i += 3)
+        for (int a = 0; a < 3; ++a) {
+            b.lo[a] = std::min(b.lo[a], static_cast<double>(positions[i + static_cast<std::size_t>(a)]));
+            b.hi[a] = std::max(b.hi[a], static_cast<double>(positions[i + static_cast<std::size_t>(a)]));
+        }
+    return b;
+}
+
+// The solid's box of a .vdb volume: its level set made coarsely (32 voxels
+// along the longest side), which also checks that it has an inside.
+bool volumeBox(const ModelToPlace& m, frep::Box3& box, VolumeDefaults& d, std::string& error) {
+    voxel::ScalarVolume volume;
+    if (std::string why = voxel::readScalarVdb(m.file, "", volume); !why.empty()) {
+        error = why;
         return false;
     }
-    if (std::string why = sizeModel(*mf.model, m.size, x, z, out); !why.empty()) {
-        error = m.file + ": " + why;
+    if (!volume.levelSet) {
+        d.iso = 0.5 * (volume.minValue + volume.maxValue);
+        d.insideAbove = true;
+    }
+    voxel::IsoSurfaceRequest request;
+    request.iso = d.iso;
+    request.insideAbove = d.insideAbove;
+    request.resolution = 32;
+    const voxel::VoxelizeResult r = voxel::levelSetFromScalar(volume, request);
+    if (!r.volume) {
+        error = m.file + ": " + r.error;
         return false;
     }
+    box = r.modelBox.box;
     return true;
 }
 
-ojson entry(const ModelToPlace& m, const std::string& name, const std::string& file, const SizedModel& s) {
+// What the source is, its box and (a volume) its iso-value: read from the file.
+bool sizeModelFile(const ModelToPlace& m, double x, double z, SizedModel& out, VolumeDefaults& volume,
+                   std::string& error) {
+    const std::string ext = lowerExtension(m.file);
+    const bool mesh = poly::isMeshFileName(m.file);
+    if ((mesh || ext == ".vdb" || ext == ".raw") && !m.body.empty()) {
+        error = m.file + ": a body (--body) applies to a HyperFun file, not to a " + (mesh ? "mesh" : "volume") + "\n";
+        return false;
+    }
+    if (ext == ".raw") {
+        error = m.file + ": a raw volume needs its dimensions, sample type and iso-value, which its file does not "
+                         "say: write its \"volume\" entry by hand (docs/garden-format.md), or convert it to .vdb\n";
+        return false;
+    }
+    frep::Box3 box;
+    if (mesh) {
+        const poly::MeshReadResult read = poly::readMeshFile(m.file);
+        if (!read.error.empty()) {
+            error = read.error + "\n";
+            return false;
+        }
+        box = boundsOf(read.mesh.positions);
+    } else if (ext == ".vdb") {
+        if (!volumeBox(m, box, volume, error)) return false;
+    } else {
+        const ModelFile mf = loadModelFile(m.file, m.body, {});
+        if (!mf.ok()) {
+            error = mf.error;
+            return false;
+        }
+        if (std::string why = sizeModel(*mf.model, m.size, x, z, out); !why.empty()) {
+            error = m.file + ": " + why;
+            return false;
+        }
+        return true;
+    }
+    sizeBox(box, m.size, x, z, out);
+    return true;
+}
+
+ojson entry(const ModelToPlace& m, const std::string& name, const std::string& file, const SizedModel& s,
+            const VolumeDefaults& volume) {
     ojson e;
     e["name"] = name;
-    e["file"] = file;
+    const std::string ext = lowerExtension(m.file);
+    if (poly::isMeshFileName(m.file)) {
+        e["mesh"] = {{"file", file}};
+    } else if (ext == ".vdb") {
+        e["volume"] = {{"file", file}, {"iso", volume.iso}, {"inside", volume.insideAbove ? "above" : "below"}};
+    } else {
+        e["file"] = file;
+    }
     if (!m.body.empty()) e["body"] = m.body;
     e["resolution"] = m.resolution;
     e["placement"] = {{"position", {s.position[0], s.position[1], s.position[2]}}, {"scale", s.scale}};
@@ -60,22 +153,27 @@ bool readsBack(const std::string& text, const std::string& path, std::string& er
 std::string sizeModel(const frep::Model& model, double size, double x, double z, SizedModel& out) {
     voxel::ModelBox found;
     if (std::string why = voxel::resolveModelBox(model, std::nullopt, found); !why.empty()) return why;
-    out.box = found.box;
+    sizeBox(found.box, size, x, z, out);
+    return "";
+}
+
+void sizeBox(const frep::Box3& box, double size, double x, double z, SizedModel& out) {
+    out.box = box;
     double longest = 0.0;
     for (int i = 0; i < 3; ++i) longest = std::max(longest, out.box.hi[i] - out.box.lo[i]);
     out.scale = std::clamp(size / longest, 1e-3, 1e3);
     out.position = {x - 0.5 * (out.box.lo[0] + out.box.hi[0]) * out.scale, -out.box.lo[1] * out.scale,
                     z - 0.5 * (out.box.lo[2] + out.box.hi[2]) * out.scale};
-    return "";
 }
 
 std::string gardenOfOneModel(const ModelToPlace& model, std::string& error) {
     SizedModel s;
-    if (!sizeModelFile(model, 0.0, 0.0, s, error)) return "";
+    VolumeDefaults volume;
+    if (!sizeModelFile(model, 0.0, 0.0, s, volume, error)) return "";
     ojson g;
     g["version"] = 1;
     g["name"] = stem(model);
-    g["sculptures"] = ojson::array({entry(model, stem(model), fs::absolute(model.file).lexically_normal().string(), s)});
+    g["sculptures"] = ojson::array({entry(model, stem(model), fs::absolute(model.file).lexically_normal().string(), s, volume)});
     // Far enough back to see all of it with a 60-degree view, and a little above.
     const double h = model.size;
     g["start"] = {{"position", {0.0, 0.6 * h + 0.8, 1.4 * h + 1.0}}, {"look_at", {0.0, 0.5 * h, 0.0}}};
@@ -106,10 +204,11 @@ std::string gardenWithModel(const std::string& gardenText, const std::string& ga
                 furthest = std::max(furthest, e["placement"]["position"][0].get<double>());
         }
     SizedModel s;
-    if (!sizeModelFile(model, furthest + 3.0, 0.0, s, error)) return "";
+    VolumeDefaults volume;
+    if (!sizeModelFile(model, furthest + 3.0, 0.0, s, volume, error)) return "";
     const fs::path folder = fs::absolute(gardenPath).parent_path();
     const std::string file = fs::absolute(model.file).lexically_normal().lexically_relative(folder).generic_string();
-    g["sculptures"].push_back(entry(model, name, file, s));
+    g["sculptures"].push_back(entry(model, name, file, s, volume));
     const std::string text = g.dump(2) + "\n";
     if (!readsBack(text, gardenPath, error)) return "";
     return text;

@@ -1,7 +1,8 @@
 // Gardens made or extended from the command line (docs/garden-format.md,
 // "Bringing work in"): `hypergarden FILE.hf` opens a garden of that one
-// sculpture, `hypergarden garden add GARDEN.json FILE.hf` adds an entry to a
-// garden file. Both size the model to the garden (its box's longest side
+// sculpture, `hypergarden garden add GARDEN.json FILE` adds an entry to a
+// garden file: a HyperFun file, a mesh ("mesh") or an OpenVDB volume
+// ("volume": a level set's zero, or a fog volume's middle value). Both size the model to the garden (its box's longest side
 // `size` metres, standing on the ground) and check the result by reading it
 // back as a garden before anything is written.
 #pragma once
@@ -25,9 +26,11 @@ struct SizedModel {
 };
 // "" on success, else why the model has no box.
 std::string sizeModel(const frep::Model& model, double size, double x, double z, SizedModel& out);
+// The same for a box already known (a mesh's bounds, a volume's solid).
+void sizeBox(const frep::Box3& box, double size, double x, double z, SizedModel& out);
 
 struct ModelToPlace {
-    std::string file;         // the .hf file, as the user named it
+    std::string file;         // as the user named it: .hf, a mesh (.stl, .obj, .ply) or a volume (.vdb)
     std::string name;         // "": the file's stem
     std::string body;         // "": my_model, else the first body
     int resolution = 128;     // voxels along the model box's longest side

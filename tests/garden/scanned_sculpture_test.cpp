@@ -99,7 +99,7 @@ TEST_F(ScannedSculpture, BadEntriesAreRefusedWithTheirPath) {
         {"name": "s", "file": "ball.hf", "volume": {"file": "ball.raw", "dims": [40, 40, 40], "iso": 128}}]})");
     std::ofstream(dir / "both.json") << g.dump();
     GardenLoad both = loadGarden((dir / "both.json").string());
-    EXPECT_NE(both.error.find("$.sculptures[0]: give either 'file' (a HyperFun program) or 'volume'"), std::string::npos)
+    EXPECT_NE(both.error.find("$.sculptures[0]: give one of 'file' (a HyperFun program), 'volume'"), std::string::npos)
         << both.error;
     g["sculptures"][0].erase("file");
     g["sculptures"][0]["body"] = "ball";
