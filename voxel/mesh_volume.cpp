@@ -37,7 +37,7 @@ std::vector<std::uint32_t> positionIds(const std::vector<float>& positions) {
 
 }  // namespace
 
-frep::Box3 meshModelBox(const std::vector<float>& positions) {
+frep::Box3 meshBounds(const std::vector<float>& positions) {
     frep::Box3 box;
     for (int a = 0; a < 3; ++a) {
         box.lo[a] = std::numeric_limits<double>::max();
@@ -48,6 +48,11 @@ frep::Box3 meshModelBox(const std::vector<float>& positions) {
             box.lo[a] = std::min(box.lo[a], static_cast<double>(positions[i + static_cast<std::size_t>(a)]));
             box.hi[a] = std::max(box.hi[a], static_cast<double>(positions[i + static_cast<std::size_t>(a)]));
         }
+    return box;
+}
+
+frep::Box3 meshModelBox(const std::vector<float>& positions) {
+    frep::Box3 box = meshBounds(positions);
     if (positions.size() < 3) return box;
     double longest = 0.0;
     for (int a = 0; a < 3; ++a) longest = std::max(longest, box.hi[a] - box.lo[a]);
@@ -156,19 +161,7 @@ VoxelizeResult levelSetFromMesh(const std::vector<float>& positions, const std::
         result.error = std::string("the mesh could not be turned into a level set: ") + e.what();
         return result;
     }
-    Volume v;
-    v.frame = frame;
-    v.normalization = 1.0 / frame.voxelSize;  // f is the distance in model units
-    v.boxOrigin = result.modelBox.origin;
-    v.source = request.source;
-    openvdb::FloatGrid::Ptr grid = levelSetToOurGrid(*distance, frame);
-    grid->setName(request.source.body);
-    v.grid().grid = grid;
-    result.normalization.scale = v.normalization;
-    result.stats.voxels = frame.indexBox.volume();
-    result.stats.leaves = grid->tree().leafCount();
-    result.stats.seconds = std::chrono::duration<double>(Clock::now() - start).count();
-    result.volume = std::move(v);
+    adoptLevelSet(*distance, frame, request.source, std::chrono::duration<double>(Clock::now() - start).count(), result);
     return result;
 }
 

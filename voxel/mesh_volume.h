@@ -34,6 +34,8 @@ struct MeshLevelSetRequest {
 // The mesh's bounds grown by kMeshBoxMargin; an empty box (lo > hi) for no
 // positions.
 frep::Box3 meshModelBox(const std::vector<float>& positions);
+// The box of a mesh's points (x, y, z after each other), no margin.
+frep::Box3 meshBounds(const std::vector<float>& positions);
 // Whether every edge (vertices equal by position) is shared by exactly two
 // triangles: the mesh bounds an inside.
 bool meshIsClosed(const std::vector<float>& positions, const std::vector<std::uint32_t>& indices);

@@ -257,6 +257,23 @@ openvdb::FloatGrid::Ptr levelSetToOurGrid(const openvdb::FloatGrid& distance, co
     return out;
 }
 
+void adoptLevelSet(const openvdb::FloatGrid& distance, const VolumeFrame& frame, const VolumeSource& source,
+                   double seconds, VoxelizeResult& result) {
+    Volume v;
+    v.frame = frame;
+    v.normalization = 1.0 / frame.voxelSize;  // f is the distance in model units
+    v.boxOrigin = result.modelBox.origin;
+    v.source = source;
+    openvdb::FloatGrid::Ptr grid = levelSetToOurGrid(distance, frame);
+    grid->setName(source.body);
+    v.grid().grid = grid;
+    result.normalization.scale = v.normalization;
+    result.stats.voxels = frame.indexBox.volume();
+    result.stats.leaves = grid->tree().leafCount();
+    result.stats.seconds = seconds;
+    result.volume = std::move(v);
+}
+
 VoxelizeResult levelSetFromScalar(const ScalarVolume& volume, const IsoSurfaceRequest& request) {
     VoxelizeResult result;
     const auto start = Clock::now();
@@ -313,19 +330,7 @@ VoxelizeResult levelSetFromScalar(const ScalarVolume& volume, const IsoSurfaceRe
         result.error = std::string("the iso-surface could not be rebuilt as a level set: ") + e.what();
         return result;
     }
-    Volume v;
-    v.frame = frame;
-    v.normalization = 1.0 / frame.voxelSize;  // f is the distance in model units
-    v.boxOrigin = result.modelBox.origin;
-    v.source = request.source;
-    openvdb::FloatGrid::Ptr grid = levelSetToOurGrid(*distance, frame);
-    grid->setName(request.source.body);
-    v.grid().grid = grid;
-    result.normalization.scale = v.normalization;
-    result.stats.voxels = frame.indexBox.volume();
-    result.stats.leaves = grid->tree().leafCount();
-    result.stats.seconds = std::chrono::duration<double>(Clock::now() - start).count();
-    result.volume = std::move(v);
+    adoptLevelSet(*distance, frame, request.source, std::chrono::duration<double>(Clock::now() - start).count(), result);
     return result;
 }
 

@@ -35,6 +35,13 @@ openvdb::math::Transform::Ptr frameTransform(const VolumeFrame& frame);
 // box (volume.h). Scanned volumes and imported meshes end here.
 openvdb::FloatGrid::Ptr levelSetToOurGrid(const openvdb::FloatGrid& distance, const VolumeFrame& frame);
 
+struct VoxelizeResult;
+// `distance` (as above) made the result's volume in `frame`, at the box
+// origin `result.modelBox` already holds, with its statistics; `seconds`
+// is how long the caller took to build it.
+void adoptLevelSet(const openvdb::FloatGrid& distance, const VolumeFrame& frame, const VolumeSource& source,
+                   double seconds, VoxelizeResult& result);
+
 // Makes sure openvdb::initialize() has run (idempotent, thread-safe).
 void ensureOpenVdbInitialized();
 

@@ -12,6 +12,7 @@
 #include "garden/scene/json_reader.h"
 #include "garden/scene/model_file.h"
 #include "polygonizer/mesh_read.h"
+#include "voxel/mesh_volume.h"
 #include "voxel/model_box.h"
 #include "voxel/scalar_volume.h"
 
@@ -35,21 +36,6 @@ struct VolumeDefaults {
     double iso = 0.0;
     bool insideAbove = false;
 };
-
-// The box of a mesh's points (no margin: it is sized and stood on the ground).
-frep::Box3 boundsOf(const std::vector<float>& positions) {
-    frep::Box3 b;
-    for (int a = 0; a < 3; ++a) {
-        b.lo[a] = std::numeric_limits<double>::max();
-        b.hi[a] = std::numeric_limits<double>::lowest();
-    }
-    for (std::size_t i = 0; i + 2 < positions.size(); i += 3)
-        for (int a = 0; a < 3; ++a) {
-            b.lo[a] = std::min(b.lo[a], static_cast<double>(positions[i + static_cast<std::size_t>(a)]));
-            b.hi[a] = std::max(b.hi[a], static_cast<double>(positions[i + static_cast<std::size_t>(a)]));
-        }
-    return b;
-}
 
 // The solid's box of a .vdb volume: its level set made coarsely (32 voxels
 // along the longest side), which also checks that it has an inside.
@@ -97,7 +83,7 @@ bool sizeModelFile(const ModelToPlace& m, double x, double z, SizedModel& out, V
             error = read.error + "\n";
             return false;
         }
-        box = boundsOf(read.mesh.positions);
+        box = voxel::meshBounds(read.mesh.positions);
     } else if (ext == ".vdb") {
         if (!volumeBox(m, box, volume, error)) return false;
     } else {
