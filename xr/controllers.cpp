@@ -170,6 +170,7 @@ garden::HandState Controllers::readHand(int hand, XrSpace space, XrTime time, fl
     h.grip = toPose(grip.pose, floorOffset);
     h.aim = toPose(aim.pose, floorOffset);
     h.trigger = readFloat(trigger_, hand);
+    h.pressure = h.trigger;  // the trigger's analog depth is the pen's pressure
     h.squeeze = readFloat(squeeze_, hand);
     XrActionStateGetInfo get{XR_TYPE_ACTION_STATE_GET_INFO};
     get.action = thumbstick_;

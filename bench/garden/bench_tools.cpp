@@ -297,7 +297,8 @@ int main(int argc, char** argv) {
                     ++made;
                 } else {
                     records.push_back(garden::StrokeAction{sc.name, rng() % 2 ? garden::StrokeTool::Carve : garden::StrokeTool::Add,
-                                                           4 * v, 2.0, {a, {a[0] + 10 * v, a[1] + 4 * v, a[2]}}, std::nullopt});
+                                                           4 * v, 2.0, {a, {a[0] + 10 * v, a[1] + 4 * v, a[2]}}, std::nullopt, 1.0,
+                                                           garden::Falloff::Smooth, {}});
                     ++made;
                 }
             }
@@ -344,7 +345,8 @@ int main(int argc, char** argv) {
                 records.push_back(garden::PerturbAction{dryad.name, p});
             } else {
                 records.push_back(garden::StrokeAction{dryad.name, i % 2 ? garden::StrokeTool::Carve : garden::StrokeTool::Add,
-                                                       4 * v, 2.0, {a, {a[0] + 10 * v, a[1] + 4 * v, a[2]}}, std::nullopt});
+                                                       4 * v, 2.0, {a, {a[0] + 10 * v, a[1] + 4 * v, a[2]}}, std::nullopt, 1.0,
+                                                           garden::Falloff::Smooth, {}});
             }
         }
         if (const std::string why = session.restore(records); !why.empty()) std::fprintf(stderr, "edits: %s\n", why.c_str());

@@ -20,7 +20,9 @@
 namespace hg::garden {
 
 // A finished stroke: its tool, radius (model units), softness and path
-// (model frame); the segments follow from them.
+// (model frame); the segments follow from them. Smooth and inflate add
+// their strength (as applied: the pen's pressure already in it) and
+// falloff, smooth its segments' fits (so a replay never fits again).
 struct StrokeAction {
     std::string sculpture;
     StrokeTool tool = StrokeTool::Carve;
@@ -28,6 +30,9 @@ struct StrokeAction {
     double softness = 2.0;
     std::vector<ModelPoint> path;
     std::optional<MirrorPlane> mirror;
+    double strength = 1.0;
+    Falloff falloff = Falloff::Smooth;
+    std::vector<std::optional<SegmentFit>> fits;
 };
 
 struct PerturbAction {

@@ -55,6 +55,42 @@ MirrorPlane readMirror(const nlohmann::json& v, const std::string& path) {
     return m;
 }
 
+// A smooth stroke's fits: null for a segment left as it was, else its
+// quadric's centre, scale and ten coefficients.
+nlohmann::json fitsJson(const std::vector<std::optional<SegmentFit>>& fits) {
+    nlohmann::json list = nlohmann::json::array();
+    for (const auto& fit : fits) {
+        if (!fit) {
+            list.push_back(nullptr);
+            continue;
+        }
+        list.push_back({{"centre", point(fit->centre)}, {"scale", fit->scale}, {"c", fit->c}});
+    }
+    return list;
+}
+
+std::vector<std::optional<SegmentFit>> readFits(const nlohmann::json& v, const std::string& path) {
+    if (!v.is_array()) throw JsonError(path, "expected an array of fits (null or {\"centre\", \"scale\", \"c\"})");
+    std::vector<std::optional<SegmentFit>> fits;
+    for (std::size_t i = 0; i < v.size(); ++i) {
+        const std::string at = indexPath(path, i);
+        if (v[i].is_null()) {
+            fits.emplace_back();
+            continue;
+        }
+        ObjectReader r(v[i], at, {"centre", "scale", "c"});
+        SegmentFit fit;
+        fit.centre = readPoint(r.required("centre"), r.pathOf("centre"));
+        fit.scale = readPositive(r.required("scale"), r.pathOf("scale"));
+        const nlohmann::json& c = r.required("c");
+        if (!c.is_array() || c.size() != fit.c.size()) throw JsonError(r.pathOf("c"), "expected 10 coefficients");
+        for (std::size_t k = 0; k < c.size(); ++k) fit.c[k] = finite(c[k], indexPath(r.pathOf("c"), k));
+        r.finish();
+        fits.push_back(fit);
+    }
+    return fits;
+}
+
 void writePerturbation(const Perturbation& q, nlohmann::json& j) {
     j["shape"] = quadricShapeName(q.shape);
     j["center"] = point(q.center);
@@ -95,10 +131,15 @@ std::string actionJson(const Action& record) {
         j["tool"] = strokeToolName(s->tool);
         j["radius"] = s->radius;
         if (s->tool == StrokeTool::Melt) j["softness"] = s->softness;
+        if (s->tool == StrokeTool::Smooth || s->tool == StrokeTool::Inflate) {
+            j["strength"] = s->strength;
+            j["falloff"] = falloffName(s->falloff);
+        }
         nlohmann::json path = nlohmann::json::array();
         for (const ModelPoint& p : s->path) path.push_back(point(p));
         j["path"] = std::move(path);
         if (s->mirror) j["mirror"] = mirrorJson(*s->mirror);
+        if (s->tool == StrokeTool::Smooth) j["fits"] = fitsJson(s->fits);
     } else if (const auto* p = std::get_if<PerturbAction>(&record)) {
         j["sculpture"] = p->sculpture;
         writePerturbation(p->perturbation, j);
@@ -175,7 +216,8 @@ Action readAction(const nlohmann::json& v, const std::string& path) {
     if (!v.is_object() || !v.contains("action")) throw JsonError(path, "expected an object with an \"action\"");
     const std::string action = readString(v.at("action"), childPath(path, "action"));
     if (action == "stroke") {
-        ObjectReader r(v, path, {"action", "sculpture", "tool", "radius", "softness", "path", "mirror"});
+        ObjectReader r(v, path,
+                       {"action", "sculpture", "tool", "radius", "softness", "path", "mirror", "strength", "falloff", "fits"});
         StrokeAction s;
         s.sculpture = readString(r.required("sculpture"), r.pathOf("sculpture"));
         s.tool = readStrokeTool(r.required("tool"), r.pathOf("tool"));
@@ -185,6 +227,9 @@ Action readAction(const nlohmann::json& v, const std::string& path) {
         if (!p.is_array() || p.empty()) throw JsonError(r.pathOf("path"), "expected a non-empty array of points");
         for (std::size_t i = 0; i < p.size(); ++i) s.path.push_back(readPoint(p[i], indexPath(r.pathOf("path"), i)));
         if (r.has("mirror")) s.mirror = readMirror(r.required("mirror"), r.pathOf("mirror"));
+        if (r.has("strength")) s.strength = finite(r.required("strength"), r.pathOf("strength"));
+        if (r.has("falloff")) s.falloff = readFalloff(r.required("falloff"), r.pathOf("falloff"));
+        if (r.has("fits")) s.fits = readFits(r.required("fits"), r.pathOf("fits"));
         r.finish();
         return s;
     }

@@ -170,8 +170,10 @@ public:
         std::string why;
     };
     // A stroke's path and radius; the sculpture's mirror plane goes with it.
+    // Smooth and inflate take a strength (inflate: voxels) and a falloff.
     ActionOrWhy strokeFromWorld(int sculpture, StrokeTool tool, const std::vector<std::array<double, 3>>& worldPath,
-                                double radius, double softness = 2.0) const;
+                                double radius, double softness = 2.0, double strength = 1.0,
+                                Falloff falloff = Falloff::Smooth) const;
     // A perturbation's centre and radii (its axes the world's).
     ActionOrWhy perturbationFromWorld(int sculpture, QuadricShape shape, const std::array<double, 3>& worldCenter,
                                       const std::array<double, 3>& radii, double strength) const;
@@ -217,7 +219,8 @@ public:
     // --- sculpting (garden/app/session_sculpting.cpp) ------------------
     // The world-frame requests above, applied.
     std::string applyStroke(int sculpture, StrokeTool tool, const std::vector<std::array<double, 3>>& worldPath,
-                            double radius, double softness = 2.0);
+                            double radius, double softness = 2.0, double strength = 1.0,
+                            Falloff falloff = Falloff::Smooth);
     std::string applySketch(int sculpture, SketchMode mode, const std::vector<std::array<double, 3>>& worldPoints,
                             const std::array<double, 3>& worldNormal, double thickness = 1.0);
     std::string applyPerturbation(int sculpture, QuadricShape shape, const std::array<double, 3>& worldCenter,
@@ -231,8 +234,10 @@ public:
     // A live stroke: begun at a point, extended as the hand moves, ended on
     // release (the stroke is in the edit list from its first point, and
     // journalled as one StrokeAction when it ends).
+    // Smooth and inflate take a strength (already scaled by the pen's
+    // pressure) and a falloff.
     std::string beginStroke(int sculpture, StrokeTool tool, const std::array<double, 3>& worldPoint, double radius,
-                            double softness = 2.0);
+                            double softness = 2.0, double strength = 1.0, Falloff falloff = Falloff::Smooth);
     std::string extendStroke(const std::array<double, 3>& worldPoint);
     void endStroke();
     bool stroking() const { return strokeSculpture_ >= 0; }

@@ -43,6 +43,9 @@ std::string GardenSession::apply(const Action& action) {
         stroke.softness = a->softness;
         stroke.path = a->path;
         stroke.mirror = a->mirror;
+        stroke.strength = a->strength;
+        stroke.falloff = a->falloff;
+        stroke.fits = a->fits;
         return applyStrokeModel(i, stroke);
     }
     if (const auto* a = std::get_if<PerturbAction>(&action)) {
@@ -124,11 +127,11 @@ JournalPlayed GardenSession::restoreRecords(const std::vector<Action>& records) 
 
 ActionOrWhy GardenSession::strokeFromWorld(int sculpture, StrokeTool tool,
                                            const std::vector<std::array<double, 3>>& worldPath, double radius,
-                                           double softness) const {
+                                           double softness, double strength, Falloff falloff) const {
     if (worldPath.empty()) return refused("the stroke has no path");
     if (std::string why = checkEditable(sculpture); !why.empty()) return refused(why);
     const Sculpture& s = sculptures_[static_cast<std::size_t>(sculpture)];
-    StrokeAction a{s.name, tool, radius / s.scale, softness, {}, s.mirror};
+    StrokeAction a{s.name, tool, radius / s.scale, softness, {}, s.mirror, strength, falloff, {}};
     for (const auto& p : worldPath) {
         if (!finite3(p)) return refused("the stroke's point is not a finite position");
         a.path.push_back(toModel(s, toGlm(p)));
@@ -255,8 +258,8 @@ ActionOrWhy GardenSession::perturbationChange(int sculpture, std::size_t edit, d
 }
 
 std::string GardenSession::applyStroke(int sculpture, StrokeTool tool, const std::vector<std::array<double, 3>>& worldPath,
-                                       double radius, double softness) {
-    return applied(*this, strokeFromWorld(sculpture, tool, worldPath, radius, softness));
+                                       double radius, double softness, double strength, Falloff falloff) {
+    return applied(*this, strokeFromWorld(sculpture, tool, worldPath, radius, softness, strength, falloff));
 }
 
 std::string GardenSession::applySketch(int sculpture, SketchMode mode, const std::vector<std::array<double, 3>>& worldPoints,

@@ -116,7 +116,7 @@ void GardenSession::showChanged(int sculpture, const voxel::IndexBox& box) {
 }
 
 std::string GardenSession::beginStroke(int sculpture, StrokeTool tool, const std::array<double, 3>& worldPoint,
-                                       double radius, double softness) {
+                                       double radius, double softness, double strength, Falloff falloff) {
     if (stroking()) endStroke();
     if (std::string why = checkEditable(sculpture); !why.empty()) return why;
     if (!finite3(worldPoint)) return "the stroke's point is not a finite position";
@@ -125,6 +125,8 @@ std::string GardenSession::beginStroke(int sculpture, StrokeTool tool, const std
     stroke.tool = tool;
     stroke.radius = radius / s.scale;
     stroke.softness = softness;
+    stroke.strength = strength;
+    stroke.falloff = falloff;
     stroke.path.push_back(toModel(s, toGlm(worldPoint)));
     stroke.mirror = s.mirror;
     if (std::string why = startStroke(sculpture, std::move(stroke)); !why.empty()) return why;
@@ -173,7 +175,8 @@ void GardenSession::endStroke() {
     if (!stroking()) return;
     const Sculpture& s = sculptures_[static_cast<std::size_t>(strokeSculpture_)];
     const Stroke& stroke = std::get<Stroke>(s.edits->list().edits().back().op);
-    const StrokeAction done{s.name, stroke.tool, stroke.radius, stroke.softness, stroke.path, stroke.mirror};
+    const StrokeAction done{s.name,   stroke.tool,     stroke.radius,  stroke.softness, stroke.path,
+                            stroke.mirror, stroke.strength, stroke.falloff, stroke.fits};
     if (!undoOrder_.empty()) undoOrder_.back().action = done;  // the stroke's own entry: nothing came between
     record(done);
     strokeSculpture_ = -1;
@@ -475,14 +478,16 @@ void GardenSession::sculptWithHands(const Hands& hands) {
         return;
     }
     if (tool_.kind == ToolSettings::Kind::Perturb) {
-        applyPerturbation(sculpture, tool_.shape, toArray(point), tool_.perturbRadii(), tool_.perturbStrength());
+        // The pressure scales the strength: what is journalled is the product.
+        applyPerturbation(sculpture, tool_.shape, toArray(point), tool_.perturbRadii(),
+                          tool_.perturbStrength() * static_cast<double>(h.pressure));
         return;
     }
-    StrokeTool t = tool_.kind == ToolSettings::Kind::Add ? StrokeTool::Add
-                   : tool_.kind == ToolSettings::Kind::Melt ? StrokeTool::Melt : StrokeTool::Carve;
-    if (tool_.reverse && t != StrokeTool::Melt) t = t == StrokeTool::Carve ? StrokeTool::Add : StrokeTool::Carve;
     strokeDepth_ = glm::length(point - h.aim.position);
-    beginStroke(sculpture, t, toArray(point), tool_.radius, tool_.softness);
+    // The strength the stroke is made with, pressure applied, is what the
+    // journal keeps: a replay needs no pressure.
+    const double strength = strokeStrength(tool_, h.pressure, editsOf(sculpture).units().band);
+    beginStroke(sculpture, strokeToolOf(tool_), toArray(point), tool_.radius, tool_.softness, strength, tool_.falloff);
 }
 
 }  // namespace hg::garden

@@ -32,6 +32,8 @@ ToolSettings::Kind toolKindOf(ToolChoice c) {
         case ToolChoice::Impacts: return K::Impacts;
         case ToolChoice::Move: return K::Move;
         case ToolChoice::Sketch: return K::Sketch;
+        case ToolChoice::Smooth: return K::Smooth;
+        case ToolChoice::Inflate: return K::Inflate;
     }
     return K::None;
 }
@@ -47,6 +49,8 @@ ToolChoice toolChoiceOf(ToolSettings::Kind k) {
         case K::Impacts: return ToolChoice::Impacts;
         case K::Move: return ToolChoice::Move;
         case K::Sketch: return ToolChoice::Sketch;
+        case K::Smooth: return ToolChoice::Smooth;
+        case K::Inflate: return ToolChoice::Inflate;
     }
     return ToolChoice::None;
 }

@@ -25,6 +25,8 @@ bool addKeyPress(DesktopKeys& keys, int key, int mods) {
         case KeyCommand::ToolImpacts: keys.tool = K::Impacts; return true;
         case KeyCommand::ToolMove: keys.tool = K::Move; return true;
         case KeyCommand::ToolSketch: keys.tool = K::Sketch; return true;
+        case KeyCommand::ToolSmooth: keys.tool = K::Smooth; return true;
+        case KeyCommand::ToolInflate: keys.tool = K::Inflate; return true;
         case KeyCommand::Smaller: --keys.sizeSteps; return true;
         case KeyCommand::Larger: ++keys.sizeSteps; return true;
         case KeyCommand::Reverse: keys.reverse = !keys.reverse; return true;

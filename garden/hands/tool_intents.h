@@ -12,7 +12,7 @@
 namespace hg::garden {
 
 // The tools, in the order of ToolSettings::Kind (the desktop's digit keys).
-enum class ToolChoice { None, Carve, Add, Melt, Perturb, Impacts, Move, Sketch };
+enum class ToolChoice { None, Carve, Add, Melt, Perturb, Impacts, Move, Sketch, Smooth, Inflate };
 
 // What becomes of the selected sculpture's mirror plane.
 enum class MirrorIntent { Keep, Toggle, On, Off };

@@ -13,9 +13,10 @@ namespace {
 using C = KeyCommand;
 
 std::vector<KeyBinding> digits() {
-    const C tools[] = {C::ToolNone, C::ToolCarve, C::ToolAdd, C::ToolMelt, C::ToolPerturb, C::ToolImpacts, C::ToolMove, C::ToolSketch};
+    const C tools[] = {C::ToolNone,    C::ToolCarve, C::ToolAdd,    C::ToolMelt,   C::ToolPerturb,
+                       C::ToolImpacts, C::ToolMove,  C::ToolSketch, C::ToolSmooth, C::ToolInflate};
     std::vector<KeyBinding> b;
-    for (int d = 0; d < 8; ++d) {
+    for (int d = 0; d < 10; ++d) {
         b.push_back({GLFW_KEY_0 + d, 0, tools[d]});
         b.push_back({GLFW_KEY_KP_0 + d, 0, tools[d]});
     }
@@ -45,15 +46,15 @@ std::vector<KeyRow> makeTable() {
          "the tool: sculpt the sculpture under the mouse at the press (that one only; it becomes the selection), or with "
          "no tool pick the blend on the ground triangle",
          {}},
-        {"0 1 2 3 4 5 6 7",
-         "the tool: none (the morph selector), carve, add, melt, perturb, impacts, move, sketch (hold the button on a "
-         "sculpture and draw an outline; released, it is inflated and joined, R: cut)",
+        {"0 1 2 3 4 5 6 7 8 9",
+         "the tool: none (the morph selector), carve, add, soft carve, perturb, impacts, move, sketch (hold the button "
+         "on a sculpture and draw an outline; released, it is inflated and joined, R: cut), smooth, inflate (R: deflate)",
          digits()},
         {"[ / ]",
          "the tool's size x0.8 / x1.25 (stroke radius, perturbation scale, impact size, within the bounds the headset's "
          "stick keeps too; the move tool: the selection's scale)",
          {{GLFW_KEY_LEFT_BRACKET, 0, C::Smaller}, {GLFW_KEY_RIGHT_BRACKET, 0, C::Larger}}},
-        {"R", "reverse (carve <-> add, pull <-> push, a sketch joined <-> cut)", {{GLFW_KEY_R, 0, C::Reverse}}},
+        {"R", "reverse (carve <-> add, pull <-> push, inflate <-> deflate, a sketch joined <-> cut)", {{GLFW_KEY_R, 0, C::Reverse}}},
         {"M", "the selected sculpture's mirror plane on / off", {{GLFW_KEY_M, 0, C::Mirror}}},
         {"Shift + drag", "with the move tool: turn the sculpture (as does dragging its ring)",
          {{GLFW_KEY_LEFT_SHIFT, 0, C::Turn}, {GLFW_KEY_RIGHT_SHIFT, 0, C::Turn}}},

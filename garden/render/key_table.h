@@ -16,7 +16,7 @@ enum class KeyCommand {
     Forward, Back, Left, Right, Down, Up,  // held: walking, flying
     Turn,                                  // held: the move tool turns (Shift)
     Fly, FrameGarden, Orbit, Detail,
-    ToolNone, ToolCarve, ToolAdd, ToolMelt, ToolPerturb, ToolImpacts, ToolMove, ToolSketch,
+    ToolNone, ToolCarve, ToolAdd, ToolMelt, ToolPerturb, ToolImpacts, ToolMove, ToolSketch, ToolSmooth, ToolInflate,
     Smaller, Larger, Reverse, Mirror,
     Undo, Redo, UndoSelected, History,
     ClayView, Wireframe,

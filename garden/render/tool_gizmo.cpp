@@ -75,6 +75,8 @@ glm::vec4 toolColor(const ToolSettings& tool) {
         case K::Carve: return tool.reverse ? glm::vec4(0.3f, 0.9f, 0.35f, 1) : glm::vec4(1.0f, 0.4f, 0.15f, 1);
         case K::Add: return tool.reverse ? glm::vec4(1.0f, 0.4f, 0.15f, 1) : glm::vec4(0.3f, 0.9f, 0.35f, 1);
         case K::Melt: return {0.35f, 0.6f, 1.0f, 1};
+        case K::Smooth: return {0.6f, 0.95f, 0.95f, 1};
+        case K::Inflate: return tool.reverse ? glm::vec4(0.75f, 0.4f, 1.0f, 1) : glm::vec4(1.0f, 0.75f, 0.4f, 1);
         case K::Perturb: return tool.perturbStrength() > 0 ? glm::vec4(1.0f, 0.9f, 0.2f, 1) : glm::vec4(0.75f, 0.4f, 1.0f, 1);
         case K::Impacts: return {1.0f, 0.3f, 0.8f, 1};
         case K::Move: return {1.0f, 0.9f, 0.3f, 1};
@@ -93,6 +95,8 @@ std::vector<GizmoLines> toolGizmo(const ToolSettings& tool, const glm::vec3& at,
         case K::Carve:
         case K::Add:
         case K::Melt:
+        case K::Smooth:
+        case K::Inflate:
             addSphere(out, at, static_cast<float>(tool.radius), eye, color);
             break;
         case K::Perturb: {

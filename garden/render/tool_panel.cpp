@@ -21,21 +21,23 @@ namespace {
 
 using Kind = ToolSettings::Kind;
 
-// The tools in key order: key 0 is none, 1..6 the rest.
-constexpr Kind kTools[] = {Kind::None,    Kind::Carve,   Kind::Add,  Kind::Melt,
-                           Kind::Perturb, Kind::Impacts, Kind::Move, Kind::Sketch};
-constexpr const char* kToolLabels[] = {"morph (0)",   "carve (1)",   "add (2)",  "melt (3)",
-                                       "perturb (4)", "impacts (5)", "move (6)", "sketch (7)"};
+// The tools in key order: key 0 is none, 1..9 the rest.
+constexpr Kind kTools[] = {Kind::None,    Kind::Carve, Kind::Add,    Kind::Melt,   Kind::Perturb,
+                           Kind::Impacts, Kind::Move,  Kind::Sketch, Kind::Smooth, Kind::Inflate};
+constexpr const char* kToolLabels[] = {"morph (0)",   "carve (1)", "add (2)",    "soft carve (3)", "perturb (4)",
+                                       "impacts (5)", "move (6)",  "sketch (7)", "smooth (8)",     "inflate (9)"};
 constexpr const char* kToolTips[] = {
     "no tool: the left button picks the blend of the three key sculptures on the ground triangle",
     "carve: remove material along the stroke (R: add instead)",
     "add: build material along the stroke (R: carve instead)",
-    "melt: a soft, rounded carve along the stroke",
+    "soft carve: a carve with a rounded edge along the stroke (the journal's \"melt\")",
     "perturb: push the surface out with a bump (R: pull it in)",
     "impacts: age the surface with a series of hits fired at it",
     "move: select a sculpture, drag it on the ground, turn it on its ring, [ ] to scale",
     "sketch: hold the button on a sculpture and draw an outline; on release it is inflated and joined to the "
-    "sculpture (R: cut from it)"};
+    "sculpture (R: cut from it)",
+    "smooth: blends the surface under the stroke towards a smooth fit of it (bumps and noise go, the form stays)",
+    "inflate: pushes the surface out along the stroke, by up to the strength in voxels (R: deflate, in)"};
 constexpr ToolWidgetLook kDesktopLook{};
 
 // The label with the desktop's keys, or without them.
@@ -61,7 +63,31 @@ bool chooseEnum(const char* label, E& value, const char* const (&names)[N], cons
 
 bool strokeParameters(ToolSettings& t, const ToolWidgetLook& look) {
     bool changed = sliderDouble(keyed("radius (m)  [ ]", "radius (m)", look), t.radius, kMinToolSize, kMaxToolSize, "%.3f", look, true);
-    if (t.kind == Kind::Melt) changed |= sliderDouble("softness (voxels)", t.softness, 0.25, 16.0, "%.2f", look, true);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("the stroke's radius in metres of the garden");
+    if (t.kind == Kind::Melt) {
+        changed |= sliderDouble("softness (voxels)", t.softness, 0.25, 16.0, "%.2f", look, true);
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("how wide the soft carve's rounded edge is, in voxels");
+    }
+    if (t.kind == Kind::Smooth) {
+        changed |= sliderDouble("strength", t.smoothStrength, kMinSmoothStrength, kMaxSmoothStrength, "%.2f", look);
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("how far one stroke blends towards the smooth fit: 1 all the way at the path\n"
+                              "(times the trigger's pressure on the headset)");
+    }
+    if (t.kind == Kind::Inflate) {
+        changed |= sliderDouble("strength (voxels)", t.inflateStrength, kMinInflateStrength, kMaxInflateStrength, "%.2f",
+                                look, true);
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("how far one stroke moves the surface at its path, in voxels (under the grid's band)\n"
+                              "(times the trigger's pressure on the headset)");
+    }
+    if (t.kind == Kind::Smooth || t.kind == Kind::Inflate) {
+        constexpr const char* falloffs[] = {"smooth", "linear", "sharp", "constant"};
+        chooseEnum("falloff", t.falloff, falloffs, look);
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("how the stroke's weight falls from its path to its radius: smooth (an S curve), "
+                              "linear, sharp (only near the path), constant (full to a voxel from the edge)");
+    }
     return changed;
 }
 
@@ -162,7 +188,9 @@ void toolParameters(ToolSettings& t, const ToolWidgetLook& look) {
     switch (t.kind) {
         case Kind::Carve:
         case Kind::Add:
-        case Kind::Melt: changed = strokeParameters(t, look); break;
+        case Kind::Melt:
+        case Kind::Smooth:
+        case Kind::Inflate: changed = strokeParameters(t, look); break;
         case Kind::Perturb: changed = perturbParameters(t, look); break;
         case Kind::Impacts: changed = impactParameters(t, look); break;
         case Kind::Sketch: {
@@ -180,8 +208,9 @@ void toolParameters(ToolSettings& t, const ToolWidgetLook& look) {
     // Whatever was typed or dragged stays within the bounds the keys, the
     // wheel and the headset's stick keep too (garden/sculpt/tool_settings.h).
     if (changed) clampToolSettings(t);
-    // Melt and impacts have no reverse.
-    if (t.kind == Kind::Carve || t.kind == Kind::Add || t.kind == Kind::Perturb || t.kind == Kind::Sketch)
+    // Soft carve, smooth and impacts have no reverse.
+    if (t.kind == Kind::Carve || t.kind == Kind::Add || t.kind == Kind::Perturb || t.kind == Kind::Sketch ||
+        t.kind == Kind::Inflate)
         ImGui::Checkbox(keyed("reverse (R)", "reverse", look), &t.reverse);
 }
 

@@ -105,7 +105,9 @@ ToolIntents readIntents(const nlohmann::json& v, const std::string& path) {
                              std::vector<std::pair<std::string, ToolChoice>>{
                                  {"none", ToolChoice::None}, {"carve", ToolChoice::Carve}, {"add", ToolChoice::Add},
                                  {"melt", ToolChoice::Melt}, {"perturb", ToolChoice::Perturb},
-                                 {"impacts", ToolChoice::Impacts}, {"move", ToolChoice::Move}});
+                                 {"impacts", ToolChoice::Impacts}, {"move", ToolChoice::Move},
+                                 {"sketch", ToolChoice::Sketch}, {"smooth", ToolChoice::Smooth},
+                                 {"inflate", ToolChoice::Inflate}});
     }
     constexpr double lo = 1e-3, hi = 1e3;  // factors for a whole step
     if (const auto* f = r.optional("size")) in.size = readNumber(*f, r.pathOf("size"), lo, hi);

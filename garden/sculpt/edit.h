@@ -26,7 +26,16 @@ namespace hg::garden {
 
 using ModelPoint = std::array<double, 3>;
 
-enum class StrokeTool { Carve, Add, Melt };
+// Melt is shown as "soft carve" (a carve with a rounded edge); the journal
+// keeps the word "melt" so old sessions play bit for bit.
+enum class StrokeTool { Carve, Add, Melt, Smooth, Inflate };
+
+// How a smooth or inflate stroke's weight falls from its path to its radius
+// (docs/sculpting.md "Smooth and inflate"): each curve maps the capsule
+// weight w = max(1 - d^2 / r^2, 0) to [0, 1] and is exactly 0 where w is,
+// so the stroke is exactly local.
+enum class Falloff { Smooth, Linear, Sharp, Constant };
+const char* falloffName(Falloff f);
 
 // A sculpture's mirror plane (model frame): a stroke or perturbation made
 // while it is set acts on both sides, as one edit.
@@ -52,12 +61,35 @@ struct StrokeSegment {
     frep::Box3 reach;    // outside it G == floor exactly
 };
 
-// Carve (f \ tool), add (f | tool) or melt (a rounded subtraction) along a
-// path: the union of its segments' convolution surfaces.
+// A smooth stroke's low-pass of the field about one segment: the quadric
+// Q(u) = c0 + c1 u + c2 v + c3 w + c4 u^2 + c5 v^2 + c6 w^2 + c7 u v
+// + c8 v w + c9 u w, (u, v, w) = (p - centre) / scale, voxels; fitted to
+// the field where the segment was drawn (garden/sculpt/smooth_fit.h) and
+// kept in the edit and its journal entry, so rebuilds, replays and the
+// export never fit again.
+struct SegmentFit {
+    ModelPoint centre{};
+    double scale = 1.0;
+    std::array<double, 10> c{};
+};
+
+// Carve (f \ tool), add (f | tool) or melt (a rounded subtraction, "soft
+// carve") along a path: the union of its segments' convolution surfaces.
+// Inflate adds strength * W to the field (W the falloff weight, the
+// largest over the segments: at most 1 on the path, exactly 0 beyond the
+// radius); smooth blends the field towards each segment's fitted quadric,
+// segment by segment, with weight strength * w_i (edit_field.h).
 struct Stroke {
     StrokeTool tool = StrokeTool::Carve;
     double radius = 0.1;     // model units
     double softness = 2.0;   // melt: width of the rounded edge, voxels
+    // Inflate: voxels, |strength| < band (negative deflates); smooth: the
+    // blend's weight in (0, 1]. Already scaled by the pen's pressure.
+    double strength = 1.0;
+    Falloff falloff = Falloff::Smooth;  // inflate and smooth
+    // Smooth: one fit per segment once it is fitted (none: too few samples
+    // there, the segment leaves the field as it is).
+    std::vector<std::optional<SegmentFit>> fits;
     std::vector<ModelPoint> path;        // as the hand drew it (model frame)
     std::optional<MirrorPlane> mirror;   // the path also drawn reflected
     // The path resampled for the radius; with a mirror, each segment is

@@ -11,7 +11,8 @@
 // that it reaches beyond the reach box, where the operation returns its
 // input: min(f, -floor) = f for carve, max(f, floor) = f for add, the
 // rounded minimum's blend term is exactly zero for melt (its floor is
-// band + softness below), and max(Q, 0) = 0 for a perturbation.
+// band + softness below), max(Q, 0) = 0 for a perturbation, and the
+// falloff weight is exactly 0 beyond a smooth or inflate stroke's radius.
 #pragma once
 
 #include <cmath>
@@ -72,6 +73,85 @@ V segmentField(const V& x, const V& y, const V& z, const StrokeSegment& g, doubl
     return editops::clamp<V>(V(g.scale) * (conv - V(g.t)), floor, band);
 }
 
+// A smooth or inflate segment's weight at (x, y, z): w = max(1 - d^2 / r^2,
+// 0), d the distance to the segment, shaped by the falloff curve; every
+// curve is exactly 0 where w is (beyond the radius), so the stroke leaves
+// the field exactly as it was outside its segments' capsules.
+template <class V>
+V segmentWeight(const V& x, const V& y, const V& z, const StrokeSegment& g, double radius, Falloff falloff,
+                const FieldUnits& u) {
+    using namespace editops;
+    const double ax = g.end[0] - g.begin[0], ay = g.end[1] - g.begin[1], az = g.end[2] - g.begin[2];
+    const double l2 = ax * ax + ay * ay + az * az;
+    const V px = x - V(g.begin[0]), py = y - V(g.begin[1]), pz = z - V(g.begin[2]);
+    const V t = l2 > 0.0 ? clamp<V>((px * V(ax) + py * V(ay) + pz * V(az)) * V(1.0 / l2), 0.0, 1.0) : V(0.0);
+    const V ex = px - t * V(ax), ey = py - t * V(ay), ez = pz - t * V(az);
+    const V w = vmax(V(1.0) - (ex * ex + ey * ey + ez * ez) * V(1.0 / (radius * radius)), V(0.0));
+    switch (falloff) {
+        case Falloff::Smooth: return w * w * (V(3.0) - V(2.0) * w);
+        case Falloff::Linear: return w;
+        case Falloff::Sharp: return w * w * w;
+        case Falloff::Constant:
+            // Near the edge w is about 2 (r - d) / r: full weight from one
+            // voxel inside the radius.
+            return vmin(w * V(radius / (2.0 * u.voxelSize)), V(1.0));
+    }
+    return w;
+}
+
+// Q of a smooth segment's fitted quadric at (x, y, z), voxels.
+template <class V>
+V fitValue(const V& x, const V& y, const V& z, const SegmentFit& q) {
+    const double inv = 1.0 / q.scale;
+    const V a = (x - V(q.centre[0])) * V(inv), b = (y - V(q.centre[1])) * V(inv), c = (z - V(q.centre[2])) * V(inv);
+    const auto& k = q.c;
+    return V(k[0]) + a * V(k[1]) + b * V(k[2]) + c * V(k[3]) + a * a * V(k[4]) + b * b * V(k[5]) + c * c * V(k[6]) +
+           a * b * V(k[7]) + b * c * V(k[8]) + a * c * V(k[9]);
+}
+
+// Inflate: f + strength * W, W the largest weight over the listed segments,
+// clamped to the band. A segment left out (not reaching where the caller
+// evaluates) has weight exactly 0 there and would not change the maximum.
+template <class V>
+V applyInflate(const V& f, const V& x, const V& y, const V& z, const Stroke& s,
+               const std::vector<std::uint32_t>& segments, const FieldUnits& u, const V* mask) {
+    using namespace editops;
+    if (segments.empty()) return f;
+    std::optional<V> w;
+    for (std::uint32_t i : segments) {
+        const V wi = segmentWeight(x, y, z, s.segments[i], s.radius, s.falloff, u);
+        w = w ? vmax(*w, wi) : wi;
+    }
+    if (mask) w = *w * clamp<V>(*mask + V(0.5), 0.0, 1.0);
+    return clamp<V>(f + V(s.strength) * *w, -u.band, u.band);
+}
+
+// Smooth: segment by segment, f <- f + strength * w_i * g(f) * (clamp(Q_i)
+// - f), a convex blend of two values in [-band, band] (so it stays there),
+// g(f) = clamp(band - |f|, 0, 1) a gate that keeps clamped field (far air,
+// deep inside) exactly as it is: the quadric's extrapolation cannot make a
+// surface in the air. A segment without a fit, or out of its capsule
+// (w_i == 0), leaves f exactly as it was.
+template <class V>
+V applySmooth(const V& f, const V& x, const V& y, const V& z, const Stroke& s,
+              const std::vector<std::uint32_t>& segments, const FieldUnits& u, const V* mask) {
+    using namespace editops;
+    std::optional<V> m;
+    if (mask) m = clamp<V>(*mask + V(0.5), 0.0, 1.0);
+    V out = f;
+    bool changed = false;
+    for (std::uint32_t i : segments) {
+        if (i >= s.fits.size() || !s.fits[i]) continue;
+        V w = segmentWeight(x, y, z, s.segments[i], s.radius, s.falloff, u) * V(s.strength);
+        if (m) w = w * *m;
+        const V gate = clamp<V>(V(u.band) - vabs(out), 0.0, 1.0);
+        const V target = clamp<V>(fitValue(x, y, z, *s.fits[i]), -u.band, u.band);
+        out = out + w * gate * (target - out);
+        changed = true;
+    }
+    return changed ? clamp<V>(out, -u.band, u.band) : out;
+}
+
 // The field after a stroke, given the field f before it; only the segments
 // whose indices are listed take part (the others leave f unchanged where
 // the caller evaluates: outside their reach).
@@ -98,6 +178,8 @@ V applyStroke(const V& f, const V& x, const V& y, const V& z, const Stroke& s, c
             const V h = vmax(V(k) - vabs(f + g), V(0.0)) / V(k);
             return vmax(vmin(f, -g) - V(k / 6.0) * (h * h * h), V(-u.band));
         }
+        case StrokeTool::Inflate: return applyInflate(f, x, y, z, s, segments, u, mask);
+        case StrokeTool::Smooth: return applySmooth(f, x, y, z, s, segments, u, mask);
     }
     return out;
 }

@@ -27,6 +27,18 @@ const char* strokeToolName(StrokeTool t) {
         case StrokeTool::Carve: return "carve";
         case StrokeTool::Add: return "add";
         case StrokeTool::Melt: return "melt";
+        case StrokeTool::Smooth: return "smooth";
+        case StrokeTool::Inflate: return "inflate";
+    }
+    return "?";
+}
+
+const char* falloffName(Falloff f) {
+    switch (f) {
+        case Falloff::Smooth: return "smooth";
+        case Falloff::Linear: return "linear";
+        case Falloff::Sharp: return "sharp";
+        case Falloff::Constant: return "constant";
     }
     return "?";
 }
@@ -54,7 +66,10 @@ const char* impactSpreadName(ImpactSpread s) {
 }
 
 StrokeTool readStrokeTool(const nlohmann::json& v, const std::string& path) {
-    return readEnum<StrokeTool>(v, path, 3, strokeToolName);
+    return readEnum<StrokeTool>(v, path, 5, strokeToolName);
+}
+Falloff readFalloff(const nlohmann::json& v, const std::string& path) {
+    return readEnum<Falloff>(v, path, 4, falloffName);
 }
 QuadricShape readQuadricShape(const nlohmann::json& v, const std::string& path) {
     return readEnum<QuadricShape>(v, path, 2, quadricShapeName);

@@ -11,7 +11,8 @@
 
 namespace hg::garden {
 
-StrokeTool readStrokeTool(const nlohmann::json& v, const std::string& path);          // carve, add, melt
+StrokeTool readStrokeTool(const nlohmann::json& v, const std::string& path);          // carve, add, melt, smooth, inflate
+Falloff readFalloff(const nlohmann::json& v, const std::string& path);                // smooth, linear, sharp, constant
 QuadricShape readQuadricShape(const nlohmann::json& v, const std::string& path);      // ellipsoid, torus
 SketchMode readSketchMode(const nlohmann::json& v, const std::string& path);          // add, cut
 ImpactShape readImpactShape(const nlohmann::json& v, const std::string& path);        // sphere, chisel, square

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "garden/sculpt/smooth_fit.h"
 #include "garden/sculpt/stroke_segments.h"
 
 namespace hg::garden {
@@ -120,7 +121,16 @@ voxel::EditRegionStats SculptureEdits::baseChanged(const voxel::IndexBox& box) {
     return update(box);
 }
 
+void SculptureEdits::fitNewSegments(Stroke& stroke) const {
+    if (stroke.tool != StrokeTool::Smooth) return;
+    // Fits that came with the stroke (a journal) are kept: a replay never
+    // fits again, so it equals the session it replays.
+    for (std::size_t i = stroke.fits.size(); i < stroke.segments.size(); ++i)
+        stroke.fits.push_back(fitSegment(shown_, stroke.segments[i], stroke.radius));
+}
+
 voxel::IndexBox SculptureEdits::append(Edit edit) {
+    if (auto* stroke = std::get_if<Stroke>(&edit.op)) fitNewSegments(*stroke);
     edit.id = nextId_++;
     redo_.clear();
     return applyAppended(std::move(edit));
@@ -141,12 +151,15 @@ voxel::IndexBox SculptureEdits::extendLastStroke(const std::vector<ModelPoint>& 
     stroke.path.insert(stroke.path.end(), points.begin(), points.end());
     const std::size_t firstPiece = extendStrokeSegments(stroke, firstPoint, list_.units());
     if (firstPiece == stroke.segments.size()) return {};
+    fitNewSegments(stroke);
     const voxel::IndexBox box = voxelsOf(list_.extendLast(firstPiece));
     capture(box);
     // Carving and adding fold their segments with min and max, which
-    // associate: the new segments go on top of the grid. Melt blends the
-    // field before the stroke with all its segments at once: recomputed.
-    if (stroke.tool == StrokeTool::Melt) update(box);
+    // associate: the new segments go on top of the grid. Melt and inflate
+    // combine all their segments before touching the field, and smooth's
+    // arithmetic must run as a rebuild runs it: recomputed.
+    if (stroke.tool == StrokeTool::Melt || stroke.tool == StrokeTool::Inflate || stroke.tool == StrokeTool::Smooth)
+        update(box);
     else applyOnTop(box, firstPiece);
     return box;
 }

@@ -124,6 +124,8 @@ private:
     // Appends an edit (new, or redone), copies the leaves it will write and
     // applies it on top of the grid; returns its box.
     voxel::IndexBox applyAppended(Edit edit);
+    // A smooth stroke's segments without a fit fitted to the shown grid.
+    void fitNewSegments(Stroke& stroke) const;
     void dropCopies();
 };
 

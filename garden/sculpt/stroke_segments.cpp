@@ -88,11 +88,21 @@ std::size_t extendStrokeSegments(Stroke& stroke, std::size_t firstPoint, const F
     // draws, or whole from a journal.
     // A segment, then its reflection when the stroke is mirrored.
     const std::size_t perSegment = stroke.mirror ? 2 : 1;
+    // Smooth and inflate weigh by the distance to the segment, exactly 0
+    // beyond the radius: their reach is the capsule's box (and a voxel).
+    const bool capsule = stroke.tool == StrokeTool::Smooth || stroke.tool == StrokeTool::Inflate;
+    const auto segment = [&](const ModelPoint& a, const ModelPoint& b) {
+        StrokeSegment g = makeStrokeSegment(a, b, stroke.radius, floor, units);
+        if (capsule)
+            for (int i = 0; i < 3; ++i) {
+                g.reach.lo[i] = std::min(a[i], b[i]) - stroke.radius - units.voxelSize;
+                g.reach.hi[i] = std::max(a[i], b[i]) + stroke.radius + units.voxelSize;
+            }
+        return g;
+    };
     const auto add = [&](const ModelPoint& a, const ModelPoint& b) {
-        stroke.segments.push_back(makeStrokeSegment(a, b, stroke.radius, floor, units));
-        if (stroke.mirror)
-            stroke.segments.push_back(
-                makeStrokeSegment(reflect(*stroke.mirror, a), reflect(*stroke.mirror, b), stroke.radius, floor, units));
+        stroke.segments.push_back(segment(a, b));
+        if (stroke.mirror) stroke.segments.push_back(segment(reflect(*stroke.mirror, a), reflect(*stroke.mirror, b)));
     };
     if (stroke.segments.empty()) {
         const ModelPoint& p = stroke.path[0];
@@ -127,7 +137,25 @@ std::string checkStroke(const Stroke& stroke, const FieldUnits& units) {
     if (stroke.radius > 4096.0 * units.voxelSize) return "the tool radius is over 4096 voxels";
     if (stroke.tool == StrokeTool::Melt && !(std::isfinite(stroke.softness) && stroke.softness > 0.0 &&
                                              stroke.softness <= 64.0))
-        return "the melt softness must be in (0, 64] voxels";
+        return "the soft carve's softness must be in (0, 64] voxels";
+    // Inflate: one stroke adds under the band at most, so a point in the air
+    // (the field at -band) stays below the surface: no stroke makes a
+    // surface where there was none within the band.
+    if (stroke.tool == StrokeTool::Inflate &&
+        !(std::isfinite(stroke.strength) && std::fabs(stroke.strength) < units.band))
+        return "the inflate strength must be under the band (" + std::to_string(units.band) + " voxels) either way";
+    if (stroke.tool == StrokeTool::Smooth && !(std::isfinite(stroke.strength) && stroke.strength > 0.0 &&
+                                               stroke.strength <= 1.0))
+        return "the smooth strength must be in (0, 1]";
+    if (stroke.tool == StrokeTool::Smooth) {
+        for (const auto& fit : stroke.fits)
+            if (fit) {
+                bool finite = std::isfinite(fit->scale) && fit->scale > 0.0;
+                for (double c : fit->c) finite = finite && std::isfinite(c);
+                for (double c : fit->centre) finite = finite && std::isfinite(c);
+                if (!finite) return "a smooth stroke's fit is not made of finite numbers";
+            }
+    }
     if (stroke.path.empty()) return "the stroke has no path";
     for (const ModelPoint& p : stroke.path)
         for (double c : p)

@@ -23,7 +23,7 @@ std::size_t radiiInUse(const ToolSettings& tool) { return tool.shape == QuadricS
 
 bool strokeTool(ToolSettings::Kind kind) {
     using K = ToolSettings::Kind;
-    return kind == K::Carve || kind == K::Add || kind == K::Melt;
+    return kind == K::Carve || kind == K::Add || kind == K::Melt || kind == K::Smooth || kind == K::Inflate;
 }
 
 void selectTool(ToolSettings& tool, ToolSettings::Kind kind) {
@@ -42,7 +42,9 @@ void scaleToolSize(ToolSettings& tool, double factor) {
     switch (tool.kind) {
         case K::Carve:
         case K::Add:
-        case K::Melt: tool.radius = stepWithin(tool.radius, factor, kMinToolSize, kMaxToolSize); break;
+        case K::Melt:
+        case K::Smooth:
+        case K::Inflate: tool.radius = stepWithin(tool.radius, factor, kMinToolSize, kMaxToolSize); break;
         case K::Perturb: {
             // The scale within its own bounds and those that keep every live
             // radius a size: the radii grow and shrink together.
@@ -70,6 +72,10 @@ void scaleToolStrength(ToolSettings& tool, double factor) {
         tool.strength = std::copysign(k, tool.strength);
     } else if (tool.kind == K::Impacts) {
         tool.compactionCm3 = stepWithin(tool.compactionCm3, factor, kMinCompactionCm3, kMaxCompactionCm3);
+    } else if (tool.kind == K::Smooth) {
+        tool.smoothStrength = stepWithin(tool.smoothStrength, factor, kMinSmoothStrength, kMaxSmoothStrength);
+    } else if (tool.kind == K::Inflate) {
+        tool.inflateStrength = stepWithin(tool.inflateStrength, factor, kMinInflateStrength, kMaxInflateStrength);
     }
 }
 
@@ -84,6 +90,8 @@ void clampToolSettings(ToolSettings& tool) {
     tool.strength = std::copysign(k, tool.strength);
     clampFinite(tool.impactSize, kMinImpactSize, kMaxImpactSize);
     clampFinite(tool.compactionCm3, kMinCompactionCm3, kMaxCompactionCm3);
+    clampFinite(tool.smoothStrength, kMinSmoothStrength, kMaxSmoothStrength);
+    clampFinite(tool.inflateStrength, kMinInflateStrength, kMaxInflateStrength);
 }
 
 const char* toolKindName(ToolSettings::Kind kind) {
@@ -97,8 +105,34 @@ const char* toolKindName(ToolSettings::Kind kind) {
         case K::Impacts: return "impacts";
         case K::Move: return "move";
         case K::Sketch: return "sketch";
+        case K::Smooth: return "smooth";
+        case K::Inflate: return "inflate";
     }
     return "none";
+}
+
+const char* toolLabel(ToolSettings::Kind kind) {
+    return kind == ToolSettings::Kind::Melt ? "soft carve" : toolKindName(kind);
+}
+
+StrokeTool strokeToolOf(const ToolSettings& tool) {
+    using K = ToolSettings::Kind;
+    switch (tool.kind) {
+        case K::Add: return tool.reverse ? StrokeTool::Carve : StrokeTool::Add;
+        case K::Melt: return StrokeTool::Melt;
+        case K::Smooth: return StrokeTool::Smooth;
+        case K::Inflate: return StrokeTool::Inflate;
+        default: return tool.reverse ? StrokeTool::Add : StrokeTool::Carve;
+    }
+}
+
+double strokeStrength(const ToolSettings& tool, double pressure, double band) {
+    const double p = std::isnan(pressure) ? 1.0 : std::clamp(pressure, 0.0, 1.0);
+    if (tool.kind == ToolSettings::Kind::Smooth)
+        return std::clamp(tool.smoothStrength * p, kMinSmoothStrength * 0.1, kMaxSmoothStrength);
+    // Inflate: under the band (checkStroke), a hair inside it.
+    const double k = std::min(tool.inflateStrength * p, 0.95 * band);
+    return tool.reverse ? -k : k;
 }
 
 }  // namespace hg::garden

@@ -11,14 +11,19 @@ namespace hg::garden {
 
 // The tool the tool hand works (docs/design.md §6); sizes in metres of the world.
 struct ToolSettings {
-    enum class Kind { None, Carve, Add, Melt, Perturb, Impacts, Move, Sketch };
+    enum class Kind { None, Carve, Add, Melt, Perturb, Impacts, Move, Sketch, Smooth, Inflate };
     // None: the trigger picks the morph on the ground; Move: it selects,
     // moves and turns a sculpture (garden/app/session_moving.cpp); Sketch:
     // held, it draws an outline from a point on a sculpture, inflated and
     // joined (reverse: cut) on release (garden/app/session_sketching.cpp).
     Kind kind = Kind::None;
-    double radius = 0.05;        // carve, add, melt: the tool radius
+    double radius = 0.05;        // carve, add, melt (soft carve), smooth, inflate: the tool radius
     double softness = 2.0;       // melt: voxels
+    // Smooth: the blend's weight in (0, 1]; inflate: voxels (reverse
+    // deflates). Each stroke's is this times the pen's pressure.
+    double smoothStrength = 0.5;
+    double inflateStrength = 1.0;
+    Falloff falloff = Falloff::Smooth;  // smooth and inflate
     QuadricShape shape = QuadricShape::Ellipsoid;
     std::array<double, 3> radii{0.08, 0.08, 0.08};  // perturb: ellipsoid radii, or torus R, r
     double strength = 2.0;       // perturb: voxels, > 0 pulls, < 0 pushes
@@ -50,7 +55,7 @@ struct ToolSettings {
         bool reverse = false;
         double radius = 0.0;
     };
-    std::array<Kept, 8> kept{};
+    std::array<Kept, 10> kept{};
 
     // What a perturbation placed now would have: radii times the scale,
     // strength with the reverse applied.
@@ -71,8 +76,12 @@ constexpr double kMinImpactSize = kMinToolSize, kMaxImpactSize = 1.0;
 constexpr double kMinPerturbScale = 0.05, kMaxPerturbScale = 20.0;
 //  * the perturbation's strength, voxels, either sign (the sign pulls or pushes);
 constexpr double kMinPerturbStrength = 0.1, kMaxPerturbStrength = 50.0;
-//  * the impacts' compaction volume, cubic centimetres.
+//  * the impacts' compaction volume, cubic centimetres;
 constexpr double kMinCompactionCm3 = 0.01, kMaxCompactionCm3 = 100.0;
+//  * smooth's blend weight, and inflate's strength in voxels (a stroke
+//    also keeps it under its grid's band: stroke_segments.h, checkStroke).
+constexpr double kMinSmoothStrength = 0.05, kMaxSmoothStrength = 1.0;
+constexpr double kMinInflateStrength = 0.05, kMaxInflateStrength = 2.5;
 
 // The tool's size times `factor` (a size step: the desktop's [ and ], the
 // headset's stick up and down): the stroke radius, the perturbation's
@@ -85,8 +94,9 @@ constexpr double kMinCompactionCm3 = 0.01, kMaxCompactionCm3 = 100.0;
 void scaleToolSize(ToolSettings& tool, double factor);
 
 // The tool's strength times `factor` (the headset's stick right and left):
-// the perturbation's strength (its sign kept) or the impacts' compaction
-// volume, bounded as sizes are. Other tools have no strength.
+// the perturbation's strength (its sign kept), the impacts' compaction
+// volume, or smooth's or inflate's strength, bounded as sizes are. Other
+// tools have no strength.
 void scaleToolStrength(ToolSettings& tool, double factor);
 
 // Every bounded setting brought into the bounds above: what the panels'
@@ -99,10 +109,21 @@ void clampToolSettings(ToolSettings& tool);
 // change of a device or panel goes through here.
 void selectTool(ToolSettings& tool, ToolSettings::Kind kind);
 
-// Whether the tool's size is ToolSettings::radius (carve, add, melt).
+// Whether the tool's size is ToolSettings::radius (carve, add, melt,
+// smooth, inflate).
 bool strokeTool(ToolSettings::Kind kind);
 
-// "none", "carve", "add", "melt", "perturb", "impacts", "move", "sketch".
+// "none", "carve", "add", "melt", "perturb", "impacts", "move", "sketch",
+// "smooth", "inflate": the files' words (melt is shown as "soft carve":
+// toolLabel).
 const char* toolKindName(ToolSettings::Kind kind);
+// What panels, help and the key table call the tool.
+const char* toolLabel(ToolSettings::Kind kind);
+// The stroke tool a stroke kind makes, reverse applied (carve <-> add;
+// inflate <-> deflate is the strength's sign: strokeStrength).
+StrokeTool strokeToolOf(const ToolSettings& tool);
+// A smooth or inflate stroke's strength with the reverse and the pen's
+// pressure in [0, 1] applied, and inflate's kept under `band`.
+double strokeStrength(const ToolSettings& tool, double pressure, double band);
 
 }  // namespace hg::garden

@@ -42,22 +42,26 @@ nlohmann::json toolSettingsJson(const ToolSettings& t) {
     j["spread_size"] = t.spreadSize;
     j["impact_count"] = t.impactCount;
     j["sketch"] = sketchUseName(t.sketchUse);
+    j["smooth_strength"] = t.smoothStrength;
+    j["inflate_strength"] = t.inflateStrength;
+    j["falloff"] = falloffName(t.falloff);
     return j;
 }
 
 ToolSettings readToolSettings(const nlohmann::json& v, const std::string& path, ToolSettings t) {
     ObjectReader r(v, path,
                    {"kind", "radius", "softness", "shape", "radii", "strength", "perturb_scale", "reverse", "impact_shape",
-                    "impact_size", "compaction_cm3", "spread", "spread_size", "impact_count", "sketch"});
+                    "impact_size", "compaction_cm3", "spread", "spread_size", "impact_count", "sketch", "smooth_strength",
+                    "inflate_strength", "falloff"});
     if (const auto* k = r.optional("kind")) {
         const std::string name = readString(*k, r.pathOf("kind"));
         bool found = false;
-        for (K kind : {K::None, K::Carve, K::Add, K::Melt, K::Perturb, K::Impacts, K::Move, K::Sketch})
+        for (K kind : {K::None, K::Carve, K::Add, K::Melt, K::Perturb, K::Impacts, K::Move, K::Sketch, K::Smooth, K::Inflate})
             if (name == toolKindName(kind)) {
                 if (kind != t.kind) selectTool(t, kind);
                 found = true;
             }
-        if (!found) throw JsonError(r.pathOf("kind"), "expected none, carve, add, melt, perturb, impacts, move or sketch");
+        if (!found) throw JsonError(r.pathOf("kind"), "expected none, carve, add, melt, perturb, impacts, move, sketch, smooth or inflate");
     }
     if (r.has("radius")) t.radius = readNumber(r.required("radius"), r.pathOf("radius"), 1e-6, 100.0);
     if (r.has("softness")) t.softness = readNumber(r.required("softness"), r.pathOf("softness"), 0.01, 64.0);
@@ -84,6 +88,11 @@ ToolSettings readToolSettings(const nlohmann::json& v, const std::string& path, 
             }
         if (!found) throw JsonError(r.pathOf("sketch"), "expected auto, new, join, cut or model");
     }
+    if (r.has("smooth_strength"))
+        t.smoothStrength = readNumber(r.required("smooth_strength"), r.pathOf("smooth_strength"), 0.0, 1.0);
+    if (r.has("inflate_strength"))
+        t.inflateStrength = readNumber(r.required("inflate_strength"), r.pathOf("inflate_strength"), 0.0, 64.0);
+    if (r.has("falloff")) t.falloff = readFalloff(r.required("falloff"), r.pathOf("falloff"));
     r.finish();
     clampToolSettings(t);
     return t;

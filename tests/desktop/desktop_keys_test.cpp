@@ -32,14 +32,14 @@ DesktopKeys press(int key, int mods = 0) {
 }
 
 TEST(DesktopKeys, KeysMapToTheDocumentedCommands) {
-    const Kind digits[] = {Kind::None,    Kind::Carve,   Kind::Add,  Kind::Melt,
-                           Kind::Perturb, Kind::Impacts, Kind::Move, Kind::Sketch};
-    for (int d = 0; d <= 7; ++d) {
+    const Kind digits[] = {Kind::None,    Kind::Carve,   Kind::Add,  Kind::Melt,   Kind::Perturb,
+                           Kind::Impacts, Kind::Move,    Kind::Sketch, Kind::Smooth, Kind::Inflate};
+    for (int d = 0; d <= 9; ++d) {
         EXPECT_EQ(press(GLFW_KEY_0 + d).tool, digits[d]) << d;
         EXPECT_EQ(press(GLFW_KEY_KP_0 + d).tool, digits[d]) << "keypad " << d;
     }
     DesktopKeys none;
-    EXPECT_FALSE(addKeyPress(none, GLFW_KEY_8, 0));
+    EXPECT_FALSE(addKeyPress(none, GLFW_KEY_J, 0));
     EXPECT_FALSE(none.tool);
     EXPECT_FALSE(addKeyPress(none, GLFW_KEY_K, 0));
     EXPECT_EQ(press(GLFW_KEY_RIGHT_BRACKET).sizeSteps, 1);

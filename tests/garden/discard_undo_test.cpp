@@ -102,8 +102,8 @@ TEST_F(DiscardUndo, AJournalsDiscardWithoutUndoablePlaysForGoodAsItWasMade) {
     const voxel::Volume aOriginal = grid(a);
     const voxel::Volume cOriginal = grid(c);
     // Model frame: both balls' centres are at (0, 0.5, 0), c's radius 0.6, a's 0.5.
-    ASSERT_EQ(session->apply(StrokeAction{"c", StrokeTool::Carve, 0.1, 2.0, {{0.45, 0.9, 0.1}, {0.5, 0.6, 0.2}}, {}}), "");
-    ASSERT_EQ(session->apply(StrokeAction{"a", StrokeTool::Carve, 0.1, 2.0, {{0.1, 0.9, 0.2}, {0.2, 0.7, 0.3}}, {}}), "");
+    ASSERT_EQ(session->apply(StrokeAction{"c", StrokeTool::Carve, 0.1, 2.0, {{0.45, 0.9, 0.1}, {0.5, 0.6, 0.2}}, {}, 1.0, Falloff::Smooth, {}}), "");
+    ASSERT_EQ(session->apply(StrokeAction{"a", StrokeTool::Carve, 0.1, 2.0, {{0.1, 0.9, 0.2}, {0.2, 0.7, 0.3}}, {}, 1.0, Falloff::Smooth, {}}), "");
     ASSERT_GT(test::differingVoxels(grid(c), cOriginal), 10);
     ASSERT_GT(test::differingVoxels(grid(a), aOriginal), 10);
     ASSERT_EQ(session->restore({old, UndoAction{}}), "");

@@ -17,7 +17,7 @@ class JournalTest : public test::ScratchDir {};
 
 std::vector<Action> everyKind() {
     StrokeAction s{"column west", StrokeTool::Melt, 0.031, 2.5, {{0.1, 0.2, 0.3}, {0.1000000000000001, -2.5e-9, 7.0}},
-                   MirrorPlane{{0.0, 0.0, 0.0}, {1.0, 0.0, 0.0}}};
+                   MirrorPlane{{0.0, 0.0, 0.0}, {1.0, 0.0, 0.0}}, 1.0, Falloff::Smooth, {}};
     Perturbation q;
     q.shape = QuadricShape::Torus;
     q.center = {1.0 / 3.0, 0.5, -0.25};
