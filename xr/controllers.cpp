@@ -1,5 +1,6 @@
 #include "xr/controllers.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
 #include <utility>
@@ -170,7 +171,9 @@ garden::HandState Controllers::readHand(int hand, XrSpace space, XrTime time, fl
     h.grip = toPose(grip.pose, floorOffset);
     h.aim = toPose(aim.pose, floorOffset);
     h.trigger = readFloat(trigger_, hand);
-    h.pressure = h.trigger;  // the trigger's analog depth is the pen's pressure
+    // The trigger's depth past the press threshold (0.5, where the tool
+    // acts) is the pen's pressure: a light pull 0.1, all the way in 1.
+    h.pressure = 0.1f + 0.9f * std::clamp((h.trigger - 0.5f) / 0.5f, 0.0f, 1.0f);
     h.squeeze = readFloat(squeeze_, hand);
     XrActionStateGetInfo get{XR_TYPE_ACTION_STATE_GET_INFO};
     get.action = thumbstick_;

@@ -28,9 +28,9 @@ namespace {
 
 using Kind = garden::ToolSettings::Kind;
 
-// Two rows of five buttons across the top (the tools, undo, redo), a row
-// of three page buttons, then the page.
-constexpr int kButtonColumns = 5;
+// Two rows of six buttons across the top (the tools, undo, redo), a row
+// of page buttons, then the page.
+constexpr int kButtonColumns = 6;
 constexpr float kCellX = static_cast<float>(kPanelPixelsX) / kButtonColumns, kCellY = 40.0f, kButtonInset = 4.0f;
 constexpr float kTop = 4.0f;
 constexpr float kPageCellX = kPanelPixelsX / 4.0f, kPageCellY = 30.0f;
@@ -50,7 +50,8 @@ constexpr float kToggleStep = 130.0f;
 constexpr float kUndoSelectedWidth = 220.0f;
 constexpr garden::ToolWidgetLook kLook{220.0f, false, 104.0f};
 
-constexpr const char* kLabels[] = {"morph", "carve", "add", "melt", "perturb", "impacts", "move", "sketch", "undo", "redo"};
+constexpr const char* kLabels[] = {"morph", "carve",  "add",    "soft carve", "perturb", "impacts",
+                                   "move",  "sketch", "smooth", "inflate",    "undo",    "redo"};
 static_assert(std::size(kLabels) == static_cast<std::size_t>(PanelButton::Count));
 constexpr const char* kPageLabels[] = {"tool", "sculpture", "settings", "history"};
 static_assert(std::size(kPageLabels) == static_cast<std::size_t>(PanelPage::Count));
@@ -86,6 +87,8 @@ Kind toolOf(PanelButton b) {
         case PanelButton::Impacts: return Kind::Impacts;
         case PanelButton::Move: return Kind::Move;
         case PanelButton::Sketch: return Kind::Sketch;
+        case PanelButton::Smooth: return Kind::Smooth;
+        case PanelButton::Inflate: return Kind::Inflate;
         default: return Kind::None;
     }
 }

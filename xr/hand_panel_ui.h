@@ -31,7 +31,7 @@ namespace hg::xr {
 
 class HandPanel;
 
-enum class PanelButton { ToolNone, Carve, Add, Melt, Perturb, Impacts, Move, Sketch, Undo, Redo, Count };
+enum class PanelButton { ToolNone, Carve, Add, Melt, Perturb, Impacts, Move, Sketch, Smooth, Inflate, Undo, Redo, Count };
 
 // The panel's texture, pixels; the board's aspect (HandPanel) matches.
 constexpr int kPanelPixelsX = 512, kPanelPixelsY = 320;

@@ -533,6 +533,8 @@ private:
     std::vector<UndoEntry> redoOrder_;
     std::uint32_t lastButtons_ = 0;    // the tool hand's buttons last frame (undo, redo edges)
     bool toolArmed_ = true;            // the trigger was released since the last action
+    float lastToolTrigger_ = 0.0f;     // the tool hand's trigger the frame before
+    int settleFrames_ = 0;             // frames a press waited for the trigger to settle
     JournalSink* journal_ = nullptr;
     std::size_t recorded_ = 0;         // actionsRecorded()
     bool restoring_ = false;           // playing a journal: nothing is journalled again

@@ -260,9 +260,9 @@ std::string GardenSession::replacePerturbationModel(int sculpture, std::size_t e
     if (p.shape == QuadricShape::Torus && p.radii[1] >= p.radii[0]) return "a torus's tube radius must be under its ring radius";
     if (!(std::isfinite(p.strength) && std::fabs(p.strength) <= 1000.0)) return "the strength must be a number in [-1000, 1000] voxels";
     const Perturbation before = *old;
-    Edit e;
-    e.op = p;
-    e.mask = s.edits->list().edits()[edit].mask;  // made inside a selection, it stays there
+    // Made with its op (not assigned over a default Stroke: GCC 12 then
+    // warns of the variant's old alternative, wrongly).
+    Edit e{0, EditOp{p}, {}, s.edits->list().edits()[edit].mask};  // made inside a selection, it stays there
     Edit replaced;
     showChanged(sculpture, s.edits->replace(edit, std::move(e), replaced));
     const ReplaceAction done{s.name, edit, p};
@@ -436,9 +436,12 @@ void GardenSession::sculptWithHands(const Hands& hands) {
         return;
     }
     const bool held = h.trigger > 0.5f;
+    const float rise = h.trigger - lastToolTrigger_;
+    lastToolTrigger_ = h.trigger;
     if (!held) {
         if (stroking()) endStroke();
         toolArmed_ = true;
+        settleFrames_ = 0;
         return;
     }
     const auto toArray = [](const glm::vec3& v) { return std::array<double, 3>{v.x, v.y, v.z}; };
@@ -452,6 +455,15 @@ void GardenSession::sculptWithHands(const Hands& hands) {
         return;
     }
     if (!toolArmed_) return;  // one action per trigger pull
+    // An analog trigger passes the threshold on its way in: the pressure an
+    // action keeps is read once the pull has settled (it stopped deepening,
+    // is all the way in, or four frames on, 44 ms at 90 Hz), so a firm pull
+    // is not taken for a light one. A mouse button is all the way in at once.
+    if (h.trigger < 0.98f && rise > 0.02f && settleFrames_ < 4) {
+        ++settleFrames_;
+        return;
+    }
+    settleFrames_ = 0;
     // The press picks the sculpture, and only the press (docs/desktop.md
     // "Tools"): a press that meets none does nothing until the trigger is
     // let go, rather than landing on whatever the dragged ray meets later.

@@ -56,8 +56,15 @@ std::string describeEdit(const Edit& e) {
     if (const auto* st = std::get_if<Stroke>(&e.op)) {
         s += std::string(strokeToolName(st->tool)) + " stroke, radius " + num(st->radius) + " model units";
         if (st->tool == StrokeTool::Melt) s += ", softness " + num(st->softness) + " voxels";
+        const bool capsule = st->tool == StrokeTool::Smooth || st->tool == StrokeTool::Inflate;
+        if (capsule)
+            s += std::string(", strength ") + num(st->strength) + (st->tool == StrokeTool::Inflate ? " voxels" : "") +
+                 ", " + falloffName(st->falloff) + " falloff";
         s += ", " + std::to_string(st->path.size()) + " path points, " + std::to_string(st->segments.size()) +
-             " convolution segments (hfConvLine)" + mirrorText(st->mirror);
+             (capsule ? st->tool == StrokeTool::Smooth ? " capsule segments, each blending towards its fitted quadric"
+                                                       : " capsule segments"
+                      : " convolution segments (hfConvLine)") +
+             mirrorText(st->mirror);
     } else if (const auto* k = std::get_if<SketchSolid>(&e.op)) {
         s += std::string("sketch ") + (k->mode == SketchMode::Add ? "joined" : "cut") + ": an outline of " +
              std::to_string(k->outline.size()) + " points inflated to " + std::to_string(k->solid.pieces.size()) +

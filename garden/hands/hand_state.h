@@ -49,9 +49,9 @@ struct HandState {
     Pose grip;                 // where the hand holds
     Pose aim;                  // the pointing ray: the desktop's mouse ray
     float trigger = 0.0f;      // 0..1: the tool acts
-    // 0..1: how hard, where the device says (the headset's analog trigger
-    // as a stroke begins; a mouse is always 1). Scales smooth, inflate and
-    // perturb strengths.
+    // 0..1: how hard, where the device says (the headset's trigger depth
+    // past its press threshold, read once the pull settles: session_sculpting.cpp;
+    // a mouse is always 1). Scales smooth, inflate and perturb strengths.
     float pressure = 1.0f;
     float squeeze = 0.0f;      // 0..1: grabs the world
     glm::vec2 thumbstick{0.0f};  // -1..1 each: x right, y forward

@@ -139,7 +139,7 @@ std::string runSculptCommand(const SculptCommand& command, GardenSession& sessio
     int i = -1;
     if (const auto* c = std::get_if<StrokeCommand>(&command)) {
         if (std::string why = find(c->sculpture, i); !why.empty()) return why;
-        return session.applyStroke(i, c->tool, c->path, c->radius, c->softness);
+        return session.applyStroke(i, c->tool, c->path, c->radius, c->softness, c->strength, c->falloff);
     }
     if (const auto* c = std::get_if<PerturbCommand>(&command)) {
         if (std::string why = find(c->sculpture, i); !why.empty()) return why;

@@ -11,12 +11,15 @@ namespace hg::garden {
 
 SculptCommand readSculptCommand(const std::string& key, const nlohmann::json& v, const std::string& path) {
     if (key == "stroke") {
-        ObjectReader r(v, path, {"sculpture", "tool", "radius", "softness", "path"});
+        ObjectReader r(v, path, {"sculpture", "tool", "radius", "softness", "strength", "falloff", "path"});
         StrokeCommand c;
         c.sculpture = readString(r.required("sculpture"), r.pathOf("sculpture"));
         c.tool = readStrokeTool(r.required("tool"), r.pathOf("tool"));
         c.radius = readNumber(r.required("radius"), r.pathOf("radius"), 1e-6, 100.0);
         if (r.has("softness")) c.softness = readNumber(r.required("softness"), r.pathOf("softness"), 0.01, 64.0);
+        // Checked against the sculpture's band when applied (checkStroke).
+        if (r.has("strength")) c.strength = readNumber(r.required("strength"), r.pathOf("strength"), -64.0, 64.0);
+        if (r.has("falloff")) c.falloff = readFalloff(r.required("falloff"), r.pathOf("falloff"));
         const nlohmann::json& p = r.required("path");
         if (!p.is_array() || p.empty()) throw JsonError(r.pathOf("path"), "expected a non-empty array of [x, y, z] points");
         for (std::size_t i = 0; i < p.size(); ++i) c.path.push_back(readVec3(p[i], indexPath(r.pathOf("path"), i)));

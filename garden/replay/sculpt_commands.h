@@ -24,6 +24,9 @@ struct StrokeCommand {
     StrokeTool tool = StrokeTool::Carve;
     double radius = 0.05;
     double softness = 2.0;
+    // Smooth: the blend's weight in (0, 1]; inflate: voxels (< 0 deflates).
+    double strength = 1.0;
+    Falloff falloff = Falloff::Smooth;
     std::vector<std::array<double, 3>> path;
 };
 

@@ -121,10 +121,20 @@ voxel::EditRegionStats SculptureEdits::baseChanged(const voxel::IndexBox& box) {
     return update(box);
 }
 
-void SculptureEdits::fitNewSegments(Stroke& stroke) const {
-    if (stroke.tool != StrokeTool::Smooth) return;
+void SculptureEdits::fitNewSegments(Stroke& stroke) {
+    if (stroke.tool != StrokeTool::Smooth || stroke.fits.size() >= stroke.segments.size()) return;
     // Fits that came with the stroke (a journal) are kept: a replay never
-    // fits again, so it equals the session it replays.
+    // fits again, so it equals the session it replays. A record without
+    // them (a hand-written action) is fitted to the grid as the edits
+    // before it leave it: while deferred (a journal played in one go) the
+    // pending boxes are brought up to date first, and stay pending so the
+    // caller's flush still reports them.
+    if (deferred_ && !pending_.empty()) {
+        std::vector<voxel::IndexBox> keep = pending_;
+        flush();
+        pending_ = std::move(keep);
+        deferred_ = true;
+    }
     for (std::size_t i = stroke.fits.size(); i < stroke.segments.size(); ++i)
         stroke.fits.push_back(fitSegment(shown_, stroke.segments[i], stroke.radius));
 }

@@ -124,8 +124,9 @@ private:
     // Appends an edit (new, or redone), copies the leaves it will write and
     // applies it on top of the grid; returns its box.
     voxel::IndexBox applyAppended(Edit edit);
-    // A smooth stroke's segments without a fit fitted to the shown grid.
-    void fitNewSegments(Stroke& stroke) const;
+    // A smooth stroke's segments without a fit fitted to the shown grid
+    // (brought up to date first where deferred).
+    void fitNewSegments(Stroke& stroke);
     void dropCopies();
 };
 

@@ -1,8 +1,8 @@
 // content/replays/first_hour.json, the README's "First steps": a new user's
 // first hour scripted. A HyperFun file of one's own (content/first-hour/
 // pot.hf) is brought into the default garden, given a material, and
-// sculpted with the tools a beginner reaches for; a slip is undone on that
-// sculpture alone. Played here at a low resolution, the way the README's
+// sculpted with the tools a beginner reaches for (carve, add, soft carve,
+// inflate, smooth); a slip is undone on that sculpture alone. Played here at a low resolution, the way the README's
 // screenshots are made at a high one.
 #include <gtest/gtest.h>
 
@@ -34,11 +34,19 @@ TEST(FirstHourReplay, TheContentReplayBringsInAPotAndSculptsIt) {
     const Sculpture& sc = s.sculptures()[static_cast<std::size_t>(pot)];
     EXPECT_EQ(s.selected(), pot);
     EXPECT_EQ(sc.material.kind, MaterialKind::Clay);
-    // The carved band, two handles and five thumb prints stay: nine made,
-    // the slip on the rim undone on the pot alone (and the thumb prints
-    // made after it dropped it from the redo list).
-    EXPECT_EQ(s.editCount(pot), 8u);
+    // The carved band, two handles, five thumb prints, the belly inflated
+    // and smoothed in stay: eleven made, the slip on the rim undone on the
+    // pot alone (and the thumb prints made after it dropped it from the
+    // redo list).
+    ASSERT_EQ(s.editCount(pot), 10u);
     EXPECT_EQ(sc.edits->redoCount(), 0u);
+    const auto& edits = sc.edits->list().edits();
+    EXPECT_EQ(std::get<Stroke>(edits[8].op).tool, StrokeTool::Inflate);
+    const Stroke& smooth = std::get<Stroke>(edits[9].op);
+    EXPECT_EQ(smooth.tool, StrokeTool::Smooth);
+    int fitted = 0;
+    for (const auto& fit : smooth.fits) fitted += fit.has_value();
+    EXPECT_GT(fitted, 0) << "the smooth stroke met the pot's surface";
     for (std::size_t i = 0; i < before; ++i)
         EXPECT_EQ(s.editCount(static_cast<int>(i)), 0u) << s.sculptures()[i].name << " was not touched";
     // It stands on the ground where the script put it.

@@ -247,10 +247,16 @@ TEST_F(HyperFunExportTest, EveryToolMirrorAndMoveExportExactly) {
     const glm::vec3 centre = s.sculptures()[static_cast<std::size_t>(c)].worldCentre();
     ASSERT_EQ(s.applyStroke(c, StrokeTool::Carve, {{centre.x + 0.5, centre.y + 0.6, centre.z}, {centre.x + 0.6, centre.y + 0.3, centre.z + 0.3}}, 0.12), "");
     ASSERT_EQ(s.applyPerturbation(c, QuadricShape::Ellipsoid, {centre.x + 0.7, centre.y - 0.2, centre.z}, {0.12, 0.12, 0.12}, 2.5), "");
-    ASSERT_EQ(s.editCount(c), 10u);
+    // Smooth (its fits journalled with it) and inflate, mirrored too.
+    ASSERT_EQ(s.applyStroke(c, StrokeTool::Smooth, {{centre.x - 0.2, centre.y + 0.85, centre.z}, {centre.x + 0.1, centre.y + 0.85, centre.z + 0.2}},
+                            0.15, 2.0, 0.8, Falloff::Linear), "");
+    ASSERT_EQ(s.applyStroke(c, StrokeTool::Inflate, {{centre.x, centre.y, centre.z + 0.85}, {centre.x + 0.2, centre.y + 0.2, centre.z + 0.8}},
+                            0.12, 2.0, -1.5, Falloff::Sharp), "");
+    ASSERT_EQ(s.editCount(c), 12u);
     const HyperFunExport e = exportOf(s, c);
-    EXPECT_EQ(e.edits, 10u);
-    for (const char* what : {"carve stroke", "add stroke", "melt stroke", "softness 2.5", "ellipsoid perturbation",
+    EXPECT_EQ(e.edits, 12u);
+    for (const char* what : {"smooth stroke", "strength 0.8, linear falloff", "inflate stroke", "strength -1.5 voxels, sharp falloff",
+                             "carve stroke", "add stroke", "melt stroke", "softness 2.5", "ellipsoid perturbation",
                              "torus perturbation", "impacts of a chisel", "impacts of a square", "impacts of a sphere",
                              "mirrored across", "turned 30 degrees", "1.5 m per model unit", "hfConvLine(x, segb, sege, segs, 0)"})
         EXPECT_NE(e.text.find(what), std::string::npos) << what;

@@ -35,6 +35,33 @@ Edit strokeEdit(StrokeTool tool, double radius, std::vector<ModelPoint> path, do
     return e;
 }
 
+// A smooth stroke with a hand-made quadric per segment (the session fits
+// them to its grid: smooth_inflate_test.cpp), so the field has a target
+// that differs from the sphere it smooths.
+Edit smoothEdit(double radius, std::vector<ModelPoint> path, Falloff falloff, double strength) {
+    Edit e = strokeEdit(StrokeTool::Smooth, radius, std::move(path));
+    Stroke& s = std::get<Stroke>(e.op);
+    s.falloff = falloff;
+    s.strength = strength;
+    for (const StrokeSegment& g : s.segments) {
+        SegmentFit q;
+        for (int a = 0; a < 3; ++a) q.centre[static_cast<std::size_t>(a)] = 0.5 * (g.begin[a] + g.end[a]);
+        q.scale = radius;
+        q.c = {0.5, 1.0, -0.5, 0.25, -0.75, 0.1, 0.2, 0.3, -0.2, 0.05};
+        s.fits.push_back(q);
+    }
+    s.fits.back().reset();  // a segment without a fit leaves the field as it is
+    return e;
+}
+
+Edit inflateEdit(double radius, std::vector<ModelPoint> path, Falloff falloff, double strength) {
+    Edit e = strokeEdit(StrokeTool::Inflate, radius, std::move(path));
+    Stroke& s = std::get<Stroke>(e.op);
+    s.falloff = falloff;
+    s.strength = strength;
+    return e;
+}
+
 Edit perturbEdit(QuadricShape shape, ModelPoint c, ModelPoint radii, double k) {
     Perturbation p;
     p.shape = shape;
@@ -81,7 +108,11 @@ std::vector<Edit> everyTool() {
             strokeEdit(StrokeTool::Add, 0.05, {{-0.5, 0.0, 0.0}, {-0.5, -0.3, 0.0}}),
             strokeEdit(StrokeTool::Melt, 0.08, {{0.0, 0.5, 0.0}, {0.2, 0.45, 0.0}}, 3.0),
             perturbEdit(QuadricShape::Ellipsoid, {0.0, 0.0, 0.5}, {0.15, 0.08, 0.1}, 4.0),
-            perturbEdit(QuadricShape::Torus, {0.0, -0.5, 0.0}, {0.1, 0.04, 0.0}, -3.0)};
+            perturbEdit(QuadricShape::Torus, {0.0, -0.5, 0.0}, {0.1, 0.04, 0.0}, -3.0),
+            inflateEdit(0.09, {{0.0, 0.0, 0.5}, {0.1, 0.05, 0.48}}, Falloff::Smooth, 1.5),
+            inflateEdit(0.07, {{-0.3, 0.38, 0.1}, {-0.35, 0.3, 0.2}}, Falloff::Constant, -2.0),
+            smoothEdit(0.1, {{0.0, -0.49, 0.0}, {0.05, -0.48, 0.1}, {0.1, -0.45, 0.15}}, Falloff::Linear, 0.8),
+            smoothEdit(0.08, {{0.48, 0.0, 0.1}, {0.47, 0.1, 0.1}}, Falloff::Sharp, 1.0)};
 }
 
 TEST(EditField, TapeEqualsTheDoubleExpression) {
@@ -260,9 +291,17 @@ TEST(SculptureEdits, BoxUpdatesEqualARebuildThroughUndoAndRedo) {
             e.op = p;
             edits.append(std::move(e));
         } else {
-            const StrokeTool tool = i % 3 == 0 ? StrokeTool::Carve : i % 3 == 1 ? StrokeTool::Add : StrokeTool::Melt;
+            const StrokeTool tools[] = {StrokeTool::Carve, StrokeTool::Add, StrokeTool::Melt, StrokeTool::Smooth,
+                                        StrokeTool::Inflate};
+            const StrokeTool tool = tools[(i + i / 5) % 5];
             Stroke s;
             s.tool = tool;
+            // Smooth fits its segments to the grid as they are drawn (the
+            // first point, then the rest a frame later): the rebuild must
+            // use those fits, not fit again.
+            if (tool == StrokeTool::Smooth) s.strength = 0.9;
+            if (tool == StrokeTool::Inflate) s.strength = i % 2 ? 1.5 : -2.0;
+            s.falloff = static_cast<Falloff>(i % 4);
             s.radius = (2.0 + i % 4 * 3.0) * v;
             s.path = {a, {a[0] + 0.1, a[1] + 0.05, a[2]}};
             Edit e;

@@ -105,12 +105,12 @@ TEST_F(SessionReloading, ASolidThatGrewIsRebuiltInItsNewFrameAsAFreshOpenWouldBe
     const int t = session.findSculpture("t");
     // An added stroke, a perturbation, and a second stroke undone (waiting
     // in the redo list): all in model units, all derived again.
-    const StrokeAction add{"t", StrokeTool::Add, 0.08, 2.0, {{0.3, 0.8, 0.3}, {0.35, 0.5, 0.35}, {0.3, 0.3, 0.4}}, std::nullopt};
+    const StrokeAction add{"t", StrokeTool::Add, 0.08, 2.0, {{0.3, 0.8, 0.3}, {0.35, 0.5, 0.35}, {0.3, 0.3, 0.4}}, std::nullopt, 1.0, Falloff::Smooth, {}};
     Perturbation p;
     p.center = {-0.4, 0.6, 0.0};
     p.radii = {0.15, 0.15, 0.15};
     const PerturbAction bump{"t", p};
-    const StrokeAction carve{"t", StrokeTool::Carve, 0.1, 2.0, {{-0.1, 1.0, 0.0}, {0.1, 0.95, 0.0}}, std::nullopt};
+    const StrokeAction carve{"t", StrokeTool::Carve, 0.1, 2.0, {{-0.1, 1.0, 0.0}, {0.1, 0.95, 0.0}}, std::nullopt, 1.0, Falloff::Smooth, {}};
     const auto edit = [&](GardenSession& on) {
         ASSERT_EQ(on.apply(add), "");
         ASSERT_EQ(on.apply(bump), "");
@@ -183,7 +183,7 @@ protected:
     // moved off the garden's selector.
     static void edit(GardenSession& s) {
         const std::string result = s.garden().morph->resultName;
-        ASSERT_EQ(s.apply(StrokeAction{result, StrokeTool::Add, 0.08, 2.0, {{0.45, 0.95, 0.3}, {0.5, 0.7, 0.3}}, std::nullopt}), "");
+        ASSERT_EQ(s.apply(StrokeAction{result, StrokeTool::Add, 0.08, 2.0, {{0.45, 0.95, 0.3}, {0.5, 0.7, 0.3}}, std::nullopt, 1.0, Falloff::Smooth, {}}), "");
         s.setMorphBarycentric({0.5, 0.3, 0.2});
     }
     static const Sculpture& result(const GardenSession& s) {

@@ -78,6 +78,9 @@ TEST_F(SessionViewTest, TheToolAndItsSettingsComeBack) {
     t.spreadSize = 12.0;
     t.impactCount = 7;
     t.sketchUse = ToolSettings::SketchUse::Model;
+    t.smoothStrength = 0.35;
+    t.inflateStrength = 1.75;
+    t.falloff = Falloff::Sharp;
     ASSERT_EQ(writeSessionView(dir.string(), n, &t), "");
     std::optional<ToolSettings> back;
     std::string warning;
@@ -97,6 +100,9 @@ TEST_F(SessionViewTest, TheToolAndItsSettingsComeBack) {
     EXPECT_EQ(back->spreadSize, 12.0);
     EXPECT_EQ(back->impactCount, 7);
     EXPECT_EQ(back->sketchUse, ToolSettings::SketchUse::Model);
+    EXPECT_EQ(back->smoothStrength, 0.35);
+    EXPECT_EQ(back->inflateStrength, 1.75);
+    EXPECT_EQ(back->falloff, Falloff::Sharp);
     // Written before tools were kept: the view, and no tool.
     ASSERT_EQ(writeSessionView(dir.string(), n), "");
     ASSERT_TRUE(readSessionView(dir.string(), n, warning, &back)) << warning;
@@ -104,6 +110,9 @@ TEST_F(SessionViewTest, TheToolAndItsSettingsComeBack) {
     write(kSessionViewFile, R"({"mode": "fly", "eye": [1, 2, 3], "yaw": 0, "pitch": 0, "tool": {"kind": "chainsaw"}})");
     EXPECT_FALSE(readSessionView(dir.string(), n, warning, &back));
     EXPECT_NE(warning.find("$.tool.kind"), std::string::npos) << warning;
+    write(kSessionViewFile, R"({"mode": "fly", "eye": [1, 2, 3], "yaw": 0, "pitch": 0, "tool": {"falloff": "soft"}})");
+    EXPECT_FALSE(readSessionView(dir.string(), n, warning, &back));
+    EXPECT_NE(warning.find("$.tool.falloff"), std::string::npos) << warning;
 }
 
 // The desktop's panel layout (ImGui's ini text) goes in "panels" and comes

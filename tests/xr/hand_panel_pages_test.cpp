@@ -16,6 +16,7 @@
 
 #include "garden/app/garden_session.h"
 #include "garden/session/open_session.h"
+#include "garden/sculpt/sculpture_edits.h"
 #include "voxel/volume.h"
 #include "xr/hand_panel_ui.h"
 #include "xr/xr_garden.h"
@@ -129,6 +130,29 @@ TEST_F(HandPanelPages, TheHistoryPageUndoesTheSelectedSculpturesLastAction) {
     ASSERT_EQ(history.size(), 1u);
     EXPECT_TRUE(history[0].undone) << "the carve waits in the redo list";
     EXPECT_EQ(history[0].name, "a");
+}
+
+// The inflate and smooth buttons choose those tools, and a partial pull of
+// the trigger (0.75: half way past the press threshold) inflates with the
+// pressure it gives, 0.1 + 0.9 * 0.5 of the tool's strength, read once the
+// pull has settled; a full pull smooths at the tool's whole strength.
+TEST_F(HandPanelPages, InflateAndSmoothButtonsAndTheTriggersPressure) {
+    std::vector<garden::Stroke> strokes;
+    run("[" + press(panelButtonCenter(PanelButton::Inflate)) + R"(,
+      {"frames": 6, "tool": {"aim": {"position": [0.3, 1.2, -1.0], "direction": [-0.35, -0.6, -1.3]}, "trigger": 0.75}},
+      {"frames": 2}, )" + press(panelButtonCenter(PanelButton::Smooth)) + R"(,
+      {"frames": 6, "tool": {"aim": {"position": [0.3, 1.2, -1.0], "direction": [-0.3, -0.6, -1.3]}, "trigger": 1}},
+      {"frames": 2}])",
+        [&](garden::GardenSession& xr) {
+            for (const garden::Edit& e : xr.sculptures()[static_cast<std::size_t>(xr.findSculpture("a"))].edits->list().edits())
+                if (const auto* st = std::get_if<garden::Stroke>(&e.op)) strokes.push_back(*st);
+        });
+    ASSERT_EQ(strokes.size(), 2u);
+    EXPECT_EQ(strokes[0].tool, garden::StrokeTool::Inflate);
+    EXPECT_NEAR(strokes[0].strength, garden::ToolSettings{}.inflateStrength * 0.55, 1e-6);
+    EXPECT_EQ(strokes[1].tool, garden::StrokeTool::Smooth);
+    EXPECT_NEAR(strokes[1].strength, garden::ToolSettings{}.smoothStrength, 1e-6);
+    EXPECT_EQ(strokes[1].fits.size(), strokes[1].segments.size());
 }
 
 TEST_F(HandPanelPages, TheSculpturePageMirrorsAndDiscardsTheSelectedSculpturesEdits) {
