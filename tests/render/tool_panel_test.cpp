@@ -71,8 +71,10 @@ protected:
 
 TEST_F(ToolPanelTest, TheRadioButtonsPickTheTool) {
     using K = ToolSettings::Kind;
-    const std::pair<const char*, K> tools[] = {{"carve (1)", K::Carve}, {"add (2)", K::Add},         {"melt (3)", K::Melt},
-                                               {"perturb (4)", K::Perturb}, {"impacts (5)", K::Impacts}, {"move (6)", K::Move},
+    const std::pair<const char*, K> tools[] = {{"carve (1)", K::Carve},     {"add (2)", K::Add},
+                                               {"soft carve (3)", K::Melt}, {"perturb (4)", K::Perturb},
+                                               {"impacts (5)", K::Impacts}, {"move (6)", K::Move},
+                                               {"smooth (8)", K::Smooth},   {"inflate (9)", K::Inflate},
                                                {"morph (0)", K::None}};
     for (const auto& [label, kind] : tools) {
         ASSERT_TRUE(click(label)) << label;
@@ -83,8 +85,16 @@ TEST_F(ToolPanelTest, TheRadioButtonsPickTheTool) {
     ASSERT_TRUE(click("carve (1)"));
     ASSERT_TRUE(click("reverse (R)"));
     EXPECT_TRUE(session->tool().reverse);
-    ASSERT_TRUE(click("melt (3)"));
-    EXPECT_FALSE(find("reverse (R)")) << "melt has no reverse";
+    ASSERT_TRUE(click("soft carve (3)"));
+    EXPECT_FALSE(find("reverse (R)")) << "the soft carve has no reverse";
+    ASSERT_TRUE(click("smooth (8)"));
+    EXPECT_FALSE(find("reverse (R)")) << "smooth has no reverse";
+    EXPECT_TRUE(find("strength")) << "smooth's strength";
+    EXPECT_TRUE(find("falloff"));
+    ASSERT_TRUE(click("inflate (9)"));
+    ASSERT_TRUE(click("reverse (R)"));
+    EXPECT_TRUE(session->tool().reverse) << "inflate's reverse deflates";
+    EXPECT_TRUE(find("strength (voxels)"));
 }
 
 TEST_F(ToolPanelTest, UndoRedoMirrorAndDiscardActOnTheSession) {
