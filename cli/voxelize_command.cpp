@@ -116,6 +116,9 @@ int runVoxelize(const VoxelizeOptions& o) {
     if (o.stats && model.tape() && s.leafTapeMean > 0.0)
         std::printf("stats: the tape specialized to each leaf's box ran %.0f instructions on average, %llu at most, of %zu\n",
                     s.leafTapeMean, static_cast<unsigned long long>(s.leafTapeMax), model.tape()->size());
+    if (o.stats && s.pointTapeMean > 0.0)
+        std::printf("stats: specialized to single voxels of those leaves (HG_PROBE_POINT_TAPES=1), %.0f on average\n",
+                    s.pointTapeMean);
     if (o.stats) {
         voxel::GridStats g = voxel::measureGrid(volume);
         std::printf("stats: |grad| of the stored field at %zu surface voxels: median %.3f, 90th percentile %.3f "

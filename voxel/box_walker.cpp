@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <cstdlib>
+#include <cstring>
 
 namespace hg::voxel {
 
@@ -36,6 +38,20 @@ BoxWalker::BoxWalker(const frep::Model& model, const VolumeFrame& frame, double 
     specialize_ = frep::specializationEnabled() &&
                   std::any_of(tape->code.begin(), tape->code.end(),
                               [](const frep::Instr& in) { return in.op == frep::Op::Min || in.op == frep::Op::Max; });
+    const char* probe = std::getenv("HG_PROBE_POINT_TAPES");
+    probe_ = specialize_ && probe && std::strcmp(probe, "1") == 0;
+}
+
+void BoxWalker::probePointTapes(const Level& leaf, std::size_t n, WalkCounters& counters) {
+    frep::IntervalEvaluator interval(*leaf.tape, *leaf.affine);
+    for (std::size_t s : {std::size_t{0}, n / 3, 2 * n / 3, n - 1}) {
+        const frep::Interval px(x_[s], x_[s]), py(y_[s], y_[s]), pz(z_[s], z_[s]);
+        interval.evaluate(px, py, pz, &probeTrace_);
+        const bool shorter =
+            specializer_.specialize(*leaf.tape, *leaf.affine, probeTrace_, frep::Precision::Float, probeOwn_);
+        counters.pointTapeSum += shorter ? probeOwn_.tape.size() : leaf.tape->size();
+        ++counters.pointTapes;
+    }
 }
 
 BoxWalker::Verdict BoxWalker::classify(const IndexBox& domain, WalkCounters& counters, int depth) {
@@ -165,6 +181,7 @@ void BoxWalker::evaluateLeaf(const int origin[3], const IndexBox& target, WalkOu
         out.counters.leafTapeSum += level.tape->size();
         out.counters.leafTapeMax = std::max<std::uint64_t>(out.counters.leafTapeMax, level.tape->size());
         ++out.counters.leafTapes;
+        if (probe_ && n > 0) probePointTapes(level, n, out.counters);
     } else {
         sampler_->evaluate(x_.data(), y_.data(), z_.data(), f_.data(), n, out.errors);
     }

@@ -56,12 +56,17 @@ struct WalkCounters {
     std::uint64_t leaves = 0;        // leaves with evaluated points
     // The tape each evaluated leaf ran: lengths summed, the longest.
     std::uint64_t leafTapeSum = 0, leafTapeMax = 0, leafTapes = 0;
+    // With HG_PROBE_POINT_TAPES=1 (a measurement, bench_export --stages):
+    // the leaf's tape specialized further to single voxels of it (four per
+    // leaf), the floor no box, however small, could go below.
+    std::uint64_t pointTapeSum = 0, pointTapes = 0;
 
     void add(const WalkCounters& o) {
         boxesTested += o.boxesTested; boxesInside += o.boxesInside; boxesOutside += o.boxesOutside;
         samples += o.samples; leaves += o.leaves;
         leafTapeSum += o.leafTapeSum; leafTapes += o.leafTapes;
         leafTapeMax = std::max(leafTapeMax, o.leafTapeMax);
+        pointTapeSum += o.pointTapeSum; pointTapes += o.pointTapes;
     }
 };
 
@@ -112,6 +117,8 @@ private:
     // The tape for the boxes below one at `depth` just classified (from its trace).
     void descend(int depth);
     void evaluateLeaf(const int origin[3], const IndexBox& target, WalkOutput& out, int depth);
+    // The point-tape probe (WalkCounters::pointTapeSum) on a few of the leaf's n points.
+    void probePointTapes(const Level& leaf, std::size_t n, WalkCounters& counters);
 
     const VolumeFrame& frame_;
     double scale_;
@@ -125,6 +132,9 @@ private:
     std::uint64_t deferredGeneration_ = 0;
     frep::IntervalTrace trace_;
     frep::TapeSpecializer specializer_;
+    bool probe_ = false;  // HG_PROBE_POINT_TAPES
+    frep::IntervalTrace probeTrace_;
+    frep::SpecializedTape probeOwn_;
     std::unique_ptr<frep::BatchEvaluator<float>> batch_;  // the tape's path
     const frep::Tape* batchTape_ = nullptr;
     std::uint64_t batchGeneration_ = 0;

@@ -75,6 +75,9 @@ void copyStats(const Walk& walk, SampleStats& stats) {
     stats.leafTapeMean = walk.counters.leafTapes
                              ? static_cast<double>(walk.counters.leafTapeSum) / static_cast<double>(walk.counters.leafTapes)
                              : 0.0;
+    stats.pointTapeMean = walk.counters.pointTapes ? static_cast<double>(walk.counters.pointTapeSum) /
+                                                         static_cast<double>(walk.counters.pointTapes)
+                                                   : 0.0;
     stats.errors = walk.errors;
 }
 

@@ -38,6 +38,7 @@ struct SampleStats {
     double leafTapeMean = 0.0;
     std::uint64_t leafTapeMax = 0;
     std::uint64_t leafTapes = 0;      // leaves batch-evaluated with a tape (the mean's count)
+    double pointTapeMean = 0.0;       // HG_PROBE_POINT_TAPES=1: voxels' own tapes (box_walker.h)
     double seconds = 0.0;
     frep::ErrorReport errors;         // domain errors at sampled points
 

@@ -4,6 +4,7 @@
 // program of many bounded edits, whose leaves then run a far shorter tape.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <array>
@@ -89,6 +90,22 @@ TEST(SpecializedSampling, GridsAreTheSameBitForBit) {
                 << fast.stats.leafTapeMean << " of " << full.stats.leafTapeMean;
         }
     }
+}
+
+// The point-tape probe (HG_PROBE_POINT_TAPES=1, a measurement for
+// bench_tools and voxelize --stats): single voxels' tapes are no longer
+// than their leaves', shorter for many edits, and probing leaves the grid
+// as it was.
+TEST(SpecializedSampling, VoxelsOwnTapesAreTheFloorOfTheLeaves) {
+    const frep::Model model = test::modelFromSource(editedBall(400).c_str());
+    const Sampled plain = sample(model, 72, true);
+    EXPECT_EQ(plain.stats.pointTapeMean, 0.0) << "probed only when asked";
+    ::setenv("HG_PROBE_POINT_TAPES", "1", 1);
+    const Sampled probed = sample(model, 72, true);
+    ::unsetenv("HG_PROBE_POINT_TAPES");
+    EXPECT_EQ(differing(plain.volume, probed.volume), 0u);
+    EXPECT_GT(probed.stats.pointTapeMean, 0.0);
+    EXPECT_LT(probed.stats.pointTapeMean, probed.stats.leafTapeMean);
 }
 
 // The lattice (the normalization's probe, the dense source cache) is
