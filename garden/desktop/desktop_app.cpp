@@ -116,6 +116,12 @@ bool gardenPanel(GardenSession& session, ViewLook& look, bool headset, const std
     ImGui::Checkbox("clay view (C)", &look.clay);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("every sculpture in one neutral matte material, to judge its form");
     ImGui::SameLine();
+    ImGui::BeginDisabled(!look.clay);
+    ImGui::Checkbox("cavity", &look.cavity);
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+        ImGui::SetTooltip("in the clay view, grooves darkened and ridges lightened by the surface's curvature");
+    ImGui::EndDisabled();
+    ImGui::SameLine();
     ImGui::Checkbox("wireframe (X)", &look.wireframe);
     addPanel.draw(session);
     bool enter = false;

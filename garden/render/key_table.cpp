@@ -64,7 +64,8 @@ std::vector<KeyRow> makeTable() {
          {{GLFW_KEY_Z, ctrl | GLFW_MOD_ALT, C::UndoSelected}}},
         {"H", "the history panel: every action with its sculpture; undo, redo, undo on the selection",
          {{GLFW_KEY_H, 0, C::History}}},
-        {"C", "the clay view: every sculpture in one neutral matte material, to judge its form; again: the materials",
+        {"C", "the clay view: every sculpture in one neutral matte material with cavity shading (grooves darker, ridges "
+              "lighter; the Garden panel switches it), to judge its form; again: the materials",
          {{GLFW_KEY_C, 0, C::ClayView}}},
         {"X", "the wireframe overlay: the sculptures' triangle edges over them, on / off", {{GLFW_KEY_X, 0, C::Wireframe}}},
         {"F9", "this garden into the OpenXR headset; back at the desktop when its session ends (or F9 in the mirror)",

@@ -37,6 +37,7 @@ RenderMaterial clayViewMaterial() {
 
 RenderMaterial lookedAt(const RenderMaterial& material, const ViewLook& look) {
     RenderMaterial r = look.clay ? clayViewMaterial() : material;
+    if (look.clay && !look.cavity) r.cavity = 0.0f;
     r.edges = look.wireframe ? 1 : 0;
     return r;
 }

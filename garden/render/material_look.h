@@ -14,6 +14,7 @@ namespace hg::garden {
 struct ViewLook {
     bool clay = false;       // every sculpture in kClayView's material
     bool wireframe = false;  // the sculptures' triangle edges drawn over them
+    bool cavity = true;      // the clay view's cavity shading (grooves darker, ridges lighter)
 };
 
 // `m` for the renderer: roughness as the highlight's strength and size,

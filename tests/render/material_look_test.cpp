@@ -209,6 +209,13 @@ TEST_F(MaterialLookTest, TheClayViewGivesEveryMaterialTheSamePixels) {
     // Neutral and matte: grey, no coloured tint.
     const glm::dvec3 c = meanColour(20);
     EXPECT_LT(std::abs(c.r - c.b), 0.12 * c.r);
+    // With cavity shading (look_test.cpp shows what it does to a groove),
+    // which the Garden panel switches off; outside the clay view the
+    // material's own.
+    EXPECT_EQ(lookedAt(builtin("bronze"), clay).cavity, 1.0f);
+    clay.cavity = false;
+    EXPECT_EQ(lookedAt(builtin("bronze"), clay).cavity, 0.0f);
+    EXPECT_EQ(lookedAt(builtin("bronze"), ViewLook{}).cavity, builtin("bronze").cavity);
 }
 
 TEST_F(MaterialLookTest, TheWireframeOverlayDrawsTheEdgesOnTheSurfaceOnly) {
