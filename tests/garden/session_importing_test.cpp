@@ -130,6 +130,16 @@ TEST_F(SessionImporting, AMeshAndAVolumeAreCopiedInAndReopenBitForBitWithoutTheO
         << journalText();
     fs::remove(obj);
     fs::remove(vdb);
+#ifdef HG_HYPERGARDEN_EXE
+    // The command line finds the copies from any folder: the session
+    // verified against its snapshot, the mesh exported read-only.
+    const test::ShellRun verify = test::shell("cd / && $HG session '" + folder + "' --verify");
+    EXPECT_EQ(verify.status, 0) << verify.output;
+    const test::ShellRun exported = test::shell("cd / && $HG export '" + folder + "' --sculpture block -o '" +
+                                                (dir / "block.stl").string() + "'");
+    EXPECT_EQ(exported.status, 0) << exported.output;
+    EXPECT_TRUE(fs::exists(dir / "block.stl")) << exported.output;
+#endif
 
     OpenedSession o = open();
     GardenSession& s = *o.session;
