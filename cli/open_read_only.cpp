@@ -63,6 +63,8 @@ std::unique_ptr<GardenSession> openReadOnly(const std::string& input, const Sess
         return nullptr;
     }
     auto session = std::make_unique<GardenSession>(std::move(load), settings);
+    // A session's added meshes and volumes are read from its imports/.
+    if (std::filesystem::is_directory(input)) session->setSessionFolder(input);
     // A record that cannot be played ends what the session shows (it opens
     // read-only there, docs/session-format.md): what is written shows that too.
     const JournalPlayed played = session->restoreRecords(journal.records);

@@ -158,6 +158,7 @@ int runSessionCommand(const SessionCommandOptions& options) {
         if (resolutions.size() == 1) settings.sculptureResolution = *resolutions.begin();
     }
     GardenSession session(std::move(load), settings);
+    session.setSessionFolder(paths.dir);  // added meshes and volumes are read from its imports/
     const std::size_t upTo = options.verify && snap.present ? std::min(snap.records, journal.records.size()) : journal.records.size();
     const std::vector<Action> played(journal.records.begin(), journal.records.begin() + static_cast<std::ptrdiff_t>(upTo));
     const JournalPlayed result = session.restoreRecords(played);

@@ -106,6 +106,27 @@ struct AddAction {
     std::optional<frep::Box3> box;    // the model box; none: found from the model (voxel::resolveModelBox)
     int resolution = 128;             // voxels along the model box's longest side
     Placement placement;
+    // A mesh or a volume instead of a program (source ""): the file as
+    // copied into the session folder, which the record names so that the
+    // session plays back whatever becomes of the original
+    // (docs/session-format.md, "Imported files").
+    struct Imported {
+        enum class Kind { Mesh, Volume };
+        Kind kind = Kind::Mesh;
+        std::string file;          // imports/NAME.EXT, relative to the session folder; absolute outside a session
+        double iso = 0.0;          // a volume's surface value
+        bool insideAbove = false;  // a volume's solid is above iso (a fog volume), else below (a level set)
+    };
+    std::optional<Imported> imported;
+};
+
+// An added HyperFun sculpture's file changed on disk: the new text, read
+// again (GardenSession::reloadChangedSources). Journalled so that a replay
+// gives the same result without the file; not undone (the file is the
+// user's, outside the session).
+struct ReloadAction {
+    std::string sculpture;
+    std::string source;
 };
 
 // A sculpture given another material (the panel's choice): the whole
@@ -142,7 +163,7 @@ struct SelectAction {
 using Action =
     std::variant<StrokeAction, PerturbAction, UndoAction, RedoAction, DiscardAction, MorphWeightsAction, MoveAction,
                  ImpactsAction, ReplaceAction, SketchAction, AddAction, MaterialAction, ModelAction, DeformAction,
-                 SelectAction>;
+                 SelectAction, ReloadAction>;
 
 std::string actionKind(const Action& r);
 

@@ -114,12 +114,48 @@ Placement readPlacement(ObjectReader& r) {
     return p;
 }
 
+// An added mesh's or volume's file (docs/session-format.md, "Imported
+// files"): {"mesh": {"file"}} or {"volume": {"file", "iso", "inside"}}.
+void writeImported(const AddAction::Imported& m, nlohmann::json& j) {
+    if (m.kind == AddAction::Imported::Kind::Mesh)
+        j["mesh"] = {{"file", m.file}};
+    else
+        j["volume"] = {{"file", m.file}, {"iso", m.iso}, {"inside", m.insideAbove ? "above" : "below"}};
+}
+
+AddAction::Imported readImported(ObjectReader& r) {
+    using Kind = AddAction::Imported::Kind;
+    if (static_cast<int>(r.has("source")) + static_cast<int>(r.has("mesh")) + static_cast<int>(r.has("volume")) > 1)
+        throw JsonError(r.path(), "an add holds one of \"source\", \"mesh\" or \"volume\", not two");
+    AddAction::Imported m;
+    m.kind = r.has("mesh") ? Kind::Mesh : Kind::Volume;
+    const char* key = m.kind == Kind::Mesh ? "mesh" : "volume";
+    const nlohmann::json& v = r.required(key);
+    const std::string at = r.pathOf(key);
+    if (m.kind == Kind::Mesh) {
+        ObjectReader o(v, at, {"file"});
+        m.file = readString(o.required("file"), o.pathOf("file"));
+        o.finish();
+    } else {
+        ObjectReader o(v, at, {"file", "iso", "inside"});
+        m.file = readString(o.required("file"), o.pathOf("file"));
+        m.iso = finite(o.required("iso"), o.pathOf("iso"));
+        const std::string inside = readString(o.required("inside"), o.pathOf("inside"));
+        if (inside != "above" && inside != "below")
+            throw JsonError(o.pathOf("inside"), "expected \"above\" or \"below\", found '" + inside + "'");
+        m.insideAbove = inside == "above";
+        o.finish();
+    }
+    if (m.file.empty()) throw JsonError(childPath(at, "file"), "expected the imported file's name");
+    return m;
+}
+
 }  // namespace
 
 std::string actionKind(const Action& r) {
     static const char* const names[] = {"stroke", "perturb", "undo",    "redo",    "discard",
                                         "morph",  "move",    "impacts", "replace", "sketch", "add", "material",
-                                        "model",  "deform",  "select"};
+                                        "model",  "deform",  "select",  "reload"};
     return names[r.index()];
 }
 
@@ -200,12 +236,16 @@ std::string actionJson(const Action& record) {
         j["material"] = materialObjectJson(ma->material);
     } else if (const auto* ad = std::get_if<AddAction>(&record)) {
         j["sculpture"] = ad->sculpture;
-        j["source"] = ad->source;
+        if (ad->imported) writeImported(*ad->imported, j);
+        else j["source"] = ad->source;
         j["origin"] = ad->origin;
         if (!ad->body.empty()) j["body"] = ad->body;
         if (ad->box) j["box"] = {corner(ad->box->lo), corner(ad->box->hi)};
         j["resolution"] = ad->resolution;
         writePlacement(ad->placement, j);
+    } else if (const auto* rl = std::get_if<ReloadAction>(&record)) {
+        j["sculpture"] = rl->sculpture;
+        j["source"] = rl->source;
     }
     return j.dump();
 }
@@ -326,11 +366,14 @@ Action readAction(const nlohmann::json& v, const std::string& path) {
         return m;
     }
     if (action == "add") {
-        ObjectReader r(v, path, {"action", "sculpture", "source", "origin", "body", "box", "resolution", "position", "yaw",
-                                 "scale"});
+        ObjectReader r(v, path, {"action", "sculpture", "source", "mesh", "volume", "origin", "body", "box",
+                                 "resolution", "position", "yaw", "scale"});
         AddAction a;
         a.sculpture = readString(r.required("sculpture"), r.pathOf("sculpture"));
-        a.source = readString(r.required("source"), r.pathOf("source"));
+        // A program's text, or an imported mesh or volume (journals before
+        // imports hold only "source").
+        if (r.has("mesh") || r.has("volume")) a.imported = readImported(r);
+        else a.source = readString(r.required("source"), r.pathOf("source"));
         a.origin = readString(r.required("origin"), r.pathOf("origin"));
         if (r.has("body")) a.body = readString(r.required("body"), r.pathOf("body"));
         if (r.has("box")) {
@@ -405,9 +448,17 @@ Action readAction(const nlohmann::json& v, const std::string& path) {
         r.finish();
         return s;
     }
+    if (action == "reload") {
+        ObjectReader r(v, path, {"action", "sculpture", "source"});
+        ReloadAction a;
+        a.sculpture = readString(r.required("sculpture"), r.pathOf("sculpture"));
+        a.source = readString(r.required("source"), r.pathOf("source"));
+        r.finish();
+        return a;
+    }
     throw JsonError(childPath(path, "action"), "unknown action '" + action +
                                                    "' (expected stroke, perturb, replace, impacts, undo, redo, discard, "
-                                                   "morph, move, sketch, add, material, model, deform or select)");
+                                                   "morph, move, sketch, add, material, model, deform, select or reload)");
 }
 
 }  // namespace hg::garden

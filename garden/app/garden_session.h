@@ -16,6 +16,7 @@
 
 #include <array>
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -191,10 +192,13 @@ public:
     ActionOrWhy sketchFromWorld(int sculpture, SketchMode mode, const std::vector<std::array<double, 3>>& worldPoints,
                                 const std::array<double, 3>& worldNormal, double thickness = 1.0) const;
     // A sculpture from a HyperFun file, added to the garden (an AddAction
-    // holding the file's text): `name` "" takes the file's stem (made
-    // unique); refused with the parser's messages when the file is broken.
-    // A placement with scale 0 sizes the model to kAddedSize metres and
-    // stands it on the ground at the placement's x and z.
+    // holding the file's text), or from a mesh (.stl, .obj, .ply) or an
+    // OpenVDB volume (.vdb; a level set's zero or a fog volume's middle
+    // value), whose AddAction names the file (addSculptureFile copies it
+    // into the session first): `name` "" takes the file's stem (made
+    // unique); refused with the reader's messages (file, line) when the
+    // file is broken. A placement with scale 0 sizes the model to
+    // kAddedSize metres and stands it on the ground at the placement's x and z.
     ActionOrWhy addFromFile(const std::string& path, const std::string& name, const Placement& placement,
                             int resolution = 128, const std::string& body = "") const;
     // A sketch in mode `new`: its inflated solid as a new sculpture named
@@ -229,8 +233,16 @@ public:
                              const std::array<double, 3>& worldDirection, ImpactTool tool);
     std::string reapplyImpacts(int from, int to);
     std::string editPerturbation(int sculpture, std::size_t edit, double strength, const std::array<double, 3>& radii);
+    // addFromFile applied; a mesh or a volume is first copied into the
+    // session folder's imports/ (sessionFolder()), and the record names the
+    // copy, so the session reopens whatever becomes of the original.
     std::string addSculptureFile(const std::string& path, const std::string& name, const Placement& placement,
                                  int resolution = 128, const std::string& body = "");
+    // The session folder the journal is kept in ("" : none): where added
+    // meshes and volumes are copied to and their records' files are found
+    // (docs/session-format.md, "Imported files"). Set before a journal is played.
+    void setSessionFolder(const std::string& dir) { sessionFolder_ = dir; }
+    const std::string& sessionFolder() const { return sessionFolder_; }
     // A live stroke: begun at a point, extended as the hand moves, ended on
     // release (the stroke is in the edit list from its first point, and
     // journalled as one StrokeAction when it ends).
@@ -334,7 +346,8 @@ public:
     std::size_t editCount(int sculpture) const;
 
     // --- sources edited on disk (garden/app/session_reloading.cpp) -------
-    // Each sculpture of the garden file whose HyperFun file changed on disk
+    // Each sculpture of the garden file (and each added from a HyperFun
+    // file, by a journalled ReloadAction) whose HyperFun file changed on disk
     // (its modification time) since it was read is read again: a good file
     // is sampled and replaces the unedited grid, the sculpture's edits
     // applied again on it (nothing the user made is lost); a broken one
@@ -454,6 +467,20 @@ private:
     std::string replaceMorphSources(const std::vector<std::size_t>& changed, std::vector<SculptureLoad> loads,
                                     std::vector<voxel::Volume> grids);
     std::string applyAddModel(const AddAction& a);
+    // addFromFile for a mesh or a volume: the AddAction names the original
+    // (absolute); importIntoSession then copies it into the session folder
+    // and names the copy ("" or why not: nothing is added then).
+    ActionOrWhy importFromFile(const std::string& path, const std::string& name, const Placement& placement,
+                               int resolution, const std::string& body) const;
+    std::string importIntoSession(AddAction& a) const;
+    // An imported file's path as read now: a record's relative file in the session folder.
+    std::string importedPath(const AddAction::Imported& m) const;
+    std::string applyReloadModel(const ReloadAction& a);
+    // An added sculpture's file, watched for changes (its text as last
+    // applied compared with the file's; none for a file that is not there).
+    void watchAddedSource(std::size_t index, const std::string& text);
+    // A reload of each added HyperFun sculpture whose file changed (reloadChangedSources).
+    void reloadAddedSources(std::vector<std::size_t>& reported);
     void buildMorph();
     void restartMorph();
     std::array<double, 3> toModel(const Sculpture& s, const glm::vec3& world) const;
@@ -611,8 +638,13 @@ private:
     // reads load_'s models and stops before they go.
     std::unique_ptr<SculptureLoader> loader_;
     // Sculptures from the garden file (those added later hold their text in
-    // their AddAction and are not watched on disk).
+    // their AddAction; those added from a HyperFun file are watched through
+    // addedSources_).
     std::size_t fileSculptures_ = 0;
+    // Added HyperFun sculptures by index: the text last applied (their
+    // watched file is their spec's `file`).
+    std::map<std::size_t, std::string> addedSources_;
+    std::string sessionFolder_;  // setSessionFolder()
 };
 
 }  // namespace hg::garden

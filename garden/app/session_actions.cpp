@@ -79,6 +79,7 @@ std::string GardenSession::apply(const Action& action) {
         return why.empty() ? applySketchModel(i, *a) : why;
     }
     if (const auto* a = std::get_if<AddAction>(&action)) return applyAddModel(*a);
+    if (const auto* a = std::get_if<ReloadAction>(&action)) return applyReloadModel(*a);
     if (const auto* a = std::get_if<ModelAction>(&action)) return applyModelAction(*a);
     if (const auto* a = std::get_if<DeformAction>(&action)) return applyDeformAction(*a);
     if (const auto* a = std::get_if<SelectAction>(&action)) return applySelectAction(*a);

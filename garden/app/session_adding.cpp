@@ -1,19 +1,25 @@
 // Sculptures brought into a running garden (docs/design.md §10, "Bringing work
 // in"): a HyperFun file, or a sketch in mode `new`, becomes an AddAction
-// holding the program's text; applying it appends a sculpture (its garden
-// entry, its load, its grid) that undo hides and redo shows again. Indexes
-// of the sculptures already there never change.
+// holding the program's text; a mesh or an OpenVDB volume is copied into
+// the session folder's imports/ and becomes an AddAction naming the copy
+// (docs/session-format.md, "Imported files"). Applying it appends a
+// sculpture (its garden entry, its load, its grid) that undo hides and redo
+// shows again. Indexes of the sculptures already there never change.
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 
 #include "garden/app/garden_session.h"
+#include "garden/app/sculpture_sampling.h"
 #include "garden/scene/garden_making.h"
 #include "garden/scene/model_file.h"
 #include "garden/scene/to_glm.h"
 #include "garden/sculpt/sketch_edit.h"
 #include "garden/sketch/inflation_text.h"
+#include "io/checked_write.h"
 #include "io/read_text.h"
+#include "polygonizer/mesh_read.h"
 #include "voxel/sampler.h"
 
 namespace hg::garden {
@@ -24,8 +30,28 @@ using ActionOrWhy = GardenSession::ActionOrWhy;
 
 ActionOrWhy refused(std::string why) { return {std::nullopt, std::move(why)}; }
 
+namespace fs = std::filesystem;
+
 // A new sketched sculpture's grid: voxels along its longest side.
 constexpr int kSketchedResolution = 128;
+
+// A file that is not HyperFun: a mesh, or a volume (.vdb; .raw is refused
+// by sizeModelFile, its file does not say its layout).
+bool importedKind(const std::string& path) {
+    std::string ext = fs::path(path).extension().string();
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return poly::isMeshFileName(path) || ext == ".vdb" || ext == ".raw";
+}
+
+// An imported file's name in the session folder's imports/: the
+// original's, or NAME-2.EXT, ... when taken (an undone add's copy stays,
+// its record may be played again).
+std::string freeImportName(const fs::path& folder, const fs::path& original) {
+    const std::string stem = original.stem().string(), ext = original.extension().string();
+    std::string name = stem + ext;
+    for (int n = 2; fs::exists(folder / name); ++n) name = stem + "-" + std::to_string(n) + ext;
+    return name;
+}
 
 }  // namespace
 
@@ -49,6 +75,7 @@ std::array<double, 3> GardenSession::placeInView(double distance) const {
 
 ActionOrWhy GardenSession::addFromFile(const std::string& path, const std::string& name, const Placement& placement,
                                        int resolution, const std::string& body) const {
+    if (importedKind(path)) return importFromFile(path, name, placement, resolution, body);
     std::string text;
     if (std::string why = io::readText(path, text); !why.empty()) return refused("cannot open " + why);
     AddAction a;
@@ -74,6 +101,62 @@ ActionOrWhy GardenSession::addFromFile(const std::string& path, const std::strin
         a.box = sized.box;
     }
     return {a, ""};
+}
+
+ActionOrWhy GardenSession::importFromFile(const std::string& path, const std::string& name, const Placement& placement,
+                                          int resolution, const std::string& body) const {
+    // Read (and refused with the reader's message) as `garden add` reads it.
+    ModelToPlace m;
+    m.file = path;
+    m.body = body;
+    m.size = kAddedSize;
+    SizedModel sized;
+    VolumeDefaults volume;
+    std::string error;
+    if (!sizeModelFile(m, placement.position[0], placement.position[2], sized, volume, error)) {
+        while (!error.empty() && error.back() == '\n') error.pop_back();
+        return refused(error);
+    }
+    AddAction a;
+    a.sculpture = uniqueName(name.empty() ? fs::path(path).stem().string() : name);
+    if (!name.empty() && a.sculpture != name) return refused("a sculpture named '" + name + "' is already in the garden");
+    a.origin = path;
+    a.resolution = resolution;
+    a.placement = placement;
+    AddAction::Imported imported;
+    imported.kind = poly::isMeshFileName(path) ? AddAction::Imported::Kind::Mesh : AddAction::Imported::Kind::Volume;
+    imported.file = fs::absolute(path).lexically_normal().string();
+    imported.iso = volume.iso;
+    imported.insideAbove = volume.insideAbove;
+    a.imported = imported;
+    // No model box: the grid's is found from the file as a garden entry's
+    // is (a mesh's bounds and margin, a volume's solid).
+    if (!(placement.scale > 0.0)) {
+        a.placement.scale = sized.scale;
+        a.placement.position = {sized.position[0], load_.garden->ground.height + sized.position[1], sized.position[2]};
+    }
+    return {a, ""};
+}
+
+std::string GardenSession::importIntoSession(AddAction& a) const {
+    if (!a.imported || sessionFolder_.empty()) return "";
+    const fs::path folder = fs::path(sessionFolder_) / "imports";
+    std::error_code ec;
+    fs::create_directories(folder, ec);
+    if (ec) return "cannot create " + folder.string() + " to copy " + a.origin + " into: " + ec.message();
+    std::string bytes;
+    if (std::string why = io::readText(a.imported->file, bytes); !why.empty()) return "cannot copy " + why;
+    const std::string name = freeImportName(folder, a.imported->file);
+    if (std::string why = io::writeFileAtomically((folder / name).string(), bytes, io::WriteSite::SessionFile);
+        !why.empty())
+        return "cannot copy " + a.origin + " into the session: " + why;
+    a.imported->file = "imports/" + name;
+    return "";
+}
+
+std::string GardenSession::importedPath(const AddAction::Imported& m) const {
+    if (fs::path(m.file).is_absolute() || sessionFolder_.empty()) return m.file;
+    return (fs::path(sessionFolder_) / m.file).string();
 }
 
 ActionOrWhy GardenSession::sketchNewFromWorld(const std::string& name,
@@ -133,18 +216,32 @@ std::string GardenSession::applyAddModel(const AddAction& a) {
     spec.box = a.box;
     spec.resolution = settings_.sculptureResolution > 0 ? settings_.sculptureResolution : a.resolution;
     spec.placement = a.placement;
-    SculptureLoad loaded = sculptureFromText(spec, a.source);
+    SculptureSource::Kind kind = SculptureSource::Kind::HyperFun;
+    if (a.imported) {
+        // Read as a garden entry of the file would be; its messages name the record.
+        spec.file = importedPath(*a.imported);
+        const std::string at = "added sculpture '" + a.sculpture + "'";
+        if (a.imported->kind == AddAction::Imported::Kind::Mesh) {
+            spec.mesh = MeshSpec{at};
+            kind = SculptureSource::Kind::Mesh;
+        } else {
+            ScanSpec scan;
+            scan.format = ScanSpec::Format::Vdb;
+            scan.iso = a.imported->iso;
+            scan.insideAbove = a.imported->insideAbove;
+            scan.at = at;
+            spec.scan = scan;
+            kind = SculptureSource::Kind::Scan;
+        }
+    }
+    SculptureLoad loaded = a.imported ? loadSculpture(spec) : sculptureFromText(spec, a.source);
     if (!loaded.ok()) return loaded.error;
-    voxel::VolumeRequest request;
-    request.box = spec.box;
-    request.resolution = spec.resolution;
-    request.band = spec.band;
-    voxel::VoxelizeResult r = voxel::voxelize(*loaded.model, request);
+    voxel::VoxelizeResult r = sampleSculptureSource(spec, loaded, volumeRequest(spec));
     if (!r.volume) return "'" + a.sculpture + "' cannot be sampled: " + r.error;
 
     Sculpture s;
     s.name = spec.name;
-    s.source.kind = SculptureSource::Kind::HyperFun;
+    s.source.kind = kind;
     s.source.spec = static_cast<int>(load_.garden->sculptures.size());
     s.source.program = loaded.program;
     s.placement = spec.placement;
@@ -159,14 +256,24 @@ std::string GardenSession::applyAddModel(const AddAction& a) {
     sculptures_.push_back(std::move(s));
     undoOrder_.push_back(UndoEntry{index, a, std::nullopt, std::nullopt, std::nullopt});
     redoOrder_.clear();
+    if (kind == SculptureSource::Kind::HyperFun) watchAddedSource(static_cast<std::size_t>(index), a.source);
     record(a);
     return "";
 }
 
 std::string GardenSession::addSculptureFile(const std::string& path, const std::string& name,
                                             const Placement& placement, int resolution, const std::string& body) {
-    const ActionOrWhy a = addFromFile(path, name, placement, resolution, body);
-    return a.action ? apply(*a.action) : a.why;
+    ActionOrWhy a = addFromFile(path, name, placement, resolution, body);
+    if (!a.action) return a.why;
+    AddAction& add = std::get<AddAction>(*a.action);
+    if (std::string why = importIntoSession(add); !why.empty()) return why;
+    const std::string why = apply(add);
+    // A copy no record names is not kept.
+    if (!why.empty() && add.imported && !sessionFolder_.empty()) {
+        std::error_code ec;
+        fs::remove(importedPath(*add.imported), ec);
+    }
+    return why;
 }
 
 }  // namespace hg::garden

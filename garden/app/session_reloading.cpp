@@ -113,6 +113,7 @@ std::vector<GardenSession::SourceReload> GardenSession::reloadChangedSources() {
         const std::string problem = replaceMorphSources(morphChanged, std::move(morphLoads), std::move(morphGrids));
         for (std::size_t i : morphChanged) sculptures_[i].sourceProblem = problem;
     }
+    reloadAddedSources(reported);  // garden/app/session_added_reloading.cpp
     for (std::size_t i : reported) {
         std::string& problem = sculptures_[i].sourceProblem;
         while (!problem.empty() && problem.back() == '\n') problem.pop_back();
@@ -127,7 +128,7 @@ std::string GardenSession::replaceSource(std::size_t index, SculptureLoad loaded
         // A sculpture that was missing comes in as if it had loaded at the start.
         s.error.clear();
         s.source.program = loaded.program;
-        load_.sculptures[index] = std::move(loaded);
+        load_.sculptures[static_cast<std::size_t>(s.source.spec)] = std::move(loaded);
         attachGrid(index, std::make_unique<voxel::Volume>(std::move(fresh)), "");
         ++s.frameGeneration;
         return "";
@@ -138,7 +139,7 @@ std::string GardenSession::replaceSource(std::size_t index, SculptureLoad loaded
     // In place (the SculptureEdits holds the grid by reference).
     *s.volume = std::move(fresh);
     s.source.program = loaded.program;
-    load_.sculptures[index] = std::move(loaded);
+    load_.sculptures[static_cast<std::size_t>(s.source.spec)] = std::move(loaded);
     if (same) {
         // The meshes already shown are replaced chunk by chunk like an edit's.
         if (s.edits) s.edits->rebase();

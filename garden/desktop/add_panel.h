@@ -1,8 +1,10 @@
 // The desktop's "Add a sculpture" section (docs/design.md §10, bringing work
-// in): a HyperFun file named in a text field becomes a new sculpture on the
+// in; docs/desktop.md): a HyperFun file, a mesh (.stl, .obj, .ply) or an
+// OpenVDB volume (.vdb) named in a text field becomes a new sculpture on the
 // ground 3 m ahead of the viewer, sized to 1.5 m, selected; one AddAction,
-// so it is journalled and undoable like an edit. Refusals (a file that does
-// not open or parse) are shown with the parser's messages.
+// so it is journalled and undoable like an edit (a mesh or a volume is
+// copied into the session folder first). Refusals (a file that does not
+// open, parse or read) are shown with the reader's messages.
 #pragma once
 
 #include <string>

@@ -29,14 +29,6 @@ std::string lowerExtension(const std::string& file) {
     return ext;
 }
 
-// A volume's iso-value and side when the user names only its file: a level
-// set's zero with the inside below it, otherwise (a fog volume, densities)
-// the middle of its values with the inside above.
-struct VolumeDefaults {
-    double iso = 0.0;
-    bool insideAbove = false;
-};
-
 // The solid's box of a .vdb volume: its level set made coarsely (32 voxels
 // along the longest side), which also checks that it has an inside.
 bool volumeBox(const ModelToPlace& m, frep::Box3& box, VolumeDefaults& d, std::string& error) {
@@ -62,7 +54,8 @@ bool volumeBox(const ModelToPlace& m, frep::Box3& box, VolumeDefaults& d, std::s
     return true;
 }
 
-// What the source is, its box and (a volume) its iso-value: read from the file.
+}  // namespace
+
 bool sizeModelFile(const ModelToPlace& m, double x, double z, SizedModel& out, VolumeDefaults& volume,
                    std::string& error) {
     const std::string ext = lowerExtension(m.file);
@@ -101,6 +94,8 @@ bool sizeModelFile(const ModelToPlace& m, double x, double z, SizedModel& out, V
     sizeBox(box, m.size, x, z, out);
     return true;
 }
+
+namespace {
 
 ojson entry(const ModelToPlace& m, const std::string& name, const std::string& file, const SizedModel& s,
             const VolumeDefaults& volume) {

@@ -37,6 +37,23 @@ struct ModelToPlace {
     double size = 1.5;        // metres along the model box's longest side
 };
 
+// A volume's iso-value and side when the user names only its file: a level
+// set's zero with the inside below it, otherwise (a fog volume, densities)
+// the middle of its values with the inside above.
+struct VolumeDefaults {
+    double iso = 0.0;
+    bool insideAbove = false;
+};
+
+// The model read from its file and sized as above, standing over (x, z):
+// a HyperFun body's box, a mesh's bounds, a .vdb volume's solid (and its
+// VolumeDefaults). false with `error` set (the reader's message, with the
+// file and line) for a file that does not read, a .raw volume (its file
+// does not say its layout) or a body given for a mesh or a volume. Also
+// the session's add (garden/app/session_adding.cpp).
+bool sizeModelFile(const ModelToPlace& m, double x, double z, SizedModel& out, VolumeDefaults& volume,
+                   std::string& error);
+
 // A whole garden file's text holding `model` alone, at the origin, with the
 // visitor's start framing it; "" with `error` set when the file does not
 // load (the parser's messages) or has no box.

@@ -174,6 +174,7 @@ std::vector<std::string> removeLeftovers(const SessionPaths& paths) {
     };
     sweep(paths.dir, false);
     sweep(fs::path(paths.dir) / "sources", false);
+    sweep(fs::path(paths.dir) / "imports", false);
     sweep(paths.snapshots, true);
     return removed;
 }
@@ -210,6 +211,8 @@ std::string SessionRecorder::readJournal() {
 
 void SessionRecorder::attach(GardenSession& session) {
     session_ = &session;
+    // Added meshes and volumes are copied into, and read from, its imports/.
+    session.setSessionFolder(paths_.dir);
     restored_ = session.restoreRecords(read_.records);
     records_ = restored_.played;
     lastSnapshot_ = readSnapshotInfo(paths_).records;

@@ -9,6 +9,7 @@
 //   DIR/session.lock        the writer's lock and who holds it (io/folder_lock.h)
 //   DIR/garden.json         the garden, its "file" entries pointing into sources/
 //   DIR/sources/            the sculptures' HyperFun files (and scanned volumes) as they were
+//   DIR/imports/            meshes and volumes added in the session, as the journal names them
 //   DIR/journal.hgj         garden/session/journal.h
 //   DIR/snapshots/          snapshot.json (the record count it covers and the
 //                           grids' files) and one NAME.RECORDS.vdb per edited

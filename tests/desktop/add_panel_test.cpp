@@ -1,5 +1,5 @@
-// The desktop's "Add a sculpture" section: a HyperFun file becomes a new
-// sculpture ahead of the viewer, sized to the garden and selected, one
+// The desktop's "Add a sculpture" section: a HyperFun file or a mesh becomes
+// a new sculpture ahead of the viewer, sized to the garden and selected, one
 // undoable action; a broken file is refused with the parser's message and
 // nothing is added. Drawn through ImGui without a window.
 #include <gtest/gtest.h>
@@ -36,6 +36,21 @@ TEST_F(AddPanelTest, AFileIsAddedAheadOfTheViewerSizedAndSelected) {
     EXPECT_NEAR(s.placement.position[1] + box.lo[1] * s.scale, 0.0, 1e-6);
     ASSERT_TRUE(session->undo());
     EXPECT_EQ(session->findSculpture("big"), -1);
+}
+
+TEST_F(AddPanelTest, AMeshIsAddedSizedAndItsBadLineIsShown) {
+    // A tetrahedron 3 units across along x: sized to 1.5 m, on the ground.
+    const std::string file = write("tet.obj", "v 0 0 0\nv 3 0 0\nv 0 2 0\nv 0 0 2\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n");
+    AddPanel panel;
+    ASSERT_EQ(panel.add(*session, file), "");
+    const Sculpture& s = session->sculptures().back();
+    EXPECT_EQ(s.name, "tet");
+    EXPECT_TRUE(s.meshed());
+    EXPECT_NEAR(3.0 * s.scale, 1.5, 1e-6);
+    EXPECT_NEAR(s.placement.position[1], 0.0, 1e-6);  // its lowest point (y 0) on the ground
+    const std::string bad = write("bad.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nend_header\n");
+    EXPECT_NE(panel.add(*session, bad), "");
+    EXPECT_NE(panel.status().find("bad.ply"), std::string::npos) << panel.status();
 }
 
 TEST_F(AddPanelTest, ABrokenFileIsRefusedWithItsMessageAndTheButtonDrawsIt) {
