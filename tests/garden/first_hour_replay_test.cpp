@@ -2,7 +2,8 @@
 // first hour scripted. A HyperFun file of one's own (content/first-hour/
 // pot.hf) is brought into the default garden, given a material, and
 // sculpted with the tools a beginner reaches for (carve, add, soft carve,
-// inflate, smooth); a slip is undone on that sculpture alone. Played here at a low resolution, the way the README's
+// inflate, smooth); a slip is undone on that sculpture alone; a mesh of
+// one's own is brought in and carved. Played here at a low resolution, the way the README's
 // screenshots are made at a high one.
 #include <gtest/gtest.h>
 
@@ -28,11 +29,10 @@ TEST(FirstHourReplay, TheContentReplayBringsInAPotAndSculptsIt) {
     options.extractor = extractPart;
     const ReplayResult r = runReplay(script, s, nullptr, options);
     ASSERT_EQ(r.error, "");
-    ASSERT_EQ(s.sculptures().size(), before + 1) << "the pot was brought in";
+    ASSERT_EQ(s.sculptures().size(), before + 2) << "the pot and the pebble were brought in";
     const int pot = s.findSculpture("pot");
     ASSERT_GE(pot, 0);
     const Sculpture& sc = s.sculptures()[static_cast<std::size_t>(pot)];
-    EXPECT_EQ(s.selected(), pot);
     EXPECT_EQ(sc.material.kind, MaterialKind::Clay);
     // The carved band, two handles, five thumb prints, the belly inflated
     // and smoothed in stay: eleven made, the slip on the rim undone on the
@@ -47,6 +47,13 @@ TEST(FirstHourReplay, TheContentReplayBringsInAPotAndSculptsIt) {
     int fitted = 0;
     for (const auto& fit : smooth.fits) fitted += fit.has_value();
     EXPECT_GT(fitted, 0) << "the smooth stroke met the pot's surface";
+    // A mesh of one's own (content/first-hour/pebble.obj) comes in too, as a
+    // level set, and takes a stroke like any sculpture.
+    const int pebble = s.findSculpture("pebble");
+    ASSERT_GE(pebble, 0);
+    EXPECT_EQ(s.sculptures()[static_cast<std::size_t>(pebble)].source.kind, SculptureSource::Kind::Mesh);
+    EXPECT_EQ(s.editCount(pebble), 1u);
+    EXPECT_EQ(s.selected(), pot) << "the script selected the pot; its strokes and the add change no selection";
     for (std::size_t i = 0; i < before; ++i)
         EXPECT_EQ(s.editCount(static_cast<int>(i)), 0u) << s.sculptures()[i].name << " was not touched";
     // It stands on the ground where the script put it.
