@@ -6,7 +6,6 @@
 // sculpture (its garden entry, its load, its grid) that undo hides and redo
 // shows again. Indexes of the sculptures already there never change.
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <filesystem>
 
@@ -34,14 +33,6 @@ namespace fs = std::filesystem;
 
 // A new sketched sculpture's grid: voxels along its longest side.
 constexpr int kSketchedResolution = 128;
-
-// A file that is not HyperFun: a mesh, or a volume (.vdb; .raw is refused
-// by sizeModelFile, its file does not say its layout).
-bool importedKind(const std::string& path) {
-    std::string ext = fs::path(path).extension().string();
-    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return poly::isMeshFileName(path) || ext == ".vdb" || ext == ".raw";
-}
 
 // An imported file's name in the session folder's imports/: the
 // original's, or NAME-2.EXT, ... when taken (an undone add's copy stays,
@@ -75,7 +66,9 @@ std::array<double, 3> GardenSession::placeInView(double distance) const {
 
 ActionOrWhy GardenSession::addFromFile(const std::string& path, const std::string& name, const Placement& placement,
                                        int resolution, const std::string& body) const {
-    if (importedKind(path)) return importFromFile(path, name, placement, resolution, body);
+    // A mesh or a volume (.raw is refused by sizeModelFile: its file does
+    // not say its layout).
+    if (isMeshOrVolumeFile(path)) return importFromFile(path, name, placement, resolution, body);
     std::string text;
     if (std::string why = io::readText(path, text); !why.empty()) return refused("cannot open " + why);
     AddAction a;

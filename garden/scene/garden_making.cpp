@@ -56,11 +56,16 @@ bool volumeBox(const ModelToPlace& m, frep::Box3& box, VolumeDefaults& d, std::s
 
 }  // namespace
 
+bool isMeshOrVolumeFile(const std::string& file) {
+    const std::string ext = lowerExtension(file);
+    return poly::isMeshFileName(file) || ext == ".vdb" || ext == ".raw";
+}
+
 bool sizeModelFile(const ModelToPlace& m, double x, double z, SizedModel& out, VolumeDefaults& volume,
                    std::string& error) {
     const std::string ext = lowerExtension(m.file);
     const bool mesh = poly::isMeshFileName(m.file);
-    if ((mesh || ext == ".vdb" || ext == ".raw") && !m.body.empty()) {
+    if (isMeshOrVolumeFile(m.file) && !m.body.empty()) {
         error = m.file + ": a body (--body) applies to a HyperFun file, not to a " + (mesh ? "mesh" : "volume") + "\n";
         return false;
     }

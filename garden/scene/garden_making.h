@@ -51,6 +51,10 @@ struct VolumeDefaults {
 // file and line) for a file that does not read, a .raw volume (its file
 // does not say its layout) or a body given for a mesh or a volume. Also
 // the session's add (garden/app/session_adding.cpp).
+// Whether `file` is a mesh (.stl, .obj, .ply) or a volume (.vdb, .raw)
+// rather than a HyperFun program, by its extension in any case.
+bool isMeshOrVolumeFile(const std::string& file);
+
 bool sizeModelFile(const ModelToPlace& m, double x, double z, SizedModel& out, VolumeDefaults& volume,
                    std::string& error);
 
