@@ -38,32 +38,23 @@ namespace {
 
 using Vec3 = std::array<double, 3>;
 
-// Samples of one level in a box (level indices), x fastest.
-struct SampleBlock {
-    voxel::IndexBox box;
-    std::vector<float> v;
+void fillBlock(SampleBlock& block, const LodPyramid& pyramid, int level, const voxel::IndexBox& box) {
+    block.box = box;
+    block.values.resize(static_cast<std::size_t>(box.volume()));
+    pyramid.gather(level, box, block.values.data());
+}
 
-    std::array<int, 3> local{};  // level index of chunk-local sample (0, 0, 0)
-
-    void fill(const LodPyramid& pyramid, int level, const voxel::IndexBox& b, const int chunkOrigin[3]) {
-        box = b;
-        for (int a = 0; a < 3; ++a) local[static_cast<std::size_t>(a)] = chunkOrigin[a] >> level;
-        v.resize(static_cast<std::size_t>(b.volume()));
-        pyramid.gather(level, b, v.data());
-    }
-    // Chunk-local sample p (0 at the chunk's low corner).
-    float localAt(const int p[3]) const {
-        const int q[3] = {p[0] + local[0], p[1] + local[1], p[2] + local[2]};
-        return at(q);
-    }
-    Vec3 localGradient(const int p[3]) const {
-        const int q[3] = {p[0] + local[0], p[1] + local[1], p[2] + local[2]};
-        return gradient(q);
+// A gathered block read in chunk-local sample indices of its level (0 at
+// the chunk's low corner).
+class LocalBlock {
+public:
+    LocalBlock() = default;
+    LocalBlock(const SampleBlock& block, int level, const int chunkOrigin[3]) : block_(&block) {
+        for (int a = 0; a < 3; ++a) local_[a] = chunkOrigin[a] >> level;
     }
     float at(const int p[3]) const {
-        return v[static_cast<std::size_t>((p[2] - box.lo[2]) * box.extent(1) + (p[1] - box.lo[1])) *
-                     static_cast<std::size_t>(box.extent(0)) +
-                 static_cast<std::size_t>(p[0] - box.lo[0])];
+        const int q[3] = {p[0] + local_[0], p[1] + local_[1], p[2] + local_[2]};
+        return block_->at(q);
     }
     // Central differences, in this level's sample units.
     Vec3 gradient(const int p[3]) const {
@@ -76,6 +67,10 @@ struct SampleBlock {
         }
         return g;
     }
+
+private:
+    const SampleBlock* block_ = nullptr;
+    int local_[3] = {0, 0, 0};
 };
 
 // The crossing vertex of each coarse edge, kept per thread and reused by
@@ -110,26 +105,15 @@ thread_local EdgeVertexTable tEdgeVertices;
 
 class ChunkMesher {
 public:
-    ChunkMesher(const LodPyramid& pyramid, const ChunkLayout& layout, std::size_t chunk, const ChunkLod& lod)
-        : frame_(layout.frame()), lod_(lod) {
-        if (lod.level < 0 || lod.level >= pyramid.levels())
-            throw std::invalid_argument("chunk level " + std::to_string(lod.level) + " is not in the pyramid");
-        if (lod.level == 0 && lod.transitionFaces)
-            throw std::invalid_argument("a level-0 chunk has no finer neighbour to stitch to");
-        const ChunkKey k = layout.key(chunk);
-        const int key[3] = {k.x, k.y, k.z};
-        cell_ = 1 << lod.level;
-        n_ = layout.chunkSize() >> lod.level;
-        for (int a = 0; a < 3; ++a) origin_[a] = key[a] * layout.chunkSize();
-        voxel::IndexBox coarse;
-        for (int a = 0; a < 3; ++a) {
-            coarse.lo[a] = (origin_[a] >> lod.level) - 1;
-            coarse.hi[a] = (origin_[a] >> lod.level) + n_ + 1;
-        }
-        coarse_.fill(pyramid, lod.level, coarse, origin_);
+    explicit ChunkMesher(const ChunkSamples& samples) : frame_(samples.frame), lod_(samples.lod) {
+        cell_ = 1 << lod_.level;
+        n_ = samples.chunkSize >> lod_.level;
+        for (int a = 0; a < 3; ++a) origin_[a] = samples.origin[a];
+        coarse_ = LocalBlock(samples.coarse, lod_.level, origin_);
+        for (int f = 0; f < kChunkFaces; ++f)
+            if (lod_.transitionFaces & (1 << f)) fine_[f] = LocalBlock(samples.fine[f], lod_.level - 1, origin_);
         tEdgeVertices.begin(3 * static_cast<std::size_t>(n_ + 1) * static_cast<std::size_t>(n_ + 1) *
                             static_cast<std::size_t>(n_ + 1));
-        pyramid_ = &pyramid;
     }
 
     Mesh run(ChunkMeshStats& stats) {
@@ -141,7 +125,7 @@ public:
 
 private:
     // --- coarse (the chunk's level) samples, chunk-local indices 0..n -----
-    float coarseValue(const int p[3]) const { return coarse_.localAt(p); }
+    float coarseValue(const int p[3]) const { return coarse_.at(p); }
     // Level-0 index position, shrunk away from transition faces unless the
     // sample also lies on a face without transitions (pinned).
     Vec3 coarsePosition(const int p[3]) const {
@@ -158,7 +142,7 @@ private:
             if (on & (1 << f)) pos[static_cast<std::size_t>(f / 2)] += f % 2 ? -w : w;
         return pos;
     }
-    Vec3 coarseGradient(const int p[3]) const { return coarse_.localGradient(p); }
+    Vec3 coarseGradient(const int p[3]) const { return coarse_.gradient(p); }
 
     // The crossing on the coarse edge from sample p along `axis`.
     std::uint32_t coarseVertex(const int p[3], int axis) {
@@ -176,7 +160,7 @@ private:
     }
 
     // --- fine (level - 1) samples on transition faces, chunk-local 0..2n --
-    std::uint32_t fineVertex(const SampleBlock& b, const int p[3], int axis) {
+    std::uint32_t fineVertex(const LocalBlock& b, const int p[3], int axis) {
         const std::uint32_t m = static_cast<std::uint32_t>(2 * n_ + 1);
         const std::uint32_t key = ((static_cast<std::uint32_t>(axis) * m + static_cast<std::uint32_t>(p[2])) * m +
                                    static_cast<std::uint32_t>(p[1])) * m + static_cast<std::uint32_t>(p[0]);
@@ -191,7 +175,7 @@ private:
             pq[static_cast<std::size_t>(a)] = static_cast<double>(origin_[a] + q[a] * half);
         }
         const std::uint32_t id =
-            addVertex(pp, pq, b.localAt(p), b.localAt(q), b.localGradient(p), b.localGradient(q));
+            addVertex(pp, pq, b.at(p), b.at(q), b.gradient(p), b.gradient(q));
         fineVertex_.emplace(key, id);
         return id;
     }
@@ -260,17 +244,7 @@ private:
         const int a = f / 2, u = (a + 1) % 3, v = (a + 2) % 3;
         const bool high = f % 2 != 0;
         const int finePlane = high ? 2 * n_ : 0;
-        SampleBlock fine;
-        voxel::IndexBox box;
-        const int fl = lod_.level - 1;
-        for (int b = 0; b < 3; ++b) {
-            const int base = origin_[b] >> fl;
-            box.lo[b] = base - 1;
-            box.hi[b] = base + 2 * n_ + 1;
-        }
-        box.lo[a] = (origin_[a] >> fl) + finePlane - 1;
-        box.hi[a] = (origin_[a] >> fl) + finePlane + 1;
-        fine.fill(*pyramid_, fl, box, origin_);
+        const LocalBlock& fine = fine_[f];
 
         const TransitionGeometry& g = transitionGeometry();
         const auto& table = transitionTable();
@@ -284,7 +258,7 @@ private:
                     fineAt[t][a] = finePlane;
                     fineAt[t][u] = 2 * cu + t % 3;
                     fineAt[t][v] = 2 * cv + t / 3;
-                    if (fine.localAt(fineAt[t]) > 0.0f) mask |= 1 << t;
+                    if (fine.at(fineAt[t]) > 0.0f) mask |= 1 << t;
                 }
                 if (mask == 0 || mask == 511) continue;
                 ++stats.surfaceCells;
@@ -318,23 +292,66 @@ private:
 
     const voxel::VolumeFrame& frame_;
     ChunkLod lod_;
-    const LodPyramid* pyramid_ = nullptr;
     int cell_ = 1, n_ = 0;
     int origin_[3] = {0, 0, 0};  // level-0 index of the chunk's low corner
-    SampleBlock coarse_;
+    LocalBlock coarse_;
+    LocalBlock fine_[kChunkFaces];
     std::unordered_map<std::uint32_t, std::uint32_t> fineVertex_;
     Mesh mesh_;
 };
 
 }  // namespace
 
-Mesh meshChunk(const LodPyramid& pyramid, const ChunkLayout& layout, std::size_t chunk, const ChunkLod& lod,
-               ChunkMeshStats* stats) {
-    ChunkMesher mesher(pyramid, layout, chunk, lod);
+ChunkSamples gatherChunk(const LodPyramid& pyramid, const ChunkLayout& layout, std::size_t chunk, const ChunkLod& lod) {
+    if (lod.level < 0 || lod.level >= pyramid.levels())
+        throw std::invalid_argument("chunk level " + std::to_string(lod.level) + " is not in the pyramid");
+    if (lod.level == 0 && lod.transitionFaces)
+        throw std::invalid_argument("a level-0 chunk has no finer neighbour to stitch to");
+    ChunkSamples s;
+    s.frame = layout.frame();
+    s.lod = lod;
+    s.chunkSize = layout.chunkSize();
+    const ChunkKey k = layout.key(chunk);
+    const int key[3] = {k.x, k.y, k.z};
+    for (int a = 0; a < 3; ++a) s.origin[a] = key[a] * layout.chunkSize();
+    const int n = layout.chunkSize() >> lod.level;
+    voxel::IndexBox coarse;
+    for (int a = 0; a < 3; ++a) {
+        coarse.lo[a] = (s.origin[a] >> lod.level) - 1;
+        coarse.hi[a] = (s.origin[a] >> lod.level) + n + 1;
+    }
+    fillBlock(s.coarse, pyramid, lod.level, coarse);
+    // Each transition face's fine samples: the face's plane of the finer
+    // level, one sample deep on either side (for gradients).
+    const int fl = lod.level - 1;
+    for (int f = 0; f < kChunkFaces; ++f) {
+        if (!(lod.transitionFaces & (1 << f))) continue;
+        const int a = f / 2;
+        const int finePlane = f % 2 != 0 ? 2 * n : 0;
+        voxel::IndexBox box;
+        for (int b = 0; b < 3; ++b) {
+            const int base = s.origin[b] >> fl;
+            box.lo[b] = base - 1;
+            box.hi[b] = base + 2 * n + 1;
+        }
+        box.lo[a] = (s.origin[a] >> fl) + finePlane - 1;
+        box.hi[a] = (s.origin[a] >> fl) + finePlane + 1;
+        fillBlock(s.fine[f], pyramid, fl, box);
+    }
+    return s;
+}
+
+Mesh meshChunk(const ChunkSamples& samples, ChunkMeshStats* stats) {
+    ChunkMesher mesher(samples);
     ChunkMeshStats local;
     Mesh m = mesher.run(local);
     if (stats) *stats = local;
     return m;
+}
+
+Mesh meshChunk(const LodPyramid& pyramid, const ChunkLayout& layout, std::size_t chunk, const ChunkLod& lod,
+               ChunkMeshStats* stats) {
+    return meshChunk(gatherChunk(pyramid, layout, chunk, lod), stats);
 }
 
 }  // namespace hg::poly

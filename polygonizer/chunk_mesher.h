@@ -56,9 +56,43 @@ struct ChunkMeshStats {
     std::size_t surfaceCells = 0;  // cells of either kind with triangles
 };
 
+// Samples of one level in a box (level indices), x fastest.
+struct SampleBlock {
+    voxel::IndexBox box;
+    std::vector<float> values;
+
+    float at(const int p[3]) const {
+        return values[static_cast<std::size_t>((p[2] - box.lo[2]) * box.extent(1) + (p[1] - box.lo[1])) *
+                          static_cast<std::size_t>(box.extent(0)) +
+                      static_cast<std::size_t>(p[0] - box.lo[0])];
+    }
+};
+
+// Everything one chunk's mesh is made from, copied out of the pyramid by
+// gatherChunk: its level's samples (with one more on each side, for
+// gradients) and the finer level's samples on each transition face. Meshing
+// it reads nothing else, so it can run on another thread while the grid and
+// the pyramid change (the remesh queue's background meshing,
+// docs/design.md §5).
+struct ChunkSamples {
+    voxel::VolumeFrame frame;
+    ChunkLod lod;
+    int chunkSize = 0;
+    int origin[3] = {0, 0, 0};  // level-0 index of the chunk's low corner
+    SampleBlock coarse;
+    SampleBlock fine[kChunkFaces];  // empty where the face has no transition
+};
+
+// The chunk's samples at `lod`. The pyramid must have more than `lod.level`
+// levels; throws std::invalid_argument otherwise, or for a level-0 chunk
+// with transition faces.
+ChunkSamples gatherChunk(const LodPyramid& pyramid, const ChunkLayout& layout, std::size_t chunk, const ChunkLod& lod);
+
 // The chunk's mesh in model units, with unit normals from the field's
 // gradient (central differences on the level's samples) and vertices shared
-// inside the chunk. The pyramid must have more than `lod.level` levels.
+// inside the chunk.
+Mesh meshChunk(const ChunkSamples& samples, ChunkMeshStats* stats = nullptr);
+// The same, gathered first.
 Mesh meshChunk(const LodPyramid& pyramid, const ChunkLayout& layout, std::size_t chunk, const ChunkLod& lod,
                ChunkMeshStats* stats = nullptr);
 

@@ -8,6 +8,7 @@
 #include <tuple>
 
 #include "polygonizer/lod_selection.h"
+#include "polygonizer/meshing_worker.h"
 
 namespace hg::poly {
 
@@ -22,6 +23,10 @@ RemeshQueue::RemeshQueue(const LodPyramid& pyramid, const ChunkLayout& layout, c
         slots_[i].target = lods[i];
         markDirty(i);
     }
+}
+
+RemeshQueue::~RemeshQueue() {
+    if (job_) job_->abandon();
 }
 
 void RemeshQueue::markDirty(std::size_t chunk) {
@@ -77,7 +82,7 @@ std::vector<std::size_t> RemeshQueue::order() const {
     std::vector<std::tuple<int, double, int, std::size_t>> keyed;
     for (std::size_t i = 0; i < slots_.size(); ++i) {
         const Slot& s = slots_[i];
-        if (!s.dirty || (s.staged && s.stagedStamp == s.stamp)) continue;
+        if (!s.dirty || s.inJob || (s.staged && s.stagedStamp == s.stamp)) continue;
         keyed.emplace_back(-s.priority, distanceToChunk(layout_, i, viewer_), -s.target.level, i);
     }
     std::sort(keyed.begin(), keyed.end());
@@ -87,12 +92,73 @@ std::vector<std::size_t> RemeshQueue::order() const {
     return out;
 }
 
+// A mesh made from the chunk's samples of `stamp`: staged unless the chunk
+// changed since (then it stays dirty and is meshed again).
+void RemeshQueue::stage(std::size_t chunk, std::shared_ptr<const Mesh> mesh, const ChunkLod& lod, std::uint64_t stamp,
+                        RemeshReport& report) {
+    report.chunks.push_back(chunk);
+    ++report.meshed;
+    report.triangles += mesh->triangleCount();
+    Slot& s = slots_[chunk];
+    if (stamp != s.stamp) return;
+    s.staged = std::move(mesh);
+    s.stagedLod = lod;
+    s.stagedStamp = stamp;
+}
+
+void RemeshQueue::takeJob(bool wait, RemeshReport& report) {
+    if (!job_ || (!wait && !job_->done())) return;
+    job_->wait();
+    const std::shared_ptr<MeshingJob> job = std::move(job_);
+    job_.reset();
+    for (std::size_t k = 0; k < job->chunks.size(); ++k) slots_[job->chunks[k]].inJob = false;
+    if (job->error) std::rethrow_exception(job->error);
+    if (job->meshes.size() != job->chunks.size()) return;  // dropped by a worker that stopped: mesh again
+    for (std::size_t k = 0; k < job->chunks.size(); ++k)
+        stage(job->chunks[k], std::move(job->meshes[k]), job->lods[k], job->stamps[k], report);
+}
+
+RemeshReport RemeshQueue::processInBackground(MeshingWorker& worker, const RemeshBudget& budget) {
+    const auto start = std::chrono::steady_clock::now();
+    auto elapsedMs = [&start] {
+        return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    };
+    RemeshReport report;
+    takeJob(false, report);
+    showCompleteGroups(budget, report);
+    if (report.shown > 0) ++shownGeneration_;
+    if (!job_) {
+        const std::vector<std::size_t> todo = order();
+        const std::size_t threads = static_cast<std::size_t>(std::max(1, tbb::this_task_arena::max_concurrency()));
+        const std::size_t most = budget.chunks > 0 ? budget.chunks : 4 * threads;
+        auto job = std::make_shared<MeshingJob>();
+        for (std::size_t i : todo) {
+            if (job->chunks.size() >= most) break;
+            if (!job->chunks.empty() && budget.milliseconds > 0.0 && elapsedMs() > budget.milliseconds) break;
+            Slot& s = slots_[i];
+            job->samples.push_back(gatherChunk(pyramid_, layout_, i, s.target));
+            job->chunks.push_back(i);
+            job->lods.push_back(s.target);
+            job->stamps.push_back(s.stamp);
+            s.inJob = true;
+        }
+        if (!job->chunks.empty()) {
+            job_ = job;
+            worker.submit(std::move(job));
+        }
+    }
+    report.pending = pending();
+    report.seconds = elapsedMs() / 1000.0;
+    return report;
+}
+
 RemeshReport RemeshQueue::process(const RemeshBudget& budget) {
     const auto start = std::chrono::steady_clock::now();
     auto elapsedMs = [&start] {
         return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     };
     RemeshReport report;
+    takeJob(true, report);  // a job's meshes are not counted against the budget
     const std::vector<std::size_t> todo = order();
     const std::size_t batch = static_cast<std::size_t>(std::max(1, tbb::this_task_arena::max_concurrency()));
     std::size_t next = 0;
@@ -103,9 +169,9 @@ RemeshReport RemeshQueue::process(const RemeshBudget& budget) {
         // batch starts only if one like the last still fits: stopping once
         // the budget is spent would overshoot it by a batch.
         const double before = elapsedMs();
-        if (report.meshed > 0 && budget.milliseconds > 0.0 && before + lastBatchMs > budget.milliseconds) break;
+        if (next > 0 && budget.milliseconds > 0.0 && before + lastBatchMs > budget.milliseconds) break;
         std::size_t take = std::min(batch, todo.size() - next);
-        if (budget.chunks > 0) take = std::min(take, budget.chunks - report.meshed);
+        if (budget.chunks > 0) take = std::min(take, budget.chunks - next);
         if (take == 0) break;
         std::vector<std::shared_ptr<const Mesh>> made(take);
         tbb::parallel_for(std::size_t{0}, take, [&](std::size_t k) {
@@ -113,14 +179,9 @@ RemeshReport RemeshQueue::process(const RemeshBudget& budget) {
             made[k] = std::make_shared<const Mesh>(meshChunk(pyramid_, layout_, i, slots_[i].target));
         });
         for (std::size_t k = 0; k < take; ++k) {
-            report.chunks.push_back(todo[next + k]);
-            Slot& s = slots_[todo[next + k]];
-            s.staged = std::move(made[k]);
-            s.stagedLod = s.target;
-            s.stagedStamp = s.stamp;
-            report.triangles += s.staged->triangleCount();
+            const Slot& s = slots_[todo[next + k]];
+            stage(todo[next + k], std::move(made[k]), s.target, s.stamp, report);
         }
-        report.meshed += take;
         next += take;
         lastBatchMs = elapsedMs() - before;
     }

@@ -10,6 +10,11 @@
 //                     while the next batch is expected to fit the budget
 //                     (milliseconds or chunks); one batch (a chunk per
 //                     worker) always runs.
+//   processInBackground(worker, budget)
+//                     the same work off the calling thread: meshes the
+//                     worker has finished are taken, complete groups shown,
+//                     and the next dirty chunks' samples gathered here and
+//                     handed to the worker (meshing_worker.h). Never waits.
 //
 // A chunk keeps showing its old mesh until its new one is ready, and new
 // meshes are shown a group at a time: a group is a set of dirty chunks
@@ -29,6 +34,9 @@
 #include "polygonizer/chunk_mesher.h"
 
 namespace hg::poly {
+
+class MeshingWorker;
+struct MeshingJob;
 
 struct RemeshBudget {
     double milliseconds = 0.0;  // 0: no time limit
@@ -69,7 +77,18 @@ public:
     void setPriority(std::size_t chunk, int priority);
     void clearPriorities();
 
+    // Waits for a job under way first (its meshes count as meshed here).
     RemeshReport process(const RemeshBudget& budget);
+    // Budget: `milliseconds` bounds the gathering on this thread (one chunk
+    // always), `chunks` the chunks per job (0: four per hardware thread);
+    // the bytes shown as in process(). One job per queue is under way at a
+    // time: a new one is handed over once the last one's meshes are taken.
+    RemeshReport processInBackground(MeshingWorker& worker, const RemeshBudget& budget);
+    // A job handed to the worker and not yet taken back.
+    bool meshing() const { return job_ != nullptr; }
+    ~RemeshQueue();
+    RemeshQueue(const RemeshQueue&) = delete;
+    RemeshQueue& operator=(const RemeshQueue&) = delete;
 
     // What is on screen: the mesh (null before the chunk's first mesh), the
     // level it was made at, and a counter that grows when it is replaced
@@ -92,6 +111,7 @@ private:
         std::shared_ptr<const Mesh> shown, staged;
         ChunkLod shownLod, target, stagedLod;
         bool dirty = false;
+        bool inJob = false;  // its samples are with the worker
         std::uint64_t stamp = 0, stagedStamp = 0;  // staged is current when the stamps agree
         std::uint64_t version = 0;
         int priority = 0;
@@ -100,6 +120,10 @@ private:
     void markDirty(std::size_t chunk);
     std::vector<std::size_t> order() const;
     void showCompleteGroups(const RemeshBudget& budget, RemeshReport& report);
+    void stage(std::size_t chunk, std::shared_ptr<const Mesh> mesh, const ChunkLod& lod, std::uint64_t stamp,
+               RemeshReport& report);
+    // Takes the job's meshes if it has finished (or, with `wait`, once it has).
+    void takeJob(bool wait, RemeshReport& report);
 
     const LodPyramid& pyramid_;
     const ChunkLayout& layout_;
@@ -108,6 +132,7 @@ private:
     std::uint64_t shownGeneration_ = 0;
     std::size_t dirty_ = 0;
     std::size_t shownTriangles_ = 0;
+    std::shared_ptr<MeshingJob> job_;  // under way on a worker
 };
 
 }  // namespace hg::poly

@@ -33,6 +33,13 @@
 //     renderer uploads; --upload-bytes sets the session's per-frame
 //     budget), peak resident memory of the row.
 //
+//  4. Stages (issue 21): content/replays/sculpting_session.json (carving)
+//     and walk_and_morph.json in timing mode (the morph and the remesh on
+//     the scheduler's time), headless, frames paced at 90 Hz, remeshing
+//     within the frame and off the frame thread in turn: p99 and max CPU ms
+//     per stage, and the frames whose stages before the render went over
+//     the budget.
+//
 // Prints Markdown tables; --json FILE writes the rows too.
 //
 //   ./build/release/bench/bench_garden [--json FILE] [--filter NAME] [--repeat N]
@@ -43,7 +50,8 @@
 //
 // Row names for --filter: morph/128/1600 ... morph/256/1000000,
 // nav/keys/lod, nav/keys/nolod, nav/all/lod, nav/all/nolod, scale/48,
-// scale/200, scale/1000.
+// scale/200, scale/1000, stages/carve/in-frame, stages/carve/off-thread,
+// stages/morph/in-frame, stages/morph/off-thread.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -873,6 +881,111 @@ void scaleTable(const Options& o, nlohmann::json& json) {
 
 }  // namespace
 
+// --- 4. the frame thread's stages (issue 21) ------------------------------------
+
+// The render stage of a display: each frame's render returns at the next
+// 11.1 ms mark after the last (vsync), so the frames come at 90 a second
+// and the worker meshes while the frame waits there, as it would in a
+// window or a headset. Headless otherwise.
+class PacedSink : public FrameRenderer {
+public:
+    ViewUpload upload(GardenSession&, double) override { return {}; }
+    ViewDraw render(GardenSession&) override {
+        next_ = std::max(next_ + std::chrono::microseconds(11111), Clock::now());
+        std::this_thread::sleep_until(next_);
+        return {};
+    }
+    std::string screenshot(const std::string&) override { return "headless"; }
+
+private:
+    Clock::time_point next_ = Clock::now();
+};
+
+// The carving and morph replays in timing mode (the scheduler's time for
+// the morph and the remesh), with remeshing within the frame and off the
+// frame thread, one after the other on the same machine: per stage p99 and
+// max, and the frames whose stages before the render (input, levels,
+// morph, remesh) went over the 11.1 ms budget.
+void stagesTable(const Options& o, nlohmann::json& json) {
+    struct Replay {
+        const char* name;
+        const char* file;
+    };
+    const Replay replays[] = {{"carve", "sculpting_session.json"}, {"morph", "walk_and_morph.json"}};
+    const char* modes[] = {"in-frame", "off-thread"};
+    bool anyRow = false;
+    for (const Replay& r : replays)
+        for (const char* m : modes) anyRow = anyRow || o.bench.matches(std::string("stages/") + r.name + "/" + m);
+    if (!anyRow) return;
+    std::printf("Stages before the render: content/replays' carving and morph replays, headless, the morph and the\n"
+                "remesh on the scheduler's time, frames paced at 90 Hz. CPU ms per frame: p99 / max.\n\n");
+    std::printf("| replay | remesh | frames | input | lod | morph | remesh | before render | frames over 11.1 ms | "
+                "chunks meshed | played in (s) |\n");
+    std::printf("|---|---|---:|---|---|---|---|---|---:|---:|---:|\n");
+    for (const Replay& rp : replays)
+        for (const char* mode : modes) {
+            const std::string row = std::string("stages/") + rp.name + "/" + mode;
+            if (!o.bench.matches(row)) continue;
+            const std::string path = std::string(HG_SOURCE_DIR) + "/content/replays/" + rp.file;
+            ReplayScript script;
+            try {
+                script = loadReplayScript(path);
+            } catch (const std::exception& e) {
+                std::fprintf(stderr, "%s: %s\n", row.c_str(), e.what());
+                continue;
+            }
+            GardenLoad load = loadGarden(script.garden);
+            if (!load.ok()) {
+                std::fprintf(stderr, "%s: %s\n", row.c_str(), load.error.c_str());
+                continue;
+            }
+            SessionSettings settings;
+            settings.remeshChunksPerFrame = 0;
+            settings.morphSamplesPerFrame = 0;
+            settings.remeshOffFrameThread = std::string(mode) == "off-thread";
+            settings.viewportHeight = script.viewport[1];
+            GardenSession session(std::move(load), settings);
+            PacedSink sink;
+            const auto t0 = Clock::now();
+            ReplayResult r = runReplay(script, session, &sink, ReplayOptions{});
+            const double seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+            if (!r.ok()) {
+                std::fprintf(stderr, "%s: %s\n", row.c_str(), r.error.c_str());
+                continue;
+            }
+            std::array<std::vector<double>, kStageCount> per;
+            std::vector<double> before;
+            std::size_t over = 0, meshed = 0;
+            for (const FrameStats& f : r.stats) {
+                for (std::size_t k = 0; k < kStageCount; ++k) per[k].push_back(f.stageMs[k]);
+                const double b = stage(f.stageMs, Stage::Input) + stage(f.stageMs, Stage::Lod) +
+                                 stage(f.stageMs, Stage::Morph) + stage(f.stageMs, Stage::Remesh) +
+                                 stage(f.stageMs, Stage::Upload);
+                before.push_back(b);
+                over += b > 11.1 ? 1 : 0;
+                meshed += f.chunksMeshed;
+            }
+            auto cell = [](const std::vector<double>& v) {
+                const Spread s = spread(v);
+                char b[48];
+                std::snprintf(b, sizeof b, "%.2f / %.2f", s.p99, s.max);
+                return std::string(b);
+            };
+            auto at = [&per](Stage s) -> const std::vector<double>& { return per[static_cast<std::size_t>(s)]; };
+            std::printf("| %s | %s | %zu | %s | %s | %s | %s | %s | %zu | %zu | %.1f |\n", rp.name, mode, r.stats.size(),
+                        cell(at(Stage::Input)).c_str(), cell(at(Stage::Lod)).c_str(), cell(at(Stage::Morph)).c_str(),
+                        cell(at(Stage::Remesh)).c_str(), cell(before).c_str(), over, meshed, seconds);
+            std::fflush(stdout);
+            nlohmann::json j = {{"name", row}, {"frames", r.stats.size()}, {"over_budget", over},
+                                {"chunks_meshed", meshed}, {"seconds", seconds},
+                                {"before_render", spreadJson(spread(before))}};
+            for (int k = 0; k < kStageCount; ++k)
+                j["stages"][stageName(static_cast<Stage>(k))] = spreadJson(spread(per[static_cast<std::size_t>(k)]));
+            json["stages"].push_back(j);
+        }
+    std::printf("\n");
+}
+
 int main(int argc, char** argv) {
     Options o;
     if (!parseOptions(argc, argv, o)) return 2;
@@ -883,7 +996,8 @@ int main(int argc, char** argv) {
     }
 #endif
     nlohmann::json json = {{"morph", nlohmann::json::array()}, {"navigation", nlohmann::json::array()},
-                           {"navigation_ratio", nlohmann::json::array()}, {"scale", nlohmann::json::array()}};
+                           {"navigation_ratio", nlohmann::json::array()}, {"scale", nlohmann::json::array()},
+                           {"stages", nlohmann::json::array()}};
     json["options"] = {{"offscreen", o.offscreen}, {"viewport", {o.width, o.height}}, {"max_frames", o.maxFrames},
                        {"remesh_chunks", o.remeshChunks}, {"walk_speed", o.walkSpeed}, {"repeat", o.bench.repeat},
                        {"scale_resolution", o.scaleResolution}, {"scale_frames", o.scaleFrames},
@@ -891,6 +1005,7 @@ int main(int argc, char** argv) {
     morphTable(o, json);
     navigationTable(o, json);
     scaleTable(o, json);
+    stagesTable(o, json);
     if (!o.bench.jsonPath.empty()) std::ofstream(o.bench.jsonPath) << json.dump(2) << "\n";
     return 0;
 }

@@ -3,6 +3,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -15,6 +16,7 @@
 #include "garden/morph/morph_sources.h"
 #include "garden/sculpt/sculpture_edits.h"
 #include "garden/scene/to_glm.h"
+#include "polygonizer/meshing_worker.h"
 #include "voxel/sampler.h"
 
 namespace hg::garden {
@@ -414,9 +416,13 @@ void GardenSession::remesh() {
         if (sculptures_[i].onShow() && sculptures_[i].queue->pending() > 0)
             order.emplace_back(glm::length(sculptures_[i].worldCentre() - navigator_.eye()), i);
     std::sort(order.begin(), order.end());
+    const std::size_t byteLimit = settings_.uploadBytesPerFrame;
+    if (settings_.remeshChunksPerFrame == 0 && settings_.remeshOffFrameThread) {
+        remeshInBackground(order);
+        return;
+    }
     bool meshed = false;
     std::size_t chunksLeft = settings_.remeshChunksPerFrame;
-    const std::size_t byteLimit = settings_.uploadBytesPerFrame;
     for (const auto& [distance, i] : order) {
         poly::RemeshBudget budget;
         if (byteLimit > 0) {
@@ -437,6 +443,31 @@ void GardenSession::remesh() {
         stats().groupsShown += r.groupsShown;
         meshed = meshed || r.meshed > 0;
         chunksLeft -= std::min(chunksLeft, r.meshed);
+    }
+}
+
+// The frame gathers samples and shows finished meshes; the worker meshes.
+// The gathering shares the stage's allowance between the sculptures, the
+// nearest first (each gathers one chunk at least, when it has one dirty).
+void GardenSession::remeshInBackground(const std::vector<std::pair<float, std::size_t>>& order) {
+    if (!meshing_) meshing_ = std::make_unique<poly::MeshingWorker>();
+    const std::size_t byteLimit = settings_.uploadBytesPerFrame;
+    const double allowance = scheduler_.allowanceMs(Stage::Remesh);
+    const auto start = std::chrono::steady_clock::now();
+    for (const auto& entry : order) {
+        const double spent =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        poly::RemeshBudget budget;
+        budget.milliseconds = std::max(0.05, allowance - spent);
+        if (byteLimit > 0) {
+            budget.showBytes = byteLimit - std::min(byteLimit, stats().meshBytesShown);
+            budget.oversized = stats().groupsShown == 0;
+        }
+        const poly::RemeshReport r = sculptures_[entry.second].queue->processInBackground(*meshing_, budget);
+        stats().chunksMeshed += r.meshed;
+        stats().chunksShown += r.shown;
+        stats().meshBytesShown += r.bytesShown;
+        stats().groupsShown += r.groupsShown;
     }
 }
 

@@ -66,8 +66,15 @@ struct SessionSettings {
     std::uint64_t morphSamplesPerFrame = 0;
     // Chunks remeshed per frame (0: the scheduler's remesh allowance). With
     // both counts fixed a frame does the same work whatever the clock says:
-    // what replays use, so that they are deterministic.
+    // what replays use, so that they are deterministic. A count meshes in
+    // the frame; the allowance meshes off the frame thread (the frame only
+    // gathers the chunks' samples and shows the meshes finished since the
+    // last frame: it never waits for a mesh).
     std::size_t remeshChunksPerFrame = 0;
+    // With the allowance: mesh off the frame thread (false: within the
+    // frame, in batches while the allowance lasts; kept to measure the two
+    // in one run, bench_garden's stages rows).
+    bool remeshOffFrameThread = true;
     int chunkSize = 32;
     int maxLevel = 3;
     double pixelError = 1.0;
@@ -417,6 +424,7 @@ private:
     void selectLevels();
     void morph();
     void remesh();
+    void remeshInBackground(const std::vector<std::pair<float, std::size_t>>& order);
     void uploadAndRender(ViewSink& views);
     const FrameStats& endFrame();
 
@@ -542,6 +550,9 @@ private:
 
     GardenLoad load_;
     SessionSettings settings_;
+    // Meshes chunks off the frame thread (made at the first use); declared
+    // before the sculptures so that their queues' jobs go first.
+    std::unique_ptr<poly::MeshingWorker> meshing_;
     std::vector<Sculpture> sculptures_;
     Navigator navigator_;
     FrameScheduler scheduler_;

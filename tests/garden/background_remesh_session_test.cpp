@@ -1,0 +1,97 @@
+// The running garden meshing off the frame thread (the scheduler's remesh
+// allowance, SessionSettings::remeshOffFrameThread): a walk, a morph and
+// strokes made while chunks are with the worker settle on the meshes of the
+// grids as they are, the same meshes as remeshing within the frame, and the
+// frames keep running while the worker meshes.
+#include <gtest/gtest.h>
+
+#include "garden/app/garden_session.h"
+#include "garden/replay/replay_runner.h"
+#include "session_garden.h"
+
+namespace hg::garden {
+namespace {
+
+class BackgroundRemeshSession : public test::SmallGarden {};
+
+ReplayScript walkMorphAndCarve(const std::string& garden) {
+    return parseReplayScript(R"({
+      "garden": ")" + garden + R"(",
+      "steps": [
+        {"frames": 10, "navigation": {"thumbstick": [0, 1]}},
+        {"commands": [{"morph_weights": [0.2, 0.5, 0.3]}]},
+        {"commands": [{"stroke": {"sculpture": "c", "tool": "carve", "radius": 0.1,
+                                  "path": [[2.45, 0.9, 1.3], [2.5, 0.6, 1.4]]}}]},
+        {"frames": 1},
+        {"commands": [{"stroke": {"sculpture": "c", "tool": "add", "radius": 0.08,
+                                  "path": [[1.45, 0.5, 1.2], [1.5, 0.8, 1.2]]}}]},
+        {"frames": 3, "navigation": {"thumbstick": [0.5, 0.5]}},
+        {"until_idle": true, "frames": 20000}
+      ]})", "walk.json", "");
+}
+
+struct Shown {
+    std::vector<std::vector<float>> positions;
+    std::vector<std::vector<std::uint32_t>> indices;
+};
+
+Shown shownMeshes(const GardenSession& s) {
+    Shown out;
+    for (const Sculpture& sc : s.sculptures()) {
+        if (!sc.onShow()) continue;
+        for (std::size_t c = 0; c < sc.queue->count(); ++c) {
+            const auto m = sc.queue->mesh(c);
+            out.positions.push_back(m ? m->positions : std::vector<float>{});
+            out.indices.push_back(m ? m->indices : std::vector<std::uint32_t>{});
+        }
+    }
+    return out;
+}
+
+TEST_F(BackgroundRemeshSession, SettlesOnTheSameMeshesAsRemeshingInTheFrame) {
+    const ReplayScript script = walkMorphAndCarve(dir.string() + "/garden.json");
+    Shown in[2];
+    std::size_t framesWhileMeshing = 0;
+    for (int offThread = 0; offThread < 2; ++offThread) {
+        SessionSettings settings = test::smallSessionSettings();
+        settings.remeshChunksPerFrame = 0;  // the scheduler's allowance
+        settings.remeshOffFrameThread = offThread != 0;
+        GardenSession s(loadGarden(writeGarden()), settings);
+        const ReplayResult r = runReplay(script, s, nullptr, ReplayOptions{});
+        ASSERT_TRUE(r.ok()) << r.error;
+        ASSERT_TRUE(s.idle());
+        in[offThread] = shownMeshes(s);
+        if (offThread) {
+            // Frames that showed nothing new while chunks were pending: the
+            // frame ran on while the worker meshed.
+            for (const FrameStats& f : r.stats) framesWhileMeshing += f.remeshPending > 0 && f.chunksMeshed == 0;
+        }
+        // The morph result shows the mesh of its from-scratch grid.
+        const Sculpture& result = s.sculptures()[static_cast<std::size_t>(s.findSculpture("metamorphosis"))];
+        const std::unique_ptr<voxel::Volume> scratch = s.blendFromScratch();
+        poly::LodPyramid pyramid(*scratch, s.settings().maxLevel + 1);
+        for (std::size_t c = 0; c < result.queue->count(); ++c) {
+            const poly::Mesh fresh = poly::meshChunk(pyramid, *result.layout, c, result.queue->shownLod(c));
+            ASSERT_TRUE(result.queue->mesh(c));
+            EXPECT_EQ(result.queue->mesh(c)->positions, fresh.positions) << "chunk " << c;
+        }
+        // Ball c, carved and added to, shows its grid's meshes.
+        const Sculpture& c = s.sculptures()[static_cast<std::size_t>(s.findSculpture("c"))];
+        poly::LodPyramid cp(*c.volume, s.settings().maxLevel + 1);
+        for (std::size_t k = 0; k < c.queue->count(); ++k) {
+            const poly::Mesh fresh = poly::meshChunk(cp, *c.layout, k, c.queue->shownLod(k));
+            ASSERT_TRUE(c.queue->mesh(k));
+            EXPECT_EQ(c.queue->mesh(k)->positions, fresh.positions) << "chunk " << k;
+            EXPECT_EQ(c.queue->mesh(k)->indices, fresh.indices) << "chunk " << k;
+        }
+    }
+    ASSERT_EQ(in[0].positions.size(), in[1].positions.size());
+    for (std::size_t i = 0; i < in[0].positions.size(); ++i) {
+        EXPECT_EQ(in[0].positions[i], in[1].positions[i]) << "chunk " << i;
+        EXPECT_EQ(in[0].indices[i], in[1].indices[i]) << "chunk " << i;
+    }
+    EXPECT_GT(framesWhileMeshing, 0u) << "off the frame thread, a frame does not wait for the worker";
+}
+
+}  // namespace
+}  // namespace hg::garden
