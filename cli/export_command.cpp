@@ -58,7 +58,7 @@ int runExport(const ExportOptions& options) {
     std::string why;
     {
         ProgressBar bar("export " + s.name);
-        why = exportSculptureFile(*session, index, options.output, fo, report, [&](double f) { bar.update(f); });
+        why = exportSculptureFile(*session, index, options.output, fo, report, &bar);
     }
     if (!report.warning.empty()) std::cerr << "warning: " << report.warning << "\n";
     if (!why.empty()) {

@@ -13,11 +13,10 @@ ProgressBar::~ProgressBar() {
     if (drawn_) std::fputc('\n', stderr);
 }
 
-void ProgressBar::update(double fraction) {
-    if (!enabled_) return;
-    std::lock_guard<std::mutex> lock(mutex_);
+bool ProgressBar::report(double fraction) {
+    if (!enabled_) return false;
     int percent = static_cast<int>(std::clamp(fraction, 0.0, 1.0) * 100.0);
-    if (percent == lastPercent_) return;
+    if (percent == lastPercent_) return false;
     lastPercent_ = percent;
     constexpr int kWidth = 40;
     int filled = percent * kWidth / 100;
@@ -26,6 +25,7 @@ void ProgressBar::update(double fraction) {
     std::fprintf(stderr, "\r%s [%s] %3d%%", label_.c_str(), bar.c_str(), percent);
     std::fflush(stderr);
     drawn_ = true;
+    return false;
 }
 
 }  // namespace hg::garden::cli

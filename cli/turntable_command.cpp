@@ -58,7 +58,7 @@ int runTurntable(const TurntableCommandOptions& options) {
     std::string why;
     {
         ProgressBar bar("turntable " + s.name);
-        why = renderTurntable(*session, index, to, options.output, written, [&](double f) { bar.update(f); });
+        why = renderTurntable(*session, index, to, options.output, written, &bar);
     }
     if (!why.empty()) {
         std::cerr << "error: " << why << "\n";

@@ -95,7 +95,7 @@ int runVoxelize(const VoxelizeOptions& o) {
     voxel::VoxelizeResult result;
     {
         ProgressBar bar("voxelize");
-        options.progress = [&bar](double f) { bar.update(f); };
+        options.progress = &bar;
         result = voxel::voxelize(model, request, options);
     }
     if (!result.volume) return fail(o.model.file, result.error);

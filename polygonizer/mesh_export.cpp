@@ -27,6 +27,21 @@ using Clock = std::chrono::steady_clock;
 
 bool positiveFinite(double v) { return v > 0.0 && std::isfinite(v); }
 
+// The share of the progress that making the mesh or the grid takes; the
+// rest is validating, simplifying and writing.
+constexpr double kMakeShare = 0.9;
+
+// True, and the report says so, when the export is to stop: asked just
+// before the write, so a cancelled export writes nothing.
+bool cancelledBeforeWrite(io::Progress* progress, MeshExportReport& report) {
+    report.cancelled = progress && progress->interrupted();
+    return report.cancelled;
+}
+
+void reportDone(io::Progress* progress) {
+    if (progress) progress->interrupted(1.0);
+}
+
 void fillGeometry(const MeshReport& r, MeshExportReport& report) {
     report.triangles = r.triangles;
     report.vertices = r.vertices;
@@ -58,31 +73,33 @@ void simplify(Mesh& mesh, double error, MeshExportReport& report) {
 
 // A grid's level set written as .vdb; the report's geometry from its mesh.
 std::string writeVdbOf(const voxel::Volume& volume, const MeshExportOptions& options, const std::string& path,
-                       MeshExportReport& report) {
+                       MeshExportReport& report, io::Progress* progress) {
     const Mesh mesh = meshVolume(volume);
     if (mesh.empty()) return "the model has no surface inside the box";
     fillGeometry(validateMesh(mesh), report);
     report.triangles = report.vertices = 0;
+    if (cancelledBeforeWrite(progress, report)) return io::kCancelled;
     return voxel::writeLevelSet(volume, path, options.metresPerUnit);
 }
 
 std::string exportVdb(const frep::Model& model, const frep::Box3& box, const MeshExportOptions& options,
-                      const std::string& path, MeshExportReport& report, const ExportProgress& progress) {
+                      const std::string& path, MeshExportReport& report, io::Progress* progress) {
     voxel::VolumeRequest req;
     req.box = box;
     req.resolution = options.resolution;
     req.source.body = model.body().spelling;
     voxel::SampleOptions so;
     so.memoryLimit = options.memoryLimitMiB << 20;
-    // Sampled on TBB workers: the callback must come on this thread only.
+    io::ProgressRange sampling(progress, 0.0, kMakeShare);
+    so.progress = &sampling;
     voxel::VoxelizeResult v = voxel::voxelize(model, req, so);
+    report.cancelled = v.cancelled;
     if (!v.volume) return v.error;
     report.estimatedBytes = v.stats.estimatedBytes;
     report.limitBytes = voxel::memoryLimit(so.memoryLimit);
     report.peakTileBytes = v.volume->memoryBytes();
-    if (progress) progress(0.5);
-    if (std::string why = writeVdbOf(*v.volume, options, path, report); !why.empty()) return why;
-    if (progress) progress(1.0);
+    if (std::string why = writeVdbOf(*v.volume, options, path, report, progress); !why.empty()) return why;
+    reportDone(progress);
     return "";
 }
 
@@ -131,7 +148,7 @@ std::string checkRequest(const MeshExportOptions& options, const std::string& pa
 // A finished mesh validated (never written when not closed, manifold and
 // outward), optionally simplified, and written in the report's format.
 std::string writeMeshFile(Mesh& mesh, const MeshExportOptions& options, const std::string& path,
-                          MeshExportReport& report) {
+                          MeshExportReport& report, io::Progress* progress) {
     const MeshFormat format = report.format;
     MeshReport checked = validateMesh(mesh);
     if (!checked.ok()) return describeUnfitMesh(checked, format, options);
@@ -140,6 +157,7 @@ std::string writeMeshFile(Mesh& mesh, const MeshExportOptions& options, const st
         if (report.simplified) checked = validateMesh(mesh);
     }
     fillGeometry(checked, report);
+    if (cancelledBeforeWrite(progress, report)) return io::kCancelled;
     switch (format) {
         case MeshFormat::Stl: return writeStl(mesh, path, options.ascii, options.mmPerUnit);
         case MeshFormat::Obj: return writeObj(mesh, path, options.metresPerUnit);
@@ -152,7 +170,7 @@ std::string writeMeshFile(Mesh& mesh, const MeshExportOptions& options, const st
 }  // namespace
 
 std::string exportMesh(const frep::Model& model, const frep::Box3& box, const MeshExportOptions& options,
-                       const std::string& path, MeshExportReport& report, const ExportProgress& progress) {
+                       const std::string& path, MeshExportReport& report, io::Progress* progress) {
     const auto start = Clock::now();
     report = MeshExportReport{};
     if (std::string why = checkRequest(options, path, report); !why.empty()) return why;
@@ -166,7 +184,8 @@ std::string exportMesh(const frep::Model& model, const frep::Box3& box, const Me
     to.resolution = options.resolution;
     to.tileSize = options.tileSize;
     to.memoryLimit = options.memoryLimitMiB << 20;
-    to.progress = progress;
+    io::ProgressRange meshing(progress, 0.0, kMakeShare);
+    to.progress = &meshing;
     to.bytesPerTriangle = options.simplifyError > 0.0 ? kSimplifyBytesPerTriangle : kMeshBytesPerTriangle;
     TiledMeshResult tiled = meshModelTiled(model, box, to);
     report.tiles = tiled.stats.tiles;
@@ -179,33 +198,35 @@ std::string exportMesh(const frep::Model& model, const frep::Box3& box, const Me
     report.sampleSeconds = tiled.stats.sampleSeconds;
     report.leafTapeMean = tiled.stats.leafTapeMean;
     report.leafTapeMax = tiled.stats.leafTapeMax;
+    report.cancelled = tiled.cancelled;
     if (!tiled.error.empty()) return tiled.error;
-    std::string why = writeMeshFile(tiled.mesh, options, path, report);
+    std::string why = writeMeshFile(tiled.mesh, options, path, report, progress);
+    if (why.empty()) reportDone(progress);
     report.seconds = std::chrono::duration<double>(Clock::now() - start).count();
     return why;
 }
 
 std::string exportVolumeMesh(const voxel::Volume& volume, const MeshExportOptions& options, const std::string& path,
-                             MeshExportReport& report, const ExportProgress& progress) {
+                             MeshExportReport& report, io::Progress* progress) {
     const auto start = Clock::now();
     report = MeshExportReport{};
     if (std::string why = checkRequest(options, path, report); !why.empty()) return why;
     report.peakTileBytes = volume.memoryBytes();
     report.limitBytes = voxel::memoryLimit(options.memoryLimitMiB << 20);
     if (report.format == MeshFormat::Vdb) {
-        if (progress) progress(0.5);
-        std::string why = writeVdbOf(volume, options, path, report);
-        if (why.empty() && progress) progress(1.0);
+        if (progress) progress->interrupted(0.5);
+        std::string why = writeVdbOf(volume, options, path, report, progress);
+        if (why.empty()) reportDone(progress);
         report.seconds = std::chrono::duration<double>(Clock::now() - start).count();
         return why;
     }
     ExportStats stats;
     Mesh mesh = meshVolume(volume, &stats);
     report.meshSeconds = stats.seconds;
-    if (progress) progress(0.5);
+    if (progress) progress->interrupted(0.5);
     if (mesh.empty()) return "the grid has no surface";
-    const std::string why = writeMeshFile(mesh, options, path, report);
-    if (why.empty() && progress) progress(1.0);
+    const std::string why = writeMeshFile(mesh, options, path, report, progress);
+    if (why.empty()) reportDone(progress);
     report.seconds = std::chrono::duration<double>(Clock::now() - start).count();
     return why;
 }

@@ -18,11 +18,11 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <functional>
 #include <string>
 
 #include "frep/box.h"
 #include "frep/model.h"
+#include "io/progress.h"
 #include "polygonizer/mesh_validation.h"
 #include "voxel/volume.h"
 
@@ -71,10 +71,8 @@ struct MeshExportReport {
     std::size_t trianglesBeforeSimplify = 0;
     double simplifyAchievedError = 0.0;  // model units, the sum of the passes' deviations
     std::string simplifyNote;
+    bool cancelled = false;          // the progress was cancelled before the write: nothing written
 };
-
-// Called with the fraction done (0..1) on the calling thread.
-using ExportProgress = std::function<void(double)>;
 
 // Exports `model` over `box` (its model box, in model units) to `path`.
 // Returns "" on success (and fills `report`), otherwise a message for a
@@ -82,8 +80,13 @@ using ExportProgress = std::function<void(double)>;
 // resolution of 0 or past what fits in the memory limit (with the largest
 // that would fit), a model with no surface in the box, a mesh that fails
 // validation, or a failed write. Nothing is left at `path` on failure.
+// `progress` (may be null; io/progress.h) is told the fraction done, from
+// the sampler's workers too, reaching 1 once the file is written; cancelled
+// before the write starts, the export stops with io::kCancelled and
+// report.cancelled, and whatever was at `path` is left as it was. A write
+// under way is let finish.
 std::string exportMesh(const frep::Model& model, const frep::Box3& box, const MeshExportOptions& options,
-                       const std::string& path, MeshExportReport& report, const ExportProgress& progress = {});
+                       const std::string& path, MeshExportReport& report, io::Progress* progress = nullptr);
 
 // Exports a finished grid as it stands (a scanned volume's sculpture, which
 // has no FRep to sample at another resolution: docs/volumes.md, "Scanned
@@ -91,7 +94,7 @@ std::string exportMesh(const frep::Model& model, const frep::Box3& box, const Me
 // validated, optionally simplified and written like exportMesh's; .vdb
 // writes the grid's level set. The same messages and guarantees.
 std::string exportVolumeMesh(const voxel::Volume& volume, const MeshExportOptions& options, const std::string& path,
-                             MeshExportReport& report, const ExportProgress& progress = {});
+                             MeshExportReport& report, io::Progress* progress = nullptr);
 
 // A few lines for a person: format, triangles, volume and size in the
 // file's units, time, tiles and memory.

@@ -131,7 +131,10 @@ std::string planTiledMesh(const frep::Model& model, const frep::Box3& box, const
     if (std::string why = voxel::makeFrame(box, coarseResolution, voxel::kMinBand, coarseFrame); !why.empty())
         return why;
     const double coarseScale = plan.normalization * coarseFrame.voxelSize / plan.frame.voxelSize;
-    const voxel::Volume coarse = voxel::sampleRegion(model, coarseFrame, coarseScale, coarseFrame.indexBox);
+    io::ProgressRange coarseProgress(options.progress, 0.0, kPlanShare);
+    const voxel::Volume coarse =
+        voxel::sampleRegion(model, coarseFrame, coarseScale, coarseFrame.indexBox, nullptr, &coarseProgress);
+    if (coarseProgress.cancelled()) return io::kCancelled;
     const double scale = static_cast<double>(options.resolution) / coarseResolution;
     const double margin = scale > 1.0 ? 1.1 : 1.0;
     plan.expectedTriangles =
@@ -160,6 +163,11 @@ TiledMeshResult meshModelTiled(const frep::Model& model, const frep::Box3& box, 
     TiledMeshResult r;
     r.error = planTiledMesh(model, box, options, r.plan);
     r.stats.planSeconds = std::chrono::duration<double>(Clock::now() - start).count();
+    io::ProgressRange progress(options.progress, kPlanShare, 1.0);  // the tiles
+    if (progress.cancelled()) {
+        r.cancelled = true;
+        r.error = io::kCancelled;
+    }
     if (!r.error.empty()) return r;
     const TiledMeshPlan& plan = r.plan;
     const int t = plan.tileSize;
@@ -191,7 +199,17 @@ TiledMeshResult meshModelTiled(const frep::Model& model, const frep::Box3& box, 
                 window.vertexEdges = &edges;
                 auto t0 = Clock::now();
                 voxel::SampleStats s;
-                const voxel::Volume volume = voxel::sampleRegion(model, plan.frame, plan.normalization, region, &s);
+                // Sampling is most of a tile's share; meshing and welding it, the rest.
+                const double share = 1.0 / static_cast<double>(total), at = static_cast<double>(done) * share;
+                io::ProgressRange tileProgress(&progress, at, at + 0.8 * share);
+                const voxel::Volume volume =
+                    voxel::sampleRegion(model, plan.frame, plan.normalization, region, &s, &tileProgress);
+                if (tileProgress.cancelled()) {
+                    r.cancelled = true;
+                    r.error = io::kCancelled;
+                    r.mesh = Mesh{};
+                    return r;
+                }
                 r.stats.samples += s.samples;
                 leafTapeSum += s.leafTapeMean * static_cast<double>(s.leafTapes);
                 leafTapes += s.leafTapes;
@@ -213,7 +231,7 @@ TiledMeshResult meshModelTiled(const frep::Model& model, const frep::Box3& box, 
                     r.mesh = Mesh{};
                     return r;
                 }
-                if (options.progress) options.progress(static_cast<double>(++done) / static_cast<double>(total));
+                progress.interrupted(static_cast<double>(++done) / static_cast<double>(total));
             }
     if (out.empty()) r.error = "the model has no surface inside the box";
     r.stats.leafTapeMean = leafTapes ? leafTapeSum / static_cast<double>(leafTapes) : 0.0;

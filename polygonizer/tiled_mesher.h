@@ -15,11 +15,11 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <functional>
 #include <string>
 
 #include "frep/box.h"
 #include "frep/model.h"
+#include "io/progress.h"
 #include "polygonizer/mesh.h"
 #include "voxel/volume_frame.h"
 
@@ -30,8 +30,10 @@ struct TiledMeshOptions {
     int tileSize = 0;               // cells per tile side, a multiple of 8; 0: the largest of 256, 128, 64, 32 that fits
     std::uint64_t memoryLimit = 0;  // bytes; 0: voxel::memoryLimit(0), 80% of what is available
     std::uint64_t bytesPerTriangle = 96;  // the guard's count per expected triangle: kMeshBytesPerTriangle or kSimplifyBytesPerTriangle
-    // Called on the calling thread after each tile with the fraction done.
-    std::function<void(double)> progress;
+    // Told the fraction done (the plan's coarse sampling the first
+    // kPlanShare, then tile by tile, from the sampler's workers too) and
+    // asked for a cancel inside and between tiles (io/progress.h); may be null.
+    io::Progress* progress = nullptr;
 };
 
 // What the memory guard decided before any tile is sampled.
@@ -83,15 +85,19 @@ struct TiledMeshStats {
     double weldSeconds = 0.0;         // welding them on
 };
 
+// The share of the progress the plan takes (its coarse sampling).
+constexpr double kPlanShare = 0.05;
+
 struct TiledMeshResult {
     Mesh mesh;           // positions in model units, outward normals, welded
     std::string error;   // "" on success
+    bool cancelled = false;  // options.progress was cancelled: no mesh (error is io::kCancelled)
     TiledMeshPlan plan;
     TiledMeshStats stats;
 };
 
 // Plans (refusing what does not fit) and meshes. An empty mesh with an
-// error when the model has no surface in the box.
+// error when the model has no surface in the box or the work was cancelled.
 TiledMeshResult meshModelTiled(const frep::Model& model, const frep::Box3& box, const TiledMeshOptions& options);
 
 }  // namespace hg::poly

@@ -23,6 +23,8 @@ constexpr std::uint64_t kLeavesPerTask = (kTaskBoxSize / kLeafSize) * (kTaskBoxS
 // The two phases of a walk over `clip`: top boxes (128^3) down to task boxes
 // (32^3), then each task box to its leaves. Between them `beforeTasks` sees
 // how many task boxes are left and may stop the walk by returning false.
+// Once `stop` (may be null) is cancelled the boxes left are skipped and the
+// walk returns false.
 struct Walk {
     std::vector<WalkOutput> outputs;  // top boxes, then task boxes, in order
     WalkCounters counters;
@@ -31,7 +33,8 @@ struct Walk {
 
 template <class Between, class PerTask>
 bool runWalk(const frep::Model& model, const VolumeFrame& frame, double scale, const IndexBox& clip, Walk& walk,
-             Between beforeTasks, PerTask afterTask) {
+             Between beforeTasks, PerTask afterTask, const io::Progress* stop = nullptr) {
+    auto stopped = [stop] { return stop && stop->cancelled(); };
     tbb::enumerable_thread_specific<std::unique_ptr<BoxWalker>> walkers;
     auto walker = [&]() -> BoxWalker& {
         auto& w = walkers.local();
@@ -42,19 +45,22 @@ bool runWalk(const frep::Model& model, const VolumeFrame& frame, double scale, c
     std::vector<WalkOutput> topOut(tops.size());
     std::vector<std::vector<DeferredBox>> deferred(tops.size());
     tbb::parallel_for(std::size_t{0}, tops.size(), [&](std::size_t i) {
+        if (stopped()) return;
         walker().walk(tops[i].data(), kTopBoxSize, clip, topOut[i], kTaskBoxSize, &deferred[i]);
     });
     std::vector<DeferredBox> tasks;
     for (auto& d : deferred) tasks.insert(tasks.end(), d.begin(), d.end());
-    if (!beforeTasks(tasks.size())) return false;
+    if (stopped() || !beforeTasks(tasks.size())) return false;
 
     std::vector<WalkOutput> taskOut(tasks.size());
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tasks.size(), 1), [&](const tbb::blocked_range<std::size_t>& r) {
         for (std::size_t i = r.begin(); i != r.end(); ++i) {
+            if (stopped()) return;
             walker().walk(tasks[i].origin.data(), kTaskBoxSize, clip, taskOut[i], 0, nullptr, tasks[i].tape);
             afterTask(i, taskOut[i]);
         }
     });
+    if (stopped()) return false;
     walk.outputs = std::move(topOut);
     walk.outputs.insert(walk.outputs.end(), std::make_move_iterator(taskOut.begin()),
                         std::make_move_iterator(taskOut.end()));
@@ -93,10 +99,12 @@ std::unique_ptr<FloatLeaf> makeLeaf(const LeafSamples& s, float background, floa
 
 // The walk over `clip` and the tree it gives (fills, then the leaves built
 // on the workers, pruned): what voxelize() stores there. False, with
-// `error`, when the memory guard refuses the walk's task boxes.
+// `error`, when the memory guard refuses the walk's task boxes or
+// options.progress is cancelled (io::kCancelled).
 bool sampleTree(const frep::Model& model, const VolumeFrame& frame, double scale, const IndexBox& clip,
                 const SampleOptions& options, SampleStats& stats, std::string& error, openvdb::FloatTree& tree) {
     const std::uint64_t limit = memoryLimit(options.memoryLimit);
+    io::ProgressRange progress(options.progress, 0.0, 1.0);  // a flag to ask even when nobody watches
     std::atomic<std::size_t> done{0};
     std::size_t total = 0;
     std::vector<std::vector<std::unique_ptr<FloatLeaf>>> built;
@@ -118,10 +126,14 @@ bool sampleTree(const frep::Model& model, const VolumeFrame& frame, double scale
             out.leaves.clear();
             out.leaves.shrink_to_fit();
             std::size_t d = ++done;
-            if (options.progress && (d % std::max<std::size_t>(1, total / 200) == 0 || d == total))
-                options.progress(static_cast<double>(d) / static_cast<double>(total));
-        });
-    if (!ran) return false;
+            if (d % std::max<std::size_t>(1, total / 200) == 0 || d == total)
+                progress.interrupted(static_cast<double>(d) / static_cast<double>(total));
+        },
+        &progress);
+    if (!ran) {
+        if (error.empty()) error = io::kCancelled;
+        return false;
+    }
     copyStats(walk, stats);
 
     // Top boxes stop at task boxes, so only task outputs hold leaves, and
@@ -165,7 +177,11 @@ VoxelizeResult voxelize(const frep::Model& model, const VolumeRequest& request, 
     openvdb::FloatGrid::Ptr grid = openvdb::FloatGrid::create(-frame.band);
     grid->setTransform(frameTransform(frame));
     grid->setName(request.source.body);
-    if (!sampleTree(model, frame, scale, frame.indexBox, options, stats, result.error, grid->tree())) return result;
+    if (!sampleTree(model, frame, scale, frame.indexBox, options, stats, result.error, grid->tree())) {
+        result.cancelled = options.progress && options.progress->cancelled();
+        if (result.cancelled) result.error = io::kCancelled;
+        return result;
+    }
 
     Volume volume;
     volume.frame = frame;
@@ -179,7 +195,7 @@ VoxelizeResult voxelize(const frep::Model& model, const VolumeRequest& request, 
 }
 
 Volume sampleRegion(const frep::Model& model, const VolumeFrame& frame, double scale, const IndexBox& region,
-                    SampleStats* stats) {
+                    SampleStats* stats, io::Progress* progress) {
     auto start = Clock::now();
     Volume volume;
     volume.frame = frame;
@@ -192,6 +208,7 @@ Volume sampleRegion(const frep::Model& model, const VolumeFrame& frame, double s
     if (!clip.empty()) {
         SampleOptions unlimited;
         unlimited.memoryLimit = ~std::uint64_t{0};
+        unlimited.progress = progress;
         std::string error;
         sampleTree(model, frame, scale, clip, unlimited, st, error, grid->tree());
     }

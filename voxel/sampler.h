@@ -6,12 +6,12 @@
 #pragma once
 
 #include <cstdint>
-#include <functional>
 #include <optional>
 #include <string>
 
 #include "frep/domain_error.h"
 #include "frep/model.h"
+#include "io/progress.h"
 #include "voxel/model_box.h"
 #include "voxel/normalization.h"
 #include "voxel/volume.h"
@@ -19,9 +19,10 @@
 namespace hg::voxel {
 
 struct SampleOptions {
-    // Called with the fraction done (0..1) from any thread, at most a few
-    // hundred times; must be thread-safe.
-    std::function<void(double)> progress;
+    // Told the fraction done (0..1) from the TBB workers, at most a few
+    // hundred times, and asked for a cancel before each box (io/progress.h);
+    // null: nobody watches.
+    io::Progress* progress = nullptr;
     // Bytes the grid may take; 0: 80% of the memory available now.
     std::uint64_t memoryLimit = 0;
 };
@@ -55,6 +56,7 @@ struct VolumeRequest {
 struct VoxelizeResult {
     std::optional<Volume> volume;
     std::string error;              // why there is no volume
+    bool cancelled = false;         // options.progress was cancelled: no volume (error is io::kCancelled)
     ModelBox modelBox;              // the box used and how it was found
     Normalization normalization;
     SampleStats stats;
@@ -66,9 +68,11 @@ VoxelizeResult voxelize(const frep::Model& model, const VolumeRequest& request, 
 // to the frame) of what voxelize() stores with normalization `scale`; every
 // other voxel reads the background (outside). Built as voxelize() builds
 // its grid (leaves on the workers, pruned), without its memory guard: the
-// caller bounds the region (polygonizer/tiled_mesher.h).
+// caller bounds the region (polygonizer/tiled_mesher.h). `progress` (may be
+// null) is told and asked as voxelize()'s; once it is cancelled the volume
+// is incomplete and the caller must drop it.
 Volume sampleRegion(const frep::Model& model, const VolumeFrame& frame, double scale, const IndexBox& region,
-                    SampleStats* stats = nullptr);
+                    SampleStats* stats = nullptr, io::Progress* progress = nullptr);
 
 // Recomputes the voxels of `region` (index space, clipped to the frame) from
 // `model` with the volume's normalization, touching nothing else. Bit-identical

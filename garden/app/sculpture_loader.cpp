@@ -11,7 +11,7 @@ SculptureLoader::SculptureLoader(std::vector<Job> jobs, const std::array<double,
     : waiting_(std::move(jobs)), remaining_(waiting_.size()), viewer_(viewer), worker_([this] { run(); }) {}
 
 SculptureLoader::~SculptureLoader() {
-    stop_ = true;
+    stop_.cancel();
     worker_.join();
 }
 
@@ -25,7 +25,7 @@ void SculptureLoader::run() {
         Job job;
         {
             std::lock_guard<std::mutex> lock(mutex_);
-            if (stop_ || waiting_.empty()) return;
+            if (stop_.cancelled() || waiting_.empty()) return;
             auto distance = [this](const Job& j) {
                 double s = 0.0;
                 for (std::size_t a = 0; a < 3; ++a) s += (j.where[a] - viewer_[a]) * (j.where[a] - viewer_[a]);
@@ -38,7 +38,8 @@ void SculptureLoader::run() {
         }
         Loaded done;
         done.sculpture = job.sculpture;
-        voxel::VoxelizeResult r = sampleSculptureSource(job.spec, *job.source, job.request);
+        voxel::VoxelizeResult r = sampleSculptureSource(job.spec, *job.source, job.request, &stop_);
+        if (r.cancelled) return;  // closing: nobody takes it
         if (r.volume) done.volume = std::make_unique<voxel::Volume>(std::move(*r.volume));
         else done.error = r.error;
         std::lock_guard<std::mutex> lock(mutex_);

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "garden/scene/garden_file.h"
+#include "io/progress.h"
 #include "voxel/sampler.h"
 
 namespace hg::garden {
@@ -40,7 +41,9 @@ public:
 
     // Starts sampling at once, nearest to `viewer` first.
     SculptureLoader(std::vector<Job> jobs, const std::array<double, 3>& viewer);
-    // Stops after the sculpture under way.
+    // Cancels the sculpture under way (a HyperFun body's sampling stops at
+    // its next box; a scan's or a mesh's level set is let finish) and
+    // samples no more.
     ~SculptureLoader();
     SculptureLoader(const SculptureLoader&) = delete;
     SculptureLoader& operator=(const SculptureLoader&) = delete;
@@ -62,7 +65,7 @@ private:
     std::vector<Loaded> finished_;
     std::size_t remaining_ = 0;
     std::array<double, 3> viewer_{};
-    std::atomic<bool> stop_{false};
+    io::NullProgress stop_;  // cancelled on close; the sampling under way asks it
     std::thread worker_;  // last: started once everything above is set
 };
 

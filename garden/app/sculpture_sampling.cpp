@@ -7,8 +7,12 @@
 namespace hg::garden {
 
 voxel::VoxelizeResult sampleSculptureSource(const SculptureSpec& spec, const SculptureLoad& load,
-                                            const voxel::VolumeRequest& request) {
-    if (load.model) return voxel::voxelize(*load.model, request);
+                                            const voxel::VolumeRequest& request, io::Progress* progress) {
+    if (load.model) {
+        voxel::SampleOptions options;
+        options.progress = progress;
+        return voxel::voxelize(*load.model, request, options);
+    }
     voxel::VoxelizeResult r;
     if (load.mesh && spec.mesh) {
         voxel::MeshLevelSetRequest m;

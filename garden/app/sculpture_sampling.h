@@ -6,13 +6,16 @@
 #pragma once
 
 #include "garden/scene/garden_file.h"
+#include "io/progress.h"
 #include "voxel/sampler.h"
 
 namespace hg::garden {
 
 // `request` is the spec's box, resolution and band (GardenSession::volumeRequest).
-// A scan's errors name the garden file's entry.
+// A scan's errors name the garden file's entry. `progress` (may be null) is
+// told and asked by a HyperFun body's sampling (voxel::SampleOptions); a
+// scan's or a mesh's level set is made whole.
 voxel::VoxelizeResult sampleSculptureSource(const SculptureSpec& spec, const SculptureLoad& load,
-                                            const voxel::VolumeRequest& request);
+                                            const voxel::VolumeRequest& request, io::Progress* progress = nullptr);
 
 }  // namespace hg::garden

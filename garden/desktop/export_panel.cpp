@@ -26,18 +26,12 @@ std::string safeName(const std::string& name) {
     return out.empty() ? "sculpture" : out;
 }
 
-// Thrown from the progress callback to stop a mesh under way: it unwinds
-// the mesher on the worker (before anything is written) and is caught there.
-struct Cancelled {};
-
-constexpr const char* kCancelledWhy = "cancelled; nothing was written";
-
 }  // namespace
 
 struct ExportPanel::Work {
     ExportJob job;
-    std::atomic<double> progress{0.0};
-    std::atomic<bool> cancel{false};
+    // The worker reports into it; the bar reads fraction(), Cancel cancels it.
+    io::NullProgress progress;
     std::future<std::string> result;
     ExportFileReport report;
 };
@@ -60,7 +54,7 @@ std::string ExportPanel::exportFolder() const {
 }
 
 void ExportPanel::cancel() {
-    if (busy()) work_->cancel = true;
+    if (busy()) work_->progress.cancel();
 }
 
 bool ExportPanel::busy() const {
@@ -71,7 +65,7 @@ bool ExportPanel::busy() const {
 const std::string& ExportPanel::status() {
     if (work_ && work_->result.valid() && !busy()) {
         const std::string why = work_->result.get();
-        status_ = why.empty() ? work_->report.summary : why == kCancelledWhy ? "export " + why : "error: " + why;
+        status_ = why.empty() ? work_->report.summary : work_->report.cancelled ? "export " + why : "error: " + why;
         if (!why.empty()) lastPath_.clear();
         work_.reset();
     }
@@ -113,17 +107,7 @@ bool ExportPanel::start(const GardenSession& session, int index, const std::stri
         return false;
     }
     Work* w = work.get();
-    w->result = std::async(std::launch::async, [w]() -> std::string {
-        try {
-            // Meshing reports before it writes; at 1 the file is being written.
-            return writeExport(w->job, w->report, [w](double f) {
-                w->progress = f;
-                if (w->cancel && f < 1.0) throw Cancelled{};
-            });
-        } catch (const Cancelled&) {
-            return kCancelledWhy;
-        }
-    });
+    w->result = std::async(std::launch::async, [w] { return writeExport(w->job, w->report, &w->progress); });
     work_ = std::move(work);
     lastPath_ = path;
     status_ = "exporting to " + path;
@@ -162,8 +146,8 @@ void ExportPanel::draw(const GardenSession& session) {
     if (!can) ImGui::EndDisabled();
     if (selected < 0) ImGui::TextDisabled("select a sculpture in the list above");
     if (busy()) {
-        ImGui::ProgressBar(static_cast<float>(work_->progress.load()));
-        if (work_->cancel) ImGui::TextDisabled("cancelling...");
+        ImGui::ProgressBar(static_cast<float>(work_->progress.fraction()));
+        if (work_->progress.cancelled()) ImGui::TextDisabled("cancelling...");
         else if (ImGui::Button("Cancel")) cancel();
     }
     const std::string& s = status();

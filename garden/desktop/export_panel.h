@@ -38,9 +38,10 @@ public:
     void setFolder(const std::string& folder);
     std::string exportFolder() const;
     bool busy() const;
-    // Stops the export under way at its next step (a mesh between tiles):
-    // nothing is written, and status() says it was cancelled. A mesh that
-    // is already being written is let finish.
+    // Stops the export under way at its next check (io/progress.h: inside a
+    // tile's sampling, between tiles, before the write): nothing is written,
+    // and status() says it was cancelled. A file already being written is
+    // let finish.
     void cancel();
     // The last export's outcome ("" before any); collects a finished worker.
     const std::string& status();

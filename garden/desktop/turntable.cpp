@@ -79,7 +79,8 @@ std::string turntableFrameName(const std::string& sculpture, int frame) {
 }
 
 std::string renderTurntable(GardenSession& session, int index, const TurntableOptions& options, const std::string& dir,
-                            std::vector<std::string>& written, const std::function<void(double)>& progress) {
+                            std::vector<std::string>& written, io::Progress* progress) {
+    io::ProgressRange shown(progress, 0.0, 1.0);  // a flag to ask even when nobody watches
     std::string why;
     std::unique_ptr<OffscreenGarden> offscreen = OffscreenGarden::create(options.width, options.height, why);
     if (!offscreen) return why;
@@ -89,7 +90,8 @@ std::string renderTurntable(GardenSession& session, int index, const TurntableOp
     int settle = 0;
     for (; settle < kMaxSettleFrames && !session.idle(); ++settle) {
         session.frame(FrameInput{}, *offscreen);
-        if (progress && settle % 16 == 0) progress(0.1 * (1.0 - 1.0 / (1.0 + settle / 64.0)));
+        if (shown.interrupted(settle % 16 == 0 ? 0.1 * (1.0 - 1.0 / (1.0 + settle / 64.0)) : -1.0))
+            return io::kCancelled;
     }
     if (!session.idle())
         return "the garden was still meshing after " + std::to_string(kMaxSettleFrames) + " frames (chunks waiting " +
@@ -107,7 +109,8 @@ std::string renderTurntable(GardenSession& session, int index, const TurntableOp
         const std::string path = (std::filesystem::path(dir) / turntableFrameName(sculpture.name, f)).string();
         if (std::string failed = offscreen->screenshot(path); !failed.empty()) return failed;
         written.push_back(path);
-        if (progress) progress(0.1 + 0.9 * static_cast<double>(f + 1) / options.frames);
+        if (shown.interrupted(0.1 + 0.9 * static_cast<double>(f + 1) / options.frames) && f + 1 < options.frames)
+            return "cancelled after " + std::to_string(f + 1) + " of " + std::to_string(options.frames) + " frames";
     }
     return "";
 }

@@ -5,7 +5,6 @@
 // window shows them, the other sculptures are not drawn.
 #pragma once
 
-#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -14,6 +13,7 @@
 #include <glm/vec3.hpp>
 
 #include "garden/render/render_quality.h"
+#include "io/progress.h"
 
 namespace hg::garden {
 
@@ -57,8 +57,11 @@ std::string turntableFrameName(const std::string& sculpture, int frame);
 // run until it is idle (every chunk meshed at full detail when the session
 // was opened without level of detail). "" on success with the paths in
 // `written`, else why not (nothing is left half-written: each PNG is
-// written whole or not at all). `progress` gets the share done.
+// written whole or not at all). `progress` (may be null) is told the
+// share done and asked for a cancel after each settling frame and each
+// PNG: cancelled, it stops there and says so, the frames written so far
+// (whole) in `written`.
 std::string renderTurntable(GardenSession& session, int index, const TurntableOptions& options, const std::string& dir,
-                            std::vector<std::string>& written, const std::function<void(double)>& progress = {});
+                            std::vector<std::string>& written, io::Progress* progress = nullptr);
 
 }  // namespace hg::garden

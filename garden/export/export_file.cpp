@@ -70,10 +70,12 @@ std::string meshSummary(const ExportJob& job, const poly::MeshExportReport& mr, 
     return summary;
 }
 
-std::string writeGridExport(const ExportJob& job, ExportFileReport& report, const std::function<void(double)>& progress) {
+std::string writeGridExport(const ExportJob& job, ExportFileReport& report, io::Progress* progress) {
     const poly::MeshExportOptions mo = meshOptionsOf(job);
     poly::MeshExportReport mr;
-    if (std::string e = poly::exportVolumeMesh(*job.grid, mo, job.path, mr, progress); !e.empty()) return e;
+    std::string e = poly::exportVolumeMesh(*job.grid, mo, job.path, mr, progress);
+    report.cancelled = mr.cancelled;
+    if (!e.empty()) return e;
     report.summary = meshSummary(job, mr, mo);
     return "";
 }
@@ -116,13 +118,16 @@ std::string prepareExport(const GardenSession& session, int index, const std::st
     return "";
 }
 
-std::string writeExport(const ExportJob& job, ExportFileReport& report, const std::function<void(double)>& progress) {
+std::string writeExport(const ExportJob& job, ExportFileReport& report, io::Progress* progress) {
     const auto start = std::chrono::steady_clock::now();
     std::ostringstream out;
     if (lowerExtension(job.path) == ".hf") {
         HyperFunExport hf;
         hf.text = job.hyperFun;
+        report.cancelled = progress && progress->interrupted();
+        if (report.cancelled) return io::kCancelled;
         if (std::string why = writeHyperFunExport(hf, job.path); !why.empty()) return why;
+        if (progress) progress->interrupted(1.0);
         const double seconds =
             job.prepareSeconds + std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         out << "wrote " << job.path << ": sculpture '" << job.sculpture << "', " << job.edits << " edits ("
@@ -148,14 +153,16 @@ std::string writeExport(const ExportJob& job, ExportFileReport& report, const st
     const frep::Model model(program, body, {});
     const poly::MeshExportOptions mo = meshOptionsOf(job);
     poly::MeshExportReport mr;
-    if (std::string e = poly::exportMesh(model, job.box, mo, job.path, mr, progress); !e.empty()) return e;
+    std::string e = poly::exportMesh(model, job.box, mo, job.path, mr, progress);
+    report.cancelled = mr.cancelled;
+    if (!e.empty()) return e;
     report.summary = meshSummary(job, mr, mo);
     return "";
 }
 
 std::string exportSculptureFile(const GardenSession& session, int index, const std::string& path,
                                 const ExportFileOptions& options, ExportFileReport& report,
-                                const std::function<void(double)>& progress) {
+                                io::Progress* progress) {
     ExportJob job;
     if (std::string why = prepareExport(session, index, path, options, job, report); !why.empty()) return why;
     const std::string warning = report.warning;

@@ -8,12 +8,12 @@
 #pragma once
 
 #include <cstddef>
-#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
 
 #include "frep/box.h"
+#include "io/progress.h"
 
 namespace hg::voxel { class Volume; }
 
@@ -34,6 +34,7 @@ struct ExportFileOptions {
 struct ExportFileReport {
     std::string summary;  // "wrote PATH: ...", one line
     std::string warning;  // set when something is worth saying beside it
+    bool cancelled = false;  // the progress was cancelled: nothing was written (the error is io::kCancelled)
 };
 
 // An export taken from the session (on the thread that owns it) and
@@ -57,15 +58,16 @@ struct ExportJob {
 std::string prepareExport(const GardenSession& session, int index, const std::string& path,
                           const ExportFileOptions& options, ExportJob& job, ExportFileReport& report);
 // Writes a prepared job. "" on success, else why not (no file is left).
-std::string writeExport(const ExportJob& job, ExportFileReport& report,
-                        const std::function<void(double)>& progress = {});
+// `progress` (may be null) is told the fraction done while a mesh is made
+// and may cancel it before the write (poly::exportMesh).
+std::string writeExport(const ExportJob& job, ExportFileReport& report, io::Progress* progress = nullptr);
 
 // Writes sculpture `index` of `session` to `path`, the format by its
 // extension (prepareExport then writeExport). "" on success, else why not (nothing is left at `path`).
-// `progress` gets fractions 0..1 while a mesh is made.
+// `progress` as writeExport's.
 std::string exportSculptureFile(const GardenSession& session, int index, const std::string& path,
                                 const ExportFileOptions& options, ExportFileReport& report,
-                                const std::function<void(double)>& progress = {});
+                                io::Progress* progress = nullptr);
 
 // The formats by extension, for error messages and the panel.
 constexpr const char* kExportExtensions = ".hf, .stl, .obj, .glb or .vdb";
