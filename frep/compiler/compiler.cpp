@@ -1,11 +1,11 @@
-#include "frep/compiler.h"
+#include "frep/compiler/compiler.h"
 
 #include <stdexcept>
 
-#include "frep/hf_math.h"
-#include "frep/library/library.h"
-#include "frep/sym.h"
-#include "frep/tape_builder.h"
+#include "frep/language/hf_math.h"
+#include "frep/kernels/library/library.h"
+#include "frep/compiler/sym.h"
+#include "frep/compiler/tape_builder.h"
 
 namespace hg::frep {
 namespace {

@@ -17,8 +17,8 @@
 #include <string>
 #include <vector>
 
-#include "frep/ast.h"
-#include "frep/tape.h"
+#include "frep/language/ast.h"
+#include "frep/compiler/tape.h"
 
 namespace hg::frep {
 

@@ -1,8 +1,8 @@
-#include "frep/conv_kernels.h"
+#include "frep/compiler/conv_kernels.h"
 
-#include "frep/conv_arc.h"
-#include "frep/conv_segment.h"
-#include "frep/soft_step.h"
+#include "frep/kernels/conv_arc.h"
+#include "frep/kernels/conv_segment.h"
+#include "frep/kernels/soft_step.h"
 
 namespace hg::frep {
 

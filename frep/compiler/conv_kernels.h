@@ -8,8 +8,8 @@
 
 #include <cstddef>
 
-#include "frep/interval.h"
-#include "frep/tape.h"
+#include "frep/kernels/interval.h"
+#include "frep/compiler/tape.h"
 
 namespace hg::frep {
 

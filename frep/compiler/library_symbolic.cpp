@@ -1,5 +1,5 @@
 // The library routines instantiated on Sym: the compiler records each
-// routine's operations onto the tape (see frep/library/library.h).
+// routine's operations onto the tape (see frep/kernels/library/library.h).
 //
 // Two routine pieces are replaced by fused tape kernels (fast vector loops,
 // tight interval bounds): a Cauchy line segment with constant end points and
@@ -10,8 +10,8 @@
 // distance instead of bounding each power of it apart.
 #include <cmath>
 
-#include "frep/library/library_impl.h"
-#include "frep/sym.h"
+#include "frep/kernels/library/library_impl.h"
+#include "frep/compiler/sym.h"
 
 namespace hg::frep {
 namespace {

@@ -6,8 +6,8 @@
 
 #include <cmath>
 
-#include "frep/hf_math.h"
-#include "frep/tape.h"
+#include "frep/language/hf_math.h"
+#include "frep/compiler/tape.h"
 
 namespace hg::frep {
 

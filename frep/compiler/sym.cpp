@@ -1,6 +1,6 @@
-#include "frep/sym.h"
+#include "frep/compiler/sym.h"
 
-#include "frep/op_semantics.h"
+#include "frep/compiler/op_semantics.h"
 
 namespace hg::frep {
 namespace {

@@ -1,11 +1,11 @@
 // Sym: a value on a tape under construction. Library routines written over
-// a value type (frep/library/value_ops.h) run on Sym to record their
+// a value type (frep/kernels/library/value_ops.h) run on Sym to record their
 // operations; a Sym without a builder is a plain constant.
 #pragma once
 
 #include <cstdint>
 
-#include "frep/tape_builder.h"
+#include "frep/compiler/tape_builder.h"
 
 namespace hg::frep {
 

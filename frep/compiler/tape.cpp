@@ -1,4 +1,4 @@
-#include "frep/tape.h"
+#include "frep/compiler/tape.h"
 
 #include <sstream>
 

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "frep/ast.h"
-#include "frep/domain_error.h"
+#include "frep/language/ast.h"
+#include "frep/language/domain_error.h"
 
 namespace hg::frep {
 

@@ -1,12 +1,12 @@
-#include "frep/tape_builder.h"
+#include "frep/compiler/tape_builder.h"
 
 #include <algorithm>
 #include <cstring>
 #include <stdexcept>
 #include <utility>
 
-#include "frep/conv_kernels.h"
-#include "frep/op_semantics.h"
+#include "frep/compiler/conv_kernels.h"
+#include "frep/compiler/op_semantics.h"
 
 namespace hg::frep {
 namespace {

@@ -8,7 +8,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include "frep/tape.h"
+#include "frep/compiler/tape.h"
 
 namespace hg::frep {
 

@@ -1,11 +1,11 @@
-#include "frep/bounds.h"
+#include "frep/eval/bounds.h"
 
 #include <algorithm>
 #include <cstdint>
 #include <vector>
 
-#include "frep/eval_batch.h"
-#include "frep/eval_interval.h"
+#include "frep/eval/eval_batch.h"
+#include "frep/eval/eval_interval.h"
 
 namespace hg::frep {
 

@@ -5,8 +5,8 @@
 // lies inside the search cube.
 #pragma once
 
-#include "frep/box.h"
-#include "frep/tape.h"
+#include "frep/kernels/box.h"
+#include "frep/compiler/tape.h"
 
 namespace hg::frep {
 

@@ -1,13 +1,13 @@
-#include "frep/eval_batch.h"
+#include "frep/eval/eval_batch.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <type_traits>
 
-#include "frep/conv_kernels.h"
-#include "frep/fast_math.h"
-#include "frep/op_semantics.h"
+#include "frep/compiler/conv_kernels.h"
+#include "frep/kernels/fast_math.h"
+#include "frep/compiler/op_semantics.h"
 
 namespace hg::frep {
 

@@ -11,8 +11,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "frep/domain_error.h"
-#include "frep/tape.h"
+#include "frep/language/domain_error.h"
+#include "frep/compiler/tape.h"
 
 namespace hg::frep {
 

@@ -1,10 +1,10 @@
-#include "frep/eval_gradient.h"
+#include "frep/eval/eval_gradient.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "frep/conv_kernels.h"
-#include "frep/op_semantics.h"
+#include "frep/compiler/conv_kernels.h"
+#include "frep/compiler/op_semantics.h"
 
 namespace hg::frep {
 

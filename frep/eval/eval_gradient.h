@@ -8,8 +8,8 @@
 #include <cstddef>
 #include <vector>
 
-#include "frep/domain_error.h"
-#include "frep/tape.h"
+#include "frep/language/domain_error.h"
+#include "frep/compiler/tape.h"
 
 namespace hg::frep {
 

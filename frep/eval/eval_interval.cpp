@@ -1,10 +1,10 @@
-#include "frep/eval_interval.h"
+#include "frep/eval/eval_interval.h"
 
 #include <cmath>
 
-#include "frep/conv_kernels.h"
-#include "frep/domain_error.h"
-#include "frep/hf_math.h"
+#include "frep/compiler/conv_kernels.h"
+#include "frep/language/domain_error.h"
+#include "frep/language/hf_math.h"
 
 namespace hg::frep {
 namespace {

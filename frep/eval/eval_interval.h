@@ -11,8 +11,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "frep/interval.h"
-#include "frep/tape.h"
+#include "frep/kernels/interval.h"
+#include "frep/compiler/tape.h"
 
 namespace hg::frep {
 

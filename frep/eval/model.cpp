@@ -1,10 +1,10 @@
-#include "frep/model.h"
+#include "frep/eval/model.h"
 
 #include <sstream>
 
-#include "frep/compiler.h"
-#include "frep/eval_batch.h"
-#include "frep/interpreter.h"
+#include "frep/compiler/compiler.h"
+#include "frep/eval/eval_batch.h"
+#include "frep/language/interpreter.h"
 
 namespace hg::frep {
 

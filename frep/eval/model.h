@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "frep/ast.h"
-#include "frep/domain_error.h"
-#include "frep/tape.h"
+#include "frep/language/ast.h"
+#include "frep/language/domain_error.h"
+#include "frep/compiler/tape.h"
 
 namespace hg::frep {
 

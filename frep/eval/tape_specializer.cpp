@@ -1,4 +1,4 @@
-#include "frep/tape_specializer.h"
+#include "frep/eval/tape_specializer.h"
 
 #include <algorithm>
 #include <atomic>
@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <limits>
 
-#include "frep/tape_builder.h"
+#include "frep/compiler/tape_builder.h"
 
 namespace hg::frep {
 

@@ -28,8 +28,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "frep/eval_interval.h"
-#include "frep/tape.h"
+#include "frep/eval/eval_interval.h"
+#include "frep/compiler/tape.h"
 
 namespace hg::frep {
 

@@ -1,14 +1,13 @@
-#include "frep/conv_arc.h"
+#include "frep/kernels/conv_arc.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-#include "frep/dual.h"
-#include "frep/fast_math.h"
-#include "frep/library/convolution.h"
-#include "frep/simd.h"
-#include "frep/tape.h"
+#include "frep/kernels/dual.h"
+#include "frep/kernels/fast_math.h"
+#include "frep/kernels/library/convolution.h"
+#include "frep/kernels/simd.h"
 
 namespace hg::frep {
 namespace {
@@ -16,7 +15,7 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kUlp = std::numeric_limits<double>::epsilon();
 
-// Parameter layout (frep/tape.h): frame (centre, rotation), then these.
+// Parameter layout (frep/compiler/tape.h): frame (centre, rotation), then these.
 constexpr int kRadius = 12, kWidth = 13, kSpan = 14, kOver = 15;
 
 // Bound on the integral of |K'(|n - c|)| over the arc length of a whole

@@ -1,5 +1,5 @@
 // Fused tape kernel Op::ConvArc: one piece of an hfConvArc arc (its first
-// 180 degrees, or the part beyond them), parameters as in frep/tape.h. The
+// 180 degrees, or the part beyond them), parameters as in frep/compiler/tape.h. The
 // field is the integral of the Cauchy kernel K(d) = 1 / (1 + s^2 d^2)^2 over
 // the arc's angle, F(p) = int_0^th K(|n - r (cos t, sin t, 0)|) dt, n the
 // point in the arc's frame.
@@ -13,7 +13,7 @@
 
 #include <cstddef>
 
-#include "frep/interval.h"
+#include "frep/kernels/interval.h"
 
 namespace hg::frep {
 

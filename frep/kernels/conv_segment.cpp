@@ -1,13 +1,13 @@
-#include "frep/conv_segment.h"
+#include "frep/kernels/conv_segment.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-#include "frep/dual.h"
-#include "frep/fast_math.h"
-#include "frep/library/convolution.h"
-#include "frep/simd.h"
+#include "frep/kernels/dual.h"
+#include "frep/kernels/fast_math.h"
+#include "frep/kernels/library/convolution.h"
+#include "frep/kernels/simd.h"
 
 namespace hg::frep {
 

@@ -5,7 +5,7 @@
 // evaluator, and with its analytic gradient.
 #pragma once
 
-#include "frep/interval.h"
+#include "frep/kernels/interval.h"
 
 namespace hg::frep {
 

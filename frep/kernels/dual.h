@@ -1,6 +1,6 @@
 // Dual: a value with its partial derivatives along the three inputs of a
 // fused tape kernel (forward-mode differentiation). It provides the
-// operations of frep/library/value_ops.h, so the gradient evaluator runs a
+// operations of frep/kernels/library/value_ops.h, so the gradient evaluator runs a
 // fused kernel's own library code on it and gets the analytic derivative of
 // exactly the closed form the other paths compute; the value part uses the
 // same double operations, so it matches them bit for bit.

@@ -1,9 +1,9 @@
-#include "frep/soft_step.h"
+#include "frep/kernels/soft_step.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "frep/library/skeletal.h"
+#include "frep/kernels/library/skeletal.h"
 
 namespace hg::frep {
 

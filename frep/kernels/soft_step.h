@@ -10,7 +10,7 @@
 
 #include <cstddef>
 
-#include "frep/interval.h"
+#include "frep/kernels/interval.h"
 
 namespace hg::frep {
 

@@ -46,7 +46,7 @@ enum class ExprKind {
     Unary,         // unaryOp; args[0]
     Binary,        // binaryOp; args[0] op args[1]
     BuiltinCall,   // builtin; args
-    LibraryCall,   // function: library id (frep/library/library.h); args
+    LibraryCall,   // function: library id (frep/kernels/library/library.h); args
     BodyCall,      // function: index of an earlier body; args are ArrayName
 };
 

@@ -1,4 +1,4 @@
-#include "frep/diagnostics.h"
+#include "frep/language/diagnostics.h"
 
 #include <algorithm>
 

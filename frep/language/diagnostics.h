@@ -5,7 +5,7 @@
 #include <string>
 #include <string_view>
 
-#include "frep/ast.h"
+#include "frep/language/ast.h"
 
 namespace hg::frep {
 

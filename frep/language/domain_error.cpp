@@ -1,4 +1,4 @@
-#include "frep/domain_error.h"
+#include "frep/language/domain_error.h"
 
 namespace hg::frep {
 

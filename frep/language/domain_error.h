@@ -6,7 +6,7 @@
 
 #include <cstdint>
 
-#include "frep/ast.h"
+#include "frep/language/ast.h"
 
 namespace hg::frep {
 

@@ -9,7 +9,7 @@
 
 #include <cmath>
 
-#include "frep/domain_error.h"
+#include "frep/language/domain_error.h"
 
 namespace hg::frep::hf {
 

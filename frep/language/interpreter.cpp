@@ -1,9 +1,9 @@
-#include "frep/interpreter.h"
+#include "frep/language/interpreter.h"
 
 #include <cmath>
 
-#include "frep/hf_math.h"
-#include "frep/library/library.h"
+#include "frep/language/hf_math.h"
+#include "frep/kernels/library/library.h"
 
 namespace hg::frep {
 namespace {

@@ -1,4 +1,4 @@
-#include "frep/lexer.h"
+#include "frep/language/lexer.h"
 
 #include <cmath>
 #include <cstdio>

@@ -23,7 +23,7 @@
 #include <string_view>
 #include <vector>
 
-#include "frep/ast.h"
+#include "frep/language/ast.h"
 
 namespace hg::frep::syntax {
 

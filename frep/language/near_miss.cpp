@@ -1,4 +1,4 @@
-#include "frep/near_miss.h"
+#include "frep/language/near_miss.h"
 
 #include <algorithm>
 

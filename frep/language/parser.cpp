@@ -4,7 +4,7 @@
 // HF_Parse_Operators, HF_Get_Array_Decl, HF_Get_Body_Def, HF_Get_X_A,
 // HF_parse) so that the same token is examined at the same point and the
 // same first error comes out; the code is our own.
-#include "frep/parser.h"
+#include "frep/language/parser.h"
 
 #include <algorithm>
 #include <cerrno>
@@ -15,8 +15,8 @@
 #include <unordered_map>
 #include <utility>
 
-#include "frep/lexer.h"
-#include "frep/library/library.h"
+#include "frep/language/lexer.h"
+#include "frep/kernels/library/library.h"
 
 namespace hg::frep {
 

@@ -1,4 +1,4 @@
-// The HyperFun parser: source text to the resolved AST of frep/ast.h,
+// The HyperFun parser: source text to the resolved AST of frep/language/ast.h,
 // accepting and rejecting exactly what the reference interpreter
 // (pmur002/hyperfun, int_parse_N.c) accepts and rejects, with its error
 // messages and positions for the first error. A few things the reference
@@ -12,8 +12,8 @@
 #include <string_view>
 #include <vector>
 
-#include "frep/ast.h"
-#include "frep/diagnostics.h"
+#include "frep/language/ast.h"
+#include "frep/language/diagnostics.h"
 
 namespace hg::frep {
 

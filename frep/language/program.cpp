@@ -1,6 +1,6 @@
 #include <string>
 
-#include "frep/ast.h"
+#include "frep/language/ast.h"
 
 namespace hg::frep {
 

@@ -1,4 +1,4 @@
-#include "frep/writer.h"
+#include "frep/language/writer.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,10 +11,10 @@
 #include <utility>
 #include <vector>
 
-#include "frep/interpreter.h"
-#include "frep/lexer.h"
-#include "frep/library/library.h"
-#include "frep/parser.h"
+#include "frep/language/interpreter.h"
+#include "frep/language/lexer.h"
+#include "frep/kernels/library/library.h"
+#include "frep/language/parser.h"
 
 namespace hg::frep {
 

@@ -1,4 +1,4 @@
-// The HyperFun writer: a parsed program (frep/ast.h) back to readable
+// The HyperFun writer: a parsed program (frep/language/ast.h) back to readable
 // HyperFun text that our parser, and the reference interpreter, read back to
 // a program with bit-identical values at every point, runtime errors
 // included.
@@ -38,7 +38,7 @@
 
 #include <string>
 
-#include "frep/ast.h"
+#include "frep/language/ast.h"
 
 namespace hg::frep {
 

@@ -1,4 +1,4 @@
-#include "polygonizer/export_mesher.h"
+#include "polygonizer/export/export_mesher.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -16,7 +16,7 @@
 #include <sys/mman.h>
 #endif
 
-#include "polygonizer/export_mesher_blocks.h"
+#include "polygonizer/export/export_mesher_blocks.h"
 #include "voxel/volume_vdb.h"
 
 // How the work goes (block = one OpenVDB leaf of cells, 8^3, named by its

@@ -36,7 +36,7 @@ inline int gridEdgeIndex(std::uint64_t key, int axis) {
     return static_cast<int>((key >> (20 * (2 - axis))) & 0xFFFFFu) - (1 << 19);
 }
 
-// One tile of a larger mesh (polygonizer/tiled_mesher.h). Only the cells
+// One tile of a larger mesh (polygonizer/export/tiled_mesher.h). Only the cells
 // whose low corner lies in `cells` make triangles; `cells` must be whole
 // blocks (lo and hi + 1 multiples of 8, the mesher's block). The grid must hold the
 // true values of voxels cells.lo - 1 .. cells.hi + 2 (the cells' corners

@@ -1,4 +1,4 @@
-#include "polygonizer/export_mesher_blocks.h"
+#include "polygonizer/export/export_mesher_blocks.h"
 
 #include <algorithm>
 

@@ -1,4 +1,4 @@
-#include "polygonizer/gltf_io.h"
+#include "polygonizer/export/gltf_io.h"
 
 #include <tiny_gltf.h>
 

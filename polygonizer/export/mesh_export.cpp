@@ -1,4 +1,4 @@
-#include "polygonizer/mesh_export.h"
+#include "polygonizer/export/mesh_export.h"
 
 #include "io/checked_write.h"
 
@@ -8,13 +8,13 @@
 #include <cmath>
 #include <sstream>
 
-#include "polygonizer/export_mesher.h"
-#include "polygonizer/gltf_io.h"
-#include "polygonizer/mesh_simplify.h"
-#include "polygonizer/mesh_validation.h"
-#include "polygonizer/obj_io.h"
-#include "polygonizer/stl_io.h"
-#include "polygonizer/tiled_mesher.h"
+#include "polygonizer/export/export_mesher.h"
+#include "polygonizer/export/gltf_io.h"
+#include "polygonizer/export/mesh_simplify.h"
+#include "polygonizer/export/mesh_validation.h"
+#include "polygonizer/export/obj_io.h"
+#include "polygonizer/export/stl_io.h"
+#include "polygonizer/export/tiled_mesher.h"
 #include "voxel/memory_guard.h"
 #include "voxel/sampler.h"
 #include "voxel/vdb_io.h"

@@ -21,9 +21,9 @@
 #include <functional>
 #include <string>
 
-#include "frep/box.h"
-#include "frep/model.h"
-#include "polygonizer/mesh_validation.h"
+#include "frep/kernels/box.h"
+#include "frep/eval/model.h"
+#include "polygonizer/export/mesh_validation.h"
 #include "voxel/volume.h"
 
 namespace hg::poly {

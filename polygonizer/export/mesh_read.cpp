@@ -1,4 +1,4 @@
-#include "polygonizer/mesh_read.h"
+#include "polygonizer/export/mesh_read.h"
 
 #include <algorithm>
 #include <cctype>
@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "io/read_text.h"
-#include "polygonizer/mesh_validation.h"
-#include "polygonizer/stl_io.h"
+#include "polygonizer/export/mesh_validation.h"
+#include "polygonizer/export/stl_io.h"
 
 namespace hg::poly {
 

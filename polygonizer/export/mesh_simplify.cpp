@@ -1,11 +1,11 @@
-#include "polygonizer/mesh_simplify.h"
+#include "polygonizer/export/mesh_simplify.h"
 
 #include <meshoptimizer.h>
 
 #include <algorithm>
 #include <array>
 
-#include "polygonizer/mesh_validation.h"
+#include "polygonizer/export/mesh_validation.h"
 
 namespace hg::poly {
 

@@ -1,4 +1,4 @@
-#include "polygonizer/mesh_validation.h"
+#include "polygonizer/export/mesh_validation.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -15,7 +15,7 @@
 #include <utility>
 #include <vector>
 
-#include "polygonizer/mesh_validation_edges.h"
+#include "polygonizer/export/mesh_validation_edges.h"
 
 namespace hg::poly {
 

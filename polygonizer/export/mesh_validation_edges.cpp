@@ -1,4 +1,4 @@
-#include "polygonizer/mesh_validation_edges.h"
+#include "polygonizer/export/mesh_validation_edges.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>

@@ -1,4 +1,4 @@
-#include "polygonizer/obj_io.h"
+#include "polygonizer/export/obj_io.h"
 
 #include <cerrno>
 #include <charconv>

@@ -1,4 +1,4 @@
-#include "polygonizer/stl_io.h"
+#include "polygonizer/export/stl_io.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_pipeline.h>

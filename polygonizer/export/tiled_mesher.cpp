@@ -1,4 +1,4 @@
-#include "polygonizer/tiled_mesher.h"
+#include "polygonizer/export/tiled_mesher.h"
 
 #include <algorithm>
 #include <chrono>
@@ -6,7 +6,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include "polygonizer/export_mesher.h"
+#include "polygonizer/export/export_mesher.h"
 #include "voxel/memory_guard.h"
 #include "voxel/normalization.h"
 #include "voxel/sampler.h"

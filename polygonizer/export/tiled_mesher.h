@@ -18,8 +18,8 @@
 #include <functional>
 #include <string>
 
-#include "frep/box.h"
-#include "frep/model.h"
+#include "frep/kernels/box.h"
+#include "frep/eval/model.h"
 #include "polygonizer/mesh.h"
 #include "voxel/volume_frame.h"
 

@@ -1,4 +1,4 @@
-#include "polygonizer/chunk_layout.h"
+#include "polygonizer/realtime/chunk_layout.h"
 
 #include <stdexcept>
 

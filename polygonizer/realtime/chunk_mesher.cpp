@@ -1,4 +1,4 @@
-#include "polygonizer/chunk_mesher.h"
+#include "polygonizer/realtime/chunk_mesher.h"
 
 #include <algorithm>
 #include <array>
@@ -8,7 +8,7 @@
 #include <unordered_map>
 
 #include "polygonizer/cell_table.h"
-#include "polygonizer/transition_table.h"
+#include "polygonizer/realtime/transition_table.h"
 
 namespace hg::poly {
 

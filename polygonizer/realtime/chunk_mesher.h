@@ -28,8 +28,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "polygonizer/chunk_layout.h"
-#include "polygonizer/lod_pyramid.h"
+#include "polygonizer/realtime/chunk_layout.h"
+#include "polygonizer/realtime/lod_pyramid.h"
 #include "polygonizer/mesh.h"
 
 namespace hg::poly {

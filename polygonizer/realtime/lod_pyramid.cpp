@@ -1,4 +1,4 @@
-#include "polygonizer/lod_pyramid.h"
+#include "polygonizer/realtime/lod_pyramid.h"
 
 #include <stdexcept>
 #include <vector>

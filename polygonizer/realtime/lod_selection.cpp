@@ -1,4 +1,4 @@
-#include "polygonizer/lod_selection.h"
+#include "polygonizer/realtime/lod_selection.h"
 
 #include <algorithm>
 #include <cmath>

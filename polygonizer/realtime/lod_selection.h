@@ -19,7 +19,7 @@
 #include <optional>
 #include <vector>
 
-#include "polygonizer/chunk_layout.h"
+#include "polygonizer/realtime/chunk_layout.h"
 
 namespace hg::poly {
 

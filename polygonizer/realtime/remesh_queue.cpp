@@ -1,4 +1,4 @@
-#include "polygonizer/remesh_queue.h"
+#include "polygonizer/realtime/remesh_queue.h"
 
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
@@ -7,7 +7,7 @@
 #include <chrono>
 #include <tuple>
 
-#include "polygonizer/lod_selection.h"
+#include "polygonizer/realtime/lod_selection.h"
 
 namespace hg::poly {
 

@@ -26,7 +26,7 @@
 #include <memory>
 #include <vector>
 
-#include "polygonizer/chunk_mesher.h"
+#include "polygonizer/realtime/chunk_mesher.h"
 
 namespace hg::poly {
 

@@ -1,4 +1,4 @@
-#include "polygonizer/transition_table.h"
+#include "polygonizer/realtime/transition_table.h"
 
 #include <algorithm>
 #include <cmath>

@@ -3,8 +3,8 @@
 // fades with the distance from the two surfaces.
 #pragma once
 
-#include "frep/library/library.h"
-#include "frep/library/value_ops.h"
+#include "frep/kernels/library/library.h"
+#include "frep/kernels/library/value_ops.h"
 
 namespace hg::frep::lib {
 

@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "frep/library/library.h"
-#include "frep/library/primitives.h"
-#include "frep/library/value_ops.h"
+#include "frep/kernels/library/library.h"
+#include "frep/kernels/library/primitives.h"
+#include "frep/kernels/library/value_ops.h"
 
 namespace hg::frep::lib {
 

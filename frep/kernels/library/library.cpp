@@ -1,5 +1,5 @@
 // The library routines for V = double (the scalar interpreter).
-#include "frep/library/library_impl.h"
+#include "frep/kernels/library/library_impl.h"
 
 namespace hg::frep::lib {
 

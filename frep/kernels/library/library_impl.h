@@ -7,14 +7,14 @@
 #include <string>
 #include <vector>
 
-#include "frep/library/blends.h"
-#include "frep/library/convolution.h"
-#include "frep/library/library.h"
-#include "frep/library/noise.h"
-#include "frep/library/primitives.h"
-#include "frep/library/skeletal.h"
-#include "frep/library/transforms.h"
-#include "frep/library/value_ops.h"
+#include "frep/kernels/library/blends.h"
+#include "frep/kernels/library/convolution.h"
+#include "frep/kernels/library/library.h"
+#include "frep/kernels/library/noise.h"
+#include "frep/kernels/library/primitives.h"
+#include "frep/kernels/library/skeletal.h"
+#include "frep/kernels/library/transforms.h"
+#include "frep/kernels/library/value_ops.h"
 
 namespace hg::frep::lib {
 

@@ -1,6 +1,6 @@
 // Signatures of the library routines, in the order of the reference
 // interpreter's registration table (argument kinds: A = array, R = scalar).
-#include "frep/library/library.h"
+#include "frep/kernels/library/library.h"
 
 namespace hg::frep::lib {
 namespace {

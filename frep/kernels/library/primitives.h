@@ -9,8 +9,8 @@
 
 #include <vector>
 
-#include "frep/library/library.h"
-#include "frep/library/value_ops.h"
+#include "frep/kernels/library/library.h"
+#include "frep/kernels/library/value_ops.h"
 
 namespace hg::frep::lib {
 

@@ -1,6 +1,6 @@
 // The operations library routines may use on a value type V, written here
 // for V = double with exactly the C semantics of the reference interpreter.
-// frep/sym.h provides the same set for the symbolic type Sym (found by
+// frep/compiler/sym.h provides the same set for the symbolic type Sym (found by
 // argument-dependent lookup), so routine templates compile for both.
 #pragma once
 
