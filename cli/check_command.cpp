@@ -4,8 +4,8 @@
 #include <cstdio>
 #include <iostream>
 
-#include "frep/bounds.h"
-#include "frep/parser.h"
+#include "frep/eval/bounds.h"
+#include "frep/language/parser.h"
 #include "cli/commands.h"
 #include "cli/load_model.h"
 

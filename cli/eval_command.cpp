@@ -18,10 +18,10 @@
 #include <string_view>
 #include <vector>
 
-#include "frep/eval_batch.h"
-#include "frep/eval_interval.h"
-#include "frep/interpreter.h"
-#include "frep/tape_specializer.h"
+#include "frep/eval/eval_batch.h"
+#include "frep/eval/eval_interval.h"
+#include "frep/language/interpreter.h"
+#include "frep/eval/tape_specializer.h"
 #include "cli/commands.h"
 #include "cli/load_model.h"
 #include "cli/point_lines.h"
@@ -114,7 +114,7 @@ public:
 
 private:
     // Points that lie close together are evaluated together with the tape
-    // specialized to their box (frep/tape_specializer.h; the same values
+    // specialized to their box (frep/eval/tape_specializer.h; the same values
     // bit for bit): the batch is split at the median of its longest side
     // until a group holds at most kGroup points.
     static constexpr size_t kGroup = 256;

@@ -6,8 +6,8 @@
 #include <optional>
 #include <string>
 
-#include "frep/bounds.h"
-#include "frep/model.h"
+#include "frep/eval/bounds.h"
+#include "frep/eval/model.h"
 #include "cli/commands.h"
 
 namespace hg::garden::cli {

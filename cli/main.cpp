@@ -10,7 +10,7 @@
 #include <iostream>
 
 #include "cli/commands.h"
-#include "frep/near_miss.h"
+#include "frep/language/near_miss.h"
 #ifdef HG_CLI_KERNEL_ONLY
 #include "cli/full_executable.h"
 #endif

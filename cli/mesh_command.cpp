@@ -9,9 +9,9 @@
 
 #include "cli/commands.h"
 #include "cli/load_model.h"
-#include "polygonizer/export_mesher.h"
-#include "polygonizer/mesh_validation.h"
-#include "polygonizer/stl_io.h"
+#include "polygonizer/export/export_mesher.h"
+#include "polygonizer/export/mesh_validation.h"
+#include "polygonizer/export/stl_io.h"
 #include "voxel/sampler.h"
 #include "voxel/vdb_io.h"
 

@@ -4,7 +4,7 @@
 #include <iostream>
 #include <vector>
 
-#include "frep/near_miss.h"
+#include "frep/language/near_miss.h"
 #include "garden/session/journal.h"
 #include "garden/session/session_folder.h"
 #include "io/folder_lock.h"

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "frep/model.h"
-#include "frep/parser.h"
+#include "frep/eval/model.h"
+#include "frep/language/parser.h"
 
 namespace hg::test {
 

@@ -9,7 +9,7 @@
 // that is what makes a region resample bit-identical to a full one.
 //
 // Each box's interval pass also specializes the tape to the box
-// (frep/tape_specializer.h): its children are tested and its leaves
+// (frep/eval/tape_specializer.h): its children are tested and its leaves
 // evaluated with the shorter tape, which computes the same values bit for
 // bit, so the grids are the same with or without it, only faster where
 // many bounded pieces (a sculpture's edits) each reach a few boxes.
@@ -23,10 +23,10 @@
 #include <utility>
 #include <vector>
 
-#include "frep/eval_batch.h"
-#include "frep/eval_interval.h"
-#include "frep/model.h"
-#include "frep/tape_specializer.h"
+#include "frep/eval/eval_batch.h"
+#include "frep/eval/eval_interval.h"
+#include "frep/eval/model.h"
+#include "frep/eval/tape_specializer.h"
 #include "voxel/volume_frame.h"
 
 namespace hg::voxel {

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "frep/domain_error.h"
-#include "frep/model.h"
+#include "frep/language/domain_error.h"
+#include "frep/eval/model.h"
 #include "voxel/volume_frame.h"
 
 namespace hg::voxel {

@@ -8,9 +8,9 @@
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
-#include "frep/eval_batch.h"
-#include "frep/eval_interval.h"
-#include "frep/tape_specializer.h"
+#include "frep/eval/eval_batch.h"
+#include "frep/eval/eval_interval.h"
+#include "frep/eval/tape_specializer.h"
 #include "voxel/volume_vdb.h"
 
 namespace hg::voxel {
@@ -41,7 +41,7 @@ struct Worker {
     frep::ErrorReport errors;
 };
 
-// The tape for the voxels of `box`: specialized to it (frep/tape_specializer.h,
+// The tape for the voxels of `box`: specialized to it (frep/eval/tape_specializer.h,
 // the same values bit for bit) when that shortens it.
 void bindTapeFor(Worker& wk, const VolumeFrame& frame, const IndexBox& box) {
     // Rebinding fills every constant's registers: the full tape only when

@@ -10,8 +10,8 @@
 #include <functional>
 #include <vector>
 
-#include "frep/domain_error.h"
-#include "frep/tape.h"
+#include "frep/language/domain_error.h"
+#include "frep/compiler/tape.h"
 #include "voxel/index_box.h"
 #include "voxel/volume.h"
 

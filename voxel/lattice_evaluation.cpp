@@ -6,9 +6,9 @@
 #include <algorithm>
 #include <memory>
 
-#include "frep/eval_batch.h"
-#include "frep/eval_interval.h"
-#include "frep/tape_specializer.h"
+#include "frep/eval/eval_batch.h"
+#include "frep/eval/eval_interval.h"
+#include "frep/eval/tape_specializer.h"
 
 namespace hg::voxel {
 

@@ -1,7 +1,7 @@
 // A model evaluated in float at every point of a rectilinear lattice: the
 // dense source cache and the normalization probe both sample this way. A
 // model with a tape is evaluated in blocks of points, each with the tape
-// specialized to its box (frep/tape_specializer.h), which gives the same
+// specialized to its box (frep/eval/tape_specializer.h), which gives the same
 // values bit for bit; an edited sculpture's pieces then run only near where
 // they reach. Every value depends only on its point, so the result is the
 // same whatever the number of threads.
@@ -11,8 +11,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "frep/domain_error.h"
-#include "frep/model.h"
+#include "frep/language/domain_error.h"
+#include "frep/eval/model.h"
 
 namespace hg::voxel {
 

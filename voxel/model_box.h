@@ -1,5 +1,5 @@
 // The model box a sculpture is sampled over: the one given, else the interval
-// estimate (frep/bounds.h), else, where that fails, the region found by
+// estimate (frep/eval/bounds.h), else, where that fails, the region found by
 // sampling HyperFun's default box [-10, 10]^3. Interval bounds far from a
 // blend or a twist are often too loose to prove space empty, and that must
 // not make a bounded file unusable: HyperFun's own polygonizer samples that
@@ -11,8 +11,8 @@
 #include <optional>
 #include <string>
 
-#include "frep/bounds.h"
-#include "frep/model.h"
+#include "frep/eval/bounds.h"
+#include "frep/eval/model.h"
 #include "voxel/volume.h"
 
 namespace hg::voxel {

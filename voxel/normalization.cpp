@@ -11,9 +11,9 @@
 #include <memory>
 #include <vector>
 
-#include "frep/eval_gradient.h"
-#include "frep/eval_interval.h"
-#include "frep/tape_specializer.h"
+#include "frep/eval/eval_gradient.h"
+#include "frep/eval/eval_interval.h"
+#include "frep/eval/tape_specializer.h"
 #include "voxel/lattice_evaluation.h"
 
 namespace hg::voxel {
@@ -194,7 +194,7 @@ std::vector<double> gradientMagnitudes(const frep::Model& model, const std::vect
         starts.push_back(n);
         // In parallel, each magnitude written at its sample's index so the
         // result does not depend on the number of threads. The specialized
-        // tapes give the same values, bit for bit (frep/tape_specializer.h).
+        // tapes give the same values, bit for bit (frep/eval/tape_specializer.h).
         std::vector<double> all(n, 0.0);
         const bool specialize = frep::specializationEnabled();
         tbb::enumerable_thread_specific<std::unique_ptr<GradientWorker>> workers;

@@ -7,7 +7,7 @@
 
 #include <cstddef>
 
-#include "frep/model.h"
+#include "frep/eval/model.h"
 #include "voxel/volume_frame.h"
 
 namespace hg::voxel {

@@ -9,8 +9,8 @@
 #include <optional>
 #include <string>
 
-#include "frep/domain_error.h"
-#include "frep/model.h"
+#include "frep/eval/model.h"
+#include "frep/language/domain_error.h"
 #include "io/progress.h"
 #include "voxel/model_box.h"
 #include "voxel/normalization.h"
@@ -35,7 +35,7 @@ struct SampleStats {
     std::uint64_t leaves = 0;         // leaves that hold evaluated voxels
     std::uint64_t estimatedBytes = 0; // the memory guard's estimate
     // The tape each evaluated leaf ran, specialized to its box
-    // (frep/tape_specializer.h): mean and longest, against the full tape.
+    // (frep/eval/tape_specializer.h): mean and longest, against the full tape.
     double leafTapeMean = 0.0;
     std::uint64_t leafTapeMax = 0;
     std::uint64_t leafTapes = 0;      // leaves batch-evaluated with a tape (the mean's count)
@@ -68,7 +68,7 @@ VoxelizeResult voxelize(const frep::Model& model, const VolumeRequest& request, 
 // to the frame) of what voxelize() stores with normalization `scale`; every
 // other voxel reads the background (outside). Built as voxelize() builds
 // its grid (leaves on the workers, pruned), without its memory guard: the
-// caller bounds the region (polygonizer/tiled_mesher.h). `progress` (may be
+// caller bounds the region (polygonizer/export/tiled_mesher.h). `progress` (may be
 // null) is told and asked as voxelize()'s; once it is cancelled the volume
 // is incomplete and the caller must drop it.
 Volume sampleRegion(const frep::Model& model, const VolumeFrame& frame, double scale, const IndexBox& region,

@@ -14,7 +14,7 @@
 #include <optional>
 #include <string>
 
-#include "frep/box.h"
+#include "frep/kernels/box.h"
 #include "voxel/sampler.h"
 
 namespace hg::voxel {

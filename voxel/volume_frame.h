@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <string>
 
-#include "frep/box.h"
+#include "frep/kernels/box.h"
 #include "voxel/index_box.h"
 
 namespace hg::voxel {

@@ -23,8 +23,8 @@
 #include <tbb/global_control.h>
 
 #include "bench/bench_common.h"
-#include "frep/model.h"
-#include "frep/parser.h"
+#include "frep/eval/model.h"
+#include "frep/language/parser.h"
 #include "garden/deform/deformable_model.h"
 #include "voxel/sampler.h"
 

@@ -31,8 +31,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "frep/model.h"
-#include "frep/parser.h"
+#include "frep/eval/model.h"
+#include "frep/language/parser.h"
 
 extern char** environ;
 

@@ -18,12 +18,12 @@
 #include <string>
 #include <vector>
 
-#include "frep/bounds.h"
-#include "frep/eval_batch.h"
-#include "frep/eval_interval.h"
-#include "frep/interpreter.h"
-#include "frep/model.h"
-#include "frep/parser.h"
+#include "frep/eval/bounds.h"
+#include "frep/eval/eval_batch.h"
+#include "frep/eval/eval_interval.h"
+#include "frep/language/interpreter.h"
+#include "frep/eval/model.h"
+#include "frep/language/parser.h"
 
 namespace {
 

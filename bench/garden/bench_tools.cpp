@@ -34,19 +34,19 @@
 
 #include "../bench_common.h"
 
-#include "frep/parser.h"
+#include "frep/language/parser.h"
 #include "garden/app/garden_session.h"
-#include "frep/model.h"
-#include "frep/tape_specializer.h"
+#include "frep/eval/model.h"
+#include "frep/eval/tape_specializer.h"
 #include "garden/export/export_file.h"
 #include "garden/export/hyperfun_export.h"
 #include "garden/sculpt/impacts.h"
 #include "garden/sculpt/sculpture_edits.h"
 #include "garden/sculpt/stroke_segments.h"
 #include "garden/scene/garden_file.h"
-#include "polygonizer/chunk_layout.h"
-#include "polygonizer/lod_pyramid.h"
-#include "polygonizer/remesh_queue.h"
+#include "polygonizer/realtime/chunk_layout.h"
+#include "polygonizer/realtime/lod_pyramid.h"
+#include "polygonizer/realtime/remesh_queue.h"
 #include "voxel/sampler.h"
 
 namespace {

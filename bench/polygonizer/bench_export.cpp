@@ -41,9 +41,9 @@
 
 #include "../bench_common.h"
 
-#include "frep/parser.h"
-#include "polygonizer/export_mesher.h"
-#include "polygonizer/mesh_export.h"
+#include "frep/language/parser.h"
+#include "polygonizer/export/export_mesher.h"
+#include "polygonizer/export/mesh_export.h"
 #include "voxel/model_box.h"
 #include "voxel/sampler.h"
 #include "voxel/volume_vdb.h"

@@ -27,10 +27,10 @@
 
 #include "../bench_common.h"
 
-#include "frep/parser.h"
-#include "polygonizer/chunk_mesher.h"
-#include "polygonizer/export_mesher.h"
-#include "polygonizer/lod_selection.h"
+#include "frep/language/parser.h"
+#include "polygonizer/realtime/chunk_mesher.h"
+#include "polygonizer/export/export_mesher.h"
+#include "polygonizer/realtime/lod_selection.h"
 #include "voxel/sampler.h"
 
 namespace {

@@ -22,8 +22,8 @@
 #include "../bench_common.h"
 #include "end_to_end.h"
 
-#include "frep/parser.h"
-#include "polygonizer/export_mesher.h"
+#include "frep/language/parser.h"
+#include "polygonizer/export/export_mesher.h"
 #include "voxel/sampler.h"
 #include "voxel/volume_vdb.h"
 

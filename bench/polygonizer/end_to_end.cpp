@@ -26,10 +26,10 @@
 #include <optional>
 #include <string>
 
-#include "frep/parser.h"
-#include "polygonizer/export_mesher.h"
-#include "polygonizer/mesh_validation.h"
-#include "polygonizer/stl_io.h"
+#include "frep/language/parser.h"
+#include "polygonizer/export/export_mesher.h"
+#include "polygonizer/export/mesh_validation.h"
+#include "polygonizer/export/stl_io.h"
 #include "voxel/sampler.h"
 
 namespace hg::bench {

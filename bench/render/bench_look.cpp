@@ -21,14 +21,14 @@
 #include <vector>
 
 #include "../bench_common.h"
-#include "frep/model.h"
-#include "frep/parser.h"
+#include "frep/eval/model.h"
+#include "frep/language/parser.h"
 #include "garden/render/gl_context.h"
 #include "garden/render/material_look.h"
 #include "garden/scene/materials.h"
 #include "garden/render/offscreen_target.h"
 #include "garden/render/renderer.h"
-#include "polygonizer/export_mesher.h"
+#include "polygonizer/export/export_mesher.h"
 #include "voxel/sampler.h"
 
 namespace {

@@ -21,8 +21,8 @@
 
 #include "../bench_common.h"
 
-#include "frep/model.h"
-#include "frep/parser.h"
+#include "frep/eval/model.h"
+#include "frep/language/parser.h"
 #include "voxel/scalar_volume.h"
 #include "voxel/sampler.h"
 

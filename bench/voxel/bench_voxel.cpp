@@ -23,8 +23,8 @@
 
 #include "../bench_common.h"
 
-#include "frep/model.h"
-#include "frep/parser.h"
+#include "frep/eval/model.h"
+#include "frep/language/parser.h"
 #include "voxel/dense_field.h"
 #include "voxel/sampler.h"
 #include "voxel/volume_vdb.h"

@@ -16,7 +16,7 @@
 #include "garden/morph/morph_sources.h"
 #include "garden/sculpt/sculpture_edits.h"
 #include "garden/scene/to_glm.h"
-#include "polygonizer/meshing_worker.h"
+#include "polygonizer/realtime/meshing_worker.h"
 #include "voxel/sampler.h"
 
 namespace hg::garden {

@@ -35,8 +35,8 @@
 #include "garden/sculpt/edit.h"
 #include "garden/sculpt/tool_settings.h"
 #include "garden/action/action_sink.h"
-#include "polygonizer/lod_selection.h"
-#include "polygonizer/remesh_queue.h"
+#include "polygonizer/realtime/lod_selection.h"
+#include "polygonizer/realtime/remesh_queue.h"
 
 namespace hg::garden {
 

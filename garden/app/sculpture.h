@@ -15,9 +15,9 @@
 
 #include "garden/scene/garden.h"
 #include "garden/sculpt/edit.h"
-#include "polygonizer/chunk_layout.h"
-#include "polygonizer/lod_pyramid.h"
-#include "polygonizer/remesh_queue.h"
+#include "polygonizer/realtime/chunk_layout.h"
+#include "polygonizer/realtime/lod_pyramid.h"
+#include "polygonizer/realtime/remesh_queue.h"
 #include "voxel/volume.h"
 
 namespace hg::frep { struct Program; class Model; }

@@ -18,7 +18,7 @@
 #include "garden/sketch/inflation_text.h"
 #include "io/checked_write.h"
 #include "io/read_text.h"
-#include "polygonizer/mesh_read.h"
+#include "polygonizer/export/mesh_read.h"
 #include "voxel/sampler.h"
 
 namespace hg::garden {

@@ -5,13 +5,13 @@
 #include <filesystem>
 #include <sstream>
 
-#include "frep/diagnostics.h"
-#include "frep/parser.h"
+#include "frep/language/diagnostics.h"
+#include "frep/language/parser.h"
 #include "garden/app/garden_session.h"
 #include "garden/export/hyperfun_export.h"
 #include "garden/scene/model_file.h"
 #include "garden/sculpt/sculpture_edits.h"
-#include "polygonizer/mesh_export.h"
+#include "polygonizer/export/mesh_export.h"
 #include "voxel/volume.h"
 
 namespace hg::garden {

@@ -1,6 +1,6 @@
 // One sculpture of a running garden written to a file in any export format
 // (docs/design.md §7, docs/export.md): exact HyperFun (.hf), or a mesh meshed from
-// that exported FRep (.stl, .obj, .glb, .vdb: polygonizer/mesh_export.h), so
+// that exported FRep (.stl, .obj, .glb, .vdb: polygonizer/export/mesh_export.h), so
 // every format shows the same solid. A scanned volume's sculpture has no
 // FRep to write: its meshes come from its grid as it stands, at the grid's
 // resolution, and .hf is refused (docs/volumes.md, "Scanned volumes"). The command line (`hypergarden
@@ -12,7 +12,7 @@
 #include <optional>
 #include <string>
 
-#include "frep/box.h"
+#include "frep/kernels/box.h"
 #include "io/progress.h"
 
 namespace hg::voxel { class Volume; }

@@ -4,8 +4,8 @@
 #include <cstring>
 #include <stdexcept>
 
-#include "frep/hf_math.h"
-#include "frep/writer.h"
+#include "frep/language/hf_math.h"
+#include "frep/language/writer.h"
 
 namespace hg::garden::hfexport {
 

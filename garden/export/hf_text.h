@@ -34,7 +34,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include "frep/library/convolution.h"
+#include "frep/kernels/library/convolution.h"
 
 namespace hg::garden::hfexport {
 

@@ -11,8 +11,8 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "frep/parser.h"
-#include "frep/writer.h"
+#include "frep/language/parser.h"
+#include "frep/language/writer.h"
 #include "garden/app/garden_session.h"
 #include "garden/export/export_field.h"
 #include "garden/morph/morph_sources.h"

@@ -14,7 +14,7 @@
 //
 //   1. coarse: in each block, only the voxels whose three indices are
 //      multiples of 4. Those are exactly the samples of LOD levels 2 and up
-//      (polygonizer/lod_pyramid.h point-samples level L at multiples of
+//      (polygonizer/realtime/lod_pyramid.h point-samples level L at multiples of
 //      2^L), so once this 1/64 of the work is done every chunk drawn at
 //      level 2 or coarser shows the new shape. It costs about 2 ms for a
 //      256^3 result (bench_morph), so it lands in the first frame or two.

@@ -12,7 +12,7 @@
 #include <optional>
 #include <string>
 
-#include "frep/model.h"
+#include "frep/eval/model.h"
 #include "garden/morph/blocked_field.h"
 #include "voxel/dense_field.h"
 #include "voxel/volume_frame.h"

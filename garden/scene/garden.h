@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "frep/box.h"
+#include "frep/kernels/box.h"
 
 namespace hg::garden {
 

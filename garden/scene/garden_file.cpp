@@ -14,7 +14,7 @@
 #include "garden/scene/json_reader.h"
 #include "garden/scene/materials.h"
 #include "garden/scene/model_file.h"
-#include "polygonizer/mesh_read.h"
+#include "polygonizer/export/mesh_read.h"
 #include "voxel/scalar_volume.h"
 #include "voxel/volume_frame.h"
 

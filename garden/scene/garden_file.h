@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "frep/model.h"
+#include "frep/eval/model.h"
 #include "garden/scene/garden.h"
 
 namespace hg::voxel { class ScalarVolume; }

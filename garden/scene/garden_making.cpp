@@ -11,7 +11,7 @@
 #include "garden/scene/garden_file.h"
 #include "garden/scene/json_reader.h"
 #include "garden/scene/model_file.h"
-#include "polygonizer/mesh_read.h"
+#include "polygonizer/export/mesh_read.h"
 #include "voxel/mesh_volume.h"
 #include "voxel/model_box.h"
 #include "voxel/scalar_volume.h"

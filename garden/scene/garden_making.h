@@ -10,7 +10,7 @@
 #include <array>
 #include <string>
 
-#include "frep/box.h"
+#include "frep/kernels/box.h"
 
 namespace hg::frep { class Model; }
 

@@ -14,7 +14,7 @@
 
 #include <nlohmann/json_fwd.hpp>
 
-#include "frep/near_miss.h"
+#include "frep/language/near_miss.h"
 
 namespace hg::garden {
 
@@ -67,7 +67,7 @@ private:
 // A number as JSON writes it, without a trailing ".0" ("64.5", "0", "1e+30").
 std::string formatNumber(double v);
 
-// The candidate nearest to `word` when it is a near miss (frep/near_miss.h).
+// The candidate nearest to `word` when it is a near miss (frep/language/near_miss.h).
 using frep::nearMiss;
 
 // Typed values; each throws JsonError at `path` when the value does not fit.

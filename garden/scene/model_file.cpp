@@ -1,6 +1,6 @@
 #include "garden/scene/model_file.h"
 
-#include "frep/parser.h"
+#include "frep/language/parser.h"
 
 namespace hg::garden {
 

@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "frep/ast.h"
-#include "frep/model.h"
+#include "frep/language/ast.h"
+#include "frep/eval/model.h"
 
 namespace hg::garden {
 

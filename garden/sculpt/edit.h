@@ -19,7 +19,7 @@
 #include <variant>
 #include <vector>
 
-#include "frep/box.h"
+#include "frep/kernels/box.h"
 #include "garden/sketch/inflation.h"
 
 namespace hg::garden {

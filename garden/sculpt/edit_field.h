@@ -19,9 +19,9 @@
 #include <optional>
 #include <vector>
 
-#include "frep/hf_math.h"
-#include "frep/library/convolution.h"
-#include "frep/sym.h"
+#include "frep/language/hf_math.h"
+#include "frep/kernels/library/convolution.h"
+#include "frep/compiler/sym.h"
 #include "garden/sculpt/edit.h"
 
 namespace hg::garden {

@@ -5,7 +5,7 @@
 #include <map>
 #include <stdexcept>
 
-#include "frep/tape_builder.h"
+#include "frep/compiler/tape_builder.h"
 #include "garden/sculpt/edit_field.h"
 
 namespace hg::garden {

@@ -10,7 +10,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include "frep/tape.h"
+#include "frep/compiler/tape.h"
 #include "garden/sculpt/edit.h"
 
 namespace hg::garden {

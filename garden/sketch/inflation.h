@@ -23,7 +23,7 @@
 // level for all, so fitting a varying half-width needs a solve, and its
 // fields reach everywhere, so nothing can be dropped per box. The max of
 // pieces has a closed form per piece, is about a distance (1-Lipschitz),
-// and the tape specializer (frep/tape_specializer.h) drops every piece that
+// and the tape specializer (frep/eval/tape_specializer.h) drops every piece that
 // cannot win in a box, so voxelizing costs a few pieces per box, not all.
 // Its one visual cost: shallow creases where branches meet at a junction.
 //

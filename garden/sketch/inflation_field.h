@@ -7,7 +7,7 @@
 // text gives the same values.
 #pragma once
 
-#include "frep/hf_math.h"
+#include "frep/language/hf_math.h"
 #include "garden/sketch/inflation.h"
 
 #include <cmath>
@@ -16,7 +16,7 @@
 
 namespace hg::garden::sketch {
 
-// HyperFun's built-ins on double (frep/hf_math.h: max(p, q) is p > q ? p : q).
+// HyperFun's built-ins on double (frep/language/hf_math.h: max(p, q) is p > q ? p : q).
 struct DoubleOps {
     double max(double p, double q) const { return frep::hf::maximum(p, q); }
     double min(double p, double q) const { return frep::hf::minimum(p, q); }
@@ -39,7 +39,7 @@ inline std::string hfDecimal(double v) {
     return s;
 }
 
-// The value frep's lexer gives a plain decimal (frep/lexer.cpp): the
+// The value frep's lexer gives a plain decimal (frep/language/lexer.cpp): the
 // integer digits accumulated as value * 10 + d, then each fraction digit
 // added as d / 10^k.
 inline double hfLexedValue(const std::string& s) {

@@ -2,7 +2,7 @@
 
 #include <memory>
 
-#include "frep/parser.h"
+#include "frep/language/parser.h"
 #include "garden/sketch/inflation_field.h"
 
 namespace hg::garden::sketch {

@@ -13,7 +13,7 @@
 #include <optional>
 #include <string>
 
-#include "frep/model.h"
+#include "frep/eval/model.h"
 #include "garden/sketch/inflation.h"
 
 namespace hg::garden::sketch {

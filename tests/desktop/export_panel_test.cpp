@@ -15,8 +15,8 @@
 #include "garden/app/garden_session.h"
 #include "garden/desktop/export_panel.h"
 #include "garden/export/hyperfun_export.h"
-#include "polygonizer/mesh_validation.h"
-#include "polygonizer/stl_io.h"
+#include "polygonizer/export/mesh_validation.h"
+#include "polygonizer/export/stl_io.h"
 #include "tests/garden/session_garden.h"
 #include "tests/render/headless_imgui.h"
 

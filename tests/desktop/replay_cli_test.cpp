@@ -9,8 +9,8 @@
 #include <nlohmann/json.hpp>
 
 #include "../cli_fixture.h"
-#include "polygonizer/mesh_validation.h"
-#include "polygonizer/stl_io.h"
+#include "polygonizer/export/mesh_validation.h"
+#include "polygonizer/export/stl_io.h"
 #include "../garden/session_garden.h"
 
 namespace hg::garden {

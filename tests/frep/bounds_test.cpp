@@ -1,4 +1,4 @@
-// The model box estimate (frep/bounds.h): it must contain the solid, close
+// The model box estimate (frep/eval/bounds.h): it must contain the solid, close
 // in on it to within a couple of its cells, and tell empty and unbounded
 // solids apart. Solids with known boxes, placed off the origin and off the
 // search cube's split planes so nothing lines up by luck.
@@ -11,10 +11,10 @@
 #include <string>
 #include <vector>
 
-#include "frep/bounds.h"
-#include "frep/compiler.h"
-#include "frep/eval_batch.h"
-#include "frep/parser.h"
+#include "frep/eval/bounds.h"
+#include "frep/compiler/compiler.h"
+#include "frep/eval/eval_batch.h"
+#include "frep/language/parser.h"
 
 namespace hg::frep {
 namespace {

@@ -8,10 +8,10 @@
 #include <map>
 
 #include "conformance_data.h"
-#include "frep/compiler.h"
-#include "frep/eval_batch.h"
-#include "frep/interpreter.h"
-#include "frep/parser.h"
+#include "frep/compiler/compiler.h"
+#include "frep/eval/eval_batch.h"
+#include "frep/language/interpreter.h"
+#include "frep/language/parser.h"
 
 namespace hg::frep {
 namespace {

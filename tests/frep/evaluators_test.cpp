@@ -8,12 +8,12 @@
 #include <random>
 
 #include "conformance_data.h"
-#include "frep/compiler.h"
-#include "frep/eval_batch.h"
-#include "frep/eval_gradient.h"
-#include "frep/eval_interval.h"
-#include "frep/interpreter.h"
-#include "frep/parser.h"
+#include "frep/compiler/compiler.h"
+#include "frep/eval/eval_batch.h"
+#include "frep/eval/eval_gradient.h"
+#include "frep/eval/eval_interval.h"
+#include "frep/language/interpreter.h"
+#include "frep/language/parser.h"
 
 namespace hg::frep {
 namespace {

@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "frep/eval_gradient.h"
-#include "frep/interpreter.h"
+#include "frep/eval/eval_gradient.h"
+#include "frep/language/interpreter.h"
 
 namespace hg::frep::test {
 

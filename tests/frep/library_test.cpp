@@ -1,4 +1,4 @@
-// Tests of the HyperFun library routines (frep/library) for V = double:
+// Tests of the HyperFun library routines (frep/kernels/library) for V = double:
 // hand-computed values for simple inputs, numerical integrals for the
 // convolution kernels, in-place rewriting, sentinels, dispatch of every id,
 // and replicas of the conformance programs that exercise the library
@@ -19,8 +19,8 @@
 #include <string>
 #include <vector>
 
-#include "frep/library/library.h"
-#include "frep/library/library_impl.h"
+#include "frep/kernels/library/library.h"
+#include "frep/kernels/library/library_impl.h"
 
 namespace {
 

@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "frep/lexer.h"
-#include "frep/library/library.h"
-#include "frep/parser.h"
+#include "frep/language/lexer.h"
+#include "frep/kernels/library/library.h"
+#include "frep/language/parser.h"
 
 namespace fs = std::filesystem;
 using namespace hg::frep;

@@ -12,7 +12,7 @@
 #include <random>
 #include <vector>
 
-#include "frep/conv_segment.h"
+#include "frep/kernels/conv_segment.h"
 #include "kernel_checks.h"
 
 namespace hg::frep {

@@ -13,12 +13,12 @@
 #include <string>
 #include <vector>
 
-#include "frep/compiler.h"
-#include "frep/eval_batch.h"
-#include "frep/eval_gradient.h"
-#include "frep/eval_interval.h"
-#include "frep/interpreter.h"
-#include "frep/parser.h"
+#include "frep/compiler/compiler.h"
+#include "frep/eval/eval_batch.h"
+#include "frep/eval/eval_gradient.h"
+#include "frep/eval/eval_interval.h"
+#include "frep/language/interpreter.h"
+#include "frep/language/parser.h"
 #include "kernel_checks.h"
 
 namespace hg::frep {

@@ -1,4 +1,4 @@
-// The tape specialized to a box (frep/tape_specializer.h) computes the
+// The tape specialized to a box (frep/eval/tape_specializer.h) computes the
 // full tape's values bit for bit, in float, in double and in gradients
 // (derivatives equal, magnitudes bit for bit), with the same
 // failures, the first one named alike: every conformance program, corpus
@@ -16,12 +16,12 @@
 #include <utility>
 
 #include "conformance_data.h"
-#include "frep/compiler.h"
-#include "frep/eval_batch.h"
-#include "frep/eval_gradient.h"
-#include "frep/eval_interval.h"
-#include "frep/parser.h"
-#include "frep/tape_specializer.h"
+#include "frep/compiler/compiler.h"
+#include "frep/eval/eval_batch.h"
+#include "frep/eval/eval_gradient.h"
+#include "frep/eval/eval_interval.h"
+#include "frep/language/parser.h"
+#include "frep/eval/tape_specializer.h"
 
 namespace hg::frep {
 namespace {

@@ -1,4 +1,4 @@
-// Tests of the HyperFun writer (frep/writer.h): every conformance and
+// Tests of the HyperFun writer (frep/language/writer.h): every conformance and
 // corpus program and the content/hyperfun models written, parsed back and
 // evaluated bit for bit against the original (errors included), idempotence
 // of the output, the tree the parse gives back, operator levels, conditions,
@@ -16,10 +16,10 @@
 #include <vector>
 
 #include "conformance_data.h"
-#include "frep/interpreter.h"
-#include "frep/lexer.h"
-#include "frep/parser.h"
-#include "frep/writer.h"
+#include "frep/language/interpreter.h"
+#include "frep/language/lexer.h"
+#include "frep/language/parser.h"
+#include "frep/language/writer.h"
 
 namespace fs = std::filesystem;
 

@@ -16,8 +16,8 @@
 #include <cstdint>
 #include <cstdlib>
 
-#include "polygonizer/export_mesher.h"
-#include "polygonizer/mesh_validation.h"
+#include "polygonizer/export/export_mesher.h"
+#include "polygonizer/export/mesh_validation.h"
 #include "tests/polygonizer/dense_grid.h"
 
 using namespace hg;

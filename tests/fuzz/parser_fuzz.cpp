@@ -8,8 +8,8 @@
 #include <string>
 #include <string_view>
 
-#include "frep/library/library.h"
-#include "frep/parser.h"
+#include "frep/kernels/library/library.h"
+#include "frep/language/parser.h"
 
 using namespace hg::frep;
 

@@ -7,8 +7,8 @@
 #include <sstream>
 
 #include "garden/export/hyperfun_export.h"
-#include "polygonizer/mesh_validation.h"
-#include "polygonizer/stl_io.h"
+#include "polygonizer/export/mesh_validation.h"
+#include "polygonizer/export/stl_io.h"
 #include "garden/session/open_session.h"
 #include "session_garden.h"
 #include "tests/cli_fixture.h"

@@ -12,8 +12,8 @@
 #include <memory>
 #include <string>
 
-#include "frep/model.h"
-#include "frep/parser.h"
+#include "frep/eval/model.h"
+#include "frep/language/parser.h"
 #include "tests/test_models.h"
 #include "voxel/volume.h"
 #include "garden/morph/morph_sources.h"

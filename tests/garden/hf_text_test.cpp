@@ -10,8 +10,8 @@
 
 #include <random>
 
-#include "frep/interpreter.h"
-#include "frep/parser.h"
+#include "frep/language/interpreter.h"
+#include "frep/language/parser.h"
 #include "garden/sculpt/edit_field.h"
 
 namespace hg::garden {

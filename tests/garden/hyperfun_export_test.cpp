@@ -14,10 +14,10 @@
 #include <random>
 #include <sstream>
 
-#include "frep/interpreter.h"
-#include "frep/model.h"
-#include "frep/parser.h"
-#include "frep/tape_specializer.h"
+#include "frep/language/interpreter.h"
+#include "frep/eval/model.h"
+#include "frep/language/parser.h"
+#include "frep/eval/tape_specializer.h"
 #include "voxel/sampler.h"
 #include "garden/app/garden_session.h"
 #include "garden/export/export_field.h"

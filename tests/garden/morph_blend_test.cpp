@@ -9,7 +9,7 @@
 
 #include "garden/morph/morph_blend.h"
 #include "garden_test_util.h"
-#include "polygonizer/lod_pyramid.h"
+#include "polygonizer/realtime/lod_pyramid.h"
 #include "voxel/volume_vdb.h"
 
 namespace hg::garden {

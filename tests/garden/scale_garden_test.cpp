@@ -10,7 +10,7 @@
 
 #include "garden/app/garden_session.h"
 #include "garden/scene/scale_garden.h"
-#include "polygonizer/lod_selection.h"
+#include "polygonizer/realtime/lod_selection.h"
 
 namespace hg::garden {
 namespace {

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <random>
 
-#include "frep/eval_batch.h"
+#include "frep/eval/eval_batch.h"
 #include "garden/sculpt/edit_field.h"
 #include "garden/sculpt/edit_list.h"
 #include "garden/sculpt/impacts.h"

@@ -13,7 +13,7 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "../gesture/gesture_shapes.h"
-#include "frep/model.h"
+#include "frep/eval/model.h"
 #include "garden/app/garden_session.h"
 #include "garden/export/hyperfun_export.h"
 #include "garden/export/part_export.h"

@@ -10,7 +10,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "frep/parser.h"
+#include "frep/language/parser.h"
 #include "garden/app/garden_session.h"
 #include "garden/export/hyperfun_export.h"
 #include "garden/replay/replay_runner.h"

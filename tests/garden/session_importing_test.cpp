@@ -19,7 +19,7 @@
 #include "garden/scene/json_reader.h"
 #include "garden/session/journal.h"
 #include "garden/session/open_session.h"
-#include "polygonizer/mesh_read.h"
+#include "polygonizer/export/mesh_read.h"
 #include "session_garden.h"
 #include "voxel/mesh_volume.h"
 #include "voxel/vdb_io.h"

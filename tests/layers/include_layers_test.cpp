@@ -22,30 +22,34 @@ namespace fs = std::filesystem;
 // must not include each other.
 const std::map<std::string, int>& layers() {
     static const std::map<std::string, int> l = {
-        {"frep", 0},           {"io", 0},
-        {"voxel", 1},
-        {"polygonizer", 2},
-        {"garden/scene", 3},   {"garden/sketch", 3},
-        {"garden/sculpt", 4},  {"garden/morph", 4}, {"garden/hands", 4},
-        {"garden/gesture", 4}, {"garden/deform", 4},
-        {"garden/action", 5},
-        {"garden/app", 6},
-        {"garden/session", 7}, {"garden/replay", 7}, {"garden/export", 7},
-        {"garden/render", 8},
-        {"garden/desktop", 9},
-        {"xr", 10},
-        {"xr/mock_runtime", 11},
-        {"cli", 12},
+        {"frep/kernels", 0},   {"io", 0},
+        {"frep/language", 1},
+        {"frep/compiler", 2},
+        {"frep/eval", 3},
+        {"voxel", 4},
+        {"polygonizer", 5},
+        {"polygonizer/realtime", 6}, {"polygonizer/export", 6},
+        {"garden/scene", 7},   {"garden/sketch", 7},
+        {"garden/sculpt", 8},  {"garden/morph", 8}, {"garden/hands", 8},
+        {"garden/gesture", 8}, {"garden/deform", 8},
+        {"garden/action", 9},
+        {"garden/app", 10},
+        {"garden/session", 11}, {"garden/replay", 11}, {"garden/export", 11},
+        {"garden/render", 12},
+        {"garden/desktop", 13},
+        {"xr", 14},
+        {"xr/mock_runtime", 15},
+        {"cli", 16},
     };
     return l;
 }
 
 // The folder a source file or an include path belongs to: its directory,
-// with frep/library counted as frep (the kernel's own library of
-// primitives).
+// with frep/kernels/library counted as frep/kernels (the kernels' own
+// library of hf* routines).
 std::string folderOf(const std::string& path) {
     const std::string dir = fs::path(path).parent_path().generic_string();
-    if (dir.rfind("frep/", 0) == 0) return "frep";
+    if (dir.rfind("frep/kernels/", 0) == 0) return "frep/kernels";
     return dir;
 }
 
@@ -119,7 +123,13 @@ TEST(IncludeLayers, NoIncludeRunsUpwardOrSideways) {
 // The check itself: a made-up upward include is caught, a downward one not.
 TEST(IncludeLayers, TheOrderCatchesAnUpwardInclude) {
     EXPECT_LT(layers().at(folderOf("voxel/volume.h")), layers().at(folderOf("garden/app/garden_session.h")));
-    EXPECT_EQ(folderOf("frep/library/convolution.h"), "frep");
+    EXPECT_EQ(folderOf("frep/kernels/library/convolution.h"), "frep/kernels");
+    EXPECT_LT(layers().at("frep/kernels"), layers().at("frep/language"));
+    EXPECT_LT(layers().at("frep/language"), layers().at("frep/compiler"));
+    EXPECT_LT(layers().at("frep/compiler"), layers().at("frep/eval"));
+    EXPECT_LT(layers().at("frep/eval"), layers().at("voxel"));
+    EXPECT_EQ(layers().at("polygonizer/realtime"), layers().at("polygonizer/export")) << "siblings share a layer";
+    EXPECT_GT(layers().at("polygonizer/realtime"), layers().at("polygonizer")) << "both sides sit on the shared base";
     EXPECT_EQ(layers().at("garden/session"), layers().at("garden/replay")) << "siblings share a layer";
     EXPECT_GT(layers().at("garden/session"), layers().at("garden/app")) << "a session folder sits above the garden it saves";
 }

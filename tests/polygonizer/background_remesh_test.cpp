@@ -10,9 +10,9 @@
 #include <thread>
 
 #include "sample_program.h"
-#include "polygonizer/mesh_validation.h"
-#include "polygonizer/meshing_worker.h"
-#include "polygonizer/remesh_queue.h"
+#include "polygonizer/export/mesh_validation.h"
+#include "polygonizer/realtime/meshing_worker.h"
+#include "polygonizer/realtime/remesh_queue.h"
 #include "voxel/sampler.h"
 
 namespace hg::poly {

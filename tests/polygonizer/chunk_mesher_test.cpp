@@ -14,11 +14,11 @@
 #include <random>
 #include <sstream>
 
-#include "frep/parser.h"
-#include "polygonizer/chunk_mesher.h"
-#include "polygonizer/export_mesher.h"
-#include "polygonizer/lod_selection.h"
-#include "polygonizer/mesh_validation.h"
+#include "frep/language/parser.h"
+#include "polygonizer/realtime/chunk_mesher.h"
+#include "polygonizer/export/export_mesher.h"
+#include "polygonizer/realtime/lod_selection.h"
+#include "polygonizer/export/mesh_validation.h"
 #include "chunk_union.h"
 #include "sample_program.h"
 #include "voxel/sampler.h"

@@ -11,9 +11,9 @@
 #include <utility>
 #include <vector>
 
-#include "polygonizer/chunk_layout.h"
-#include "polygonizer/chunk_mesher.h"
-#include "polygonizer/lod_pyramid.h"
+#include "polygonizer/realtime/chunk_layout.h"
+#include "polygonizer/realtime/chunk_mesher.h"
+#include "polygonizer/realtime/lod_pyramid.h"
 #include "polygonizer/mesh.h"
 
 namespace hg::poly::test {

@@ -7,10 +7,10 @@
 #include <filesystem>
 #include <set>
 
-#include "frep/parser.h"
+#include "frep/language/parser.h"
 #include "polygonizer/cell_table.h"
-#include "polygonizer/export_mesher.h"
-#include "polygonizer/mesh_validation.h"
+#include "polygonizer/export/export_mesher.h"
+#include "polygonizer/export/mesh_validation.h"
 #include "sample_program.h"
 #include "voxel/sampler.h"
 

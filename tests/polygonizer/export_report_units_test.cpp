@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "polygonizer/mesh_export.h"
-#include "polygonizer/mesh_validation.h"
+#include "polygonizer/export/mesh_export.h"
+#include "polygonizer/export/mesh_validation.h"
 #include "tests/test_models.h"
 
 namespace hg::poly {

@@ -1,4 +1,4 @@
-// glTF binary files (polygonizer/gltf_io.h): one scene, one node, one mesh
+// glTF binary files (polygonizer/export/gltf_io.h): one scene, one node, one mesh
 // with one indexed triangle primitive, POSITION and NORMAL as float vec3
 // and indices as uint32, positions times the scale (metres); written whole
 // or not at all. What is tested, reading the files back with tinygltf and
@@ -27,8 +27,8 @@
 #include <vector>
 
 #include "mesh_files.h"
-#include "polygonizer/gltf_io.h"
-#include "polygonizer/mesh_validation.h"
+#include "polygonizer/export/gltf_io.h"
+#include "polygonizer/export/mesh_validation.h"
 
 namespace hg::poly {
 namespace {

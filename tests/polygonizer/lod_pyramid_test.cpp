@@ -7,7 +7,7 @@
 #include <random>
 
 #include "sample_program.h"
-#include "polygonizer/lod_pyramid.h"
+#include "polygonizer/realtime/lod_pyramid.h"
 #include "voxel/sampler.h"
 
 namespace hg::poly {

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <random>
 
-#include "polygonizer/lod_selection.h"
+#include "polygonizer/realtime/lod_selection.h"
 
 namespace hg::poly {
 namespace {

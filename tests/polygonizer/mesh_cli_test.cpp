@@ -6,8 +6,8 @@
 #include <fstream>
 
 #include "../cli_fixture.h"
-#include "polygonizer/mesh_validation.h"
-#include "polygonizer/stl_io.h"
+#include "polygonizer/export/mesh_validation.h"
+#include "polygonizer/export/stl_io.h"
 
 namespace hg::poly {
 namespace {

@@ -7,8 +7,8 @@
 #include <fstream>
 
 #include "mesh_files.h"
-#include "polygonizer/mesh_export.h"
-#include "polygonizer/tiled_mesher.h"
+#include "polygonizer/export/mesh_export.h"
+#include "polygonizer/export/tiled_mesher.h"
 #include "tests/progress_recorder.h"
 #include "tests/test_models.h"
 

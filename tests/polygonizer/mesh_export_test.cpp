@@ -22,12 +22,12 @@
 
 #include <sys/resource.h>
 
-#include "polygonizer/export_mesher.h"
-#include "polygonizer/mesh_export.h"
-#include "polygonizer/mesh_simplify.h"
-#include "polygonizer/mesh_validation.h"
-#include "polygonizer/stl_io.h"
-#include "polygonizer/tiled_mesher.h"
+#include "polygonizer/export/export_mesher.h"
+#include "polygonizer/export/mesh_export.h"
+#include "polygonizer/export/mesh_simplify.h"
+#include "polygonizer/export/mesh_validation.h"
+#include "polygonizer/export/stl_io.h"
+#include "polygonizer/export/tiled_mesher.h"
 #include "tests/progress_recorder.h"
 #include "tests/test_models.h"
 #include "voxel/sampler.h"

@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "io/write_faults.h"
-#include "polygonizer/export_mesher.h"
+#include "polygonizer/export/export_mesher.h"
 #include "polygonizer/mesh.h"
 #include "sample_program.h"
 #include "tests/test_models.h"

@@ -1,4 +1,4 @@
-// Meshes brought in (polygonizer/mesh_read.h): STL, OBJ and PLY files
+// Meshes brought in (polygonizer/export/mesh_read.h): STL, OBJ and PLY files
 // written here are read back as the same triangles, polygons as fans, and
 // broken files are refused with the file and the line (or byte) at fault.
 #include <gtest/gtest.h>
@@ -10,9 +10,9 @@
 #include <string>
 #include <unistd.h>
 
-#include "polygonizer/mesh_read.h"
-#include "polygonizer/mesh_validation.h"
-#include "polygonizer/stl_io.h"
+#include "polygonizer/export/mesh_read.h"
+#include "polygonizer/export/mesh_validation.h"
+#include "polygonizer/export/stl_io.h"
 
 namespace hg::poly {
 namespace {

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "mesh_validation_reference.h"
-#include "polygonizer/mesh_validation_edges.h"
+#include "polygonizer/export/mesh_validation_edges.h"
 
 namespace hg::poly {
 namespace {

@@ -13,7 +13,7 @@
 #include <string>
 
 #include "mesh_validation_reference.h"
-#include "polygonizer/mesh_validation.h"
+#include "polygonizer/export/mesh_validation.h"
 
 namespace hg::poly {
 namespace {

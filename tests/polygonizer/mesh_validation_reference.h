@@ -12,7 +12,7 @@
 #include <random>
 #include <vector>
 
-#include "polygonizer/mesh_validation.h"
+#include "polygonizer/export/mesh_validation.h"
 
 namespace hg::poly::test {
 

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "mesh_validation_reference.h"
-#include "polygonizer/mesh_validation.h"
+#include "polygonizer/export/mesh_validation.h"
 
 namespace hg::poly {
 namespace {

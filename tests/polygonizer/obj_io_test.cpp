@@ -1,4 +1,4 @@
-// OBJ files (polygonizer/obj_io.h): one object, a `v` line per vertex (the
+// OBJ files (polygonizer/export/obj_io.h): one object, a `v` line per vertex (the
 // position times the scale, metres), a `vn` line per vertex normal and an
 // `f a//a b//b c//c` line per triangle, counter-clockwise from outside;
 // numbers are the shortest text that reads back as the same float; written
@@ -29,8 +29,8 @@
 #include <vector>
 
 #include "mesh_files.h"
-#include "polygonizer/mesh_validation.h"
-#include "polygonizer/obj_io.h"
+#include "polygonizer/export/mesh_validation.h"
+#include "polygonizer/export/obj_io.h"
 
 namespace hg::poly {
 namespace {

@@ -8,9 +8,9 @@
 #include <gtest/gtest.h>
 
 #include "sample_program.h"
-#include "polygonizer/lod_selection.h"
-#include "polygonizer/mesh_validation.h"
-#include "polygonizer/remesh_queue.h"
+#include "polygonizer/realtime/lod_selection.h"
+#include "polygonizer/export/mesh_validation.h"
+#include "polygonizer/realtime/remesh_queue.h"
 #include "voxel/sampler.h"
 
 namespace hg::poly {

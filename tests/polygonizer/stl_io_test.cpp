@@ -27,8 +27,8 @@
 #include <vector>
 
 #include "mesh_validation_reference.h"
-#include "polygonizer/mesh_validation.h"
-#include "polygonizer/stl_io.h"
+#include "polygonizer/export/mesh_validation.h"
+#include "polygonizer/export/stl_io.h"
 
 namespace hg::poly {
 namespace {

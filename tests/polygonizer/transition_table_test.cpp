@@ -9,7 +9,7 @@
 #include <set>
 
 #include "polygonizer/cell_table.h"
-#include "polygonizer/transition_table.h"
+#include "polygonizer/realtime/transition_table.h"
 
 namespace hg::poly {
 namespace {

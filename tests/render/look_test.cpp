@@ -11,14 +11,14 @@
 #include <memory>
 #include <string>
 
-#include "frep/diagnostics.h"
-#include "frep/model.h"
-#include "frep/parser.h"
+#include "frep/language/diagnostics.h"
+#include "frep/eval/model.h"
+#include "frep/language/parser.h"
 #include "garden/render/material_look.h"
 #include "garden/render/screenshot.h"
 #include "garden/render/shapes.h"
 #include "gl_fixture.h"
-#include "polygonizer/export_mesher.h"
+#include "polygonizer/export/export_mesher.h"
 #include "voxel/sampler.h"
 
 namespace hg::garden::test {

@@ -12,7 +12,7 @@
 #include <cstdio>
 #include <random>
 
-#include "frep/model.h"
+#include "frep/eval/model.h"
 #include "garden/sketch/inflation.h"
 #include "garden/sketch/inflation_field.h"
 #include "garden/sketch/inflation_text.h"

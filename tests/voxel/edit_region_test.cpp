@@ -29,8 +29,8 @@
 #include <random>
 
 #include "edit_tapes.h"
-#include "frep/eval_batch.h"
-#include "frep/tape_specializer.h"
+#include "frep/eval/eval_batch.h"
+#include "frep/eval/tape_specializer.h"
 #include "test_models.h"
 #include "voxel/edit_region.h"
 #include "voxel/sampler.h"

@@ -11,8 +11,8 @@
 #include <cstring>
 #include <vector>
 
-#include "frep/tape.h"
-#include "frep/tape_builder.h"
+#include "frep/compiler/tape.h"
+#include "frep/compiler/tape_builder.h"
 #include "voxel/volume.h"
 
 namespace hg::voxel::test {

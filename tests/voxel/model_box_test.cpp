@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "frep/bounds.h"
+#include "frep/eval/bounds.h"
 #include "test_models.h"
 #include "voxel/lattice_evaluation.h"
 #include "voxel/model_box.h"

@@ -1,5 +1,5 @@
 // Sampling with tapes specialized to each box (voxel/box_walker.h,
-// frep/tape_specializer.h) stores the same grid, voxel for voxel and bit for
+// frep/eval/tape_specializer.h) stores the same grid, voxel for voxel and bit for
 // bit, as sampling with the full tape: our content, the bounded files and a
 // program of many bounded edits, whose leaves then run a far shorter tape.
 #include <gtest/gtest.h>
@@ -11,7 +11,7 @@
 #include <random>
 #include <vector>
 
-#include "frep/tape_specializer.h"
+#include "frep/eval/tape_specializer.h"
 #include "test_models.h"
 #include "voxel/lattice_evaluation.h"
 #include "voxel/sampler.h"
