@@ -447,17 +447,23 @@ void GardenSession::remesh() {
 }
 
 // The frame gathers samples and shows finished meshes; the worker meshes.
-// The gathering shares the stage's allowance between the sculptures, the
-// nearest first (each gathers one chunk at least, when it has one dirty).
+// Gathering is a small part of a mesh's cost, so a frame gathers for at
+// most a millisecond (the nearest sculptures first), and only while the
+// worker has fewer than two jobs waiting: more would be meshed too late to
+// matter, from samples that edits and level changes may already have made
+// stale.
 void GardenSession::remeshInBackground(const std::vector<std::pair<float, std::size_t>>& order) {
+    constexpr double kGatherMs = 1.0;
+    constexpr std::size_t kJobsAhead = 2;
     if (!meshing_) meshing_ = std::make_unique<poly::MeshingWorker>();
     const std::size_t byteLimit = settings_.uploadBytesPerFrame;
-    const double allowance = scheduler_.allowanceMs(Stage::Remesh);
+    const double allowance = std::min(kGatherMs, scheduler_.allowanceMs(Stage::Remesh));
     const auto start = std::chrono::steady_clock::now();
     for (const auto& entry : order) {
         const double spent =
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
         poly::RemeshBudget budget;
+        budget.gather = spent < allowance && meshing_->backlog() < kJobsAhead;
         budget.milliseconds = std::max(0.05, allowance - spent);
         if (byteLimit > 0) {
             budget.showBytes = byteLimit - std::min(byteLimit, stats().meshBytesShown);

@@ -1,6 +1,11 @@
 #include "polygonizer/realtime/meshing_worker.h"
 
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
+
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 namespace hg::poly {
 
@@ -50,6 +55,13 @@ std::size_t MeshingWorker::queued() const {
 }
 
 void MeshingWorker::run() {
+    // The frame comes first: this thread yields the CPU to it (a higher
+    // nice value, for this thread only on Linux), and its meshing runs in a
+    // low-priority arena, so TBB's workers serve the frame's parallel work
+    // (edits, the blend) before a job's chunks. On a machine of two cores
+    // the frame's stages would otherwise share their cores with the job.
+    ::setpriority(PRIO_PROCESS, static_cast<id_t>(::syscall(SYS_gettid)), 10);
+    tbb::task_arena arena(tbb::task_arena::automatic, 1, tbb::task_arena::priority::low);
     for (;;) {
         std::shared_ptr<MeshingJob> job;
         {
@@ -64,8 +76,10 @@ void MeshingWorker::run() {
             MeshingJob& j = *job;
             j.meshes.resize(j.samples.size());
             try {
-                tbb::parallel_for(std::size_t{0}, j.samples.size(), [&j](std::size_t k) {
-                    j.meshes[k] = std::make_shared<const Mesh>(meshChunk(j.samples[k]));
+                arena.execute([&j] {
+                    tbb::parallel_for(std::size_t{0}, j.samples.size(), [&j](std::size_t k) {
+                        j.meshes[k] = std::make_shared<const Mesh>(meshChunk(j.samples[k]));
+                    });
                 });
             } catch (...) {
                 j.error = std::current_exception();

@@ -127,7 +127,7 @@ RemeshReport RemeshQueue::processInBackground(MeshingWorker& worker, const Remes
     takeJob(false, report);
     showCompleteGroups(budget, report);
     if (report.shown > 0) ++shownGeneration_;
-    if (!job_) {
+    if (!job_ && budget.gather) {
         const std::vector<std::size_t> todo = order();
         const std::size_t threads = static_cast<std::size_t>(std::max(1, tbb::this_task_arena::max_concurrency()));
         const std::size_t most = budget.chunks > 0 ? budget.chunks : 4 * threads;

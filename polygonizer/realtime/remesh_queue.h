@@ -48,6 +48,9 @@ struct RemeshBudget {
     // caller has shown nothing else this frame). The rest stay staged.
     std::size_t showBytes = std::numeric_limits<std::size_t>::max();
     bool oversized = true;
+    // processInBackground only: hand the worker new chunks (false: only take
+    // back what it has finished, and show).
+    bool gather = true;
 };
 
 // Bytes of a mesh as uploaded: positions, normals and indices.
