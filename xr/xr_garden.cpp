@@ -555,6 +555,7 @@ int runXrGarden(const XrOptions& options,
         wo.title = kMirrorTitle;
         garden::GardenWindow window(wo, options.mirror || options.desktop.has_value());
         garden::SessionSettings settings;
+        settings.remeshOffFrameThread = true;  // xrWaitFrame paces the frames; the worker meshes meanwhile
         garden::OpenedSession opened = garden::openLoadedOrSession(
             std::move(load), {options.session, gardenFile, options.gardenGiven, "hypergarden --xr"}, settings);
         if (!opened.error.empty()) {

@@ -229,6 +229,7 @@ int runDesktopGarden(const DesktopOptions& options) {
         // The window opens at once; sculptures arrive nearest first and the
         // Garden panel says how many are still coming.
         settings.progressiveLoading = true;
+        settings.remeshOffFrameThread = true;  // vsync paces the frames; the worker meshes meanwhile
         OpenedSession opened = openLoadedOrSession(
             std::move(load), {options.session, options.garden, options.gardenGiven, "hypergarden (desktop)"}, settings);
         if (!opened.error.empty()) {

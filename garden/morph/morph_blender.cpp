@@ -43,6 +43,7 @@ struct MorphBlender::Impl {
     std::uint32_t nextDone = 0;      // samples of items[next] already blended
     std::uint64_t total = 0;
     std::uint64_t consumed = 0;
+    double samplesPerSecond = 0.0;   // measured by the last timed step (0: none yet)
     std::array<double, 3> sortedFor{};  // the viewer the list is sorted for
     bool wholeListSorted = false;       // ... all of it, not only what was left
 
@@ -350,6 +351,10 @@ void MorphBlender::setViewer(const std::array<double, 3>& viewer) {
     m.sortFrom(m.next + (m.nextDone > 0 ? 1 : 0));
 }
 
+namespace {
+constexpr std::uint64_t kFirstTimedBatch = 4096;
+}  // namespace
+
 BlendStep MorphBlender::step(const BlendBudget& budget) {
     Impl& m = *impl_;
     const auto start = Clock::now();
@@ -365,6 +370,13 @@ BlendStep MorphBlender::step(const BlendBudget& budget) {
                 // What the rate measured so far fits into the time left.
                 double fits = static_cast<double>(report.samples) / std::max(elapsed, 1e-9) * (limit - elapsed);
                 batch = std::min<std::uint64_t>(batch, static_cast<std::uint64_t>(fits));
+            } else {
+                // The first batch of a step: at the last step's rate, or a
+                // small one to measure it (a whole batch can take several
+                // milliseconds, more than a frame's share).
+                const double fits = m.samplesPerSecond > 0.0 ? m.samplesPerSecond * (limit - elapsed)
+                                                              : static_cast<double>(kFirstTimedBatch);
+                batch = std::min<std::uint64_t>(batch, std::max<std::uint64_t>(1, static_cast<std::uint64_t>(fits)));
             }
         }
         if (batch == 0) break;
@@ -373,6 +385,8 @@ BlendStep MorphBlender::step(const BlendBudget& budget) {
     report.coarseDone = coarseDone();
     report.done = done();
     report.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    if (limit > 0.0 && report.samples > 0 && report.seconds > 0.0)
+        m.samplesPerSecond = static_cast<double>(report.samples) / report.seconds;
     return report;
 }
 
