@@ -9,6 +9,7 @@
 #include <chrono>
 #include <thread>
 
+#include "tests/polygonizer/chunk_union.h"
 #include "sample_program.h"
 #include "polygonizer/export/mesh_validation.h"
 #include "polygonizer/realtime/meshing_worker.h"
@@ -22,18 +23,6 @@ frep::Model sphere(double r2, double cx) {
     return ::hg::test::modelFromSource("q(x[3], a[2]) { q = a[1] - ((x[1] - a[2])^2 + x[2]^2 + x[3]^2); }", {r2, cx});
 }
 
-Mesh shownUnion(const RemeshQueue& q) {
-    Mesh all;
-    for (std::size_t i = 0; i < q.count(); ++i) {
-        auto m = q.mesh(i);
-        if (!m) continue;
-        const auto base = static_cast<std::uint32_t>(all.vertexCount());
-        all.positions.insert(all.positions.end(), m->positions.begin(), m->positions.end());
-        for (std::uint32_t idx : m->indices) all.indices.push_back(base + idx);
-    }
-    return all;
-}
-
 // Calls until nothing is pending, as frames would; every state shown is closed.
 int settle(RemeshQueue& q, MeshingWorker& worker, const RemeshBudget& budget) {
     int calls = 0;
@@ -42,7 +31,7 @@ int settle(RemeshQueue& q, MeshingWorker& worker, const RemeshBudget& budget) {
         q.processInBackground(worker, budget);
         if (q.shownGeneration() != seen) {
             seen = q.shownGeneration();
-            const MeshReport now = validateMesh(weldByPosition(shownUnion(q)));
+            const MeshReport now = validateMesh(weldByPosition(test::shownUnion(q)));
             EXPECT_EQ(now.boundaryEdges, 0u) << "after call " << calls;
             if (now.boundaryEdges != 0) break;
         }

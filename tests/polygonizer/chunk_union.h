@@ -1,5 +1,6 @@
-// The union of every chunk's mesh at given levels, and how its welded edges
-// are used: what the chunk mesher tests check for closed seams.
+// The union of every chunk's mesh at given levels (or of those a remesh
+// queue shows), and how its welded edges are used: what the chunk mesher
+// and remesh queue tests check for closed seams.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -14,6 +15,7 @@
 #include "polygonizer/realtime/chunk_layout.h"
 #include "polygonizer/realtime/chunk_mesher.h"
 #include "polygonizer/realtime/lod_pyramid.h"
+#include "polygonizer/realtime/remesh_queue.h"
 #include "polygonizer/mesh.h"
 
 namespace hg::poly::test {
@@ -28,6 +30,19 @@ inline Mesh unionOf(const LodPyramid& pyramid, const ChunkLayout& layout, const 
         all.positions.insert(all.positions.end(), m.positions.begin(), m.positions.end());
         all.normals.insert(all.normals.end(), m.normals.begin(), m.normals.end());
         for (std::uint32_t idx : m.indices) all.indices.push_back(base + idx);
+    }
+    return all;
+}
+
+// The union of the meshes a remesh queue has on show (chunks with none left out).
+inline Mesh shownUnion(const RemeshQueue& q) {
+    Mesh all;
+    for (std::size_t i = 0; i < q.count(); ++i) {
+        auto m = q.mesh(i);
+        if (!m) continue;
+        const auto base = static_cast<std::uint32_t>(all.vertexCount());
+        all.positions.insert(all.positions.end(), m->positions.begin(), m->positions.end());
+        for (std::uint32_t idx : m->indices) all.indices.push_back(base + idx);
     }
     return all;
 }

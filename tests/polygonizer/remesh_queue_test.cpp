@@ -7,6 +7,7 @@
 // faces changed.
 #include <gtest/gtest.h>
 
+#include "tests/polygonizer/chunk_union.h"
 #include "sample_program.h"
 #include "polygonizer/realtime/lod_selection.h"
 #include "polygonizer/export/mesh_validation.h"
@@ -27,18 +28,6 @@ std::vector<int> rampLevels(const ChunkLayout& layout) {
     std::vector<int> levels(layout.count());
     for (std::size_t i = 0; i < levels.size(); ++i) levels[i] = std::min(2, (layout.key(i).x - layout.key(0).x) / 1);
     return levels;
-}
-
-Mesh shownUnion(const RemeshQueue& q) {
-    Mesh all;
-    for (std::size_t i = 0; i < q.count(); ++i) {
-        auto m = q.mesh(i);
-        if (!m) continue;
-        const auto base = static_cast<std::uint32_t>(all.vertexCount());
-        all.positions.insert(all.positions.end(), m->positions.begin(), m->positions.end());
-        for (std::uint32_t idx : m->indices) all.indices.push_back(base + idx);
-    }
-    return all;
 }
 
 void drain(RemeshQueue& q) {
@@ -83,7 +72,7 @@ TEST(RemeshQueue, RemeshAfterARegionChangeEqualsMeshingFromScratch) {
     }
     EXPECT_GT(remeshed, 0u);
     EXPECT_LT(remeshed, q.count() / 2);
-    MeshReport r = validateMesh(weldByPosition(shownUnion(q)));
+    MeshReport r = validateMesh(weldByPosition(test::shownUnion(q)));
     EXPECT_EQ(r.boundaryEdges, 0u);
 }
 
@@ -103,7 +92,7 @@ TEST(RemeshQueue, BudgetsHoldAndHalfDoneUpdatesShowTheOldClosedSurface) {
     EXPECT_GT(generation, 0u);
     q.process(RemeshBudget{0.0, 3});
     EXPECT_EQ(q.shownGeneration(), generation) << "nothing new shown, same generation";
-    const MeshReport coarse = validateMesh(weldByPosition(shownUnion(q)));
+    const MeshReport coarse = validateMesh(weldByPosition(test::shownUnion(q)));
     ASSERT_EQ(coarse.boundaryEdges, 0u);
 
     // Walk close: levels change; every partial state shows a closed surface.
@@ -121,7 +110,7 @@ TEST(RemeshQueue, BudgetsHoldAndHalfDoneUpdatesShowTheOldClosedSurface) {
         RemeshReport r = q.process(RemeshBudget{0.0, 2});
         EXPECT_LE(r.meshed, 2u);
         ++calls;
-        MeshReport now = validateMesh(weldByPosition(shownUnion(q)));
+        MeshReport now = validateMesh(weldByPosition(test::shownUnion(q)));
         ASSERT_EQ(now.boundaryEdges, 0u) << "after call " << calls;
         // The running counts agree with the slots.
         std::size_t triangles = 0, unchanged = 0;
