@@ -10,9 +10,12 @@ namespace hg::garden {
 SculptureLoader::SculptureLoader(std::vector<Job> jobs, const std::array<double, 3>& viewer)
     : waiting_(std::move(jobs)), remaining_(waiting_.size()), viewer_(viewer), worker_([this] { run(); }) {}
 
-SculptureLoader::~SculptureLoader() {
+SculptureLoader::~SculptureLoader() { close(); }
+
+bool SculptureLoader::close() {
     stop_.cancel();
-    worker_.join();
+    if (worker_.joinable()) worker_.join();
+    return cutShort_;  // the worker has ended: no lock needed
 }
 
 void SculptureLoader::setViewer(const std::array<double, 3>& viewer) {
@@ -39,7 +42,10 @@ void SculptureLoader::run() {
         Loaded done;
         done.sculpture = job.sculpture;
         voxel::VoxelizeResult r = sampleSculptureSource(job.spec, *job.source, job.request, &stop_);
-        if (r.cancelled) return;  // closing: nobody takes it
+        if (r.cancelled) {  // closing: nobody takes it
+            cutShort_ = true;
+            return;
+        }
         if (r.volume) done.volume = std::make_unique<voxel::Volume>(std::move(*r.volume));
         else done.error = r.error;
         std::lock_guard<std::mutex> lock(mutex_);

@@ -56,6 +56,12 @@ public:
     std::size_t remaining() const;
     // Blocks until every sculpture is sampled.
     void wait();
+    // How far the sampling under way has come (0 to 1; 0 before the first
+    // report), for the panel.
+    double fractionUnderWay() const { return stop_.fraction(); }
+    // Cancels the sampling under way and samples no more (what the
+    // destructor does); true when a sampling was cut short by it.
+    bool close();
 
 private:
     void run();
@@ -66,6 +72,7 @@ private:
     std::size_t remaining_ = 0;
     std::array<double, 3> viewer_{};
     io::NullProgress stop_;  // cancelled on close; the sampling under way asks it
+    bool cutShort_ = false;  // a sampling was cancelled by close (set by the worker before it ends)
     std::thread worker_;  // last: started once everything above is set
 };
 

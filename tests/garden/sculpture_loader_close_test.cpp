@@ -13,32 +13,26 @@
 namespace hg::garden {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
 TEST(SculptureLoaderClose, ClosingCancelsTheSamplingUnderWay) {
     auto load = std::make_shared<SculptureLoad>();
     load->model = ::hg::test::modelFromSource(::hg::test::kTorusBlock);
-    voxel::VolumeRequest request;
-    request.box = frep::Box3{{-1.2, -1.2, -1.2}, {1.2, 1.2, 1.2}};
-    request.resolution = 384;
-
-    // How long the sculpture takes to sample whole.
-    const auto t0 = Clock::now();
-    const voxel::VoxelizeResult whole = voxel::voxelize(*load->model, request);
-    const double sampling = std::chrono::duration<double>(Clock::now() - t0).count();
-    ASSERT_TRUE(whole.volume) << whole.error;
-
     SculptureLoader::Job job;
     job.source = load;
-    job.request = request;
-    const auto t1 = Clock::now();
-    {
-        SculptureLoader loader({job}, {0.0, 0.0, 0.0});
-        std::this_thread::sleep_for(std::chrono::milliseconds(20));
-        EXPECT_EQ(loader.remaining(), 1u);
-    }  // closed with the sampling under way
-    const double closing = std::chrono::duration<double>(Clock::now() - t1).count();
-    EXPECT_LT(closing, 0.5 * sampling) << "the close waited for the sampling (" << sampling << " s whole)";
+    job.request.box = frep::Box3{{-1.2, -1.2, -1.2}, {1.2, 1.2, 1.2}};
+    job.request.resolution = 384;
+
+    SculptureLoader loader({job}, {0.0, 0.0, 0.0});
+    // Until the sampling has reported some progress (it is under way), and
+    // while it is far from done.
+    for (int i = 0; i < 10000 && loader.fractionUnderWay() <= 0.0; ++i)
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    ASSERT_GT(loader.fractionUnderWay(), 0.0) << "the sampling never started";
+    ASSERT_LT(loader.fractionUnderWay(), 0.5) << "the sampling was nearly done before the test could close it";
+    EXPECT_EQ(loader.remaining(), 1u);
+    EXPECT_TRUE(loader.close()) << "the sampling under way ran to its end";
+    EXPECT_GT(loader.fractionUnderWay(), 0.0);
+    EXPECT_LT(loader.fractionUnderWay(), 1.0) << "cancelled part way, not finished";
+    EXPECT_TRUE(loader.take().empty()) << "a cancelled sampling is nobody's grid";
 }
 
 }  // namespace
