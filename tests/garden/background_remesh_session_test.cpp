@@ -5,6 +5,9 @@
 // frames keep running while the worker meshes.
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <thread>
+
 #include "garden/app/garden_session.h"
 #include "garden/replay/replay_runner.h"
 #include "session_garden.h"
@@ -13,6 +16,19 @@ namespace hg::garden {
 namespace {
 
 class BackgroundRemeshSession : public test::SmallGarden {};
+
+// Frames as a display paces them (here 2 ms apart): frames run back to
+// back would spin while the worker meshes, and could use up the replay's
+// frames first on a slow machine (a sanitizer build, valgrind).
+class PacedSink : public FrameRenderer {
+public:
+    ViewUpload upload(GardenSession&, double) override { return {}; }
+    ViewDraw render(GardenSession&) override {
+        std::this_thread::sleep_for(std::chrono::milliseconds(2));
+        return {};
+    }
+    std::string screenshot(const std::string&) override { return ""; }
+};
 
 ReplayScript walkMorphAndCarve(const std::string& garden) {
     return parseReplayScript(R"({
@@ -57,7 +73,8 @@ TEST_F(BackgroundRemeshSession, SettlesOnTheSameMeshesAsRemeshingInTheFrame) {
         settings.remeshChunksPerFrame = 0;  // the scheduler's allowance
         settings.remeshOffFrameThread = offThread != 0;
         GardenSession s(loadGarden(writeGarden()), settings);
-        const ReplayResult r = runReplay(script, s, nullptr, ReplayOptions{});
+        PacedSink paced;
+        const ReplayResult r = runReplay(script, s, offThread ? &paced : nullptr, ReplayOptions{});
         ASSERT_TRUE(r.ok()) << r.error;
         ASSERT_TRUE(s.idle());
         in[offThread] = shownMeshes(s);

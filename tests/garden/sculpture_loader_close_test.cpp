@@ -19,7 +19,7 @@ TEST(SculptureLoaderClose, ClosingCancelsTheSamplingUnderWay) {
     SculptureLoader::Job job;
     job.source = load;
     job.request.box = frep::Box3{{-1.2, -1.2, -1.2}, {1.2, 1.2, 1.2}};
-    job.request.resolution = 384;
+    job.request.resolution = 1024;  // seconds to sample whole: the close comes far before its end
 
     SculptureLoader loader({job}, {0.0, 0.0, 0.0});
     // Until the sampling has reported some progress (it is under way), and
