@@ -1,26 +1,17 @@
 #include "xr/hand_panel_ui.h"
 
-#include <cstdint>
 #include <optional>
 
 #include "garden/app/garden_session.h"
-#include "garden/render/gl_context.h"
-#include "garden/render/gl_objects.h"
 #include "garden/render/morph_triangle.h"
 #include "garden/render/panels.h"
-#include "garden/render/shader_program.h"
 #include "garden/render/tool_panel.h"
 #include "xr/hand_panel.h"
 
-#include <epoxy/gl.h>
-#include <backends/imgui_impl_opengl3.h>
 #include <imgui.h>
 
 #include <algorithm>
-#include <cfloat>
 #include <iterator>
-
-#include <glm/gtc/type_ptr.hpp>
 
 namespace hg::xr {
 
@@ -101,20 +92,6 @@ bool litButton(const char* label, const glm::vec2& size, bool chosen) {
     return pressed;
 }
 
-const char* kVertex = R"(#version 330 core
-layout(location = 0) in vec3 position;
-layout(location = 1) in vec2 uv;
-uniform mat4 viewProjection;
-out vec2 vUv;
-void main() { vUv = uv; gl_Position = viewProjection * vec4(position, 1.0); }
-)";
-const char* kFragment = R"(#version 330 core
-in vec2 vUv;
-uniform sampler2D panel;
-out vec4 color;
-void main() { color = texture(panel, vUv); }
-)";
-
 }  // namespace
 
 glm::vec2 panelButtonCenter(PanelButton b) { return board(buttonTopLeft(b) + 0.5f * kButtonSize); }
@@ -172,124 +149,22 @@ glm::vec2 panelSeatedOffsetPoint(double metres) {
     return board(glm::vec2(from + t * span, rowTop(kSeatedOffsetRow) + 0.5f * kFrame));
 }
 
-struct HandPanelUi::Gl {
-    garden::gl::Texture texture = garden::gl::Texture::create();
-    garden::gl::Framebuffer fbo = garden::gl::Framebuffer::create();
-    garden::ShaderProgram program{"hand panel", kVertex, kFragment};
-    garden::gl::VertexArray vao = garden::gl::VertexArray::create();
-    garden::gl::Buffer vertices = garden::gl::Buffer::create();
-    std::optional<std::uint64_t> drawn;  // drawDataHash of what the texture shows
-};
-
-namespace {
-
-// FNV-1a over what ImGui would draw (vertices, indices, clip rectangles,
-// textures): equal hashes draw the same pixels.
-std::uint64_t drawDataHash(const ImDrawData& d) {
-    std::uint64_t h = 1469598103934665603ull;
-    const auto mix = [&h](const void* p, std::size_t n) {
-        const auto* b = static_cast<const unsigned char*>(p);
-        for (std::size_t i = 0; i < n; ++i) h = (h ^ b[i]) * 1099511628211ull;
-    };
-    for (int l = 0; l < d.CmdListsCount; ++l) {
-        const ImDrawList& list = *d.CmdLists[l];
-        mix(list.VtxBuffer.Data, static_cast<std::size_t>(list.VtxBuffer.Size) * sizeof(ImDrawVert));
-        mix(list.IdxBuffer.Data, static_cast<std::size_t>(list.IdxBuffer.Size) * sizeof(ImDrawIdx));
-        for (const ImDrawCmd& c : list.CmdBuffer) {
-            mix(&c.ClipRect, sizeof c.ClipRect);
-            mix(&c.TextureId, sizeof c.TextureId);
-            mix(&c.ElemCount, sizeof c.ElemCount);
-            mix(&c.IdxOffset, sizeof c.IdxOffset);
-            mix(&c.VtxOffset, sizeof c.VtxOffset);
-        }
-    }
-    return h;
-}
-
-
-// Makes `ours` current for a scope, then the one before it again.
-class ContextScope {
-public:
-    explicit ContextScope(void* ours) : before_(ImGui::GetCurrentContext()) {
-        ImGui::SetCurrentContext(static_cast<ImGuiContext*>(ours));
-    }
-    ~ContextScope() { ImGui::SetCurrentContext(before_); }
-    ContextScope(const ContextScope&) = delete;
-    ContextScope& operator=(const ContextScope&) = delete;
-
-private:
-    ImGuiContext* before_;
-};
-
-}  // namespace
-
-HandPanelUi::HandPanelUi() : gl_(std::make_unique<Gl>()) {
-    glBindTexture(GL_TEXTURE_2D, gl_->texture.get());
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, kPanelPixelsX, kPanelPixelsY, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
-    glGenerateMipmap(GL_TEXTURE_2D);
-    // Mipmapped: seen from arm's length the text is smaller than its pixels.
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    glBindTexture(GL_TEXTURE_2D, 0);
-    glBindFramebuffer(GL_FRAMEBUFFER, gl_->fbo.get());
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, gl_->texture.get(), 0);
-    const bool complete = glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    if (!complete) throw garden::GlError("the hand panel's texture cannot be drawn into");
-
-    glBindVertexArray(gl_->vao.get());
-    glBindBuffer(GL_ARRAY_BUFFER, gl_->vertices.get());
-    glBufferData(GL_ARRAY_BUFFER, 4 * 5 * sizeof(float), nullptr, GL_DYNAMIC_DRAW);
-    glEnableVertexAttribArray(0);
-    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 5 * sizeof(float), nullptr);
-    glEnableVertexAttribArray(1);
-    glVertexAttribPointer(1, 2, GL_FLOAT, GL_FALSE, 5 * sizeof(float), reinterpret_cast<void*>(3 * sizeof(float)));
-    glBindVertexArray(0);
-
-    // A context of its own: the mirror's overlay keeps its windows, fonts
-    // and mouse; ours has no platform backend, the board is its screen.
-    ImGuiContext* before = ImGui::GetCurrentContext();
-    ImGuiContext* ours = ImGui::CreateContext();
-    context_ = ours;
-    ImGui::SetCurrentContext(ours);
-    ImGuiIO& io = ImGui::GetIO();
-    io.IniFilename = nullptr;
-    io.DisplaySize = ImVec2(static_cast<float>(kPanelPixelsX), static_cast<float>(kPanelPixelsY));
-    ImGui::StyleColorsDark();
+HandPanelUi::HandPanelUi() : board_(kPanelPixelsX, kPanelPixelsY) {
+    garden::UiBoard::Current current(board_);
     ImGuiStyle& style = ImGui::GetStyle();
     style.Colors[ImGuiCol_WindowBg] = ImVec4(0.12f, 0.10f, 0.20f, 1.0f);  // opaque: read on any sky
     style.FramePadding = ImVec2(kFramePadX, kFramePadY);
     style.ItemSpacing = ImVec2(kSpacingX, kSpacingY);
     style.GrabMinSize = kGrabMin;
-    const bool ok = ImGui_ImplOpenGL3_Init("#version 330 core");
-    ImGui::SetCurrentContext(before);
-    if (!ok) {
-        ImGui::DestroyContext(ours);
-        throw garden::GlError("ImGui OpenGL 3 backend failed to initialise for the hand panel");
-    }
-}
-
-HandPanelUi::~HandPanelUi() {
-    ImGuiContext* before = ImGui::GetCurrentContext();
-    ImGui::SetCurrentContext(static_cast<ImGuiContext*>(context_));
-    ImGui_ImplOpenGL3_Shutdown();
-    ImGui::DestroyContext(static_cast<ImGuiContext*>(context_));
-    ImGui::SetCurrentContext(before == context_ ? nullptr : before);
 }
 
 bool HandPanelUi::update(garden::GardenSession& session, const HandPanel& panel, const std::string& profile,
                          XrUserSettings& user, float dt) {
-    ContextScope scope(context_);
-    ImGuiIO& io = ImGui::GetIO();
-    io.DeltaTime = dt > 0.0f ? dt : 1.0f / 90.0f;
+    garden::UiBoard::Current current(board_);
     const std::optional<glm::vec2> uv = panel.hovered();
-    io.MousePos = uv ? ImVec2(uv->x * kPanelPixelsX, uv->y * kPanelPixelsY) : ImVec2(-FLT_MAX, -FLT_MAX);
-    io.MouseDown[0] = panel.pressing();
-
-    ImGui_ImplOpenGL3_NewFrame();
-    ImGui::NewFrame();
+    board_.newFrame(uv ? std::optional<glm::vec2>(*uv * glm::vec2(kPanelPixelsX, kPanelPixelsY)) : std::nullopt,
+                    panel.pressing(), dt);
+    ImGuiIO& io = ImGui::GetIO();
     ImGui::SetNextWindowPos(ImVec2(0.0f, 0.0f));
     ImGui::SetNextWindowSize(io.DisplaySize);
     ImGui::Begin("hand panel", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
@@ -325,24 +200,7 @@ bool HandPanelUi::update(garden::GardenSession& session, const HandPanel& panel,
     // Over the bottom of the board, where the tool hand's user looks: work
     // that is not on disk.
     garden::drawSaveBanner(session, {0.0f, io.DisplaySize.y * 0.62f}, io.DisplaySize.x);
-    ImGui::Render();
-
-    // Most frames the board looks as it did: the texture (drawn and
-    // mipmapped, a cost on a software rasterizer) is kept then.
-    const std::uint64_t hash = drawDataHash(*ImGui::GetDrawData());
-    if (gl_->drawn == hash) return changed;
-    gl_->drawn = hash;
-    GLint framebufferBefore = 0;
-    glGetIntegerv(GL_FRAMEBUFFER_BINDING, &framebufferBefore);
-    glBindFramebuffer(GL_FRAMEBUFFER, gl_->fbo.get());
-    glViewport(0, 0, kPanelPixelsX, kPanelPixelsY);
-    glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
-    glClear(GL_COLOR_BUFFER_BIT);
-    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-    glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(framebufferBefore));
-    glBindTexture(GL_TEXTURE_2D, gl_->texture.get());
-    glGenerateMipmap(GL_TEXTURE_2D);
-    glBindTexture(GL_TEXTURE_2D, 0);
+    board_.render();
     return changed;
 }
 
@@ -445,38 +303,7 @@ bool HandPanelUi::settingsPage(const std::string& profile, XrUserSettings& user)
 }
 
 void HandPanelUi::draw(const HandPanel& panel, const glm::mat4& viewProjection) const {
-    if (!panel.shown()) return;
-    const std::array<glm::vec3, 4> c = panel.corners();
-    // The texture's first row is the panel's top (ImGui's y grows down, GL
-    // stores what it drew bottom row first): v = 1 at the top.
-    const float uvs[4][2] = {{0.0f, 1.0f}, {1.0f, 1.0f}, {1.0f, 0.0f}, {0.0f, 0.0f}};
-    float data[4][5];
-    for (int i = 0; i < 4; ++i) {
-        data[i][0] = c[static_cast<std::size_t>(i)].x;
-        data[i][1] = c[static_cast<std::size_t>(i)].y;
-        data[i][2] = c[static_cast<std::size_t>(i)].z;
-        data[i][3] = uvs[i][0];
-        data[i][4] = uvs[i][1];
-    }
-    glBindBuffer(GL_ARRAY_BUFFER, gl_->vertices.get());
-    glBufferSubData(GL_ARRAY_BUFFER, 0, sizeof(data), data);
-    gl_->program.use();
-    glUniformMatrix4fv(gl_->program.uniform("viewProjection"), 1, GL_FALSE, glm::value_ptr(viewProjection));
-    glUniform1i(gl_->program.uniform("panel"), 0);
-    glActiveTexture(GL_TEXTURE0);
-    glBindTexture(GL_TEXTURE_2D, gl_->texture.get());
-    const GLboolean depth = glIsEnabled(GL_DEPTH_TEST), cull = glIsEnabled(GL_CULL_FACE), blend = glIsEnabled(GL_BLEND);
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_CULL_FACE);
-    glEnable(GL_BLEND);
-    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-    glBindVertexArray(gl_->vao.get());
-    glDrawArrays(GL_TRIANGLE_FAN, 0, 4);
-    glBindVertexArray(0);
-    glBindTexture(GL_TEXTURE_2D, 0);
-    if (depth) glEnable(GL_DEPTH_TEST);
-    if (cull) glEnable(GL_CULL_FACE);
-    if (!blend) glDisable(GL_BLEND);
+    if (panel.shown()) board_.draw(panel.corners(), viewProjection);
 }
 
 }  // namespace hg::xr

@@ -1,16 +1,16 @@
-// What the hand panel (xr/hand_panel.h) shows, drawn with Dear ImGui into a
-// texture of its own and put on the board as a quad. Always on top: the
-// tools and undo, redo as labelled buttons, and three page buttons below
-// them; under those the page: "tool" (the tool's parameters, the widgets
-// the desktop's tool panel draws (garden/render/tool_panel.h), in their
-// pointer-only look; for the morph tool the morph triangle), "sculpture"
-// (previous and next sculpture, and the desktop's selection section: mirror
-// plane, edit count and "discard edits", placement), "settings" (the
-// user's settings: left-handed, seated and its height offset, smooth
-// turning, the snap angle; the interaction profile's name). The tool hand's
-// ray on the board is ImGui's mouse, its trigger the left button. The
-// layout is fixed so that tests (and users' muscle memory) find things in
-// the same place.
+// What the hand panel (xr/hand_panel.h) shows, drawn with Dear ImGui on a
+// board in the world (garden/render/ui_board.h: a texture of its own put on
+// the panel as a quad). Always on top: the tools and undo, redo as labelled
+// buttons, and three page buttons below them; under those the page: "tool"
+// (the tool's parameters, the widgets the desktop's tool panel draws
+// (garden/render/tool_panel.h), in their pointer-only look; for the morph
+// tool the morph triangle), "sculpture" (previous and next sculpture, and
+// the desktop's selection section: mirror plane, edit count and "discard
+// edits", placement), "settings" (the user's settings: left-handed, seated
+// and its height offset, smooth turning, the snap angle; the interaction
+// profile's name). The tool hand's ray on the board is ImGui's mouse, its
+// trigger the left button. The layout is fixed so that tests (and users'
+// muscle memory) find things in the same place.
 #pragma once
 
 #include <memory>
@@ -21,6 +21,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "garden/render/ui_board.h"
 #include "xr/xr_settings.h"
 
 namespace hg::garden {
@@ -70,7 +71,6 @@ public:
     // Needs the current GL context (3.3 core); keeps the ImGui context that
     // was current (the mirror's) current after each call.
     HandPanelUi();
-    ~HandPanelUi();
     HandPanelUi(const HandPanelUi&) = delete;
     HandPanelUi& operator=(const HandPanelUi&) = delete;
 
@@ -84,9 +84,7 @@ public:
     void draw(const HandPanel& panel, const glm::mat4& viewProjection) const;
 
 private:
-    struct Gl;
-    std::unique_ptr<Gl> gl_;
-    void* context_ = nullptr;  // ImGuiContext
+    garden::UiBoard board_;
     PanelPage page_ = PanelPage::Tool;
 
     void toolPage(garden::GardenSession& session);

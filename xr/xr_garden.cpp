@@ -5,7 +5,7 @@
 #include "garden/desktop/garden_view.h"
 #include "garden/desktop/garden_window.h"
 #include "garden/render/gl_context.h"
-#include "garden/render/gl_objects.h"
+#include "garden/render/image_target.h"
 #include "garden/render/overlay.h"
 #include "garden/render/panels.h"
 #include "garden/render/quality_governor.h"
@@ -27,7 +27,6 @@
 #include "xr/xr_result.h"
 #include "xr/xr_settings.h"
 
-#include <epoxy/gl.h>
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #include <imgui.h>
@@ -63,36 +62,6 @@ garden::Pose poseOf(const XrPosef& p, float floorOffset) {
     g.orientation = glm::quat(p.orientation.w, p.orientation.x, p.orientation.y, p.orientation.z);
     return g;
 }
-
-// Draws into one swapchain image (and its depth image, or our own depth buffer).
-class EyeTarget {
-public:
-    EyeTarget() : fbo_(garden::gl::Framebuffer::create()) {}
-    void bind(const EyeImages& e) {
-        glBindFramebuffer(GL_FRAMEBUFFER, fbo_.get());
-        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, e.color, 0);
-        if (e.depth != 0) {
-            glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, 0);
-            glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, e.depth, 0);
-        } else {
-            if (!depth_ || size_ != glm::ivec2(e.width, e.height)) {
-                depth_ = garden::gl::Renderbuffer::create();
-                glBindRenderbuffer(GL_RENDERBUFFER, depth_.get());
-                glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, e.width, e.height);
-                size_ = glm::ivec2(e.width, e.height);
-            }
-            glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_.get());
-        }
-        if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-            throw garden::GlError("the swapchain image cannot be drawn into (incomplete framebuffer)");
-    }
-    GLuint fbo() const { return fbo_.get(); }
-
-private:
-    garden::gl::Framebuffer fbo_;
-    garden::gl::Renderbuffer depth_;
-    glm::ivec2 size_{0};
-};
 
 // One run: everything that lives from the first frame to the last.
 class XrRun final : public garden::ViewSink {
@@ -324,8 +293,8 @@ private:
             const StageRig r = rig();
             for (int eye = 0; eye < 2; ++eye) {
                 const EyeImages images = headset_.acquireEye(eye);
-                EyeTarget& target = targets_[static_cast<std::size_t>(eye)];
-                target.bind(images);
+                garden::ImageTarget& target = targets_[static_cast<std::size_t>(eye)];
+                target.bind(images.color, images.depth, glm::ivec2(images.width, images.height));
                 const XrView& v = f.views[static_cast<std::size_t>(eye)];
                 const garden::Pose eyePose = poseOf(v.pose, heightOffset());
                 view_.render(session_, glm::ivec2(images.width, images.height), r.viewOf(eyePose), projectionOf(v.fov),
@@ -335,7 +304,7 @@ private:
                 renderer_.finishView();
                 drawPanel(toolHand_, projectionOf(v.fov) * r.viewOf(eyePose));
                 if (eye == 0 && options_.mirror) mirror(target, images);
-                glBindFramebuffer(GL_FRAMEBUFFER, 0);
+                garden::bindWindowFramebuffer();
                 headset_.releaseEye(eye);
             }
             if (overlay_) drawPanels();
@@ -380,7 +349,7 @@ private:
 
     // Over the mirror: what the headset runs, and the frame statistics.
     void drawPanels() {
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        garden::bindWindowFramebuffer();
         overlay_->newFrame();
         // Bottom right, clear of the frame statistics (top left) however
         // long the runtime's and the profile's names are (Monado's are).
@@ -399,15 +368,9 @@ private:
 
     // The left eye, scaled into the mirror window with its aspect kept
     // (eyes need not be square), black bars around it.
-    void mirror(const EyeTarget& target, const EyeImages& images) {
-        const glm::ivec2 fb = window_.framebufferSize();
-        const MirrorRect r = fitMirror(glm::ivec2(images.width, images.height), fb);
-        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
-        glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
-        glClear(GL_COLOR_BUFFER_BIT);
-        glBindFramebuffer(GL_READ_FRAMEBUFFER, target.fbo());
-        glBlitFramebuffer(0, 0, images.width, images.height, r.offset.x, r.offset.y, r.offset.x + r.size.x,
-                          r.offset.y + r.size.y, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+    void mirror(const garden::ImageTarget& target, const EyeImages& images) {
+        const MirrorRect r = fitMirror(glm::ivec2(images.width, images.height), window_.framebufferSize());
+        target.showInWindow(r.offset, r.size);
     }
 
     // The automatic quality, made at the first frame whose display period
@@ -437,7 +400,7 @@ private:
     int scriptFrame_ = 0;
     std::unique_ptr<Controllers> controllers_;
     garden::Overlay* overlay_ = nullptr;  // the mirror's panels (none when hidden)
-    std::array<EyeTarget, 2> targets_;
+    std::array<garden::ImageTarget, 2> targets_;
     WorldGrab grab_;
     HandPanel panel_;
     HandPanelUi panelUi_;

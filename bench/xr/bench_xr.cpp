@@ -60,7 +60,7 @@ int main(int argc, char** argv) {
     const std::filesystem::path dir = std::filesystem::temp_directory_path() / "hg_bench_xr";
     std::filesystem::create_directories(dir);
     std::string script = kScript;
-    script.replace(script.find("%GARDEN%"), 8, HG_SOURCE_DIR "/content/gardens/default.json");
+    script.replace(script.find("%GARDEN%"), 8, std::string(HG_SOURCE_DIR) + "/content/gardens/default.json");
     const std::string scriptPath = (dir / "bench_xr.json").string();
     std::ofstream(scriptPath) << script;
     ::setenv("HG_MOCK_XR_SCRIPT", scriptPath.c_str(), 1);

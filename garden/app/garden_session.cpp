@@ -25,6 +25,21 @@ namespace {
 
 constexpr int kLevelRefreshFrames = 45;
 
+// The frame's upload limit: what this frame may still show. A group larger
+// than the whole limit is shown alone, in a frame that has shown nothing.
+void limitShownBytes(poly::RemeshBudget& budget, std::size_t byteLimit, const FrameStats& st) {
+    if (byteLimit == 0) return;
+    budget.showBytes = byteLimit - std::min(byteLimit, st.meshBytesShown);
+    budget.oversized = st.groupsShown == 0;
+}
+
+void addRemeshReport(FrameStats& st, const poly::RemeshReport& r) {
+    st.chunksMeshed += r.meshed;
+    st.chunksShown += r.shown;
+    st.meshBytesShown += r.bytesShown;
+    st.groupsShown += r.groupsShown;
+}
+
 }  // namespace
 
 glm::mat4 placementMatrix(const Placement& p) {
@@ -416,7 +431,6 @@ void GardenSession::remesh() {
         if (sculptures_[i].onShow() && sculptures_[i].queue->pending() > 0)
             order.emplace_back(glm::length(sculptures_[i].worldCentre() - navigator_.eye()), i);
     std::sort(order.begin(), order.end());
-    const std::size_t byteLimit = settings_.uploadBytesPerFrame;
     if (settings_.remeshChunksPerFrame == 0 && settings_.remeshOffFrameThread) {
         remeshInBackground(order);
         return;
@@ -425,10 +439,7 @@ void GardenSession::remesh() {
     std::size_t chunksLeft = settings_.remeshChunksPerFrame;
     for (const auto& [distance, i] : order) {
         poly::RemeshBudget budget;
-        if (byteLimit > 0) {
-            budget.showBytes = byteLimit - std::min(byteLimit, stats().meshBytesShown);
-            budget.oversized = stats().groupsShown == 0;  // one group too large for the limit, alone
-        }
+        limitShownBytes(budget, settings_.uploadBytesPerFrame, stats());
         if (settings_.remeshChunksPerFrame > 0) {
             if (chunksLeft == 0) break;
             budget.chunks = chunksLeft;
@@ -437,10 +448,7 @@ void GardenSession::remesh() {
             if (meshed && budget.milliseconds <= scheduler_.settings().minimumMs) break;
         }
         const poly::RemeshReport r = sculptures_[i].queue->process(budget);
-        stats().chunksMeshed += r.meshed;
-        stats().chunksShown += r.shown;
-        stats().meshBytesShown += r.bytesShown;
-        stats().groupsShown += r.groupsShown;
+        addRemeshReport(stats(), r);
         meshed = meshed || r.meshed > 0;
         chunksLeft -= std::min(chunksLeft, r.meshed);
     }
@@ -456,7 +464,6 @@ void GardenSession::remeshInBackground(const std::vector<std::pair<float, std::s
     constexpr double kGatherMs = 1.0;
     constexpr std::size_t kJobsAhead = 2;
     if (!meshing_) meshing_ = std::make_unique<poly::MeshingWorker>();
-    const std::size_t byteLimit = settings_.uploadBytesPerFrame;
     const double allowance = std::min(kGatherMs, scheduler_.allowanceMs(Stage::Remesh));
     const auto start = std::chrono::steady_clock::now();
     for (const auto& entry : order) {
@@ -465,15 +472,8 @@ void GardenSession::remeshInBackground(const std::vector<std::pair<float, std::s
         poly::RemeshBudget budget;
         budget.gather = spent < allowance && meshing_->backlog() < kJobsAhead;
         budget.milliseconds = std::max(0.05, allowance - spent);
-        if (byteLimit > 0) {
-            budget.showBytes = byteLimit - std::min(byteLimit, stats().meshBytesShown);
-            budget.oversized = stats().groupsShown == 0;
-        }
-        const poly::RemeshReport r = sculptures_[entry.second].queue->processInBackground(*meshing_, budget);
-        stats().chunksMeshed += r.meshed;
-        stats().chunksShown += r.shown;
-        stats().meshBytesShown += r.bytesShown;
-        stats().groupsShown += r.groupsShown;
+        limitShownBytes(budget, settings_.uploadBytesPerFrame, stats());
+        addRemeshReport(stats(), sculptures_[entry.second].queue->processInBackground(*meshing_, budget));
     }
 }
 

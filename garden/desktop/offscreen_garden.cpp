@@ -1,7 +1,5 @@
 #include "garden/desktop/offscreen_garden.h"
 
-#include <epoxy/gl.h>
-
 #include "garden/desktop/garden_view.h"
 #include "garden/render/gl_context.h"
 #include "garden/render/offscreen_target.h"
@@ -54,7 +52,7 @@ ViewDraw OffscreenGarden::render(GardenSession& session) {
     const RenderStats r = impl_->renderer.endFrame();
     // The CPU cost of drawing includes waiting for llvmpipe here: a software
     // GPU; on hardware this is where the driver would queue the frame.
-    glFinish();
+    OffscreenTarget::finish();
     return {r.trianglesDrawn, r.chunksDrawn, r.drawCalls, r.gpuMs()};
 }
 

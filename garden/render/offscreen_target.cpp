@@ -61,6 +61,8 @@ void OffscreenTarget::bind() const {
     glViewport(0, 0, width_, height_);
 }
 
+void OffscreenTarget::finish() { glFinish(); }
+
 void OffscreenTarget::unbind() { glBindFramebuffer(GL_FRAMEBUFFER, 0); }
 
 std::vector<std::uint8_t> OffscreenTarget::readColor() const {

@@ -19,6 +19,9 @@ public:
     // to the window's default framebuffer.
     void bind() const;
     static void unbind();
+    // Waits until the GPU has done everything asked of it (glFinish): a
+    // frame's cost measured to its end.
+    static void finish();
 
     int width() const { return width_; }
     int height() const { return height_; }

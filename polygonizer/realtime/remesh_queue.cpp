@@ -12,6 +12,21 @@
 
 namespace hg::poly {
 
+namespace {
+
+// Milliseconds since a call began: both kinds of call spend a budget in ms.
+class Stopwatch {
+public:
+    double ms() const {
+        return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start_).count();
+    }
+
+private:
+    std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+};
+
+}  // namespace
+
 std::size_t meshBytes(const Mesh& m) {
     return (m.positions.size() + m.normals.size()) * sizeof(float) + m.indices.size() * sizeof(std::uint32_t);
 }
@@ -119,10 +134,7 @@ void RemeshQueue::takeJob(bool wait, RemeshReport& report) {
 }
 
 RemeshReport RemeshQueue::processInBackground(MeshingWorker& worker, const RemeshBudget& budget) {
-    const auto start = std::chrono::steady_clock::now();
-    auto elapsedMs = [&start] {
-        return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    };
+    const Stopwatch watch;
     RemeshReport report;
     takeJob(false, report);
     showCompleteGroups(budget, report);
@@ -134,7 +146,7 @@ RemeshReport RemeshQueue::processInBackground(MeshingWorker& worker, const Remes
         auto job = std::make_shared<MeshingJob>();
         for (std::size_t i : todo) {
             if (job->chunks.size() >= most) break;
-            if (!job->chunks.empty() && budget.milliseconds > 0.0 && elapsedMs() > budget.milliseconds) break;
+            if (!job->chunks.empty() && budget.milliseconds > 0.0 && watch.ms() > budget.milliseconds) break;
             Slot& s = slots_[i];
             job->samples.push_back(gatherChunk(pyramid_, layout_, i, s.target));
             job->chunks.push_back(i);
@@ -148,15 +160,12 @@ RemeshReport RemeshQueue::processInBackground(MeshingWorker& worker, const Remes
         }
     }
     report.pending = pending();
-    report.seconds = elapsedMs() / 1000.0;
+    report.seconds = watch.ms() / 1000.0;
     return report;
 }
 
 RemeshReport RemeshQueue::process(const RemeshBudget& budget) {
-    const auto start = std::chrono::steady_clock::now();
-    auto elapsedMs = [&start] {
-        return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    };
+    const Stopwatch watch;
     RemeshReport report;
     takeJob(true, report);  // a job's meshes are not counted against the budget
     const std::vector<std::size_t> todo = order();
@@ -168,7 +177,7 @@ RemeshReport RemeshQueue::process(const RemeshBudget& budget) {
         // caller decides whether there is time for a call at all. A later
         // batch starts only if one like the last still fits: stopping once
         // the budget is spent would overshoot it by a batch.
-        const double before = elapsedMs();
+        const double before = watch.ms();
         if (next > 0 && budget.milliseconds > 0.0 && before + lastBatchMs > budget.milliseconds) break;
         std::size_t take = std::min(batch, todo.size() - next);
         if (budget.chunks > 0) take = std::min(take, budget.chunks - next);
@@ -183,12 +192,12 @@ RemeshReport RemeshQueue::process(const RemeshBudget& budget) {
             stage(todo[next + k], std::move(made[k]), s.target, s.stamp, report);
         }
         next += take;
-        lastBatchMs = elapsedMs() - before;
+        lastBatchMs = watch.ms() - before;
     }
     showCompleteGroups(budget, report);
     if (report.shown > 0) ++shownGeneration_;
     report.pending = pending();
-    report.seconds = elapsedMs() / 1000.0;
+    report.seconds = watch.ms() / 1000.0;
     return report;
 }
 

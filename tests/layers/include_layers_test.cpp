@@ -134,4 +134,35 @@ TEST(IncludeLayers, TheOrderCatchesAnUpwardInclude) {
     EXPECT_GT(layers().at("garden/session"), layers().at("garden/app")) << "a session folder sits above the garden it saves";
 }
 
+// One folder talks to OpenGL: garden/render. The desktop, the headset and
+// the offscreen replay draw through it, so a change of GL version, state
+// or measurement is made in one place. Two exceptions: xr/mock_runtime
+// plays a runtime's compositor (it owns the swapchain images), and
+// xr/headset.cpp asks GLX for the context the runtime is to share (glX*).
+TEST(IncludeLayers, OnlyTheRendererCallsOpenGL) {
+    const fs::path root = HG_SOURCE_DIR;
+    const std::regex call(R"re((^|[^\w:.>])gl(?!X)[A-Z][a-z]\w*\()re");
+    std::ostringstream wrong;
+    std::size_t files = 0;
+    for (const char* top : {"frep", "io", "voxel", "polygonizer", "garden", "xr", "cli"}) {
+        for (const auto& entry : fs::recursive_directory_iterator(root / top)) {
+            const std::string ext = entry.path().extension().string();
+            if (!entry.is_regular_file() || (ext != ".h" && ext != ".cpp")) continue;
+            const std::string rel = fs::relative(entry.path(), root).generic_string();
+            if (rel.rfind("garden/render/", 0) == 0 || rel.rfind("xr/mock_runtime/", 0) == 0) continue;
+            ++files;
+            std::ifstream in(entry.path());
+            std::string text;
+            for (int n = 1; std::getline(in, text); ++n)
+                if (std::regex_search(text, call)) wrong << rel << ":" << n << ": " << text << "\n";
+        }
+    }
+    ASSERT_GT(files, 100u) << "the source tree was not found at " << root;
+    EXPECT_TRUE(wrong.str().empty()) << "OpenGL called outside garden/render:\n" << wrong.str();
+    // The check itself: a call is caught, a method of that name is not.
+    EXPECT_TRUE(std::regex_search("    glBindFramebuffer(GL_FRAMEBUFFER, 0);", call));
+    EXPECT_FALSE(std::regex_search("GlWindow::glVersionString()", call));
+    EXPECT_FALSE(std::regex_search("glXQueryContext(d, c, a, &v);", call));
+}
+
 }  // namespace
