@@ -370,7 +370,7 @@ private:
     // (eyes need not be square), black bars around it.
     void mirror(const garden::ImageTarget& target, const EyeImages& images) {
         const MirrorRect r = fitMirror(glm::ivec2(images.width, images.height), window_.framebufferSize());
-        target.showInWindow(r.offset, r.size);
+        target.showIn(garden::kWindowFramebuffer, r.offset, r.size);
     }
 
     // The automatic quality, made at the first frame whose display period

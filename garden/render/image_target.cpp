@@ -26,8 +26,8 @@ void ImageTarget::bind(GLuint color, GLuint depth, glm::ivec2 size) {
         throw GlError("the swapchain image cannot be drawn into (incomplete framebuffer)");
 }
 
-void ImageTarget::showInWindow(glm::ivec2 offset, glm::ivec2 extent) const {
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+void ImageTarget::showIn(GLuint framebuffer, glm::ivec2 offset, glm::ivec2 extent) const {
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer);
     glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_.get());
@@ -35,6 +35,6 @@ void ImageTarget::showInWindow(glm::ivec2 offset, glm::ivec2 extent) const {
                       GL_COLOR_BUFFER_BIT, GL_LINEAR);
 }
 
-void bindWindowFramebuffer() { glBindFramebuffer(GL_FRAMEBUFFER, 0); }
+void bindWindowFramebuffer() { glBindFramebuffer(GL_FRAMEBUFFER, kWindowFramebuffer); }
 
 }  // namespace hg::garden

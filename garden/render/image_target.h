@@ -19,9 +19,10 @@ public:
     // depth buffer); throws GlError when it cannot be drawn into.
     void bind(GLuint color, GLuint depth, glm::ivec2 size);
     GLuint fbo() const { return fbo_.get(); }
-    // The last bound image's picture into the window's `offset`..`offset +
-    // extent` rectangle, scaled linearly, the rest of the window black.
-    void showInWindow(glm::ivec2 offset, glm::ivec2 extent) const;
+    // The last bound image's picture into `framebuffer`'s `offset`..
+    // `offset + extent` rectangle (pixels from its bottom left), scaled
+    // linearly, the rest of it black; kWindowFramebuffer is the window.
+    void showIn(GLuint framebuffer, glm::ivec2 offset, glm::ivec2 extent) const;
 
 private:
     gl::Framebuffer fbo_;
@@ -29,7 +30,9 @@ private:
     glm::ivec2 depthSize_{0}, imageSize_{0};
 };
 
-// The window's own frame buffer bound again, for drawing and reading.
+// The window's own frame buffer.
+constexpr GLuint kWindowFramebuffer = 0;
+// The window's frame buffer bound again, for drawing and reading.
 void bindWindowFramebuffer();
 
 }  // namespace hg::garden

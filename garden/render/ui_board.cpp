@@ -131,22 +131,25 @@ void UiBoard::newFrame(const std::optional<glm::vec2>& mousePixels, bool mouseDo
     ImGui::NewFrame();
 }
 
-void UiBoard::render() {
+bool UiBoard::render() {
     ImGui::Render();
     const std::uint64_t hash = drawDataHash(*ImGui::GetDrawData());
-    if (gl_->drawn == hash) return;
+    if (gl_->drawn == hash) return false;
     gl_->drawn = hash;
-    GLint framebufferBefore = 0;
+    GLint framebufferBefore = 0, viewportBefore[4] = {0, 0, 0, 0};
     glGetIntegerv(GL_FRAMEBUFFER_BINDING, &framebufferBefore);
+    glGetIntegerv(GL_VIEWPORT, viewportBefore);
     glBindFramebuffer(GL_FRAMEBUFFER, gl_->fbo.get());
     glViewport(0, 0, width_, height_);
     glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
     glClear(GL_COLOR_BUFFER_BIT);
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
     glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(framebufferBefore));
+    glViewport(viewportBefore[0], viewportBefore[1], viewportBefore[2], viewportBefore[3]);
     glBindTexture(GL_TEXTURE_2D, gl_->texture.get());
     glGenerateMipmap(GL_TEXTURE_2D);
     glBindTexture(GL_TEXTURE_2D, 0);
+    return true;
 }
 
 void UiBoard::draw(const std::array<glm::vec3, 4>& corners, const glm::mat4& viewProjection) const {

@@ -45,8 +45,9 @@ public:
     // `mousePixels` (from the board's top left; none: off the board).
     void newFrame(const std::optional<glm::vec2>& mousePixels, bool mouseDown, float dt);
     // With the board current: ends the frame and brings the texture up to
-    // date (the framebuffer bound before stays bound).
-    void render();
+    // date (the framebuffer and viewport before stay). True when the
+    // texture was drawn again, false when the picture was the same.
+    bool render();
 
     // The texture on a quad (corners top left, top right, bottom right,
     // bottom left), over whatever framebuffer is bound.
