@@ -6,6 +6,7 @@
 #include "garden/desktop/garden_window.h"
 #include "garden/render/gl_context.h"
 #include "garden/render/image_target.h"
+#include "garden/render/offscreen_target.h"
 #include "garden/render/overlay.h"
 #include "garden/render/panels.h"
 #include "garden/render/quality_governor.h"
@@ -304,7 +305,7 @@ private:
                 renderer_.finishView();
                 drawPanel(toolHand_, projectionOf(v.fov) * r.viewOf(eyePose));
                 if (eye == 0 && options_.mirror) mirror(target, images);
-                garden::bindWindowFramebuffer();
+                garden::OffscreenTarget::unbind();
                 headset_.releaseEye(eye);
             }
             if (overlay_) drawPanels();
@@ -349,7 +350,7 @@ private:
 
     // Over the mirror: what the headset runs, and the frame statistics.
     void drawPanels() {
-        garden::bindWindowFramebuffer();
+        garden::OffscreenTarget::unbind();
         overlay_->newFrame();
         // Bottom right, clear of the frame statistics (top left) however
         // long the runtime's and the profile's names are (Monado's are).

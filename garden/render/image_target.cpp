@@ -35,6 +35,4 @@ void ImageTarget::showIn(GLuint framebuffer, glm::ivec2 offset, glm::ivec2 exten
                       GL_COLOR_BUFFER_BIT, GL_LINEAR);
 }
 
-void bindWindowFramebuffer() { glBindFramebuffer(GL_FRAMEBUFFER, kWindowFramebuffer); }
-
 }  // namespace hg::garden

@@ -18,7 +18,6 @@ public:
     // Binds the frame buffer with these images attached (depth 0: our own
     // depth buffer); throws GlError when it cannot be drawn into.
     void bind(GLuint color, GLuint depth, glm::ivec2 size);
-    GLuint fbo() const { return fbo_.get(); }
     // The last bound image's picture into `framebuffer`'s `offset`..
     // `offset + extent` rectangle (pixels from its bottom left), scaled
     // linearly, the rest of it black; kWindowFramebuffer is the window.
@@ -30,9 +29,7 @@ private:
     glm::ivec2 depthSize_{0}, imageSize_{0};
 };
 
-// The window's own frame buffer.
+// The window's own frame buffer (OffscreenTarget::unbind binds it again).
 constexpr GLuint kWindowFramebuffer = 0;
-// The window's frame buffer bound again, for drawing and reading.
-void bindWindowFramebuffer();
 
 }  // namespace hg::garden
