@@ -520,6 +520,7 @@ int runXrGarden(const XrOptions& options,
         garden::GardenWindow window(wo, options.mirror || options.desktop.has_value());
         garden::SessionSettings settings;
         settings.remeshOffFrameThread = true;  // xrWaitFrame paces the frames; the worker meshes meanwhile
+        settings.spreadEdits = true;           // a big edit lands over a few frames, none held
         garden::OpenedSession opened = garden::openLoadedOrSession(
             std::move(load), {options.session, gardenFile, options.gardenGiven, "hypergarden --xr"}, settings);
         if (!opened.error.empty()) {

@@ -232,7 +232,7 @@ int main(int argc, char** argv) {
         }
         const int d = session.findSculpture("dryad");
         const garden::Sculpture& dryad = session.sculptures()[static_cast<std::size_t>(d)];
-        const double voxelMetres = dryad.volume->frame.voxelSize * dryad.scale;
+        const double voxelMetres = dryad.volume->frame.voxelSize * dryad.scale();
         session.tool().kind = garden::ToolSettings::Kind::Carve;
         session.tool().radius = 16.0 * voxelMetres;
         const glm::vec3 c = dryad.worldCentre();

@@ -42,6 +42,7 @@ double FrameScheduler::reserveAfter(Stage s) const {
 double FrameScheduler::allowanceMs(Stage s) const {
     double left = settings_.budgetMs - settings_.marginMs - elapsedMs() - reserveAfter(s);
     if (s == Stage::Morph) left *= settings_.morphShare;
+    if (s == Stage::Input) left *= settings_.editShare;
     return std::max(left, settings_.minimumMs);
 }
 

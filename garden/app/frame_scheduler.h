@@ -16,6 +16,9 @@ namespace hg::garden {
 struct SchedulerSettings {
     double budgetMs = 11.1;
     double morphShare = 0.5;  // of the work time left when the morph stage starts
+    // Of the work time left when the input stage computes the edits whose
+    // grid updates are spread over frames (SessionSettings::spreadEdits).
+    double editShare = 0.5;
     // Kept free at the end of every frame: the budgeted stages stop between
     // batches, and a batch's length is a guess.
     double marginMs = 0.5;
@@ -33,7 +36,7 @@ public:
     void endStage();
     // Milliseconds since beginFrame.
     double elapsedMs() const;
-    // How long stage `s` (Morph, Remesh or Upload) may run from now.
+    // How long stage `s` (Input's spread edits, Morph, Remesh or Upload) may run from now.
     double allowanceMs(Stage s) const;
     FrameStats& stats() { return stats_; }
     // Closes the frame: total time, pushed to the history.

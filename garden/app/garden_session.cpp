@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -53,11 +54,13 @@ Sculpture::~Sculpture() = default;
 Sculpture::Sculpture(Sculpture&&) noexcept = default;
 Sculpture& Sculpture::operator=(Sculpture&&) noexcept = default;
 
+glm::mat4 Sculpture::modelToWorld() const { return placementMatrix(placement); }
+
 glm::vec3 Sculpture::worldCentre() const {
-    if (!volume) return glm::vec3(modelToWorld[3]);
+    if (!volume) return glm::vec3(modelToWorld()[3]);
     const frep::Box3& b = volume->frame.modelBox;
     const glm::vec4 c(0.5 * (b.lo[0] + b.hi[0]), 0.5 * (b.lo[1] + b.hi[1]), 0.5 * (b.lo[2] + b.hi[2]), 1.0);
-    return glm::vec3(modelToWorld * c);
+    return glm::vec3(modelToWorld() * c);
 }
 
 void GardenSession::resetView() {
@@ -125,14 +128,14 @@ int GardenSession::findSculpture(const std::string& name) const {
 }
 
 std::array<double, 3> GardenSession::toModel(const Sculpture& s, const glm::vec3& world) const {
-    const glm::vec4 m = glm::inverse(s.modelToWorld) * glm::vec4(world, 1.0f);
+    const glm::vec4 m = glm::inverse(s.modelToWorld()) * glm::vec4(world, 1.0f);
     return {m.x, m.y, m.z};
 }
 
 std::array<double, 3> GardenSession::toModelDirection(const Sculpture& s, const std::array<double, 3>& world) {
     // The placement's scale is uniform, and a direction's length does not matter.
     const glm::dvec3 n =
-        glm::dvec3(glm::inverse(glm::dmat4(s.modelToWorld)) * glm::dvec4(world[0], world[1], world[2], 0.0));
+        glm::dvec3(glm::inverse(glm::dmat4(s.modelToWorld())) * glm::dvec4(world[0], world[1], world[2], 0.0));
     return {n.x, n.y, n.z};
 }
 
@@ -161,8 +164,6 @@ void GardenSession::describeSculpture(std::size_t index) {
     s.source.spec = static_cast<int>(index);
     s.placement = spec.placement;
     s.material = spec.material;
-    s.modelToWorld = placementMatrix(spec.placement);
-    s.scale = spec.placement.scale;
     const SculptureLoad& l = load_.sculptures[index];
     s.source.program = l.program;
     if (!l.ok()) s.error = l.error.empty() ? "the sculpture could not be loaded" : l.error;
@@ -219,8 +220,6 @@ void GardenSession::buildMorph() {
     result.source.morph = &*g.morph;
     result.placement = g.morph->resultPlacement;
     result.material = g.morph->material;
-    result.modelToWorld = placementMatrix(g.morph->resultPlacement);
-    result.scale = g.morph->resultPlacement.scale;
     // The sources were sampled as sculptures: their boxes are known.
     ResolvedBoxes resolved(sculptures_.size());
     for (std::size_t i = 0; i < sculptures_.size(); ++i)
@@ -335,9 +334,13 @@ void GardenSession::uploadAndRender(ViewSink& views) {
 
 void GardenSession::input(const Hands& hands, double dt) {
     scheduler_.beginStage(Stage::Input);
+    // First the edits that wait, so that the tools see the grid as whole as
+    // this frame can make it.
+    advanceEdits(scheduler_.allowanceMs(Stage::Input));
     navigator_.update(hands, dt);
     applyToolIntents(hands);
     sculptWithHands(hands);
+    advanceEdits(0.0);  // what the tools settled, shown in this frame
     if (tool_.kind != ToolSettings::Kind::None) return;  // the trigger sculpts
     // The tool's ray on the morph triangle drawn on the ground picks the
     // blend (seed 004's selector), while the trigger is held.
@@ -385,7 +388,7 @@ void GardenSession::selectLevels() {
         if (detail_) {
             const glm::vec3 c(static_cast<float>(detail_->center[0]), static_cast<float>(detail_->center[1]),
                               static_cast<float>(detail_->center[2]));
-            lod.detail = poly::Sphere{toModel(s, c), detail_->radius / s.scale};
+            lod.detail = poly::Sphere{toModel(s, c), detail_->radius / s.scale()};
         }
         const std::optional<int> uniform = settings_.lod ? poly::uniformLevel(*s.layout, cam, lod) : 0;
         if (uniform && *uniform == s.uniformLevel) continue;
@@ -412,13 +415,17 @@ void GardenSession::morph() {
         budget.maxSamples = 0;
         budget.maxMilliseconds = scheduler_.allowanceMs(Stage::Morph);
     }
+    // Each batch's changes are shown within the step, so the time they take
+    // counts against the stage's allowance.
+    budget.commit = [&r](const std::vector<voxel::IndexBox>& changed) {
+        for (const voxel::IndexBox& box : changed) {
+            if (r.edits) r.edits->baseChanged(box);  // the blend changed under the edits
+            r.pyramid->update(box);
+            r.queue->markChanged(box);
+        }
+    };
     blender_->setViewer(toModel(r, navigator_.eye()));
     const BlendStep step = blender_->step(budget);
-    for (const voxel::IndexBox& box : step.changed) {
-        if (r.edits) r.edits->baseChanged(box);  // the blend changed under the edits
-        r.pyramid->update(box);
-        r.queue->markChanged(box);
-    }
     stats().morphSamples += step.samples;
 }
 
@@ -503,8 +510,24 @@ std::size_t GardenSession::trianglesShown() const {
 }
 
 bool GardenSession::idle() const {
-    return (!blender_ || blender_->done()) && remeshPending() == 0 && sculpturesLoading() == 0;
+    const bool editsLate = std::any_of(sculptures_.begin(), sculptures_.end(),
+                                       [](const Sculpture& s) { return s.edits && s.edits->late(); });
+    return (!blender_ || blender_->done()) && !editsLate && remeshPending() == 0 && sculpturesLoading() == 0;
 }
+
+void GardenSession::advanceEdits(double milliseconds) {
+    for (std::size_t i = 0; i < sculptures_.size(); ++i) {
+        Sculpture& s = sculptures_[i];
+        if (!s.edits || !s.edits->late()) continue;
+        // What the first sculpture used comes off the others' time.
+        const auto start = std::chrono::steady_clock::now();
+        for (const voxel::IndexBox& box : s.edits->advance(milliseconds)) showChanged(static_cast<int>(i), box);
+        milliseconds -= std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        milliseconds = std::max(milliseconds, 0.0);
+    }
+}
+
+void GardenSession::settleEdits() { advanceEdits(std::numeric_limits<double>::infinity()); }
 
 const voxel::Volume* GardenSession::morphResult() const {
     return morphIndex_ >= 0 ? sculptures_[static_cast<std::size_t>(morphIndex_)].volume.get() : nullptr;

@@ -100,6 +100,14 @@ struct SessionSettings {
     // Groups of touching chunks are shown whole (a split would show a
     // crack), so a group larger than this is shown alone in its frame.
     std::size_t uploadBytesPerFrame = 0;
+    // With the allowance (remeshChunksPerFrame 0): a new edit's grid update
+    // is spread over frames, computed at the start of each input stage
+    // within its share of the frame (SchedulerSettings::editShare), so a
+    // big perturbation or a whole stroke does not hold one frame
+    // (SculptureEdits::appendSpread). The window and the headset set it;
+    // with it off (tests, deterministic replays) an edit is whole in the
+    // grid when its call returns.
+    bool spreadEdits = false;
     // The gesture recognizer's weights ("": content/gestures/weights.json).
     std::string gestureWeights;
 };
@@ -400,9 +408,12 @@ public:
     // The frame under way (a sink adds what it measured itself).
     FrameStats& stats() { return scheduler_.stats(); }
 
-    // The morph has nothing left to blend, no chunk waits for a mesh and
-    // no sculpture is loading.
+    // The morph has nothing left to blend, no edit's grid update waits
+    // (spreadEdits), no chunk waits for a mesh and no sculpture is loading.
     bool idle() const;
+    // Every edit's grid update that waits (spreadEdits) computed now and
+    // shown: what a snapshot of the grids needs.
+    void settleEdits();
     // Sculptures still being sampled (progressive loading), and a wait until
     // every one is in (what needs the whole garden: a journal to play).
     std::size_t sculpturesLoading() const;
@@ -425,6 +436,11 @@ private:
     // The frame's stages, in order (frame() is their one caller).
     void beginFrame();
     void input(const Hands& hands, double dt);
+    // The waiting edits' grid updates computed within `milliseconds`, and
+    // shown (0: only those a later change settled).
+    void advanceEdits(double milliseconds);
+    // A new edit's grid update is spread over frames (SessionSettings::spreadEdits).
+    bool spreading() const { return settings_.spreadEdits && settings_.remeshChunksPerFrame == 0 && !restoring_; }
     void selectLevels();
     void morph();
     void remesh();

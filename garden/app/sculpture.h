@@ -57,8 +57,10 @@ struct Sculpture {
     std::optional<SelectionMask> selection;
     std::string selectionModel;
     Material material;
-    glm::mat4 modelToWorld{1.0f};      // the placement as a matrix
-    double scale = 1.0;                // metres per model unit
+    // The placement as a matrix, and metres per model unit: both read from
+    // `placement`, the one place a sculpture's position is kept.
+    glm::mat4 modelToWorld() const;
+    double scale() const { return placement.scale; }
     // The edit list and the unedited grid (made at the first edit).
     std::unique_ptr<SculptureEdits> edits;
     // Caches, rebuilt from the above.

@@ -14,7 +14,7 @@ constexpr float kRingMargin = 1.1f;
 
 MoveRing moveRing(const Sculpture& s) {
     MoveRing r;
-    r.centre = glm::vec3(s.modelToWorld[3]);
+    r.centre = glm::vec3(s.modelToWorld()[3]);
     // The farthest corner of the model box from the vertical through the
     // pivot (the model origin), in metres: unchanged by the yaw.
     double reach = 0.5;  // a missing sculpture: its 1 m marker
@@ -22,7 +22,7 @@ MoveRing moveRing(const Sculpture& s) {
         const frep::Box3& b = s.volume->frame.modelBox;
         reach = 0.0;
         for (double x : {b.lo[0], b.hi[0]})
-            for (double z : {b.lo[2], b.hi[2]}) reach = std::max(reach, std::hypot(x, z) * s.scale);
+            for (double z : {b.lo[2], b.hi[2]}) reach = std::max(reach, std::hypot(x, z) * s.scale());
     }
     r.radius = kRingMargin * static_cast<float>(reach);
     return r;

@@ -132,7 +132,7 @@ ActionOrWhy GardenSession::strokeFromWorld(int sculpture, StrokeTool tool,
     if (worldPath.empty()) return refused("the stroke has no path");
     if (std::string why = checkEditable(sculpture); !why.empty()) return refused(why);
     const Sculpture& s = sculptures_[static_cast<std::size_t>(sculpture)];
-    StrokeAction a{s.name, tool, radius / s.scale, softness, {}, s.mirror, strength, falloff, {}};
+    StrokeAction a{s.name, tool, radius / s.scale(), softness, {}, s.mirror, strength, falloff, {}};
     for (const auto& p : worldPath) {
         if (!finite3(p)) return refused("the stroke's point is not a finite position");
         a.path.push_back(toModel(s, toGlm(p)));
@@ -157,11 +157,11 @@ ActionOrWhy GardenSession::perturbationFromWorld(int sculpture, QuadricShape sha
     Perturbation p;
     p.shape = shape;
     p.center = toModel(s, toGlm(worldCenter));
-    p.radii = {radii[0] / s.scale, radii[1] / s.scale, radii[2] / s.scale};
+    p.radii = {radii[0] / s.scale(), radii[1] / s.scale(), radii[2] / s.scale()};
     p.strength = strength;
     p.mirror = s.mirror;
     // The quadric's axes are the world's, turned into the model frame.
-    const glm::mat3 toModelAxes = glm::mat3(glm::inverse(s.modelToWorld));
+    const glm::mat3 toModelAxes = glm::mat3(glm::inverse(s.modelToWorld()));
     for (int i = 0; i < 3; ++i) {
         glm::vec3 axis(0.0f);
         axis[i] = 1.0f;
@@ -177,12 +177,12 @@ ActionOrWhy GardenSession::impactsFromWorld(int sculpture, const std::array<doub
     if (!finite3(worldOrigin) || !finite3(worldDirection)) return refused("the impact ray is not finite");
     const Sculpture& s = sculptures_[static_cast<std::size_t>(sculpture)];
     // Into the model frame: lengths by the scale, volumes by its cube.
-    tool.size /= s.scale;
-    tool.volume /= s.scale * s.scale * s.scale;
-    if (tool.spread != ImpactSpread::Cone) tool.spreadSize /= s.scale;
+    tool.size /= s.scale();
+    tool.volume /= s.scale() * s.scale() * s.scale();
+    if (tool.spread != ImpactSpread::Cone) tool.spreadSize /= s.scale();
     const FieldUnits units = unitsOf(*s.volume);
     if (std::string why = checkImpactTool(tool, units.voxelSize); !why.empty()) return refused(why);
-    const glm::dmat4 toModelM = glm::inverse(glm::dmat4(s.modelToWorld));
+    const glm::dmat4 toModelM = glm::inverse(glm::dmat4(s.modelToWorld()));
     const glm::dvec3 o = glm::dvec3(toModelM * glm::dvec4(worldOrigin[0], worldOrigin[1], worldOrigin[2], 1.0));
     glm::dvec3 d = glm::dvec3(toModelM * glm::dvec4(worldDirection[0], worldDirection[1], worldDirection[2], 0.0));
     if (!(glm::length(d) > 0.0)) return refused("the impact ray has no direction");
@@ -214,7 +214,7 @@ ActionOrWhy GardenSession::impactsAgain(int from, int to) const {
     ImpactTool tool;
     tool.shape = last->impacts[0].shape;
     // The same tool in the other sculpture's model units.
-    const double k = src.scale / dst.scale;
+    const double k = src.scale() / dst.scale();
     tool.size = last->impacts[0].size * k;
     tool.volume = last->volume * k * k * k;
     ImpactSeries series = *last;
@@ -254,7 +254,7 @@ ActionOrWhy GardenSession::perturbationChange(int sculpture, std::size_t edit, d
     if (!old) return refused("edit " + std::to_string(edit) + " is not a perturbation");
     Perturbation p = *old;
     p.strength = strength;
-    p.radii = {radii[0] / s.scale, radii[1] / s.scale, radii[2] / s.scale};
+    p.radii = {radii[0] / s.scale(), radii[1] / s.scale(), radii[2] / s.scale()};
     return {ReplaceAction{s.name, edit, p}, ""};
 }
 

@@ -239,8 +239,6 @@ std::string GardenSession::applyAddModel(const AddAction& a) {
     s.source.program = loaded.program;
     s.placement = spec.placement;
     s.material = spec.material;
-    s.modelToWorld = placementMatrix(spec.placement);
-    s.scale = spec.placement.scale;
     s.volume = std::make_unique<voxel::Volume>(std::move(*r.volume));
     attachMeshing(s);
     load_.garden->sculptures.push_back(std::move(spec));

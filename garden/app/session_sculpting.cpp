@@ -123,7 +123,7 @@ std::string GardenSession::beginStroke(int sculpture, StrokeTool tool, const std
     const Sculpture& s = sculptures_[static_cast<std::size_t>(sculpture)];
     Stroke stroke;
     stroke.tool = tool;
-    stroke.radius = radius / s.scale;
+    stroke.radius = radius / s.scale();
     stroke.softness = softness;
     stroke.strength = strength;
     stroke.falloff = falloff;
@@ -141,7 +141,8 @@ std::string GardenSession::startStroke(int sculpture, Stroke stroke) {
     Edit e;
     e.op = std::move(stroke);
     e.mask = maskFor(sculpture, e);
-    showChanged(sculpture, edits.append(std::move(e)));
+    if (spreading()) edits.appendSpread(std::move(e));  // shown as its cells are computed (advanceEdits)
+    else showChanged(sculpture, edits.append(std::move(e)));
     strokeSculpture_ = sculpture;
     // The entry's action is the whole stroke once it ends (endStroke).
     undoOrder_.push_back(UndoEntry{sculpture, StrokeAction{}, std::nullopt, std::nullopt, std::nullopt});
@@ -158,7 +159,8 @@ std::string GardenSession::applyStrokeModel(int sculpture, const Stroke& stroke)
     first.segments.clear();
     if (std::string why = startStroke(sculpture, std::move(first)); !why.empty()) return why;
     const std::vector<ModelPoint> rest(stroke.path.begin() + 1, stroke.path.end());
-    if (!rest.empty()) showChanged(sculpture, editsOf(sculpture).extendLastStroke(rest));
+    if (!rest.empty() && spreading()) editsOf(sculpture).extendLastStrokeSpread(rest);
+    else if (!rest.empty()) showChanged(sculpture, editsOf(sculpture).extendLastStroke(rest));
     endStroke();
     return "";
 }
@@ -225,7 +227,10 @@ std::string GardenSession::applySketchModel(int sculpture, const SketchAction& a
 
 void GardenSession::appendEdit(int sculpture, Edit e, const Action& done) {
     e.mask = maskFor(sculpture, e);
-    showChanged(sculpture, editsOf(sculpture).append(std::move(e)));
+    if (spreading())
+        editsOf(sculpture).appendSpread(std::move(e));  // shown as its cells are computed (advanceEdits)
+    else
+        showChanged(sculpture, editsOf(sculpture).append(std::move(e)));
     undoOrder_.push_back(UndoEntry{sculpture, done, std::nullopt, std::nullopt, std::nullopt});
     redoOrder_.clear();
     record(done);
@@ -364,8 +369,6 @@ std::string GardenSession::setMaterial(int sculpture, const Material& material) 
 void GardenSession::placeSculpture(int sculpture, const Placement& placement, bool followOrbit) {
     Sculpture& s = sculptures_[static_cast<std::size_t>(sculpture)];
     s.placement = placement;
-    s.modelToWorld = placementMatrix(placement);
-    s.scale = placement.scale;
     if (followOrbit && selected_ == sculpture) select(sculpture);  // the orbit follows
 }
 
@@ -392,7 +395,7 @@ std::optional<std::pair<int, glm::vec3>> GardenSession::toolHit(const Pose& aim)
     for (std::size_t i = 0; i < sculptures_.size(); ++i) {
         const Sculpture& s = sculptures_[i];
         if (!s.onShow()) continue;
-        const glm::dmat4 toModelM = glm::inverse(glm::dmat4(s.modelToWorld));
+        const glm::dmat4 toModelM = glm::inverse(glm::dmat4(s.modelToWorld()));
         const glm::dvec3 o = glm::dvec3(toModelM * glm::dvec4(glm::dvec3(aim.position), 1.0));
         const glm::dvec3 d = glm::dvec3(toModelM * glm::dvec4(glm::dvec3(aim.forward()), 0.0));
         // t is in world ray lengths (d is the world direction taken into the

@@ -289,7 +289,7 @@ ActionOrWhy GardenSession::partFromText(int from, const std::string& name, std::
     a.placement = s.placement;
     double width = 0.0;
     for (int k = 0; k < 3; ++k) width = std::max(width, frame.modelBox.hi[k] - frame.modelBox.lo[k]);
-    a.placement.position[0] += width * s.scale + 0.3;
+    a.placement.position[0] += width * s.scale() + 0.3;
     return {a, ""};
 }
 

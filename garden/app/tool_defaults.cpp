@@ -33,7 +33,7 @@ void sizeToolsToView(GardenSession& session) {
     if (i < 0) return;
     const Sculpture& s = session.sculptures()[static_cast<std::size_t>(i)];
     const frep::Box3& b = s.volume->frame.modelBox;
-    const double size = s.scale * std::sqrt((b.hi[0] - b.lo[0]) * (b.hi[0] - b.lo[0]) + (b.hi[1] - b.lo[1]) * (b.hi[1] - b.lo[1]) +
+    const double size = s.scale() * std::sqrt((b.hi[0] - b.lo[0]) * (b.hi[0] - b.lo[0]) + (b.hi[1] - b.lo[1]) * (b.hi[1] - b.lo[1]) +
                                             (b.hi[2] - b.lo[2]) * (b.hi[2] - b.lo[2]));
     ToolSettings& t = session.tool();
     t.radius = kStartRadiusShare * size;

@@ -230,6 +230,7 @@ int runDesktopGarden(const DesktopOptions& options) {
         // Garden panel says how many are still coming.
         settings.progressiveLoading = true;
         settings.remeshOffFrameThread = true;  // vsync paces the frames; the worker meshes meanwhile
+        settings.spreadEdits = true;           // a big edit lands over a few frames, none held
         OpenedSession opened = openLoadedOrSession(
             std::move(load), {options.session, options.garden, options.gardenGiven, "hypergarden (desktop)"}, settings);
         if (!opened.error.empty()) {

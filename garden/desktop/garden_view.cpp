@@ -147,7 +147,7 @@ void GardenView::render(const GardenSession& session, glm::ivec2 viewport, const
         const Sculpture& st = sculptures[s];
         if (st.removed || (only_ >= 0 && s != static_cast<std::size_t>(only_))) continue;
         if (st.missing()) {
-            renderer_.drawLines(cubeEdges(st.modelToWorld, static_cast<float>(st.scale)), glm::vec4(0.9f, 0.1f, 0.1f, 1.0f),
+            renderer_.drawLines(cubeEdges(st.modelToWorld(), static_cast<float>(st.scale())), glm::vec4(0.9f, 0.1f, 0.1f, 1.0f),
                                 LineMode::Segments);
             continue;
         }
@@ -155,7 +155,7 @@ void GardenView::render(const GardenSession& session, glm::ivec2 viewport, const
         const frep::Box3& box = st.layout->frame().modelBox;
         const double size = std::max({box.hi[0] - box.lo[0], box.hi[1] - box.lo[1], box.hi[2] - box.lo[2]});
         const RenderMaterial m = lookedAt(renderMaterial(st.material, detailScaleFor(size)), look_);
-        const glm::mat4 mvp = v.projection * v.view * st.modelToWorld;
+        const glm::mat4 mvp = v.projection * v.view * st.modelToWorld();
         // The sculpture's whole box first (the layout's first and last
         // chunks hold its corners): one test instead of one per chunk for a
         // sculpture wholly in view or wholly out of it.
@@ -173,7 +173,7 @@ void GardenView::render(const GardenSession& session, glm::ivec2 viewport, const
                 st.layout->modelBox(c, lo, hi);
                 if (frustumTest(mvp, lo, hi) == InView::Outside) continue;
             }
-            renderer_.drawChunk(chunkId(s, c), st.modelToWorld, m);
+            renderer_.drawChunk(chunkId(s, c), st.modelToWorld(), m);
         }
     }
     if (only_ >= 0) return;  // one sculpture on show: no markers on the ground

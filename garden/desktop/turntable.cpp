@@ -39,7 +39,7 @@ std::optional<ShownBound> shownBound(const Sculpture& sculpture) {
         const auto mesh = q.mesh(c);
         if (!mesh) continue;
         for (std::size_t v = 0; v + 2 < mesh->positions.size(); v += 3) {
-            const glm::vec3 w(sculpture.modelToWorld *
+            const glm::vec3 w(sculpture.modelToWorld() *
                               glm::vec4(mesh->positions[v], mesh->positions[v + 1], mesh->positions[v + 2], 1.0f));
             lo = glm::min(lo, w);
             hi = glm::max(hi, w);

@@ -13,15 +13,15 @@ FramedView gardenFraming(const GardenSession& session, float fovY, float aspect)
     for (const Sculpture& s : session.sculptures()) {
         if (s.removed) continue;
         if (!s.volume) {
-            lo = glm::min(lo, glm::vec3(s.modelToWorld[3]));
-            hi = glm::max(hi, glm::vec3(s.modelToWorld[3]));
+            lo = glm::min(lo, glm::vec3(s.modelToWorld()[3]));
+            hi = glm::max(hi, glm::vec3(s.modelToWorld()[3]));
             continue;
         }
         const frep::Box3& b = s.volume->frame.modelBox;
         for (int corner = 0; corner < 8; ++corner) {
             const glm::vec4 m(b.lo[0] + (corner & 1) * (b.hi[0] - b.lo[0]), b.lo[1] + ((corner >> 1) & 1) * (b.hi[1] - b.lo[1]),
                               b.lo[2] + ((corner >> 2) & 1) * (b.hi[2] - b.lo[2]), 1.0f);
-            const glm::vec3 w(s.modelToWorld * m);
+            const glm::vec3 w(s.modelToWorld() * m);
             lo = glm::min(lo, w);
             hi = glm::max(hi, w);
         }

@@ -40,9 +40,10 @@ std::string prepareGridExport(const GardenSession& session, const Sculpture& s, 
     job.edits = s.edits ? s.edits->list().size() : 0;
     job.box = s.volume->frame.modelBox;
     job.gridResolution = grid;
-    job.metresPerUnit = s.scale;
+    job.metresPerUnit = s.scale();
     job.options = options;
-    job.grid = std::make_shared<const voxel::Volume>(s.volume->clone());
+    // An edit whose grid update is still spread over frames is in the copy.
+    job.grid = std::make_shared<const voxel::Volume>(s.edits ? s.edits->settledGrid() : s.volume->clone());
     job.prepareSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return "";
 }
@@ -112,7 +113,7 @@ std::string prepareExport(const GardenSession& session, int index, const std::st
     job.statements = hf.statements;
     job.box = options.box ? *options.box : s.volume->frame.modelBox;
     job.gridResolution = s.volume->frame.resolution;
-    job.metresPerUnit = s.scale;
+    job.metresPerUnit = s.scale();
     job.options = options;
     job.prepareSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return "";

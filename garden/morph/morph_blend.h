@@ -37,6 +37,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -63,6 +64,11 @@ struct BlendBudget {
     // after the first batch the next is cut to what the measured rate fits
     // into the time left, so a step overshoots by little.
     double maxMilliseconds = 0.0;
+    // Called after each batch with the boxes it changed, within the step's
+    // time: what the caller does with a change (the LOD pyramid's resample,
+    // the remesh queue's marks) costs about as much as the blend itself in
+    // the coarse pass, so it is counted in the rate the batches are sized by.
+    std::function<void(const std::vector<voxel::IndexBox>&)> commit;
 };
 
 constexpr std::uint64_t kBlendBatch = 65536;

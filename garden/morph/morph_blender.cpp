@@ -371,16 +371,22 @@ BlendStep MorphBlender::step(const BlendBudget& budget) {
                 double fits = static_cast<double>(report.samples) / std::max(elapsed, 1e-9) * (limit - elapsed);
                 batch = std::min<std::uint64_t>(batch, static_cast<std::uint64_t>(fits));
             } else {
-                // The first batch of a step: at the last step's rate, or a
-                // small one to measure it (a whole batch can take several
+                // The first batch of a step: half of what the last step's
+                // rate fits (the rate changes from region to region: blocks
+                // near the surface cost more than empty ones), or a small
+                // one to measure it (a whole batch can take several
                 // milliseconds, more than a frame's share).
-                const double fits = m.samplesPerSecond > 0.0 ? m.samplesPerSecond * (limit - elapsed)
+                const double fits = m.samplesPerSecond > 0.0 ? 0.5 * m.samplesPerSecond * (limit - elapsed)
                                                               : static_cast<double>(kFirstTimedBatch);
                 batch = std::min<std::uint64_t>(batch, std::max<std::uint64_t>(1, static_cast<std::uint64_t>(fits)));
             }
         }
         if (batch == 0) break;
+        const std::size_t reported = report.changed.size();
         m.runBatch(batch, report);
+        if (budget.commit && report.changed.size() > reported)
+            budget.commit(std::vector<voxel::IndexBox>(report.changed.begin() + static_cast<std::ptrdiff_t>(reported),
+                                                       report.changed.end()));
     }
     report.coarseDone = coarseDone();
     report.done = done();

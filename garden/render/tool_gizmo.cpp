@@ -160,7 +160,7 @@ std::vector<GizmoLines> moveGizmo(const Sculpture& s) {
     const float inner = ring.radius * (1.0f - kMoveRingGrab), outer = ring.radius * (1.0f + kMoveRingGrab);
     out.push_back({circlePoints(c, inner, kX, kZ, kSegments), LineMode::Loop, faint(color), true});
     out.push_back({circlePoints(c, outer, kX, kZ, kSegments), LineMode::Loop, faint(color), true});
-    const glm::vec3 ax = glm::normalize(glm::vec3(s.modelToWorld[0])), az = glm::normalize(glm::vec3(s.modelToWorld[2]));
+    const glm::vec3 ax = glm::normalize(glm::vec3(s.modelToWorld()[0])), az = glm::normalize(glm::vec3(s.modelToWorld()[2]));
     std::vector<glm::vec3> handles;
     for (const glm::vec3& d : {ax, -ax, az, -az}) {
         handles.push_back(c + inner * d);
@@ -169,7 +169,7 @@ std::vector<GizmoLines> moveGizmo(const Sculpture& s) {
     out.push_back({handles, LineMode::Segments, color, true});
     // The model axes at the pivot: x red, y green, z blue.
     const float len = 0.6f * ring.radius;
-    const glm::vec3 ay = glm::normalize(glm::vec3(s.modelToWorld[1]));
+    const glm::vec3 ay = glm::normalize(glm::vec3(s.modelToWorld()[1]));
     out.push_back({{c, c + len * ax}, LineMode::Segments, {0.95f, 0.25f, 0.2f, 1}, true});
     out.push_back({{c, c + len * ay}, LineMode::Segments, {0.3f, 0.9f, 0.3f, 1}, true});
     out.push_back({{c, c + len * az}, LineMode::Segments, {0.3f, 0.5f, 1.0f, 1}, true});
@@ -191,7 +191,7 @@ std::vector<GizmoLines> mirrorGizmo(const Sculpture& s) {
                          static_cast<float>(0.5 * (b.hi[2] - b.lo[2])));
     const float hu = glm::dot(half, glm::abs(u)), hv = glm::dot(half, glm::abs(v));
     const auto world = [&](float su, float sv) {
-        return glm::vec3(s.modelToWorld * glm::vec4(p + su * hu * u + sv * hv * v, 1.0f));
+        return glm::vec3(s.modelToWorld() * glm::vec4(p + su * hu * u + sv * hv * v, 1.0f));
     };
     const glm::vec4 color(0.3f, 0.9f, 0.95f, 1.0f);
     addSeeThrough(out, {world(-1, -1), world(1, -1), world(1, 1), world(-1, 1)}, color);
@@ -211,7 +211,7 @@ std::vector<GizmoLines> selectionGizmo(const Sculpture& s) {
     const auto corner = [&](int c) {
         const glm::vec4 m(static_cast<float>(c & 1 ? b.hi[0] : b.lo[0]), static_cast<float>(c & 2 ? b.hi[1] : b.lo[1]),
                           static_cast<float>(c & 4 ? b.hi[2] : b.lo[2]), 1.0f);
-        return glm::vec3(s.modelToWorld * m);
+        return glm::vec3(s.modelToWorld() * m);
     };
     std::vector<glm::vec3> edges;
     for (int c = 0; c < 8; ++c)
@@ -252,7 +252,7 @@ void drawToolGizmos(Renderer& renderer, const GardenSession& session, const std:
     // triangle's edges once, in the garden's frame.
     for (const GardenSession::ModelView& m : session.models()) {
         if (m.sculpture < 0 || !session.sculptures()[static_cast<std::size_t>(m.sculpture)].onShow()) continue;
-        const glm::mat4& toWorld = session.sculptures()[static_cast<std::size_t>(m.sculpture)].modelToWorld;
+        const glm::mat4 toWorld = session.sculptures()[static_cast<std::size_t>(m.sculpture)].modelToWorld();
         std::vector<glm::vec3> segments;
         segments.reserve(m.triangles->size() * 6);
         const auto at = [&](std::uint32_t v) { return glm::vec3(toWorld * glm::vec4(glm::vec3((*m.vertices)[v]), 1.0f)); };

@@ -1,6 +1,7 @@
 #include "garden/sculpt/sculpture_edits.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 #include "garden/sculpt/smooth_fit.h"
@@ -64,10 +65,15 @@ void add(voxel::EditRegionStats& total, const voxel::EditRegionStats& s) {
 }  // namespace
 
 voxel::EditRegionStats SculptureEdits::update(const voxel::IndexBox& box) {
+    settle();
     const voxel::IndexBox clip = voxel::intersect(box, shown_.frame.indexBox);
     if (clip.empty()) return {};
     if (deferred_) {
         pending_.push_back(clip);
+        return {};
+    }
+    if (queueing_) {
+        queue(clip, 0, true);
         return {};
     }
     voxel::EditRegionStats total;
@@ -80,9 +86,14 @@ voxel::EditRegionStats SculptureEdits::update(const voxel::IndexBox& box) {
 }
 
 voxel::EditRegionStats SculptureEdits::applyOnTop(const voxel::IndexBox& box, std::size_t firstPiece) {
+    settle();
     if (deferred_) return update(box);
     const voxel::IndexBox clip = voxel::intersect(box, shown_.frame.indexBox);
     if (clip.empty()) return {};
+    if (queueing_) {
+        queue(clip, static_cast<std::uint32_t>(firstPiece), false);
+        return {};
+    }
     const auto last = static_cast<std::uint32_t>(list_.size() - 1);
     voxel::EditRegionStats total;
     for (const voxel::IndexBox& cell : cellsOf(clip)) {
@@ -117,6 +128,7 @@ void SculptureEdits::dropCopies() {
 }
 
 voxel::EditRegionStats SculptureEdits::baseChanged(const voxel::IndexBox& box) {
+    settle();
     dropCopies();
     return update(box);
 }
@@ -140,6 +152,7 @@ void SculptureEdits::fitNewSegments(Stroke& stroke) {
 }
 
 voxel::IndexBox SculptureEdits::append(Edit edit) {
+    settle();
     if (auto* stroke = std::get_if<Stroke>(&edit.op)) fitNewSegments(*stroke);
     edit.id = nextId_++;
     redo_.clear();
@@ -156,6 +169,7 @@ voxel::IndexBox SculptureEdits::applyAppended(Edit edit) {
 }
 
 voxel::IndexBox SculptureEdits::extendLastStroke(const std::vector<ModelPoint>& points) {
+    settle();
     Stroke& stroke = list_.lastStroke();
     const std::size_t firstPoint = stroke.path.size();
     stroke.path.insert(stroke.path.end(), points.begin(), points.end());
@@ -175,6 +189,7 @@ voxel::IndexBox SculptureEdits::extendLastStroke(const std::vector<ModelPoint>& 
 }
 
 voxel::IndexBox SculptureEdits::replace(std::size_t index, Edit edit, Edit& replaced) {
+    settle();
     edit.id = list_.edits()[index].id;
     const frep::Box3 before = list_.edits()[index].reach;
     replaced = list_.replace(index, std::move(edit));
@@ -193,6 +208,7 @@ voxel::IndexBox SculptureEdits::replace(std::size_t index, Edit edit, Edit& repl
 }
 
 std::optional<voxel::IndexBox> SculptureEdits::undo() {
+    settle();
     if (list_.empty()) return std::nullopt;
     Edit removed = list_.removeLast();
     const voxel::IndexBox box = voxelsOf(removed.reach);
@@ -206,6 +222,7 @@ std::optional<voxel::IndexBox> SculptureEdits::undo() {
 }
 
 std::vector<Edit> SculptureEdits::takeAll(std::vector<voxel::IndexBox>& changed) {
+    settle();
     // Deferred, so that each voxel is recomputed once however many edits go.
     const bool wasDeferred = deferred_;
     deferred_ = true;
@@ -221,6 +238,7 @@ std::vector<Edit> SculptureEdits::takeAll(std::vector<voxel::IndexBox>& changed)
 }
 
 std::vector<voxel::IndexBox> SculptureEdits::rebase() {
+    settle();
     base_ = std::make_unique<voxel::Volume>(shown_.clone());
     dropCopies();  // they hold the old grid
     const bool wasDeferred = deferred_;
@@ -230,6 +248,7 @@ std::vector<voxel::IndexBox> SculptureEdits::rebase() {
 }
 
 std::vector<voxel::IndexBox> SculptureEdits::reframe(const std::function<void(Edit&)>& rederive) {
+    settle();
     std::vector<Edit> edits = list_.edits();
     list_ = EditList(unitsOf(shown_), kEditIndexCellVoxels * shown_.frame.voxelSize);
     for (Edit& e : edits) rederive(e);
@@ -241,6 +260,7 @@ std::vector<voxel::IndexBox> SculptureEdits::reframe(const std::function<void(Ed
 }
 
 std::vector<voxel::IndexBox> SculptureEdits::putBack(std::vector<Edit> edits) {
+    settle();
     const bool wasDeferred = deferred_;
     deferred_ = true;
     for (Edit& e : edits) applyAppended(std::move(e));
@@ -248,6 +268,7 @@ std::vector<voxel::IndexBox> SculptureEdits::putBack(std::vector<Edit> edits) {
 }
 
 std::optional<voxel::IndexBox> SculptureEdits::redo() {
+    settle();
     if (redo_.empty()) return std::nullopt;
     Edit again = std::move(redo_.back());
     redo_.pop_back();
@@ -255,6 +276,7 @@ std::optional<voxel::IndexBox> SculptureEdits::redo() {
 }
 
 std::vector<voxel::IndexBox> SculptureEdits::flush() {
+    settle();
     deferred_ = false;
     // The cells the pending boxes touch, each recomputed once.
     std::vector<std::array<int, 3>> cells;
@@ -277,6 +299,79 @@ std::vector<voxel::IndexBox> SculptureEdits::flush() {
         return editTape(list_, list_.reaching(modelBoxOf(shown_.frame, parts[i])));
     });
     return done;
+}
+
+voxel::IndexBox SculptureEdits::appendSpread(Edit edit) {
+    settle();
+    queueing_ = true;
+    const voxel::IndexBox box = append(std::move(edit));
+    queueing_ = false;
+    return box;
+}
+
+voxel::IndexBox SculptureEdits::extendLastStrokeSpread(const std::vector<ModelPoint>& points) {
+    settle();
+    queueing_ = true;
+    const voxel::IndexBox box = extendLastStroke(points);
+    queueing_ = false;
+    return box;
+}
+
+void SculptureEdits::queue(const voxel::IndexBox& clip, std::uint32_t firstPiece, bool fromBase) {
+    for (const voxel::IndexBox& cell : cellsOf(clip, kFlushCellVoxels)) spread_.push_back({cell, firstPiece, fromBase});
+}
+
+// One waiting cell, as update() (from the base) or applyOnTop() (the last
+// edit's pieces from firstPiece on, on top) computes it.
+void SculptureEdits::computeSpreadCell(const SpreadCell& c, voxel::Volume& grid) const {
+    const std::vector<EditPick> reaching = list_.reaching(modelBoxOf(grid.frame, c.box));
+    if (c.fromBase) {
+        voxel::applyEditTape(*base_, grid, c.box, editTape(list_, reaching));
+        return;
+    }
+    const auto last = static_cast<std::uint32_t>(list_.size() - 1);
+    for (const EditPick& p : reaching) {
+        if (p.edit != last) continue;
+        EditPick pick{last, {}};
+        for (std::uint32_t piece : p.pieces)
+            if (piece >= c.firstPiece) pick.pieces.push_back(piece);
+        if (!pick.pieces.empty()) voxel::applyEditTape(grid, grid, c.box, editTape(list_, {pick}));
+        return;
+    }
+}
+
+voxel::Volume SculptureEdits::settledGrid() const {
+    voxel::Volume out = shown_.clone();
+    for (std::size_t i = spreadNext_; i < spread_.size(); ++i) computeSpreadCell(spread_[i], out);
+    return out;
+}
+
+std::vector<voxel::IndexBox> SculptureEdits::advance(double milliseconds) {
+    using Clock = std::chrono::steady_clock;
+    const auto start = Clock::now();
+    std::vector<voxel::IndexBox> changed = std::move(settled_);
+    settled_.clear();
+    while (milliseconds > 0.0 && spreadNext_ < spread_.size()) {
+        const SpreadCell& cell = spread_[spreadNext_++];
+        computeSpreadCell(cell, shown_);
+        changed.push_back(cell.box);
+        if (std::chrono::duration<double, std::milli>(Clock::now() - start).count() >= milliseconds) break;
+    }
+    if (spreadNext_ == spread_.size()) {
+        spread_.clear();
+        spreadNext_ = 0;
+    }
+    return changed;
+}
+
+void SculptureEdits::settle() {
+    if (spreadNext_ >= spread_.size()) return;
+    for (; spreadNext_ < spread_.size(); ++spreadNext_) {
+        computeSpreadCell(spread_[spreadNext_], shown_);
+        settled_.push_back(spread_[spreadNext_].box);
+    }
+    spread_.clear();
+    spreadNext_ = 0;
 }
 
 std::unique_ptr<voxel::Volume> SculptureEdits::rebuild() const {

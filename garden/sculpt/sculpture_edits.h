@@ -104,6 +104,27 @@ public:
     void setDeferred(bool deferred) { deferred_ = deferred; }
     std::vector<voxel::IndexBox> flush();
 
+    // Spread over frames: appendSpread() puts a new edit in the list at
+    // once and leaves its grid update waiting, in cells of 16^3 voxels
+    // that advance() computes within a time (a frame's share). Every other
+    // change first settles what waits (computes it all), so the grid is
+    // always the list applied in order, some cells of the last edit late,
+    // and once nothing waits it equals rebuild() bit for bit.
+    voxel::IndexBox appendSpread(Edit edit);
+    // extendLastStroke the same way: the list (and a smooth stroke's fits,
+    // on the grid settled first) at once, the grid update waiting.
+    voxel::IndexBox extendLastStrokeSpread(const std::vector<ModelPoint>& points);
+    // The waiting cells computed, oldest first, for at least one cell and
+    // then while `milliseconds` last (none when it is 0); returns the boxes
+    // that changed, with those a settle computed since the last call (for
+    // the caller to show).
+    std::vector<voxel::IndexBox> advance(double milliseconds);
+    // The shown grid as it will be once nothing waits (a copy; the grid
+    // itself is left as it is): what an export of the grid reads.
+    voxel::Volume settledGrid() const;
+    // Cells still waiting, or computed by a settle and not yet returned by advance().
+    bool late() const { return spreadNext_ < spread_.size() || !settled_.empty(); }
+
     // Statistics of the last update.
     const voxel::EditRegionStats& lastStats() const { return lastStats_; }
 
@@ -128,6 +149,21 @@ private:
     // (brought up to date first where deferred).
     void fitNewSegments(Stroke& stroke);
     void dropCopies();
+    // The spread cells, in order; spreadNext_ is the first not computed.
+    struct SpreadCell {
+        voxel::IndexBox box;
+        std::uint32_t firstPiece = 0;  // on top: the last edit's pieces from this one on
+        bool fromBase = false;         // else from the base with every edit reaching it
+    };
+    std::vector<SpreadCell> spread_;
+    std::size_t spreadNext_ = 0;
+    std::vector<voxel::IndexBox> settled_;  // computed by settle(), not yet returned
+    bool queueing_ = false;  // within appendSpread and extendLastStrokeSpread: updates wait
+    void queue(const voxel::IndexBox& clip, std::uint32_t firstPiece, bool fromBase);
+    void computeSpreadCell(const SpreadCell& cell, voxel::Volume& grid) const;
+    // Every waiting cell computed: what each change but appendSpread and
+    // advance does first.
+    void settle();
 };
 
 // Memory the leaf copies for undo may take per sculpture.

@@ -295,6 +295,7 @@ std::string SessionRecorder::snapshot() {
     // The grids hold every action in memory: a snapshot of them is true
     // only when the journal holds all of those.
     if (!status_.saved()) return "not every action is saved";
+    session_->settleEdits();  // an edit spread over frames, whole in the grids
     std::error_code ec;
     fs::create_directories(paths_.snapshots, ec);
     if (ec) return snapshotProblem_ = "cannot create " + paths_.snapshots + ": " + ec.message();

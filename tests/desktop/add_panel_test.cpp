@@ -32,8 +32,8 @@ TEST_F(AddPanelTest, AFileIsAddedAheadOfTheViewerSizedAndSelected) {
     EXPECT_NEAR(s.placement.position[2], 5.0, 0.2);
     EXPECT_NEAR(s.placement.position[0], 0.0, 0.2);
     const frep::Box3& box = s.volume->frame.modelBox;
-    EXPECT_NEAR((box.hi[0] - box.lo[0]) * s.scale, 1.5, 0.01);
-    EXPECT_NEAR(s.placement.position[1] + box.lo[1] * s.scale, 0.0, 1e-6);
+    EXPECT_NEAR((box.hi[0] - box.lo[0]) * s.scale(), 1.5, 0.01);
+    EXPECT_NEAR(s.placement.position[1] + box.lo[1] * s.scale(), 0.0, 1e-6);
     ASSERT_TRUE(session->undo());
     EXPECT_EQ(session->findSculpture("big"), -1);
 }
@@ -46,7 +46,7 @@ TEST_F(AddPanelTest, AMeshIsAddedSizedAndItsBadLineIsShown) {
     const Sculpture& s = session->sculptures().back();
     EXPECT_EQ(s.name, "tet");
     EXPECT_TRUE(s.meshed());
-    EXPECT_NEAR(3.0 * s.scale, 1.5, 1e-6);
+    EXPECT_NEAR(3.0 * s.scale(), 1.5, 1e-6);
     EXPECT_NEAR(s.placement.position[1], 0.0, 1e-6);  // its lowest point (y 0) on the ground
     const std::string bad = write("bad.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nend_header\n");
     EXPECT_NE(panel.add(*session, bad), "");

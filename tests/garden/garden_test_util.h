@@ -11,10 +11,12 @@
 #include <fstream>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "frep/eval/model.h"
 #include "frep/language/parser.h"
 #include "tests/test_models.h"
+#include "voxel/sampler.h"
 #include "voxel/volume.h"
 #include "garden/morph/morph_sources.h"
 
@@ -30,6 +32,26 @@ using ::hg::test::kTorusBlock;
 // A rounded bar along x (superellipsoid), f of a very different scale.
 constexpr const char* kBar =
     "bar(x[3], a[1]) { bar = 40 * (1 - (x[1]/1.0)^4 - (x[2]/0.3)^4 - (x[3]/0.35)^4); }";
+
+// `source` (with `a`) sampled over the cube [-half, half]^3.
+inline voxel::Volume sampledCube(const std::string& source, std::vector<double> a, double half, int resolution) {
+    voxel::VolumeRequest req;
+    frep::Box3 box;
+    for (int i = 0; i < 3; ++i) {
+        box.lo[i] = -half;
+        box.hi[i] = half;
+    }
+    req.box = box;
+    req.resolution = resolution;
+    voxel::VoxelizeResult r = voxel::voxelize(modelFromSource(source, std::move(a)), req);
+    EXPECT_TRUE(r.volume) << r.error;
+    return r.volume ? std::move(*r.volume) : voxel::Volume();
+}
+
+// A ball of radius 0.5 in a box of 1.4 a side, sampled at 64^3: a grid to edit.
+inline voxel::Volume ballVolume() {
+    return sampledCube("ball(x[3], a[1]) { ball = 0.25 - x[1]^2 - x[2]^2 - x[3]^2; }", {}, 0.7, 64);
+}
 
 // Voxels of a's frame whose stored values differ in b.
 inline int differingVoxels(const voxel::Volume& a, const voxel::Volume& b) {

@@ -87,7 +87,7 @@ TEST(ScaleGarden, SessionLevelsEqualThePerChunkSelection) {
         for (const Sculpture& s : session.sculptures()) {
             ASSERT_FALSE(s.missing()) << s.name << ": " << s.error;
             poly::Camera cam;
-            const glm::vec4 m = glm::inverse(s.modelToWorld) * glm::vec4(at, 1.0f);
+            const glm::vec4 m = glm::inverse(s.modelToWorld()) * glm::vec4(at, 1.0f);
             cam.position = {m.x, m.y, m.z};
             cam.fovY = st.fovY;
             cam.viewportHeight = st.viewportHeight;

@@ -260,21 +260,8 @@ TEST(EditField, FieldStaysBoundedAtAThousandEdits) {
 
 // --- the grid ------------------------------------------------------------
 
-voxel::Volume sphereVolume() {
-    frep::Model m = test::modelFromSource("ball(x[3], a[1]) { ball = 0.25 - x[1]^2 - x[2]^2 - x[3]^2; }");
-    voxel::VolumeRequest req;
-    frep::Box3 box;
-    for (int a = 0; a < 3; ++a) { box.lo[a] = -0.7; box.hi[a] = 0.7; }
-    req.box = box;
-    req.resolution = 64;
-    voxel::VoxelizeResult r = voxel::voxelize(m, req);
-    EXPECT_TRUE(r.volume) << r.error;
-    return std::move(*r.volume);
-}
-
-
 TEST(SculptureEdits, BoxUpdatesEqualARebuildThroughUndoAndRedo) {
-    voxel::Volume shown = sphereVolume();
+    voxel::Volume shown = test::ballVolume();
     const voxel::Volume untouched = shown.clone();
     SculptureEdits edits(shown);
     const double v = shown.frame.voxelSize;
@@ -333,7 +320,7 @@ TEST(SculptureEdits, BoxUpdatesEqualARebuildThroughUndoAndRedo) {
 }
 
 TEST(SculptureEdits, AStrokeChangesTheGridInsideItsBoxOnly) {
-    voxel::Volume shown = sphereVolume();
+    voxel::Volume shown = test::ballVolume();
     const voxel::Volume before = shown.clone();
     SculptureEdits edits(shown);
     Stroke s;

@@ -41,7 +41,7 @@ protected:
 
 // Is the world point inside sculpture i's grid?
 bool insideAt(const Sculpture& s, const glm::vec3& world) {
-    const glm::vec4 m = glm::inverse(s.modelToWorld) * glm::vec4(world, 1.0f);
+    const glm::vec4 m = glm::inverse(s.modelToWorld()) * glm::vec4(world, 1.0f);
     const voxel::Volume& v = *s.volume;
     return v.value(v.frame.indexOf(0, m.x), v.frame.indexOf(1, m.y), v.frame.indexOf(2, m.z)) > 0.0f;
 }

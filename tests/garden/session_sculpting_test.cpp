@@ -244,12 +244,12 @@ TEST_F(SessionSculptingTest, MovesAreUndoneAndRedoneAndTheirScaleIsChecked) {
     p.scale = 2.0;
     ASSERT_EQ(s.moveSculpture(a, p), "");
     const Sculpture& sa = s.sculptures()[static_cast<std::size_t>(a)];
-    EXPECT_EQ(sa.scale, 2.0);
+    EXPECT_EQ(sa.scale(), 2.0);
     const glm::vec3 centre = sa.worldCentre();
     EXPECT_NEAR(centre.y, 1.0f, 1e-4f);  // the ball's model centre (0, 0.5, 0) doubled
     ASSERT_TRUE(s.undo());
     EXPECT_EQ(sa.placement.position, before.position);
-    EXPECT_EQ(sa.scale, before.scale);
+    EXPECT_EQ(sa.scale(), before.scale);
     ASSERT_TRUE(s.redo());
     EXPECT_EQ(sa.placement.yawDegrees, 45.0);
     Placement bad = p;

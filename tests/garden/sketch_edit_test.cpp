@@ -53,7 +53,7 @@ TEST_F(SketchEditTest, ACircleJoinedAndAnotherCutChangeTheGridExactlyAndUndo) {
     // Inside the new ball, beyond the old surface: now inside.
     const voxel::Volume& v = grid(s, c);
     const auto inside = [&](double wx, double wy, double wz) {
-        const auto m = glm::inverse(sc.modelToWorld) * glm::vec4(wx, wy, wz, 1.0f);
+        const auto m = glm::inverse(sc.modelToWorld()) * glm::vec4(wx, wy, wz, 1.0f);
         return v.value(v.frame.indexOf(0, m.x), v.frame.indexOf(1, m.y), v.frame.indexOf(2, m.z)) > 0.0f;
     };
     EXPECT_FALSE(original.value(original.frame.indexOf(0, 0.45), original.frame.indexOf(1, 0.5),

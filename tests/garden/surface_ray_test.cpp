@@ -36,17 +36,7 @@ constexpr double kRadius = 0.8;
 const ModelPoint kCentre{0.15, 0.1, 0.0};
 
 voxel::Volume grid(const std::string& source, std::vector<double> a, int resolution = 64) {
-    voxel::VolumeRequest req;
-    frep::Box3 box;
-    for (int i = 0; i < 3; ++i) {
-        box.lo[i] = -1.2;
-        box.hi[i] = 1.2;
-    }
-    req.box = box;
-    req.resolution = resolution;
-    voxel::VoxelizeResult r = voxel::voxelize(test::modelFromSource(source, std::move(a)), req);
-    EXPECT_TRUE(r.volume) << r.error;
-    return r.volume ? std::move(*r.volume) : voxel::Volume();
+    return test::sampledCube(source, std::move(a), 1.2, resolution);
 }
 
 voxel::Volume ball() { return grid(kSphere, {kRadius * kRadius, kCentre[0], kCentre[1], kCentre[2]}); }
