@@ -466,8 +466,11 @@ int runHeadsetOn(const XrOptions& options, std::unique_ptr<Headset> headset, gar
         error = "error: OpenXR: " + std::string(e.what());
         status = 1;
     }
-    // A stroke still held is finished, so the journal has it.
+    // A stroke still held is finished, so the journal has it; an edit whose
+    // grid update was spread over frames is made whole, for whoever reads
+    // the grids next (the desktop, a snapshot, the caller).
     if (session.stroking()) session.endStroke();
+    session.settleEdits();
     // The swapchains' textures belong to the window's context: the
     // session goes while it is current.
     window.window().makeCurrent();

@@ -275,10 +275,14 @@ std::string GardenSession::applyPerturbation(int sculpture, QuadricShape shape, 
 
 std::string GardenSession::applyImpacts(int sculpture, const std::array<double, 3>& worldOrigin,
                                         const std::array<double, 3>& worldDirection, ImpactTool tool) {
+    settleEdits();  // the rays meet the grid as the edits so far make it
     return applied(*this, impactsFromWorld(sculpture, worldOrigin, worldDirection, tool));
 }
 
-std::string GardenSession::reapplyImpacts(int from, int to) { return applied(*this, impactsAgain(from, to)); }
+std::string GardenSession::reapplyImpacts(int from, int to) {
+    settleEdits();
+    return applied(*this, impactsAgain(from, to));
+}
 
 std::string GardenSession::editPerturbation(int sculpture, std::size_t edit, double strength,
                                             const std::array<double, 3>& radii) {

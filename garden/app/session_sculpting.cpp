@@ -141,8 +141,9 @@ std::string GardenSession::startStroke(int sculpture, Stroke stroke) {
     Edit e;
     e.op = std::move(stroke);
     e.mask = maskFor(sculpture, e);
-    if (spreading()) edits.appendSpread(std::move(e));  // shown as its cells are computed (advanceEdits)
-    else showChanged(sculpture, edits.append(std::move(e)));
+    // At once, even when edits are spread: a live stroke's next point is
+    // placed on the grid its first made (and a first point is one dot).
+    showChanged(sculpture, edits.append(std::move(e)));
     strokeSculpture_ = sculpture;
     // The entry's action is the whole stroke once it ends (endStroke).
     undoOrder_.push_back(UndoEntry{sculpture, StrokeAction{}, std::nullopt, std::nullopt, std::nullopt});

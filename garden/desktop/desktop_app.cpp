@@ -498,9 +498,12 @@ int runDesktopOn(GardenSession& session, GardenWindow& gardenWindow, const Deskt
         }
     }
     // Closing the window ends what the hands were doing: a stroke or a
-    // drag under way becomes a finished action, journalled like any.
+    // drag under way becomes a finished action, journalled like any; and
+    // an edit whose grid update was spread over frames is made whole, for
+    // whoever reads the grids next (the headset, a snapshot, the caller).
     session.endStroke();
     session.endLiveMove();
+    session.settleEdits();
     return 0;
 }
 
