@@ -62,6 +62,19 @@ void add(voxel::EditRegionStats& total, const voxel::EditRegionStats& s) {
     total.errors.merge(s.errors);
 }
 
+// The pieces of the list's last edit, from `firstPiece` on, that reach
+// `cell`: what goes on top of the grid there (none: the cell stands).
+EditPick lastEditPieces(const EditList& list, const voxel::VolumeFrame& frame, const voxel::IndexBox& cell,
+                        std::size_t firstPiece) {
+    const auto last = static_cast<std::uint32_t>(list.size() - 1);
+    EditPick pick{last, {}};
+    for (const EditPick& p : list.reaching(modelBoxOf(frame, cell)))
+        if (p.edit == last)
+            for (std::uint32_t piece : p.pieces)
+                if (piece >= firstPiece) pick.pieces.push_back(piece);
+    return pick;
+}
+
 }  // namespace
 
 voxel::EditRegionStats SculptureEdits::update(const voxel::IndexBox& box) {
@@ -94,14 +107,9 @@ voxel::EditRegionStats SculptureEdits::applyOnTop(const voxel::IndexBox& box, st
         queue(clip, static_cast<std::uint32_t>(firstPiece), false);
         return {};
     }
-    const auto last = static_cast<std::uint32_t>(list_.size() - 1);
     voxel::EditRegionStats total;
     for (const voxel::IndexBox& cell : cellsOf(clip)) {
-        EditPick pick{last, {}};
-        for (const EditPick& p : list_.reaching(modelBoxOf(shown_.frame, cell)))
-            if (p.edit == last)
-                for (std::uint32_t piece : p.pieces)
-                    if (piece >= firstPiece) pick.pieces.push_back(piece);
+        const EditPick pick = lastEditPieces(list_, shown_.frame, cell, firstPiece);
         if (pick.pieces.empty()) continue;  // nothing new reaches the cell: it stands
         add(total, voxel::applyEditTape(shown_, shown_, cell, editTape(list_, {pick})));
     }
@@ -324,20 +332,12 @@ void SculptureEdits::queue(const voxel::IndexBox& clip, std::uint32_t firstPiece
 // One waiting cell, as update() (from the base) or applyOnTop() (the last
 // edit's pieces from firstPiece on, on top) computes it.
 void SculptureEdits::computeSpreadCell(const SpreadCell& c, voxel::Volume& grid) const {
-    const std::vector<EditPick> reaching = list_.reaching(modelBoxOf(grid.frame, c.box));
     if (c.fromBase) {
-        voxel::applyEditTape(*base_, grid, c.box, editTape(list_, reaching));
+        voxel::applyEditTape(*base_, grid, c.box, editTape(list_, list_.reaching(modelBoxOf(grid.frame, c.box))));
         return;
     }
-    const auto last = static_cast<std::uint32_t>(list_.size() - 1);
-    for (const EditPick& p : reaching) {
-        if (p.edit != last) continue;
-        EditPick pick{last, {}};
-        for (std::uint32_t piece : p.pieces)
-            if (piece >= c.firstPiece) pick.pieces.push_back(piece);
-        if (!pick.pieces.empty()) voxel::applyEditTape(grid, grid, c.box, editTape(list_, {pick}));
-        return;
-    }
+    const EditPick pick = lastEditPieces(list_, grid.frame, c.box, c.firstPiece);
+    if (!pick.pieces.empty()) voxel::applyEditTape(grid, grid, c.box, editTape(list_, {pick}));
 }
 
 voxel::Volume SculptureEdits::settledGrid() const {
