@@ -226,7 +226,7 @@ void HandPanelUi::toolPage(garden::GardenSession& session) {
         // Drawn from the session's weights each frame: a pick on the ground
         // shows here at once (garden/render/morph_panel.cpp).
         glm::vec2 point = garden::morphSelectorPoint(session);
-        const garden::MorphSpec& m = *session.garden().morph;
+        const garden::MorphSpec& m = *session.morphSpec();  // the active morph's (selecting a result picks it)
         const char* labels[3] = {m.sources[0].c_str(), m.sources[1].c_str(), m.sources[2].c_str()};
         if (garden::morphTriangleWidget(labels, point, kMorphSide)) {
             const glm::vec3 b = garden::triangleWeights(point);

@@ -219,13 +219,13 @@ std::string defaultGarden() { return std::string(HG_SOURCE_DIR) + "/content/gard
 // keysOnly: the three key sculptures (the morph's sources) and the result.
 std::unique_ptr<Scene> makeScene(const Options& o, int resolution, bool lod, bool keysOnly, std::string& error) {
     GardenLoad load = loadGarden(defaultGarden());
-    if (!load.ok() || !load.morphError.empty()) {
-        error = "default garden: " + load.error + load.morphError;
+    if (!load.ok() || load.garden->morphs.empty() || !load.morphErrors[0].empty()) {
+        error = "default garden: " + load.error + (load.ok() && !load.morphErrors.empty() ? load.morphErrors[0] : " (no morph)");
         return nullptr;
     }
     if (keysOnly) {  // the sources are sculptures 0-2 (the morph refers to them by index)
         for (std::size_t i = 0; i < 3; ++i)
-            if (load.garden->morph->sourceIndex[i] != i) {
+            if (load.garden->morphs[0].sourceIndex[i] != i) {
                 error = "the default garden's morph sources are not its first three sculptures";
                 return nullptr;
             }

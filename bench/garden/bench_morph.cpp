@@ -43,8 +43,9 @@ int main(int argc, char** argv) {
     bench::BenchArgs args;
     if (!bench::parseBenchArgs(argc, argv, args)) return 2;
     garden::GardenLoad load = garden::loadGarden(std::string(HG_SOURCE_DIR) + "/content/gardens/default.json");
-    if (!load.ok() || !load.morphError.empty()) {
-        std::fprintf(stderr, "default garden: %s%s\n", load.error.c_str(), load.morphError.c_str());
+    if (!load.ok() || load.garden->morphs.empty() || !load.morphErrors[0].empty()) {
+        std::fprintf(stderr, "default garden: %s%s\n", load.error.c_str(),
+                     load.ok() && !load.morphErrors.empty() ? load.morphErrors[0].c_str() : " (no morph)");
         return 1;
     }
     nlohmann::json rows = nlohmann::json::array();
@@ -54,15 +55,15 @@ int main(int argc, char** argv) {
     for (int res : {128, 256}) {
         const std::string name = "keys@" + std::to_string(res);
         if (!args.matches(name)) continue;
-        load.garden->morph->resolution = res;
-        garden::MorphSourcesResult built = garden::buildGardenMorphSources(load);
+        load.garden->morphs[0].resolution = res;
+        garden::MorphSourcesResult built = garden::buildGardenMorphSources(load, 0);
         if (!built.sources) {
             std::fprintf(stderr, "%s: %s\n", name.c_str(), built.error.c_str());
             continue;
         }
         const garden::MorphSources& s = *built.sources;
-        garden::MorphTriangle t = garden::morphTriangle(*load.garden);
-        garden::MorphWeights w1 = garden::morphWeights(t, t.centroid(), garden::morphBalance(*load.garden->morph, s));
+        garden::MorphTriangle t = garden::morphTriangle(*load.garden, 0);
+        garden::MorphWeights w1 = garden::morphWeights(t, t.centroid(), garden::morphBalance(load.garden->morphs[0], s));
         garden::MorphWeights w2 = garden::morphWeights(t, t.corners[0], w1.balance);
         const std::uint64_t voxels = s.frame.indexBox.volume();
 

@@ -75,11 +75,14 @@ struct DiscardAction {
     std::string sculpture;
     bool undoable = true;
 };
-// The selector as barycentric coordinates and the balancing factors it was
-// weighed with (the blend's weights follow from both).
+// A morph's selector as barycentric coordinates and the balancing factors
+// it was weighed with (the blend's weights follow from both).
 struct MorphWeightsAction {
     std::array<double, 3> barycentric{};
     std::array<double, 3> balance{1.0, 1.0, 1.0};
+    // The morph result it weighs ("": the garden's first morph, as in
+    // journals written before a garden could hold several).
+    std::string sculpture;
 };
 
 // A sketched outline joined to or cut from a sculpture: the points as

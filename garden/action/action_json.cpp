@@ -189,6 +189,7 @@ std::string actionJson(const Action& record) {
         j["sculpture"] = d->sculpture;
         if (d->undoable) j["undoable"] = true;
     } else if (const auto* m = std::get_if<MorphWeightsAction>(&record)) {
+        if (!m->sculpture.empty()) j["sculpture"] = m->sculpture;
         j["barycentric"] = point(m->barycentric);
         j["balance"] = point(m->balance);
     } else if (const auto* im = std::get_if<ImpactsAction>(&record)) {
@@ -320,9 +321,10 @@ Action readAction(const nlohmann::json& v, const std::string& path) {
         return d;
     }
     if (action == "morph") {
-        ObjectReader r(v, path, {"action", "barycentric", "balance"});
+        ObjectReader r(v, path, {"action", "sculpture", "barycentric", "balance"});
         MorphWeightsAction m{readPoint(r.required("barycentric"), r.pathOf("barycentric")),
-                             readPoint(r.required("balance"), r.pathOf("balance"))};
+                             readPoint(r.required("balance"), r.pathOf("balance")), ""};
+        if (const auto* x = r.optional("sculpture")) m.sculpture = readString(*x, r.pathOf("sculpture"));
         r.finish();
         return m;
     }

@@ -15,6 +15,7 @@
 #include "garden/morph/garden_morph.h"
 #include "garden/morph/morph_blend.h"
 #include "garden/morph/morph_sources.h"
+#include "garden/morph/morph_state.h"
 #include "garden/sculpt/sculpture_edits.h"
 #include "garden/scene/to_glm.h"
 #include "polygonizer/realtime/meshing_worker.h"
@@ -25,6 +26,8 @@ namespace hg::garden {
 namespace {
 
 constexpr int kLevelRefreshFrames = 45;
+// How near its triangle (metres on the ground) a drag of the selector must begin.
+constexpr double kMorphPickReach = 0.25;
 
 // The frame's upload limit: what this frame may still show. A group larger
 // than the whole limit is shown alone, in a frame that has shown nothing.
@@ -86,7 +89,8 @@ GardenSession::GardenSession(GardenLoad load, SessionSettings settings)
     : load_(std::move(load)), settings_(settings), scheduler_(settings.scheduler) {
     if (settings_.sculptureResolution > 0)
         for (SculptureSpec& spec : load_.garden->sculptures) spec.resolution = settings_.sculptureResolution;
-    if (settings_.morphResolution > 0 && load_.garden->morph) load_.garden->morph->resolution = settings_.morphResolution;
+    if (settings_.morphResolution > 0)
+        for (MorphSpec& m : load_.garden->morphs) m.resolution = settings_.morphResolution;
     const Garden& g = *load_.garden;
     resetView();
     sculptures_.resize(g.sculptures.size());
@@ -94,15 +98,16 @@ GardenSession::GardenSession(GardenLoad load, SessionSettings settings)
     for (std::size_t i = 0; i < g.sculptures.size(); ++i) {
         describeSculpture(i);
         if (sculptures_[i].missing()) continue;
-        const bool morphSource = g.morph && std::find(g.morph->sourceIndex.begin(), g.morph->sourceIndex.end(), i) !=
-                                                g.morph->sourceIndex.end();
-        // Progressive: only the morph's sources now (the blend needs their grids).
+        const bool morphSource = std::any_of(g.morphs.begin(), g.morphs.end(), [i](const MorphSpec& m) {
+            return std::find(m.sourceIndex.begin(), m.sourceIndex.end(), i) != m.sourceIndex.end();
+        });
+        // Progressive: only the morphs' sources now (the blends need their grids).
         (settings_.progressiveLoading && !morphSource ? later : now).push_back(i);
     }
     // Sculptures are independent: built side by side (each one's box
     // estimate runs on one thread), each into its own slot.
     tbb::parallel_for(std::size_t{0}, now.size(), [this, &now](std::size_t k) { sampleSculpture(now[k]); });
-    buildMorph();
+    for (std::size_t m = 0; m < g.morphs.size(); ++m) buildMorph(m);
     if (!later.empty()) {
         std::vector<SculptureLoader::Job> jobs;
         for (std::size_t i : later) {
@@ -211,69 +216,117 @@ void GardenSession::finishLoading() {
 
 std::size_t GardenSession::sculpturesLoading() const { return loader_ ? loader_->remaining() : 0; }
 
-void GardenSession::buildMorph() {
-    const Garden& g = *load_.garden;
-    if (!g.morph) return;
+void GardenSession::buildMorph(std::size_t spec) {
+    const MorphSpec& m = load_.garden->morphs[spec];
     Sculpture result;
-    result.name = g.morph->resultName;
+    result.name = m.resultName;
     result.source.kind = SculptureSource::Kind::Morph;
-    result.source.morph = &*g.morph;
-    result.placement = g.morph->resultPlacement;
-    result.material = g.morph->material;
+    result.source.spec = static_cast<int>(spec);
+    result.placement = m.resultPlacement;
+    result.material = m.material;
     // The sources were sampled as sculptures: their boxes are known.
     ResolvedBoxes resolved(sculptures_.size());
     for (std::size_t i = 0; i < sculptures_.size(); ++i)
-        if (sculptures_[i].volume) resolved[i] = sculptures_[i].volume->frame.modelBox;
-    MorphSourcesResult built = buildGardenMorphSources(load_, 0, resolved);
+        if (sculptures_[i].volume && !sculptures_[i].morphResult()) resolved[i] = sculptures_[i].volume->frame.modelBox;
+    MorphSourcesResult built = buildGardenMorphSources(load_, spec, 0, resolved);
     if (!built.sources) {
         result.error = built.error;
         sculptures_.push_back(std::move(result));
         return;
     }
-    sources_ = std::make_unique<MorphSources>(std::move(*built.sources));
-    balance_ = morphBalance(*g.morph, *sources_);
-    result.volume = std::make_unique<voxel::Volume>(makeMorphVolume(*sources_));
+    auto state = std::make_unique<MorphState>();
+    state->spec = spec;
+    state->sources = std::make_unique<MorphSources>(std::move(*built.sources));
+    state->balance = morphBalance(m, *state->sources);
+    result.volume = std::make_unique<voxel::Volume>(makeMorphVolume(*state->sources));
     attachMeshing(result);
-    morphIndex_ = static_cast<int>(sculptures_.size());
+    state->blender = std::make_unique<MorphBlender>(*state->sources, *result.volume);
+    result.morph = std::move(state);
+    const int index = static_cast<int>(sculptures_.size());
     sculptures_.push_back(std::move(result));
-    blender_ = std::make_unique<MorphBlender>(*sources_, *sculptures_.back().volume);
-    setMorphPoint(g.morph->selector[0], g.morph->selector[1]);
+    // Its first weights: the file's selector (no action of the user's).
+    MorphState& made = *sculptures_.back().morph;
+    made.weights = hg::garden::morphWeights(*morphTriangle(index), {m.selector[0], m.selector[1]}, made.balance);
+    restartMorph(index);
+    if (activeMorph_ < 0) activeMorph_ = index;
 }
 
-std::optional<MorphTriangle> GardenSession::morphTriangle() const {
-    if (!load_.garden->morph) return std::nullopt;
-    return hg::garden::morphTriangle(*load_.garden);
+std::vector<int> GardenSession::morphResults() const {
+    std::vector<int> out;
+    for (std::size_t i = 0; i < sculptures_.size(); ++i)
+        if (sculptures_[i].morphResult()) out.push_back(static_cast<int>(i));
+    return out;
+}
+
+void GardenSession::setActiveMorph(int sculpture) {
+    if (sculpture >= 0 && sculpture < static_cast<int>(sculptures_.size()) &&
+        sculptures_[static_cast<std::size_t>(sculpture)].morph)
+        activeMorph_ = sculpture;
+}
+
+const MorphState* GardenSession::morphState(int sculpture) const {
+    if (sculpture < 0) sculpture = activeMorph_;
+    if (sculpture < 0 || sculpture >= static_cast<int>(sculptures_.size())) return nullptr;
+    return sculptures_[static_cast<std::size_t>(sculpture)].morph.get();
+}
+
+MorphState* GardenSession::morphState(int sculpture) {
+    return const_cast<MorphState*>(static_cast<const GardenSession*>(this)->morphState(sculpture));
+}
+
+const std::optional<MorphWeights>& GardenSession::morphWeights(int sculpture) const {
+    static const std::optional<MorphWeights> none;
+    const MorphState* m = morphState(sculpture);
+    return m ? m->weights : none;
+}
+
+const MorphSpec* GardenSession::morphSpec(int sculpture) const {
+    if (sculpture < 0) sculpture = activeMorph_;
+    if (sculpture < 0 || sculpture >= static_cast<int>(sculptures_.size())) return nullptr;
+    const Sculpture& s = sculptures_[static_cast<std::size_t>(sculpture)];
+    return s.morphResult() ? &load_.garden->morphs[static_cast<std::size_t>(s.source.spec)] : nullptr;
+}
+
+std::optional<MorphTriangle> GardenSession::morphTriangle(int sculpture) const {
+    if (sculpture < 0) sculpture = activeMorph_;
+    if (!morphSpec(sculpture)) return std::nullopt;
+    const auto spec = static_cast<std::size_t>(sculptures_[static_cast<std::size_t>(sculpture)].source.spec);
+    return hg::garden::morphTriangle(*load_.garden, spec);
+}
+
+void GardenSession::setActiveWeights(const MorphWeights& w) {
+    MorphState* m = morphState(activeMorph_);
+    if (!m) return;
+    m->weights = w;
+    restartMorph(activeMorph_);
+    recordMorph(activeMorph_);
 }
 
 void GardenSession::setMorphPoint(double x, double z) {
-    if (!blender_) return;
-    weights_ = hg::garden::morphWeights(*morphTriangle(), {x, z}, balance_);
-    restartMorph();
-    recordMorph();
+    if (const MorphState* m = morphState(activeMorph_))
+        setActiveWeights(hg::garden::morphWeights(*morphTriangle(activeMorph_), {x, z}, m->balance));
 }
 
 void GardenSession::setMorphWeights(const std::array<double, 3>& w) {
-    if (!blender_) return;
+    if (!morphState(activeMorph_)) return;
     const double sum = w[0] + w[1] + w[2];
-    weights_ = weightsFromBarycentric({w[0] / sum, w[1] / sum, w[2] / sum});
-    restartMorph();
-    recordMorph();
+    setActiveWeights(weightsFromBarycentric({w[0] / sum, w[1] / sum, w[2] / sum}));
 }
 
 void GardenSession::setMorphBarycentric(const std::array<double, 3>& b) {
-    if (!blender_) return;
+    const MorphState* m = morphState(activeMorph_);
+    if (!m) return;
     const double sum = b[0] + b[1] + b[2];
-    weights_ = weightsFromBarycentric({b[0] / sum, b[1] / sum, b[2] / sum}, balance_);
-    restartMorph();
-    recordMorph();
+    setActiveWeights(weightsFromBarycentric({b[0] / sum, b[1] / sum, b[2] / sum}, m->balance));
 }
 
-void GardenSession::recordMorph() {
+void GardenSession::recordMorph(int sculpture) {
     if (morphDragging_) {
         morphDragged_ = true;  // journalled when the hand lets go
         return;
     }
-    record(MorphWeightsAction{weights_->barycentric, weights_->balance});
+    const MorphWeights& w = *morphState(sculpture)->weights;
+    record(MorphWeightsAction{w.barycentric, w.balance, sculptures_[static_cast<std::size_t>(sculpture)].name});
 }
 
 void GardenSession::record(const Action& r) {
@@ -282,9 +335,9 @@ void GardenSession::record(const Action& r) {
     if (journal_) journal_->append(r);
 }
 
-void GardenSession::restartMorph() {
-    const Sculpture& r = sculptures_[static_cast<std::size_t>(morphIndex_)];
-    blender_->restart(*weights_, toModel(r, navigator_.eye()));
+void GardenSession::restartMorph(int sculpture) {
+    const Sculpture& r = sculptures_[static_cast<std::size_t>(sculpture)];
+    r.morph->blender->restart(*r.morph->weights, toModel(r, navigator_.eye()));
 }
 
 void GardenSession::select(int sculpture) {
@@ -292,6 +345,7 @@ void GardenSession::select(int sculpture) {
                         !sculptures_[static_cast<std::size_t>(sculpture)].removed
                     ? sculpture
                     : -1;
+    setActiveMorph(selected_);  // a morph result selected is the one the selector steers
     navigator_.setOrbitTarget(selected_ >= 0 ? std::optional<glm::vec3>(sculptures_[static_cast<std::size_t>(selected_)].worldCentre())
                                              : std::nullopt);
     if (selected_ < 0 && navigator_.mode() == NavigationMode::Orbit) navigator_.setMode(NavigationMode::Walk);
@@ -344,19 +398,35 @@ void GardenSession::input(const Hands& hands, double dt) {
     if (tool_.kind != ToolSettings::Kind::None) return;  // the trigger sculpts
     // The tool's ray on the morph triangle drawn on the ground picks the
     // blend (seed 004's selector), while the trigger is held.
-    morphDragging_ = blender_ && hands.tool.tracked && hands.tool.trigger > 0.5f;
+    morphDragging_ = activeMorph_ >= 0 && hands.tool.tracked && hands.tool.trigger > 0.5f;
     if (!morphDragging_ && morphDragged_) {
         morphDragged_ = false;
-        recordMorph();
+        recordMorph(morphDragTarget_);
     }
+    if (!morphDragging_) morphDragTarget_ = -1;
     if (morphDragging_) {
         if (const auto hit = hands.tool.aim.groundHit(load_.garden->ground.height)) {
             const Point2 p{hit->x, hit->z};
-            const MorphTriangle tri = *morphTriangle();
-            const Point2 q = clampToTriangle(tri, p);
-            const double dist = std::hypot(p[0] - q[0], p[1] - q[1]);
-            const bool moved = !weights_ || std::hypot(q[0] - weights_->point[0], q[1] - weights_->point[1]) > 0.01;
-            if (dist < 0.25 && moved) setMorphPoint(q[0], q[1]);  // on the triangle, or just beside it
+            // The drag steers the morph whose triangle it began on (or just
+            // beside): the nearest, when several are within reach.
+            if (morphDragTarget_ < 0) {
+                double nearest = kMorphPickReach;
+                for (int r : morphResults()) {
+                    if (!sculptures_[static_cast<std::size_t>(r)].morph) continue;
+                    const Point2 q = clampToTriangle(*morphTriangle(r), p);
+                    const double dist = std::hypot(p[0] - q[0], p[1] - q[1]);
+                    if (dist < nearest) nearest = dist, morphDragTarget_ = r;
+                }
+                if (morphDragTarget_ >= 0) activeMorph_ = morphDragTarget_;
+            }
+            if (morphDragTarget_ >= 0) {
+                const Point2 q = clampToTriangle(*morphTriangle(morphDragTarget_), p);
+                const double dist = std::hypot(p[0] - q[0], p[1] - q[1]);
+                const auto& w = morphWeights(morphDragTarget_);
+                const bool moved = !w || std::hypot(q[0] - w->point[0], q[1] - w->point[1]) > 0.01;
+                activeMorph_ = morphDragTarget_;
+                if (dist < kMorphPickReach && moved) setMorphPoint(q[0], q[1]);  // on the triangle, or just beside it
+            }
         }
     }
 }
@@ -406,27 +476,38 @@ void GardenSession::selectLevels() {
 
 void GardenSession::morph() {
     scheduler_.beginStage(Stage::Morph);
-    if (!blender_ || blender_->done()) return;
-    Sculpture& r = sculptures_[static_cast<std::size_t>(morphIndex_)];
-    BlendBudget budget;
-    if (settings_.morphSamplesPerFrame > 0) {
-        budget.maxSamples = settings_.morphSamplesPerFrame;
-    } else {
-        budget.maxSamples = 0;
-        budget.maxMilliseconds = scheduler_.allowanceMs(Stage::Morph);
-    }
-    // Each batch's changes are shown within the step, so the time they take
-    // counts against the stage's allowance.
-    budget.commit = [&r](const std::vector<voxel::IndexBox>& changed) {
-        for (const voxel::IndexBox& box : changed) {
-            if (r.edits) r.edits->baseChanged(box);  // the blend changed under the edits
-            r.pyramid->update(box);
-            r.queue->markChanged(box);
+    // Every morph that has blending left, in the garden's order, shares the
+    // stage's budget: each takes what the ones before it left.
+    std::uint64_t samplesLeft = settings_.morphSamplesPerFrame;
+    const double until = scheduler_.elapsedMs() + scheduler_.allowanceMs(Stage::Morph);
+    bool first = true;
+    for (Sculpture& r : sculptures_) {
+        if (!r.morph || r.morph->blender->done()) continue;
+        BlendBudget budget;
+        if (settings_.morphSamplesPerFrame > 0) {
+            if (samplesLeft == 0) break;
+            budget.maxSamples = samplesLeft;
+        } else {
+            budget.maxSamples = 0;
+            const double left = until - scheduler_.elapsedMs();
+            if (left <= 0.0 && !first) break;
+            budget.maxMilliseconds = std::max(left, 0.01);  // 0 would mean no limit
         }
-    };
-    blender_->setViewer(toModel(r, navigator_.eye()));
-    const BlendStep step = blender_->step(budget);
-    stats().morphSamples += step.samples;
+        first = false;
+        // Each batch's changes are shown within the step, so the time they
+        // take counts against the stage's allowance.
+        budget.commit = [&r](const std::vector<voxel::IndexBox>& changed) {
+            for (const voxel::IndexBox& box : changed) {
+                if (r.edits) r.edits->baseChanged(box);  // the blend changed under the edits
+                r.pyramid->update(box);
+                r.queue->markChanged(box);
+            }
+        };
+        r.morph->blender->setViewer(toModel(r, navigator_.eye()));
+        const BlendStep step = r.morph->blender->step(budget);
+        stats().morphSamples += step.samples;
+        samplesLeft -= std::min(samplesLeft, step.samples);
+    }
 }
 
 void GardenSession::remesh() {
@@ -500,7 +581,12 @@ std::size_t GardenSession::remeshPending() const {
     return n;
 }
 
-std::uint64_t GardenSession::morphRemaining() const { return blender_ ? blender_->remainingSamples() : 0; }
+std::uint64_t GardenSession::morphRemaining() const {
+    std::uint64_t n = 0;
+    for (const Sculpture& s : sculptures_)
+        if (s.morph) n += s.morph->blender->remainingSamples();
+    return n;
+}
 
 std::size_t GardenSession::trianglesShown() const {
     std::size_t n = 0;
@@ -512,7 +598,9 @@ std::size_t GardenSession::trianglesShown() const {
 bool GardenSession::idle() const {
     const bool editsLate = std::any_of(sculptures_.begin(), sculptures_.end(),
                                        [](const Sculpture& s) { return s.edits && s.edits->late(); });
-    return (!blender_ || blender_->done()) && !editsLate && remeshPending() == 0 && sculpturesLoading() == 0;
+    const bool blending =
+        std::any_of(sculptures_.begin(), sculptures_.end(), [](const Sculpture& s) { return s.morph && !s.morph->blender->done(); });
+    return !blending && !editsLate && remeshPending() == 0 && sculpturesLoading() == 0;
 }
 
 void GardenSession::advanceEdits(double milliseconds) {
@@ -529,13 +617,20 @@ void GardenSession::advanceEdits(double milliseconds) {
 
 void GardenSession::settleEdits() { advanceEdits(std::numeric_limits<double>::infinity()); }
 
-const voxel::Volume* GardenSession::morphResult() const {
-    return morphIndex_ >= 0 ? sculptures_[static_cast<std::size_t>(morphIndex_)].volume.get() : nullptr;
+const voxel::Volume* GardenSession::morphResult(int sculpture) const {
+    if (sculpture < 0) sculpture = activeMorph_;
+    return morphSpec(sculpture) ? sculptures_[static_cast<std::size_t>(sculpture)].volume.get() : nullptr;
 }
 
-std::unique_ptr<voxel::Volume> GardenSession::blendFromScratch() const {
-    if (!blender_) return nullptr;
-    return std::make_unique<voxel::Volume>(blendMorph(*sources_, *weights_));
+std::unique_ptr<voxel::Volume> GardenSession::blendFromScratch(int sculpture) const {
+    const MorphState* m = morphState(sculpture);
+    if (!m) return nullptr;
+    return std::make_unique<voxel::Volume>(blendMorph(*m->sources, *m->weights));
+}
+
+const MorphSources* GardenSession::morphSources(int sculpture) const {
+    const MorphState* m = morphState(sculpture);
+    return m ? m->sources.get() : nullptr;
 }
 
 }  // namespace hg::garden

@@ -1,6 +1,7 @@
 // The garden while it runs, without a window (docs/design.md §6): every sculpture
-// as a volume with its LOD pyramid and remesh queue, the metamorphosis (its
-// source caches, its result and the budgeted blend), the navigator and the
+// as a volume with its LOD pyramid and remesh queue, the metamorphoses (each
+// result a sculpture holding its source caches, weights and budgeted
+// blend: garden/morph/morph_state.h), the navigator and the
 // frame scheduler. One frame is one call, frame(input, views), that runs
 // the stages in their one order:
 //
@@ -40,7 +41,7 @@
 
 namespace hg::garden {
 
-class MorphBlender;
+struct MorphState;
 class SculptureLoader;
 struct MorphSources;
 struct GestureRecognizer;
@@ -158,15 +159,26 @@ public:
     SessionSettings& settings() { return settings_; }
 
     // --- what the user changes ---------------------------------------
+    // A garden may hold several morphs; each result is a sculpture with its
+    // own sources, weights and blend. The selector's setters, the panels and
+    // the replay's morph commands act on the active one: the garden's first
+    // that could be made, or the morph result last selected (select(), or
+    // its triangle picked on the ground). The readers below take a morph
+    // result's index, or -1 for the active one.
+    std::vector<int> morphResults() const;  // every morph result's index, in the file's order
+    int activeMorph() const { return activeMorph_; }  // -1: none can run
+    void setActiveMorph(int sculpture);  // ignored unless a morph result that runs
     // The selector on the ground (x, z), clamped to the triangle.
     void setMorphPoint(double x, double z);
     void setMorphWeights(const std::array<double, 3>& w);  // normalized here
     // A point of the on-screen triangle widget, as barycentric coordinates:
     // balanced like a point on the ground.
     void setMorphBarycentric(const std::array<double, 3>& b);
-    const std::optional<MorphWeights>& morphWeights() const { return weights_; }
-    std::optional<MorphTriangle> morphTriangle() const;
-    bool hasMorph() const { return blender_ != nullptr; }
+    const std::optional<MorphWeights>& morphWeights(int sculpture = -1) const;
+    // The triangle on the ground (a morph result's even when its sources are missing).
+    std::optional<MorphTriangle> morphTriangle(int sculpture = -1) const;
+    const MorphSpec* morphSpec(int sculpture = -1) const;
+    bool hasMorph() const { return activeMorph_ >= 0; }
     // The detail sphere (world), where chunks go to level 0.
     void setDetail(std::optional<poly::Sphere> world) { detail_ = world; }
     const std::optional<poly::Sphere>& detail() const { return detail_; }
@@ -421,14 +433,15 @@ public:
     std::size_t remeshPending() const;
     // Triangles of the meshes on show, over every sculpture.
     std::size_t trianglesShown() const;
+    // Samples left to blend, over every morph.
     std::uint64_t morphRemaining() const;
-    // The morph result's grid, and a from-scratch blend at the current
-    // weights (what the result must equal once idle).
-    const voxel::Volume* morphResult() const;
-    std::unique_ptr<voxel::Volume> blendFromScratch() const;
-    // The morph's source caches (none: no morph); the export reads their
+    // A morph result's grid, and a from-scratch blend at its current
+    // weights (what the result must equal once idle); -1: the active morph's.
+    const voxel::Volume* morphResult(int sculpture = -1) const;
+    std::unique_ptr<voxel::Volume> blendFromScratch(int sculpture = -1) const;
+    // A morph's source caches (none: it cannot run); the export reads their
     // normalizations.
-    const MorphSources* morphSources() const { return sources_.get(); }
+    const MorphSources* morphSources(int sculpture = -1) const;
 
     glm::mat4 view() const { return navigator_.view(); }
 
@@ -509,8 +522,14 @@ private:
     void watchAddedSource(std::size_t index, const std::string& text);
     // A reload of each added HyperFun sculpture whose file changed (reloadChangedSources).
     void reloadAddedSources(std::vector<std::size_t>& reported);
-    void buildMorph();
-    void restartMorph();
+    // Morph `spec` of the garden file as a sculpture appended to sculptures_.
+    void buildMorph(std::size_t spec);
+    // The morph a reader means (-1: the active one): its state, or null.
+    const MorphState* morphState(int sculpture) const;
+    MorphState* morphState(int sculpture);
+    // The blend started again at the result's current weights.
+    void restartMorph(int sculpture);
+    void setActiveWeights(const MorphWeights& w);
     std::array<double, 3> toModel(const Sculpture& s, const glm::vec3& world) const;
     // A world direction (a sketch plane's normal) in the sculpture's model frame.
     static std::array<double, 3> toModelDirection(const Sculpture& s, const std::array<double, 3>& world);
@@ -533,7 +552,6 @@ private:
     // discard's; putBackEdits moves them back, the entries where it stood.
     void takeEdits(UndoEntry& entry);
     void putBackEdits(UndoEntry& entry, std::vector<UndoEntry>& undoOrder, std::size_t at);
-    void applyMorphWeights(const MorphWeightsAction& m);
     // The sculpture an action names: its index, or why it cannot take the
     // action (none by that name, missing).
     int actionSculpture(const std::string& name, std::string& why) const;
@@ -553,7 +571,7 @@ private:
     std::string checkPlacement(int sculpture, const Placement& placement) const;
     void moveWithHands(const HandState& h);
     void sketchWithHands(const HandState& h);
-    void recordMorph();
+    void recordMorph(int sculpture);
     // Gestures (session_gestures.cpp) and models (session_selection.cpp).
     const GestureRecognizer* recognizer();
     void gestureWithHands(const HandState& h);
@@ -578,12 +596,7 @@ private:
     FrameScheduler scheduler_;
     std::optional<poly::Sphere> detail_;
     int selected_ = -1;
-    // The morph.
-    std::unique_ptr<MorphSources> sources_;
-    std::unique_ptr<MorphBlender> blender_;
-    std::optional<MorphWeights> weights_;
-    std::array<double, 3> balance_{1.0, 1.0, 1.0};
-    int morphIndex_ = -1;  // the result's index in sculptures_
+    int activeMorph_ = -1;             // the morph result the selector acts on, or -1
     // Sculpting.
     ToolSettings tool_;
     int strokeSculpture_ = -1;         // the live stroke's sculpture, or -1
@@ -598,6 +611,7 @@ private:
     bool restoring_ = false;           // playing a journal: nothing is journalled again
     bool morphDragging_ = false;       // the tool hand holds the selector on the ground
     bool morphDragged_ = false;        // ... and moved it: journalled on release
+    int morphDragTarget_ = -1;         // ... of this morph result (-1: none picked yet)
     float strokeDepth_ = 0.0f;         // metres along the ray where the live stroke began
     // The move tool's drag: which sculpture, moving or turning it, and
     // where it began. The aim ray is followed on a horizontal plane, or,

@@ -2,7 +2,7 @@
 // source, its edit list, its placement) and the caches rebuilt from them
 // (the grid, its LOD pyramid, chunk layout and remesh queue). The morph
 // result is a sculpture like the others: its source is the blend of three
-// sculptures instead of a HyperFun body.
+// sculptures instead of a HyperFun body, and it holds its morph's state.
 #pragma once
 
 #include <cstdint>
@@ -25,6 +25,7 @@ namespace hg::frep { struct Program; class Model; }
 namespace hg::garden {
 
 class SculptureEdits;
+struct MorphState;
 
 // What a sculpture's field is made from.
 struct SculptureSource {
@@ -41,10 +42,10 @@ struct SculptureSource {
     // Mesh: the same index; its entry's `mesh` names an STL, OBJ or PLY
     // file whose triangles became the base grid (voxel/mesh_volume.h), and
     // like a scan it has no program.
+    // Morph: the index in Garden::morphs (its triangle of sources); the
+    // sources' caches, weights and blender are the Sculpture's `morph`.
     int spec = -1;
     std::shared_ptr<const frep::Program> program;
-    // Morph: the garden's triangle of sources; the weights live in the session.
-    const MorphSpec* morph = nullptr;
 };
 
 struct Sculpture {
@@ -68,6 +69,10 @@ struct Sculpture {
     std::unique_ptr<poly::LodPyramid> pyramid;
     std::unique_ptr<poly::ChunkLayout> layout;
     std::unique_ptr<poly::RemeshQueue> queue;
+    // A morph result's caches, weights and blender (garden/morph/morph_state.h);
+    // none for other sculptures, and for a result whose sources are missing.
+    // Declared after the grid it writes, so it goes first.
+    std::unique_ptr<MorphState> morph;
     int framesSinceLevels = 0;         // frames since the queue last took new levels
     int uniformLevel = -1;             // the one level the queue's chunks last took, or -1 when they differ
 

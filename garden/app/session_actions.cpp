@@ -7,6 +7,7 @@
 #include <glm/gtc/matrix_inverse.hpp>
 
 #include "garden/app/garden_session.h"
+#include "garden/morph/morph_state.h"
 #include "garden/morph/morph_weights.h"
 #include "garden/scene/to_glm.h"
 #include "garden/sculpt/impacts.h"
@@ -91,10 +92,17 @@ std::string GardenSession::apply(const Action& action) {
     }
     if (std::holds_alternative<RedoAction>(action)) return redo() ? "" : "nothing to redo";
     const auto& m = std::get<MorphWeightsAction>(action);
-    if (!blender_) return "the garden has no metamorphosis";
-    weights_ = weightsFromBarycentric(m.barycentric, m.balance);
-    restartMorph();
-    record(m);
+    const std::vector<int> morphs = morphResults();
+    const int r = m.sculpture.empty() ? (morphs.empty() ? -1 : morphs.front()) : findSculpture(m.sculpture);
+    if (r < 0 || !sculptures_[static_cast<std::size_t>(r)].morphResult())
+        return m.sculpture.empty() ? "the garden has no metamorphosis" : "no metamorphosis named '" + m.sculpture + "'";
+    MorphState* state = morphState(r);
+    if (!state) return "the metamorphosis '" + sculptures_[static_cast<std::size_t>(r)].name + "' is missing";
+    state->weights = weightsFromBarycentric(m.barycentric, m.balance);
+    restartMorph(r);
+    MorphWeightsAction named = m;
+    named.sculpture = sculptures_[static_cast<std::size_t>(r)].name;
+    record(named);
     return "";
 }
 

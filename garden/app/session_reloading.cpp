@@ -23,6 +23,7 @@
 #include "garden/morph/garden_morph.h"
 #include "garden/morph/morph_blend.h"
 #include "garden/morph/morph_sources.h"
+#include "garden/morph/morph_state.h"
 #include "garden/sculpt/impacts.h"
 #include "garden/sculpt/mask_margin.h"
 #include "garden/sculpt/sculpture_edits.h"
@@ -76,8 +77,8 @@ std::vector<GardenSession::SourceReload> GardenSession::reloadChangedSources() {
     std::vector<SourceReload> out;
     std::vector<std::size_t> reported;
     const Garden& g = *load_.garden;
-    // The morph's sources that changed and read well: replaced together, so
-    // the morph's caches are sampled once however many of them changed.
+    // The morphs' sources that changed and read well: replaced together, so
+    // each morph's caches are sampled once however many of them changed.
     std::vector<std::size_t> morphChanged;
     std::vector<SculptureLoad> morphLoads;
     std::vector<voxel::Volume> morphGrids;
@@ -89,8 +90,9 @@ std::vector<GardenSession::SourceReload> GardenSession::reloadChangedSources() {
         if (stamp == 0 || stamp == s.sourceStamp) continue;
         s.sourceStamp = stamp;
         std::string problem;
-        const bool morphSource =
-            g.morph && std::find(g.morph->sourceIndex.begin(), g.morph->sourceIndex.end(), i) != g.morph->sourceIndex.end();
+        const bool morphSource = std::any_of(g.morphs.begin(), g.morphs.end(), [i](const MorphSpec& m) {
+            return std::find(m.sourceIndex.begin(), m.sourceIndex.end(), i) != m.sourceIndex.end();
+        });
         SculptureLoad loaded = loadSculpture(spec);
         if (!loaded.ok()) {
             problem = loaded.error;
@@ -171,8 +173,8 @@ void GardenSession::reframeSculpture(std::size_t index) {
 
 std::string GardenSession::replaceMorphSources(const std::vector<std::size_t>& changed, std::vector<SculptureLoad> loads,
                                               std::vector<voxel::Volume> grids) {
-    // The morph's caches first, from the new files: a failure there leaves
-    // everything as it was.
+    // Every morph with a changed source gets its caches first, from the new
+    // files: a failure there leaves everything as it was.
     GardenLoad trial = load_;
     ResolvedBoxes resolved(sculptures_.size());
     for (std::size_t i = 0; i < sculptures_.size(); ++i)
@@ -181,29 +183,47 @@ std::string GardenSession::replaceMorphSources(const std::vector<std::size_t>& c
         trial.sculptures[changed[k]] = loads[k];
         resolved[changed[k]] = grids[k].frame.modelBox;
     }
-    MorphSourcesResult built = buildGardenMorphSources(trial, 0, resolved);
-    if (!built.sources) return "the metamorphosis cannot be made of the changed sources: " + built.error;
+    // The morph results that stand (their state made) and use a changed source, with their new caches.
+    std::vector<std::pair<int, std::unique_ptr<MorphSources>>> rebuilt;
+    for (int r : morphResults()) {
+        const Sculpture& result = sculptures_[static_cast<std::size_t>(r)];
+        const auto spec = static_cast<std::size_t>(result.source.spec);
+        const MorphSpec& m = load_.garden->morphs[spec];
+        const bool uses = std::any_of(changed.begin(), changed.end(), [&m](std::size_t i) {
+            return std::find(m.sourceIndex.begin(), m.sourceIndex.end(), i) != m.sourceIndex.end();
+        });
+        if (!uses) continue;
+        MorphSourcesResult built = buildGardenMorphSources(trial, spec, 0, resolved);
+        if (!built.sources) {
+            const std::string named = load_.garden->morphs.size() > 1 ? " '" + m.resultName + "'" : std::string();
+            return "the metamorphosis" + named + " cannot be made of the changed sources: " + built.error;
+        }
+        // A morph that was missing comes back on reopening.
+        if (result.morph) rebuilt.emplace_back(r, std::make_unique<MorphSources>(std::move(*built.sources)));
+    }
     for (std::size_t k = 0; k < changed.size(); ++k)
         if (std::string why = replaceSource(changed[k], std::move(loads[k]), std::move(grids[k])); !why.empty()) return why;
-    if (!blender_ || morphIndex_ < 0) return "";  // the morph was missing: it comes back on reopening
-    Sculpture& r = sculptures_[static_cast<std::size_t>(morphIndex_)];
-    const bool same = sameFrame(sources_->frame, built.sources->frame);
-    blender_.reset();  // it reads the old caches
-    *sources_ = std::move(*built.sources);
-    balance_ = morphBalance(*load_.garden->morph, *sources_);
-    // The weights keep their place in the triangle, balanced for the new sources.
-    MorphWeights w = weightsFromBarycentric(weights_->barycentric, balance_);
-    w.point = weights_->point;
-    w.clamped = weights_->clamped;
-    weights_ = w;
-    if (!same) {
-        if (stroking() && strokeSculpture_ == morphIndex_) endStroke();
-        if (liveMove_ == morphIndex_) endLiveMove();
-        *r.volume = makeMorphVolume(*sources_);
-        reframeSculpture(static_cast<std::size_t>(morphIndex_));
+    for (auto& [index, fresh] : rebuilt) {
+        Sculpture& r = sculptures_[static_cast<std::size_t>(index)];
+        MorphState& m = *r.morph;
+        const bool same = sameFrame(m.sources->frame, fresh->frame);
+        m.blender.reset();  // it reads the old caches
+        *m.sources = std::move(*fresh);
+        m.balance = morphBalance(load_.garden->morphs[m.spec], *m.sources);
+        // The weights keep their place in the triangle, balanced for the new sources.
+        MorphWeights w = weightsFromBarycentric(m.weights->barycentric, m.balance);
+        w.point = m.weights->point;
+        w.clamped = m.weights->clamped;
+        m.weights = w;
+        if (!same) {
+            if (stroking() && strokeSculpture_ == index) endStroke();
+            if (liveMove_ == index) endLiveMove();
+            *r.volume = makeMorphVolume(*m.sources);
+            reframeSculpture(static_cast<std::size_t>(index));
+        }
+        m.blender = std::make_unique<MorphBlender>(*m.sources, r.edits ? r.edits->mutableBase() : *r.volume);
+        restartMorph(index);
     }
-    blender_ = std::make_unique<MorphBlender>(*sources_, r.edits ? r.edits->mutableBase() : *r.volume);
-    restartMorph();
     return "";
 }
 

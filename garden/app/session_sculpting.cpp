@@ -8,7 +8,7 @@
 #include <glm/gtc/matrix_inverse.hpp>
 
 #include "garden/app/garden_session.h"
-#include "garden/morph/morph_blend.h"
+#include "garden/morph/morph_state.h"
 #include "garden/scene/to_glm.h"
 #include "garden/sculpt/sculpture_edits.h"
 #include "garden/sculpt/edit_field.h"
@@ -39,12 +39,13 @@ SculptureEdits& GardenSession::editsOf(int sculpture) {
     s.edits = std::make_unique<SculptureEdits>(*s.volume);
     // Playing a journal: every grid is recomputed once at the end.
     if (restoring_) s.edits->setDeferred(true);
-    if (s.morphResult() && blender_) {
+    if (s.morph) {
         // From now on the blend goes to the unedited grid and the edits are
         // applied after it, box by box (morph()): they persist when the
         // weights change.
-        blender_ = std::make_unique<MorphBlender>(*sources_, s.edits->mutableBase());
-        restartMorph();
+        s.morph->blender.reset();  // before the new one: one writer of the grid at a time
+        s.morph->blender = std::make_unique<MorphBlender>(*s.morph->sources, s.edits->mutableBase());
+        restartMorph(sculpture);
     }
     return *s.edits;
 }

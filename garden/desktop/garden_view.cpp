@@ -177,15 +177,20 @@ void GardenView::render(const GardenSession& session, glm::ivec2 viewport, const
         }
     }
     if (only_ >= 0) return;  // one sculpture on show: no markers on the ground
-    if (const auto t = session.morphTriangle()) {
+    // Every morph's triangle; the active one's brighter, with its selector.
+    for (int r : session.morphResults()) {
+        const auto t = session.morphTriangle(r);
+        const bool active = r == session.activeMorph();
         std::vector<glm::vec3> loop;
         for (const auto& c : t->corners) loop.emplace_back(static_cast<float>(c[0]), 0.02f, static_cast<float>(c[1]));
-        renderer_.drawLines(loop, glm::vec4(0.95f, 0.85f, 0.2f, 1.0f), LineMode::Loop);
-        if (const auto& w = session.morphWeights()) {
+        renderer_.drawLines(loop, active ? glm::vec4(0.95f, 0.85f, 0.2f, 1.0f) : glm::vec4(0.6f, 0.55f, 0.25f, 1.0f),
+                            LineMode::Loop);
+        if (const auto& w = session.morphWeights(r)) {
             const glm::vec3 p(static_cast<float>(w->point[0]), 0.02f, static_cast<float>(w->point[1]));
             renderer_.drawLines({p - glm::vec3(0.15f, 0, 0), p + glm::vec3(0.15f, 0, 0), p - glm::vec3(0, 0, 0.15f),
                                  p + glm::vec3(0, 0, 0.15f)},
-                                glm::vec4(0.95f, 0.3f, 0.1f, 1.0f), LineMode::Segments);
+                                active ? glm::vec4(0.95f, 0.3f, 0.1f, 1.0f) : glm::vec4(0.6f, 0.35f, 0.2f, 1.0f),
+                                LineMode::Segments);
         }
     }
     if (const auto& d = session.detail())

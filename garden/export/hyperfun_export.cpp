@@ -193,12 +193,12 @@ std::string sourceLabel(const SculptureSpec& spec, const frep::Model& m) {
            " (sculpture '" + spec.name + "')";
 }
 
-// The morph blend as a body named `name`, after its sources' bodies;
-// `statements` receives the blend body's count.
-std::string morphBodies(const GardenSession& session, const std::string& name, std::size_t& statements) {
-    const MorphSpec& spec = *session.garden().morph;
-    const MorphSources* sources = session.morphSources();
-    const auto& weights = session.morphWeights();
+// Morph result `result`'s blend as a body named `name`, after its sources'
+// bodies; `statements` receives the blend body's count.
+std::string morphBodies(const GardenSession& session, int result, const std::string& name, std::size_t& statements) {
+    const MorphSpec& spec = *session.morphSpec(result);
+    const MorphSources* sources = session.morphSources(result);
+    const auto& weights = session.morphWeights(result);
     if (!sources || !weights) throw std::runtime_error("the morph has no sources or weights");
     std::string out;
     BodyWriter w;
@@ -269,7 +269,7 @@ HyperFunExport exportOrThrow(const GardenSession& session, int index, const Sele
     BodyWriter w;
     HfText f;
     if (s.morphResult()) {
-        out += morphBodies(session, edited ? "hg_morph" : "my_model", r.statements);
+        out += morphBodies(session, index, edited ? "hg_morph" : "my_model", r.statements);
         if (!edited) {
             r.text = out;
             return r;

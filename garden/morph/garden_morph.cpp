@@ -4,23 +4,23 @@
 
 namespace hg::garden {
 
-MorphTriangle morphTriangle(const Garden& garden) {
+MorphTriangle morphTriangle(const Garden& garden, std::size_t morph) {
     MorphTriangle t;
     for (std::size_t i = 0; i < 3; ++i) {
-        const Vec3& p = garden.sculptures[garden.morph->sourceIndex[i]].placement.position;
+        const Vec3& p = garden.sculptures[garden.morphs[morph].sourceIndex[i]].placement.position;
         t.corners[i] = {p[0], p[2]};
     }
     return t;
 }
 
-std::string morphModelBox(const GardenLoad& load, frep::Box3& box, const ResolvedBoxes& resolved) {
-    if (!load.garden || !load.garden->morph) return "the garden has no morph";
-    const MorphSpec& m = *load.garden->morph;
+std::string morphModelBox(const GardenLoad& load, std::size_t morph, frep::Box3& box, const ResolvedBoxes& resolved) {
+    if (!load.garden || morph >= load.garden->morphs.size()) return "the garden has no such morph";
+    const MorphSpec& m = load.garden->morphs[morph];
     if (m.box) {
         box = *m.box;
         return "";
     }
-    if (!load.morphError.empty()) return load.morphError;
+    if (morph < load.morphErrors.size() && !load.morphErrors[morph].empty()) return load.morphErrors[morph];
     std::array<frep::Box3, 3> boxes;
     for (std::size_t i = 0; i < 3; ++i) {
         const SculptureSpec& spec = load.garden->sculptures[m.sourceIndex[i]];
@@ -37,17 +37,17 @@ std::string morphModelBox(const GardenLoad& load, frep::Box3& box, const Resolve
     return "";
 }
 
-MorphSourcesResult buildGardenMorphSources(const GardenLoad& load, std::uint64_t memoryLimit,
+MorphSourcesResult buildGardenMorphSources(const GardenLoad& load, std::size_t morph, std::uint64_t memoryLimit,
                                            const ResolvedBoxes& resolved) {
     MorphSourcesResult r;
     frep::Box3 box;
-    r.error = morphModelBox(load, box, resolved);
+    r.error = morphModelBox(load, morph, box, resolved);
     if (!r.error.empty()) return r;
-    if (!load.morphError.empty()) {
-        r.error = load.morphError;
+    if (morph < load.morphErrors.size() && !load.morphErrors[morph].empty()) {
+        r.error = load.morphErrors[morph];
         return r;
     }
-    const MorphSpec& m = *load.garden->morph;
+    const MorphSpec& m = load.garden->morphs[morph];
     std::array<const frep::Model*, 3> models{};
     for (std::size_t i = 0; i < 3; ++i) models[i] = &*load.sculptures[m.sourceIndex[i]].model;
     return buildMorphSources(models, box, m.resolution, m.band, memoryLimit);

@@ -1,4 +1,4 @@
-// From a loaded garden to the morph's inputs: the triangle (the sources'
+// From a loaded garden to a morph's inputs (each of Garden::morphs by its index): the triangle (the sources'
 // positions on the ground), the shared model frame (the union of the
 // sources' model boxes unless the file gives one), the source caches and
 // the balancing factors (given in the file, or computed from the caches).
@@ -16,25 +16,25 @@
 
 namespace hg::garden {
 
-// Corner i is source i's position (x, z). The garden must have a morph.
-MorphTriangle morphTriangle(const Garden& garden);
+// Corner i is source i's position (x, z). `morph` < garden.morphs.size().
+MorphTriangle morphTriangle(const Garden& garden, std::size_t morph);
 
 // Model boxes already resolved for the garden's sculptures, by sculpture
 // index (none: not resolved): a session that sampled the sources passes
 // theirs, so they are not estimated a second time.
 using ResolvedBoxes = std::vector<std::optional<frep::Box3>>;
 
-// The shared model box: $.morph.result.box, else the union of the sources'
-// boxes (given, resolved, or found by voxel::resolveModelBox). "" on
-// success, else why not (a source is missing, or its box cannot be
-// found).
-std::string morphModelBox(const GardenLoad& load, frep::Box3& box, const ResolvedBoxes& resolved = {});
+// The shared model box: the morph's result.box, else the union of the
+// sources' boxes (given, resolved, or found by voxel::resolveModelBox). ""
+// on success, else why not (no such morph, a source is missing, or its box
+// cannot be found).
+std::string morphModelBox(const GardenLoad& load, std::size_t morph, frep::Box3& box, const ResolvedBoxes& resolved = {});
 
-// The three caches at $.morph.result.resolution and band.
-MorphSourcesResult buildGardenMorphSources(const GardenLoad& load, std::uint64_t memoryLimit = 0,
+// The three caches at the morph's result.resolution and band.
+MorphSourcesResult buildGardenMorphSources(const GardenLoad& load, std::size_t morph, std::uint64_t memoryLimit = 0,
                                            const ResolvedBoxes& resolved = {});
 
-// $.morph.balance when given, else balancingFactors(sources.surfaceGradient).
+// The morph's balance when given, else balancingFactors(sources.surfaceGradient).
 std::array<double, 3> morphBalance(const MorphSpec& spec, const MorphSources& sources);
 
 }  // namespace hg::garden

@@ -19,7 +19,21 @@ glm::vec2 morphSelectorPoint(const GardenSession& session) {
 
 void drawMorphSection(GardenSession& session) {
     if (!session.hasMorph()) return;
-    const MorphSpec& m = *session.garden().morph;
+    // Several morphs: the one the triangle steers is picked here (or by
+    // selecting its result, or on its triangle on the ground).
+    const std::vector<int> morphs = session.morphResults();
+    if (morphs.size() > 1) {
+        const auto& all = session.sculptures();
+        if (ImGui::BeginCombo("morph", all[static_cast<std::size_t>(session.activeMorph())].name.c_str())) {
+            for (int r : morphs) {
+                const Sculpture& s = all[static_cast<std::size_t>(r)];
+                if (!session.morphWeights(r)) continue;  // its sources are missing
+                if (ImGui::Selectable(s.name.c_str(), r == session.activeMorph())) session.setActiveMorph(r);
+            }
+            ImGui::EndCombo();
+        }
+    }
+    const MorphSpec& m = *session.morphSpec();
     const char* labels[3] = {m.sources[0].c_str(), m.sources[1].c_str(), m.sources[2].c_str()};
     glm::vec2 point = morphSelectorPoint(session);
     if (morphTriangleWidget(labels, point)) {

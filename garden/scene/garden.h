@@ -81,9 +81,10 @@ struct SculptureSpec {
     Material material;
 };
 
-// The metamorphosis (docs/design.md §4): three sources stand at the corners of the
+// A metamorphosis (docs/design.md §4): three sources stand at the corners of the
 // triangle (the corners are their positions on the ground), the result
-// stands at its own placement, by default the triangle's centroid.
+// stands at its own placement, by default the triangle's centroid. A garden
+// may hold several, each with its own sources, result and weights.
 struct MorphSpec {
     std::array<std::string, 3> sources;       // sculpture names
     std::array<std::size_t, 3> sourceIndex{}; // into Garden::sculptures
@@ -136,12 +137,14 @@ struct Garden {
     std::vector<Material> materials;  // the named materials, in the file's order
     std::vector<SculptureSpec> sculptures;
     std::vector<PathSpec> paths;
-    std::optional<MorphSpec> morph;
+    std::vector<MorphSpec> morphs;    // $.morph (one) or $.morphs, in the file's order
     std::vector<Light> lights;
     StartPose start;
 
     // Index of the sculpture with that name, or -1.
     int findSculpture(const std::string& sculptureName) const;
+    // Index of the morph whose result has that name, or -1.
+    int findMorph(const std::string& resultName) const;
 };
 
 }  // namespace hg::garden

@@ -276,6 +276,14 @@ struct Reader {
         return g;
     }
 
+    // What already has `name` ("a sculpture", "the result of $.morphs[0]"), or "".
+    static std::string nameTaken(const Garden& g, const std::string& name) {
+        if (g.findSculpture(name) >= 0) return "a sculpture";
+        const int m = g.findMorph(name);
+        if (m >= 0) return "the result of morph " + std::to_string(m);
+        return "";
+    }
+
     MorphSpec morph(const json& v, const std::string& path, const Garden& g, const Material& fallback) const {
         ObjectReader o(v, path, {"sources", "balance", "selector", "result"});
         o.finish();
@@ -327,20 +335,23 @@ struct Reader {
         }
         m.resultPlacement.position = {centroid[0], g.ground.height, centroid[1]};
         m.material = fallback;
+        bool named = false;
+        std::string namePath;
         if (auto* x = o.optional("result")) {
             ObjectReader r(*x, o.pathOf("result"), {"name", "placement", "box", "resolution", "band", "material"});
             r.finish();
-            if (auto* y = r.optional("name")) m.resultName = readString(*y, r.pathOf("name"));
+            namePath = r.pathOf("name");
+            if (auto* y = r.optional("name")) m.resultName = readString(*y, namePath), named = true;
             if (auto* y = r.optional("placement")) m.resultPlacement = placement(*y, r.pathOf("placement"), m.resultPlacement);
             if (auto* y = r.optional("box")) m.box = box(*y, r.pathOf("box"));
             if (auto* y = r.optional("resolution")) m.resolution = resolution(*y, r.pathOf("resolution"));
             if (auto* y = r.optional("band")) m.band = band(*y, r.pathOf("band"));
             if (auto* y = r.optional("material")) m.material = material(*y, r.pathOf("material"));
-            if (g.findSculpture(m.resultName) >= 0)
-                throw JsonError(r.pathOf("name"), "'" + m.resultName + "' is already the name of a sculpture");
-        } else if (g.findSculpture(m.resultName) >= 0) {
-            throw JsonError(path, "the result's default name '" + m.resultName +
-                                      "' is already the name of a sculpture; give $.morph.result.name");
+        }
+        if (std::string taken = nameTaken(g, m.resultName); !taken.empty()) {
+            if (named) throw JsonError(namePath, "'" + m.resultName + "' is already the name of " + taken);
+            throw JsonError(path, "the result's default name '" + m.resultName + "' is already the name of " + taken +
+                                      "; give " + childPath(childPath(path, "result"), "name"));
         }
         return m;
     }
@@ -365,6 +376,12 @@ int Garden::findSculpture(const std::string& sculptureName) const {
     return -1;
 }
 
+int Garden::findMorph(const std::string& resultName) const {
+    for (std::size_t i = 0; i < morphs.size(); ++i)
+        if (morphs[i].resultName == resultName) return static_cast<int>(i);
+    return -1;
+}
+
 std::size_t GardenLoad::missingCount() const {
     std::size_t n = 0;
     for (const auto& s : sculptures) n += s.ok() ? 0 : 1;
@@ -373,7 +390,8 @@ std::size_t GardenLoad::missingCount() const {
 
 Garden parseGarden(const std::string& text, const std::string& file, const std::string& folder) {
     json doc = parseStrictJson(text);
-    ObjectReader top(doc, "$", {"version", "name", "ground", "materials", "sculptures", "paths", "morph", "lights", "start"});
+    ObjectReader top(doc, "$",
+                     {"version", "name", "ground", "materials", "sculptures", "paths", "morph", "morphs", "lights", "start"});
     top.finish();
     Garden g;
     g.file = file;
@@ -425,7 +443,16 @@ Garden parseGarden(const std::string& text, const std::string& file, const std::
         gravel.roughness = 1.0f;
         for (std::size_t i = 0; i < x->size(); ++i) g.paths.push_back(r.path((*x)[i], indexPath(at, i), gravel));
     }
-    if (auto* x = top.optional("morph")) g.morph = r.morph(*x, top.pathOf("morph"), g, stone);
+    // One morph ($.morph) or several ($.morphs), each with its own triangle and result.
+    if (auto* x = top.optional("morph")) {
+        if (top.optional("morphs")) throw JsonError(top.pathOf("morphs"), "give $.morph or $.morphs, not both");
+        g.morphs.push_back(r.morph(*x, top.pathOf("morph"), g, stone));
+    }
+    if (auto* x = top.optional("morphs")) {
+        std::string at = top.pathOf("morphs");
+        if (!x->is_array()) throw JsonError(at, "expected an array of morphs");
+        for (std::size_t i = 0; i < x->size(); ++i) g.morphs.push_back(r.morph((*x)[i], indexPath(at, i), g, stone));
+    }
     if (auto* x = top.optional("lights")) {
         std::string at = top.pathOf("lights");
         if (!x->is_array()) throw JsonError(at, "expected an array of lights");
@@ -546,20 +573,19 @@ GardenLoad loadGardenText(const std::string& text, const std::string& path) {
         const auto [it, fresh] = first.emplace(key.str(), load.sculptures.size());
         load.sculptures.push_back(fresh ? loadSculpture(spec) : load.sculptures[it->second]);
     }
-    if (const auto& m = load.garden->morph) {
-        for (std::size_t i = 0; i < 3; ++i)
-            if (!load.sculptures[m->sourceIndex[i]].ok()) {
-                load.morphError = "morph source '" + m->sources[i] + "' is missing, so there is no metamorphosis";
-                break;
-            } else if (load.sculptures[m->sourceIndex[i]].scan) {
-                load.morphError = "morph source '" + m->sources[i] +
-                                  "' is a scanned volume; the metamorphosis blends HyperFun sculptures, so there is none";
-                break;
-            } else if (load.sculptures[m->sourceIndex[i]].mesh) {
-                load.morphError = "morph source '" + m->sources[i] +
-                                  "' is a mesh; the metamorphosis blends HyperFun sculptures, so there is none";
-                break;
-            }
+    // Each morph's result shows its reason as the sculpture's error (named by its result).
+    for (const MorphSpec& m : load.garden->morphs) {
+        std::string& why = load.morphErrors.emplace_back();
+        for (std::size_t i = 0; i < 3 && why.empty(); ++i) {
+            const SculptureLoad& source = load.sculptures[m.sourceIndex[i]];
+            const std::string named = "morph source '" + m.sources[i] + "'";
+            if (!source.ok())
+                why = named + " is missing, so there is no metamorphosis";
+            else if (source.scan)
+                why = named + " is a scanned volume; the metamorphosis blends HyperFun sculptures, so there is none";
+            else if (source.mesh)
+                why = named + " is a mesh; the metamorphosis blends HyperFun sculptures, so there is none";
+        }
     }
     return load;
 }

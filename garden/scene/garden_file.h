@@ -36,7 +36,8 @@ struct GardenLoad {
     std::string errorPath;               // JSON path ("$.sculptures[2].box"), "line L, column C", or "" (unreadable)
     std::string errorReason;
     std::vector<SculptureLoad> sculptures;  // one per garden->sculptures, in order
-    std::string morphError;              // why the morph cannot run (a source is missing); "" when it can
+    // Per morph (Garden::morphs): why it cannot run (a source is missing), "" when it can.
+    std::vector<std::string> morphErrors;
 
     bool ok() const { return garden.has_value(); }
     std::size_t missingCount() const;

@@ -35,8 +35,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     refusedOrAccepted([&] {
         const Garden g = parseGarden(text, "fuzz.json", "/nowhere");
         for (const SculptureSpec& s : g.sculptures) check(s.resolution > 0 && !s.name.empty());
-        if (g.morph)
-            for (std::size_t i : g.morph->sourceIndex) check(i < g.sculptures.size());
+        for (const hg::garden::MorphSpec& m : g.morphs)
+            for (std::size_t i : m.sourceIndex) check(i < g.sculptures.size());
     });
     refusedOrAccepted([&] {
         const ReplayScript s = parseReplayScript(text, "fuzz.json", "/nowhere");

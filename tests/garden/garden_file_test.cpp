@@ -91,15 +91,15 @@ TEST_F(GardenFile, GoodFileLoadsEverySection) {
     EXPECT_EQ(load.sculptures[1].model->body().name, "ball");
     EXPECT_EQ(load.sculptures[1].model->parameters()[0], 0.16);
     // Morph: sources by name, result at the centroid of the triangle.
-    ASSERT_TRUE(g.morph.has_value());
-    EXPECT_TRUE(load.morphError.empty());
-    EXPECT_EQ(g.morph->sourceIndex[2], 2u);
-    EXPECT_FALSE(g.morph->balance.has_value());
-    EXPECT_NEAR(g.morph->resultPlacement.position[0], 0.0, 1e-12);
-    EXPECT_NEAR(g.morph->resultPlacement.position[2], 0.0, 1e-12);
-    EXPECT_NEAR(g.morph->selector[1], 0.0, 1e-12);
-    EXPECT_EQ(g.morph->resolution, 40);
-    EXPECT_EQ(g.morph->resultName, "metamorphosis");
+    ASSERT_EQ(g.morphs.size(), 1u);
+    EXPECT_TRUE(load.morphErrors.at(0).empty());
+    EXPECT_EQ(g.morphs[0].sourceIndex[2], 2u);
+    EXPECT_FALSE(g.morphs[0].balance.has_value());
+    EXPECT_NEAR(g.morphs[0].resultPlacement.position[0], 0.0, 1e-12);
+    EXPECT_NEAR(g.morphs[0].resultPlacement.position[2], 0.0, 1e-12);
+    EXPECT_NEAR(g.morphs[0].selector[1], 0.0, 1e-12);
+    EXPECT_EQ(g.morphs[0].resolution, 40);
+    EXPECT_EQ(g.morphs[0].resultName, "metamorphosis");
     // Lights: the directional one normalized.
     ASSERT_EQ(g.lights.size(), 3u);
     EXPECT_EQ(g.lights[1].kind, Light::Kind::Directional);
@@ -114,7 +114,7 @@ TEST_F(GardenFile, MinimalFileGetsDefaults) {
     GardenLoad load = loadJson(json::parse(R"({"version": 1})"));
     ASSERT_TRUE(load.ok()) << load.error;
     EXPECT_TRUE(load.garden->sculptures.empty());
-    EXPECT_FALSE(load.garden->morph.has_value());
+    EXPECT_TRUE(load.garden->morphs.empty());
     EXPECT_EQ(load.garden->lights.size(), 2u);  // ambient and a sun
 }
 
@@ -213,6 +213,29 @@ TEST_F(GardenFile, BadFilesAreRefusedWithPathAndReason) {
          "$.morph.balance[1]", "expected a positive number, found 0"},
         {"result named like a sculpture", [](json& j) { j["morph"]["result"]["name"] = "two"; },
          "$.morph.result.name", "'two' is already the name of a sculpture"},
+        {"morph and morphs", [](json& j) { j["morphs"] = json::array({j["morph"]}); },
+         "$.morphs", "give $.morph or $.morphs, not both"},
+        {"morphs not a list", [](json& j) { j["morphs"] = j["morph"]; j.erase("morph"); },
+         "$.morphs", "expected an array of morphs"},
+        {"a second morph's unknown source", [](json& j) {
+             j["morphs"] = json::array({j["morph"], j["morph"]});
+             j["morphs"][1]["sources"][0] = "on";
+             j.erase("morph");
+         },
+         "$.morphs[1].sources[0]", "no sculpture named 'on' (did you mean 'one'?)"},
+        {"two results of one name", [](json& j) {
+             j["morphs"] = json::array({j["morph"], j["morph"]});
+             j.erase("morph");
+         },
+         "$.morphs[1]", "the result's default name 'metamorphosis' is already the name of the result of morph 0; "
+                        "give $.morphs[1].result.name"},
+        {"a result named like another's", [](json& j) {
+             j["morphs"] = json::array({j["morph"], j["morph"]});
+             j["morphs"][0]["result"]["name"] = "blend";
+             j["morphs"][1]["result"]["name"] = "blend";
+             j.erase("morph");
+         },
+         "$.morphs[1].result.name", "'blend' is already the name of the result of morph 0"},
         {"light type", [](json& j) { j["lights"][0]["type"] = "spot"; },
          "$.lights[0].type", "unknown light type 'spot'"},
         {"light key of another type", [](json& j) { j["lights"][1]["position"] = {0, 1, 0}; },
@@ -307,7 +330,7 @@ TEST_F(GardenFile, BrokenSculptureFilesShowAsMissing) {
     EXPECT_NE(load.sculptures[4].error.find("2 values given for a[], but body 'ball' declares a[1]"), std::string::npos)
         << load.sculptures[4].error;
     // The morph needs all three sources.
-    EXPECT_NE(load.morphError.find("'two' is missing"), std::string::npos) << load.morphError;
+    EXPECT_NE(load.morphErrors.at(0).find("'two' is missing"), std::string::npos) << load.morphErrors.at(0);
 }
 
 TEST_F(GardenFile, TheDocumentedExampleLoads) {
@@ -321,7 +344,7 @@ TEST_F(GardenFile, TheDocumentedExampleLoads) {
     GardenLoad load = loadGarden(write("example.json", doc.substr(start + 8, end - start - 8)));
     ASSERT_TRUE(load.ok()) << load.error;
     EXPECT_EQ(load.missingCount(), 0u);
-    EXPECT_TRUE(load.morphError.empty());
+    EXPECT_TRUE(load.morphErrors.at(0).empty());
     EXPECT_EQ(load.garden->sculptures.size(), 3u);
 }
 
@@ -332,20 +355,20 @@ TEST(DefaultGarden, LoadsWithEverySculpture) {
     const Garden& g = *load.garden;
     for (std::size_t i = 0; i < g.sculptures.size(); ++i)
         EXPECT_TRUE(load.sculptures[i].ok()) << g.sculptures[i].name << ": " << load.sculptures[i].error;
-    EXPECT_TRUE(load.morphError.empty()) << load.morphError;
-    ASSERT_TRUE(g.morph.has_value());
+    EXPECT_TRUE(load.morphErrors.at(0).empty()) << load.morphErrors.at(0);
+    ASSERT_EQ(g.morphs.size(), 1u);
     // The three keys at the corners, the result in the middle.
     const char* keys[] = {"key_dryad.hf", "key_orant.hf", "key_knot.hf"};
     for (std::size_t i = 0; i < 3; ++i)
-        EXPECT_EQ(std::filesystem::path(g.sculptures[g.morph->sourceIndex[i]].file).filename(), keys[i]);
+        EXPECT_EQ(std::filesystem::path(g.sculptures[g.morphs[0].sourceIndex[i]].file).filename(), keys[i]);
     Vec2 centroid{0, 0};
     for (std::size_t i = 0; i < 3; ++i) {
-        const Vec3& p = g.sculptures[g.morph->sourceIndex[i]].placement.position;
+        const Vec3& p = g.sculptures[g.morphs[0].sourceIndex[i]].placement.position;
         centroid[0] += p[0] / 3;
         centroid[1] += p[2] / 3;
     }
-    EXPECT_NEAR(g.morph->resultPlacement.position[0], centroid[0], 1e-9);
-    EXPECT_NEAR(g.morph->resultPlacement.position[2], centroid[1], 1e-9);
+    EXPECT_NEAR(g.morphs[0].resultPlacement.position[0], centroid[0], 1e-9);
+    EXPECT_NEAR(g.morphs[0].resultPlacement.position[2], centroid[1], 1e-9);
     // Every piece of our content stands in it.
     for (const char* piece : {"path_stone.hf", "path_column.hf", "path_boulder.hf", "dancer.hf"}) {
         bool found = false;

@@ -26,6 +26,7 @@
 #include "garden/sculpt/edit_list.h"
 #include "garden/sculpt/sculpture_edits.h"
 #include "session_garden.h"
+#include "two_morph_garden.h"
 
 namespace hg::garden {
 namespace {
@@ -59,11 +60,11 @@ public:
     ReferenceField(const GardenSession& s, int index) : s_(s), sculpture_(s.sculptures()[static_cast<std::size_t>(index)]) {
         edited_ = sculpture_.edits && !sculpture_.edits->list().empty();
         if (sculpture_.morphResult()) {
-            const MorphSpec& m = *s.garden().morph;
+            const MorphSpec& m = *s.morphSpec(index);
             for (std::size_t i = 0; i < 3; ++i) add(sourceModel(s, m.sourceIndex[i]));
-            blend_.normalization = s.morphSources()->normalization;
-            blend_.w = s.morphWeights()->w;
-            blend_.band = s.morphSources()->frame.band;
+            blend_.normalization = s.morphSources(index)->normalization;
+            blend_.w = s.morphWeights(index)->w;
+            blend_.band = s.morphSources(index)->frame.band;
         } else {
             add(sourceModel(s, static_cast<std::size_t>(index)));
         }
@@ -312,6 +313,22 @@ TEST_F(HyperFunExportTest, TheMorphResultExportsItsBlendAndItsEditsExactly) {
     EXPECT_NE(edited.text.find("= hg_morph(x, a);"), std::string::npos);
     expectExact(s, m, 3000);
     EXPECT_LT(gridDifference(s, m, 4000), 1e-4);
+}
+
+TEST_F(HyperFunExportTest, EachMorphOfAGardenExportsItsOwnSourcesAndWeights) {
+    GardenSession s(loadGarden(test::writeTwoMorphGarden(dir)), smallSettings());
+    const int second = s.findSculpture("second");
+    s.select(second);
+    s.setMorphWeights({0.2, 0.5, 0.3});
+    finishMorph(s);
+    const HyperFunExport e = exportOf(s, second);
+    EXPECT_NE(e.text.find("sculpture 'd'"), std::string::npos) << "the second morph's sources, not the first's";
+    EXPECT_EQ(e.text.find("sculpture 'a'"), std::string::npos);
+    expectExact(s, second, 2000);
+    EXPECT_LT(gridDifference(s, second, 4000), 1e-4);
+    const int first = s.findSculpture("metamorphosis");
+    EXPECT_NE(exportOf(s, first).text.find("sculpture 'a'"), std::string::npos);
+    expectExact(s, first, 1000);
 }
 
 // Edits in the model frame of ball c (radius 0.6 about (0, 0.5, 0)): short

@@ -37,7 +37,7 @@ std::vector<Action> everyKind() {
     series.rayDirections = {{0.0, -1.0, 0.0}};
     series.volume = 3e-6;
     return {s, PerturbAction{"dancer", q}, UndoAction{}, RedoAction{}, DiscardAction{"metamorphosis"},
-            MorphWeightsAction{{0.2, 0.3, 0.5}, {1.1, 0.9, 1.0}}, MoveAction{"dryad", moved}, ImpactsAction{"knot", series},
+            MorphWeightsAction{{0.2, 0.3, 0.5}, {1.1, 0.9, 1.0}, "metamorphosis"}, MoveAction{"dryad", moved}, ImpactsAction{"knot", series},
             ReplaceAction{"dancer", 3, q},
             MaterialAction{"dryad", Material{"oak", MaterialKind::Wood, {0.5f, 0.3f, 1.0f / 7.0f}, 0.65f, 0.0f}}};
 }

@@ -114,11 +114,11 @@ TEST_F(GardenMorph, SetsUpFromAGardenFile) {
     std::string path = write("g.json", j.dump());
     GardenLoad load = loadGarden(path);
     ASSERT_TRUE(load.ok()) << load.error;
-    MorphTriangle t = morphTriangle(*load.garden);
+    MorphTriangle t = morphTriangle(*load.garden, 0);
     EXPECT_EQ(t.corners[1][0], -1.7);
     EXPECT_EQ(t.corners[0][1], -2.0);
     frep::Box3 box;
-    ASSERT_EQ(morphModelBox(load, box), "");
+    ASSERT_EQ(morphModelBox(load, 0, box), "");
     EXPECT_EQ(box.lo[1], -0.1);
     EXPECT_EQ(box.hi[0], 0.6);
     // Boxes a session already resolved are used as they are (here one wider
@@ -128,25 +128,25 @@ TEST_F(GardenMorph, SetsUpFromAGardenFile) {
     for (int a = 0; a < 3; ++a) { wide.lo[a] = -2.0; wide.hi[a] = 2.0; }
     resolved[1] = wide;
     frep::Box3 withResolved;
-    ASSERT_EQ(morphModelBox(load, withResolved, resolved), "");
+    ASSERT_EQ(morphModelBox(load, 0, withResolved, resolved), "");
     EXPECT_EQ(withResolved.lo[0], -2.0);
     EXPECT_EQ(withResolved.hi[1], 2.0);
-    MorphSourcesResult r = buildGardenMorphSources(load);
+    MorphSourcesResult r = buildGardenMorphSources(load, 0);
     ASSERT_TRUE(r.sources) << r.error;
     EXPECT_EQ(r.sources->frame.resolution, 32);
-    std::array<double, 3> b = morphBalance(*load.garden->morph, *r.sources);
+    std::array<double, 3> b = morphBalance(load.garden->morphs[0], *r.sources);
     for (double v : b) EXPECT_NEAR(v, 1.0, 0.25);
     // Given factors win.
     j["morph"]["balance"] = {1, 2, 3};
     GardenLoad given = loadGarden(write("g2.json", j.dump()));
     ASSERT_TRUE(given.ok()) << given.error;
-    EXPECT_EQ(morphBalance(*given.garden->morph, *r.sources)[2], 3.0);
+    EXPECT_EQ(morphBalance(given.garden->morphs[0], *r.sources)[2], 3.0);
     // A missing source: no morph, and the garden still opens.
     j["sculptures"][1]["file"] = "gone.hf";
     GardenLoad missing = loadGarden(write("g3.json", j.dump()));
     ASSERT_TRUE(missing.ok());
-    EXPECT_FALSE(buildGardenMorphSources(missing).sources.has_value());
-    EXPECT_NE(buildGardenMorphSources(missing).error.find("'b' is missing"), std::string::npos);
+    EXPECT_FALSE(buildGardenMorphSources(missing, 0).sources.has_value());
+    EXPECT_NE(buildGardenMorphSources(missing, 0).error.find("'b' is missing"), std::string::npos);
 }
 
 }  // namespace

@@ -47,7 +47,7 @@ TEST(ScaleGarden, CopiesTheTemplatesSculpturesOnAGrid) {
     ASSERT_EQ(g.sculptures.size(), 11u);
     ASSERT_EQ(load.sculptures.size(), 11u);
     EXPECT_EQ(scaleGardenColumns(11), 4);
-    EXPECT_FALSE(g.morph) << "copies only: the morph's sources are not doubled";
+    EXPECT_TRUE(g.morphs.empty()) << "copies only: the morph's sources are not doubled";
     std::set<std::string> names, files;
     for (std::size_t i = 0; i < g.sculptures.size(); ++i) {
         const SculptureSpec& s = g.sculptures[i];

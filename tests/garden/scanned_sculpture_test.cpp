@@ -369,7 +369,7 @@ TEST_F(ScannedSculpture, AScanIsNoMorphSource) {
     std::ofstream(dir / "morph.json") << g.dump();
     const GardenLoad load = loadGarden((dir / "morph.json").string());
     ASSERT_TRUE(load.ok()) << load.error;
-    EXPECT_EQ(load.morphError,
+    EXPECT_EQ(load.morphErrors.at(0),
               "morph source 'scan' is a scanned volume; the metamorphosis blends HyperFun sculptures, so there is none");
     GardenSession s(load, settings());
     EXPECT_FALSE(s.hasMorph());

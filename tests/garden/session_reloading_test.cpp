@@ -182,12 +182,12 @@ protected:
     // An added stroke on the morph result (model frame), and the weights
     // moved off the garden's selector.
     static void edit(GardenSession& s) {
-        const std::string result = s.garden().morph->resultName;
+        const std::string result = s.garden().morphs[0].resultName;
         ASSERT_EQ(s.apply(StrokeAction{result, StrokeTool::Add, 0.08, 2.0, {{0.45, 0.95, 0.3}, {0.5, 0.7, 0.3}}, std::nullopt, 1.0, Falloff::Smooth, {}}), "");
         s.setMorphBarycentric({0.5, 0.3, 0.2});
     }
     static const Sculpture& result(const GardenSession& s) {
-        return s.sculptures()[static_cast<std::size_t>(s.findSculpture(s.garden().morph->resultName))];
+        return s.sculptures()[static_cast<std::size_t>(s.findSculpture(s.garden().morphs[0].resultName))];
     }
     // The session as a fresh open of the garden's files now, with the same edits.
     void expectAsFreshOpen(GardenSession& session) {
