@@ -156,5 +156,26 @@ TEST_F(SessionMorphs, AMorphWithAMissingSourceIsMissingAndTheOtherRuns) {
     EXPECT_EQ(differing(*s.morphResult(), *s.blendFromScratch()), 0);
 }
 
+TEST_F(SessionMorphs, TheTwoMorphsGardenInContentOpensWithBothBlending) {
+    const GardenLoad load = loadGarden(std::string(HG_SOURCE_DIR) + "/content/gardens/two-morphs.json");
+    ASSERT_TRUE(load.ok()) << load.error;
+    ASSERT_EQ(load.garden->morphs.size(), 2u);
+    for (const std::string& why : load.morphErrors) EXPECT_EQ(why, "");
+    SessionSettings settings = test::smallSessionSettings();
+    settings.sculptureResolution = 24;
+    settings.morphResolution = 24;
+    settings.morphSamplesPerFrame = 20000;
+    settings.remeshChunksPerFrame = 64;
+    GardenSession s(load, settings);
+    ASSERT_EQ(s.morphResults().size(), 2u);
+    s.setActiveMorph(s.findSculpture("second metamorphosis"));
+    s.setMorphPoint(12.5, -1.5);
+    drain(s);
+    for (int r : s.morphResults()) {
+        ASSERT_TRUE(s.morphWeights(r)) << r;
+        EXPECT_EQ(differing(*s.morphResult(r), *s.blendFromScratch(r)), 0) << r;
+    }
+}
+
 }  // namespace
 }  // namespace hg::garden
