@@ -476,12 +476,16 @@ void GardenSession::selectLevels() {
 
 void GardenSession::morph() {
     scheduler_.beginStage(Stage::Morph);
-    // Every morph that has blending left, in the garden's order, shares the
-    // stage's budget: each takes what the ones before it left.
+    // Every morph that has blending left shares the stage's budget, each
+    // taking what the ones before it left: the active one first (the one
+    // the user steers answers first), then the others in the garden's order.
+    std::vector<int> order = morphResults();
+    std::stable_partition(order.begin(), order.end(), [this](int r) { return r == activeMorph_; });
     std::uint64_t samplesLeft = settings_.morphSamplesPerFrame;
     const double until = scheduler_.elapsedMs() + scheduler_.allowanceMs(Stage::Morph);
     bool first = true;
-    for (Sculpture& r : sculptures_) {
+    for (int index : order) {
+        Sculpture& r = sculptures_[static_cast<std::size_t>(index)];
         if (!r.morph || r.morph->blender->done()) continue;
         BlendBudget budget;
         if (settings_.morphSamplesPerFrame > 0) {

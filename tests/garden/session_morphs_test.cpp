@@ -66,6 +66,29 @@ TEST_F(SessionMorphs, EachMorphBlendsItsOwnSourcesAndTheSelectorActsOnTheActiveO
     EXPECT_GT(differing(*s->morphResult(first), *s->morphResult(second)), 0) << "two blends, two grids";
 }
 
+TEST_F(SessionMorphs, TheActiveMorphBlendsFirstAndTheOthersTakeWhatItLeaves) {
+    auto s = open();
+    drain(*s);
+    const int first = s->findSculpture("metamorphosis");
+    const int second = s->findSculpture("second");
+    const auto remaining = [&s](int r) { return s->sculptures()[static_cast<std::size_t>(r)].morph->blender->remainingSamples(); };
+    s->setMorphWeights({0.7, 0.2, 0.1});
+    s->setActiveMorph(second);
+    s->setMorphWeights({0.1, 0.2, 0.7});
+    s->settings().morphSamplesPerFrame = 500;
+    const std::uint64_t firstBefore = remaining(first), secondBefore = remaining(second);
+    ASSERT_GT(firstBefore, 500u);
+    ASSERT_GT(secondBefore, 500u);
+    s->frame(FrameInput(Hands{}, 1.0 / 90.0));
+    EXPECT_EQ(remaining(second), secondBefore - 500) << "the morph being steered goes first";
+    EXPECT_EQ(remaining(first), firstBefore) << "nothing was left of the frame's samples for the other";
+    // With room for both, the other takes what the active one leaves.
+    s->settings().morphSamplesPerFrame = secondBefore + 300;
+    s->frame(FrameInput(Hands{}, 1.0 / 90.0));
+    EXPECT_EQ(remaining(second), 0u);
+    EXPECT_EQ(remaining(first), firstBefore - 800);
+}
+
 TEST_F(SessionMorphs, TheJournalNamesTheMorphItWeighsAndAnOldRecordWeighsTheFirst) {
     auto s = open();
     test::ActionList journal;
