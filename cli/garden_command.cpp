@@ -102,7 +102,7 @@ int runGarden(const GardenOptions& given) {
     if (options.xr) {
         x.script = options.xrScript;
         x.frames = options.frames;
-        x.desktop = d;
+        x.desktop = desktopAfterHeadset(d);  // F9 in the headset: this desktop, whose F9 comes back
         return xr::runXrGarden(x);
     }
     d.frames = options.frames;

@@ -2,8 +2,8 @@
 
 // The garden's headers before the XR and X11 ones (xr/headset.h keeps X11 out).
 #include "garden/app/garden_session.h"
-#include "garden/desktop/garden_view.h"
-#include "garden/desktop/garden_window.h"
+#include "garden/window/garden_view.h"
+#include "garden/window/garden_window.h"
 #include "garden/render/gl_context.h"
 #include "garden/render/image_target.h"
 #include "garden/render/offscreen_target.h"
@@ -520,7 +520,7 @@ int runXrGarden(const XrOptions& options,
         wo.visible = options.mirror;
         wo.vsync = false;  // xrWaitFrame paces the frames
         wo.title = kMirrorTitle;
-        garden::GardenWindow window(wo, options.mirror || options.desktop.has_value());
+        garden::GardenWindow window(wo, options.mirror || static_cast<bool>(options.desktop));
         garden::SessionSettings settings;
         settings.remeshOffFrameThread = true;  // xrWaitFrame paces the frames; the worker meshes meanwhile
         settings.spreadEdits = true;           // a big edit lands over a few frames, none held
@@ -536,22 +536,14 @@ int runXrGarden(const XrOptions& options,
         XrRunInfo info;
         bool desktopAsked = false;
         std::string error;
-        int status = runHeadsetOn(options, std::move(headset), session, window, script, options.desktop.has_value(), info,
-                                  desktopAsked, error);
+        int status = runHeadsetOn(options, std::move(headset), session, window, script, static_cast<bool>(options.desktop),
+                                  info, desktopAsked, error);
         if (!error.empty()) std::cerr << error << "\n";
         if (status == 0 && desktopAsked && options.desktop && !window.window().shouldClose()) {
-            // The user goes on at the desktop; its F9 comes back here.
-            garden::DesktopOptions desktop = *options.desktop;
-            XrOptions again = options;
-            again.desktop.reset();
-            again.script.clear();
-            again.frames = 0;
-            again.askDesktop = nullptr;
-            desktop.headset = headsetFromDesktop(again);
-            garden::showAsDesktop(window, desktop);
-            // Where the headset stood, walking (the headset flies).
+            // The user goes on at the desktop (its F9 comes back to the headset),
+            // where the headset stood, walking (the headset flies).
             session.navigator().setMode(garden::NavigationMode::Walk);
-            status = garden::runDesktopOn(session, window, desktop);
+            status = options.desktop(session, window);
         }
         if (atEnd) atEnd(session, info);
         std::vector<std::string> last;

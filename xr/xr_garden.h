@@ -12,8 +12,8 @@
 #include <optional>
 #include <string>
 
-#include "garden/desktop/desktop_app.h"
 #include "garden/render/render_quality.h"
+#include "garden/window/mode_switch.h"
 
 namespace hg::garden {
 class GardenSession;
@@ -54,9 +54,10 @@ struct XrOptions {
     // the first focused frame (benchmarks).
     std::function<void(const garden::FrameStats&, int)> onFrame;
     // The desktop that F9 and the mirror's "Desktop" button open on the same
-    // garden and window (the headset session ends first); unset: no desktop,
-    // the run ends with the headset session.
-    std::optional<garden::DesktopOptions> desktop;
+    // garden and window (the headset session ends first): the program's
+    // entry gives it (cli/, desktopAfterHeadset); unset: no desktop, the run
+    // ends with the headset session.
+    garden::DesktopEntry desktop;
     // Called after every submitted frame with their count; true asks for
     // the desktop as F9 does (tests).
     std::function<bool(int)> askDesktop;

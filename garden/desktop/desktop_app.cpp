@@ -17,12 +17,12 @@
 
 #include "garden/app/garden_session.h"
 #include "garden/app/tool_defaults.h"
-#include "garden/desktop/desktop_keys.h"
+#include "garden/window/desktop_keys.h"
 #include "garden/desktop/add_panel.h"
 #include "garden/desktop/desktop_settings.h"
 #include "garden/desktop/export_panel.h"
-#include "garden/desktop/garden_view.h"
-#include "garden/desktop/garden_window.h"
+#include "garden/window/garden_view.h"
+#include "garden/window/garden_window.h"
 #include "garden/desktop/panel_layout.h"
 #include "garden/desktop/recent_sessions.h"
 #include "garden/desktop/session_panel.h"
@@ -281,6 +281,13 @@ void showAsDesktop(GardenWindow& window, const DesktopOptions& options) {
     window.window().setTitle(desktopTitle(options));
     window.window().setSize(glm::ivec2(options.width, options.height));
     window.window().setVsync(options.vsync);
+}
+
+DesktopEntry desktopAfterHeadset(DesktopOptions options) {
+    return [options](GardenSession& session, GardenWindow& window) {
+        showAsDesktop(window, options);
+        return runDesktopOn(session, window, options);
+    };
 }
 
 int runDesktopOn(GardenSession& session, GardenWindow& gardenWindow, const DesktopOptions& options,

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "garden/render/render_quality.h"
+#include "garden/window/mode_switch.h"
 
 namespace hg::garden {
 
@@ -19,16 +20,6 @@ class GardenSession;
 class GardenWindow;
 class SessionPanel;
 class SessionRecorder;
-
-// How a headset run that the desktop started came back.
-enum class HeadsetReturn {
-    Desktop,  // the headset session ended (or could not start: `message` says why): the desktop goes on
-    Quit,     // the window was closed meanwhile: the program ends
-};
-
-// Runs the headset on the garden open in the window; the desktop loop
-// waits meanwhile. `message` is for the user (no runtime, a failure).
-using HeadsetEntry = std::function<HeadsetReturn(GardenSession&, GardenWindow&, std::string& message)>;
 
 struct DesktopOptions;
 // The folder F12 writes into (made when missing), per DesktopOptions::screenshotDir.
@@ -85,5 +76,10 @@ int runDesktopOn(GardenSession& session, GardenWindow& window, const DesktopOpti
 // The desktop window's size and title for `options` (a window the headset
 // opened as its mirror takes them when the user goes to the desktop).
 void showAsDesktop(GardenWindow& window, const DesktopOptions& options);
+
+// The desktop's way in after a headset run (xr::XrOptions::desktop): the
+// headset's mirror window shown as the desktop's, then runDesktopOn.
+// `options.headset` is the way back (F9).
+DesktopEntry desktopAfterHeadset(DesktopOptions options);
 
 }  // namespace hg::garden

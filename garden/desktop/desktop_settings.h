@@ -10,7 +10,6 @@
 #include <optional>
 #include <string>
 
-#include <nlohmann/json_fwd.hpp>
 
 namespace hg::garden {
 
@@ -18,20 +17,7 @@ struct DesktopUserSettings {
     bool firstRunDone = false;  // the first-run overlay was dismissed once
 };
 
-// Where a user settings file called `fileName` lives: $`overrideVariable`
-// when set, else under $XDG_CONFIG_HOME/hypergarden, else under
-// ~/.config/hypergarden; "" when none of them is set.
-std::string userSettingsPath(const char* overrideVariable, const char* fileName);
-
 std::string desktopSettingsPath();
-
-// A settings file's JSON object (the headset's and the desktop's): none
-// when `path` is "" or no file is there, or when it cannot be read or is
-// not a JSON object (then `warning` names the path and the fault).
-std::optional<nlohmann::json> readSettingsObject(const std::string& path, std::string& warning);
-// Writes `settings` to `path` atomically, making its folder; "" or why not
-// (`overrideVariable` named when there is no place for it).
-std::string writeSettingsFile(const std::string& path, const nlohmann::json& settings, const char* overrideVariable);
 
 // The settings in `path` (the defaults when it is "" or no file is there);
 // a file that cannot be read or holds a wrong value gives the defaults and

@@ -1,6 +1,6 @@
 #include "garden/desktop/offscreen_garden.h"
 
-#include "garden/desktop/garden_view.h"
+#include "garden/window/garden_view.h"
 #include "garden/render/gl_context.h"
 #include "garden/render/offscreen_target.h"
 #include "garden/render/screenshot.h"

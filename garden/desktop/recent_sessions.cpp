@@ -7,7 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "garden/desktop/desktop_settings.h"
+#include "garden/window/user_settings_file.h"
 #include "garden/scene/json_reader.h"
 
 namespace hg::garden {

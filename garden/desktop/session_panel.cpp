@@ -7,7 +7,7 @@
 #include <utility>
 
 #include "garden/app/garden_session.h"
-#include "garden/desktop/desktop_keys.h"
+#include "garden/window/desktop_keys.h"
 #include "garden/desktop/panel_layout.h"
 #include "garden/desktop/recent_sessions.h"
 #include "garden/session/session_copy.h"

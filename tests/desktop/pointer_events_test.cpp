@@ -12,7 +12,7 @@
 
 #include "../garden/session_garden.h"
 #include "garden/app/garden_session.h"
-#include "garden/desktop/desktop_keys.h"
+#include "garden/window/desktop_keys.h"
 #include "garden/hands/pointer_events.h"
 
 namespace hg::garden {

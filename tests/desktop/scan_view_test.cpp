@@ -2,7 +2,7 @@
 // skull and skin, issue 22) are shown like the others, at their depth.
 #include "../render/gl_fixture.h"
 #include "garden/app/garden_session.h"
-#include "garden/desktop/garden_view.h"
+#include "garden/window/garden_view.h"
 
 namespace hg::garden {
 namespace {

@@ -13,7 +13,7 @@
 #include "../render/gl_fixture.h"
 #include "garden/app/garden_session.h"
 #include "garden/app/sculpture_gizmos.h"
-#include "garden/desktop/garden_view.h"
+#include "garden/window/garden_view.h"
 #include "garden/hands/desktop_hands.h"
 #include "garden/render/tool_gizmo.h"
 

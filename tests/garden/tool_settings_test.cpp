@@ -32,7 +32,7 @@ namespace hg::garden {
 namespace {
 
 using Kind = ToolSettings::Kind;
-constexpr double kStep = 1.25;  // the desktop's [ and ] (garden/desktop/desktop_keys.h)
+constexpr double kStep = 1.25;  // the desktop's [ and ] (garden/window/desktop_keys.h)
 const Kind kAllKinds[] = {Kind::None, Kind::Carve, Kind::Add, Kind::Melt, Kind::Perturb, Kind::Impacts, Kind::Move};
 
 // The one size each kind scales (null for none and move), as a member.

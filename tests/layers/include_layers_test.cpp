@@ -36,8 +36,8 @@ const std::map<std::string, int>& layers() {
         {"garden/app", 10},
         {"garden/session", 11}, {"garden/replay", 11}, {"garden/export", 11},
         {"garden/render", 12},
-        {"garden/desktop", 13},
-        {"xr", 14},
+        {"garden/window", 13},
+        {"garden/desktop", 14}, {"xr", 14},
         {"xr/mock_runtime", 15},
         {"cli", 16},
     };

@@ -9,6 +9,7 @@
 #include "xr_garden_fixture.h"
 
 #include "garden/app/garden_session.h"
+#include "garden/desktop/desktop_app.h"
 #include "garden/replay/replay_runner.h"
 #include "garden/session/open_session.h"
 #include "voxel/volume.h"
@@ -155,13 +156,14 @@ TEST_F(ModeSwitch, TheHeadsetGoesToTheDesktopOnTheSameGarden) {
     // After the strokes (21 focused frames from the second submitted one),
     // before the script's end would end the run.
     x.askDesktop = [](int submitted) { return submitted >= 20; };
-    x.desktop = desktop(3);
+    garden::DesktopOptions d = desktop(3);
     int desktopFrames = 0;
-    x.desktop->onFrame = [&](garden::GardenSession& s, int) {
+    d.onFrame = [&](garden::GardenSession& s, int) {
         ++desktopFrames;
         EXPECT_EQ(s.navigator().mode(), garden::NavigationMode::Walk) << "the desktop walks";
         return false;
     };
+    x.desktop = garden::desktopAfterHeadset(d);
     x.script = script(kCarveSteps);
     XrRunInfo info;
     std::size_t edits = 0;

@@ -16,7 +16,7 @@
 
 #include "../garden/session_garden.h"
 #include "garden/app/garden_session.h"
-#include "garden/desktop/desktop_keys.h"
+#include "garden/window/desktop_keys.h"
 #include "tests/render/headless_imgui.h"
 #include "garden/sculpt/sculpture_edits.h"
 

@@ -1,4 +1,4 @@
-#include "garden/desktop/garden_window.h"
+#include "garden/window/garden_window.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>

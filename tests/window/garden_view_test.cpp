@@ -9,7 +9,7 @@
 #include "../garden/session_garden.h"
 #include "../render/gl_fixture.h"
 #include "garden/app/garden_session.h"
-#include "garden/desktop/garden_view.h"
+#include "garden/window/garden_view.h"
 
 namespace hg::garden {
 namespace {

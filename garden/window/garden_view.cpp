@@ -1,4 +1,4 @@
-#include "garden/desktop/garden_view.h"
+#include "garden/window/garden_view.h"
 
 #include <algorithm>
 #include <chrono>
@@ -6,7 +6,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "garden/desktop/view_lights.h"
+#include "garden/window/view_lights.h"
 #include "garden/render/material_look.h"
 #include "garden/scene/to_glm.h"
 

@@ -9,8 +9,8 @@
 #include <memory>
 #include <vector>
 
-#include "garden/desktop/desktop_keys.h"
-#include "garden/desktop/garden_view.h"
+#include "garden/window/desktop_keys.h"
+#include "garden/window/garden_view.h"
 #include "garden/hands/pointer_events.h"
 #include "garden/render/gl_context.h"
 #include "garden/render/overlay.h"

@@ -1,4 +1,4 @@
-#include "garden/desktop/desktop_keys.h"
+#include "garden/window/desktop_keys.h"
 
 #include <imgui.h>
 #include <imgui_internal.h>

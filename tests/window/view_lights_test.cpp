@@ -7,7 +7,7 @@
 #include <cmath>
 #include <vector>
 
-#include "garden/desktop/view_lights.h"
+#include "garden/window/view_lights.h"
 
 namespace hg::garden {
 namespace {

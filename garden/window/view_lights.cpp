@@ -1,4 +1,4 @@
-#include "garden/desktop/view_lights.h"
+#include "garden/window/view_lights.h"
 
 #include <algorithm>
 #include <cstddef>
