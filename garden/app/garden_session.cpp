@@ -29,6 +29,15 @@ constexpr int kLevelRefreshFrames = 45;
 // How near its triangle (metres on the ground) a drag of the selector must begin.
 constexpr double kMorphPickReach = 0.25;
 
+// The morph result a reader means: `sculpture`, or the active one for -1;
+// null when that is no morph result.
+const Sculpture* morphResultAt(const std::vector<Sculpture>& all, int sculpture, int active) {
+    if (sculpture < 0) sculpture = active;
+    if (sculpture < 0 || sculpture >= static_cast<int>(all.size())) return nullptr;
+    const Sculpture& s = all[static_cast<std::size_t>(sculpture)];
+    return s.morphResult() ? &s : nullptr;
+}
+
 // The frame's upload limit: what this frame may still show. A group larger
 // than the whole limit is shown alone, in a frame that has shown nothing.
 void limitShownBytes(poly::RemeshBudget& budget, std::size_t byteLimit, const FrameStats& st) {
@@ -98,11 +107,8 @@ GardenSession::GardenSession(GardenLoad load, SessionSettings settings)
     for (std::size_t i = 0; i < g.sculptures.size(); ++i) {
         describeSculpture(i);
         if (sculptures_[i].missing()) continue;
-        const bool morphSource = std::any_of(g.morphs.begin(), g.morphs.end(), [i](const MorphSpec& m) {
-            return std::find(m.sourceIndex.begin(), m.sourceIndex.end(), i) != m.sourceIndex.end();
-        });
         // Progressive: only the morphs' sources now (the blends need their grids).
-        (settings_.progressiveLoading && !morphSource ? later : now).push_back(i);
+        (settings_.progressiveLoading && !isMorphSource(g, i) ? later : now).push_back(i);
     }
     // Sculptures are independent: built side by side (each one's box
     // estimate runs on one thread), each into its own slot.
@@ -225,17 +231,13 @@ void GardenSession::buildMorph(std::size_t spec) {
     result.placement = m.resultPlacement;
     result.material = m.material;
     // The sources were sampled as sculptures: their boxes are known.
-    ResolvedBoxes resolved(sculptures_.size());
-    for (std::size_t i = 0; i < sculptures_.size(); ++i)
-        if (sculptures_[i].volume && !sculptures_[i].morphResult()) resolved[i] = sculptures_[i].volume->frame.modelBox;
-    MorphSourcesResult built = buildGardenMorphSources(load_, spec, 0, resolved);
+    MorphSourcesResult built = buildGardenMorphSources(load_, spec, 0, sampledModelBoxes(sculptures_));
     if (!built.sources) {
         result.error = built.error;
         sculptures_.push_back(std::move(result));
         return;
     }
     auto state = std::make_unique<MorphState>();
-    state->spec = spec;
     state->sources = std::make_unique<MorphSources>(std::move(*built.sources));
     state->balance = morphBalance(m, *state->sources);
     result.volume = std::make_unique<voxel::Volume>(makeMorphVolume(*state->sources));
@@ -265,9 +267,8 @@ void GardenSession::setActiveMorph(int sculpture) {
 }
 
 const MorphState* GardenSession::morphState(int sculpture) const {
-    if (sculpture < 0) sculpture = activeMorph_;
-    if (sculpture < 0 || sculpture >= static_cast<int>(sculptures_.size())) return nullptr;
-    return sculptures_[static_cast<std::size_t>(sculpture)].morph.get();
+    const Sculpture* s = morphResultAt(sculptures_, sculpture, activeMorph_);
+    return s ? s->morph.get() : nullptr;
 }
 
 MorphState* GardenSession::morphState(int sculpture) {
@@ -281,17 +282,14 @@ const std::optional<MorphWeights>& GardenSession::morphWeights(int sculpture) co
 }
 
 const MorphSpec* GardenSession::morphSpec(int sculpture) const {
-    if (sculpture < 0) sculpture = activeMorph_;
-    if (sculpture < 0 || sculpture >= static_cast<int>(sculptures_.size())) return nullptr;
-    const Sculpture& s = sculptures_[static_cast<std::size_t>(sculpture)];
-    return s.morphResult() ? &load_.garden->morphs[static_cast<std::size_t>(s.source.spec)] : nullptr;
+    const Sculpture* s = morphResultAt(sculptures_, sculpture, activeMorph_);
+    return s ? &load_.garden->morphs[static_cast<std::size_t>(s->source.spec)] : nullptr;
 }
 
 std::optional<MorphTriangle> GardenSession::morphTriangle(int sculpture) const {
-    if (sculpture < 0) sculpture = activeMorph_;
-    if (!morphSpec(sculpture)) return std::nullopt;
-    const auto spec = static_cast<std::size_t>(sculptures_[static_cast<std::size_t>(sculpture)].source.spec);
-    return hg::garden::morphTriangle(*load_.garden, spec);
+    const Sculpture* s = morphResultAt(sculptures_, sculpture, activeMorph_);
+    if (!s) return std::nullopt;
+    return hg::garden::morphTriangle(*load_.garden, static_cast<std::size_t>(s->source.spec));
 }
 
 void GardenSession::setActiveWeights(const MorphWeights& w) {
@@ -417,7 +415,6 @@ void GardenSession::input(const Hands& hands, double dt) {
                     const double dist = std::hypot(p[0] - q[0], p[1] - q[1]);
                     if (dist < nearest) nearest = dist, morphDragTarget_ = r;
                 }
-                if (morphDragTarget_ >= 0) activeMorph_ = morphDragTarget_;
             }
             if (morphDragTarget_ >= 0) {
                 const Point2 q = clampToTriangle(*morphTriangle(morphDragTarget_), p);
@@ -622,8 +619,8 @@ void GardenSession::advanceEdits(double milliseconds) {
 void GardenSession::settleEdits() { advanceEdits(std::numeric_limits<double>::infinity()); }
 
 const voxel::Volume* GardenSession::morphResult(int sculpture) const {
-    if (sculpture < 0) sculpture = activeMorph_;
-    return morphSpec(sculpture) ? sculptures_[static_cast<std::size_t>(sculpture)].volume.get() : nullptr;
+    const Sculpture* s = morphResultAt(sculptures_, sculpture, activeMorph_);
+    return s ? s->volume.get() : nullptr;
 }
 
 std::unique_ptr<voxel::Volume> GardenSession::blendFromScratch(int sculpture) const {

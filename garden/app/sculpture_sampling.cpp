@@ -42,4 +42,11 @@ voxel::VoxelizeResult sampleSculptureSource(const SculptureSpec& spec, const Scu
     return r;
 }
 
+ResolvedBoxes sampledModelBoxes(const std::vector<Sculpture>& sculptures) {
+    ResolvedBoxes boxes(sculptures.size());
+    for (std::size_t i = 0; i < sculptures.size(); ++i)
+        if (sculptures[i].volume && !sculptures[i].morphResult()) boxes[i] = sculptures[i].volume->frame.modelBox;
+    return boxes;
+}
+
 }  // namespace hg::garden

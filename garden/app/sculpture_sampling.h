@@ -5,6 +5,10 @@
 // source read again after it changed on disk all come here.
 #pragma once
 
+#include <vector>
+
+#include "garden/app/sculpture.h"
+#include "garden/morph/garden_morph.h"
 #include "garden/scene/garden_file.h"
 #include "io/progress.h"
 #include "voxel/sampler.h"
@@ -17,5 +21,10 @@ namespace hg::garden {
 // scan's or a mesh's level set is made whole.
 voxel::VoxelizeResult sampleSculptureSource(const SculptureSpec& spec, const SculptureLoad& load,
                                             const voxel::VolumeRequest& request, io::Progress* progress = nullptr);
+
+// The model boxes the sculptures' grids were sampled in, by index (none
+// for a morph result, one without a grid yet, or a missing one): what a
+// morph's shared box is made of without estimating the boxes again.
+ResolvedBoxes sampledModelBoxes(const std::vector<Sculpture>& sculptures);
 
 }  // namespace hg::garden

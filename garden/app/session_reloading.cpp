@@ -90,9 +90,7 @@ std::vector<GardenSession::SourceReload> GardenSession::reloadChangedSources() {
         if (stamp == 0 || stamp == s.sourceStamp) continue;
         s.sourceStamp = stamp;
         std::string problem;
-        const bool morphSource = std::any_of(g.morphs.begin(), g.morphs.end(), [i](const MorphSpec& m) {
-            return std::find(m.sourceIndex.begin(), m.sourceIndex.end(), i) != m.sourceIndex.end();
-        });
+        const bool morphSource = isMorphSource(g, i);
         SculptureLoad loaded = loadSculpture(spec);
         if (!loaded.ok()) {
             problem = loaded.error;
@@ -176,9 +174,7 @@ std::string GardenSession::replaceMorphSources(const std::vector<std::size_t>& c
     // Every morph with a changed source gets its caches first, from the new
     // files: a failure there leaves everything as it was.
     GardenLoad trial = load_;
-    ResolvedBoxes resolved(sculptures_.size());
-    for (std::size_t i = 0; i < sculptures_.size(); ++i)
-        if (sculptures_[i].volume && !sculptures_[i].morphResult()) resolved[i] = sculptures_[i].volume->frame.modelBox;
+    ResolvedBoxes resolved = sampledModelBoxes(sculptures_);
     for (std::size_t k = 0; k < changed.size(); ++k) {
         trial.sculptures[changed[k]] = loads[k];
         resolved[changed[k]] = grids[k].frame.modelBox;
@@ -189,9 +185,7 @@ std::string GardenSession::replaceMorphSources(const std::vector<std::size_t>& c
         const Sculpture& result = sculptures_[static_cast<std::size_t>(r)];
         const auto spec = static_cast<std::size_t>(result.source.spec);
         const MorphSpec& m = load_.garden->morphs[spec];
-        const bool uses = std::any_of(changed.begin(), changed.end(), [&m](std::size_t i) {
-            return std::find(m.sourceIndex.begin(), m.sourceIndex.end(), i) != m.sourceIndex.end();
-        });
+        const bool uses = std::any_of(changed.begin(), changed.end(), [&m](std::size_t i) { return feedsMorph(m, i); });
         if (!uses) continue;
         MorphSourcesResult built = buildGardenMorphSources(trial, spec, 0, resolved);
         if (!built.sources) {
@@ -209,7 +203,7 @@ std::string GardenSession::replaceMorphSources(const std::vector<std::size_t>& c
         const bool same = sameFrame(m.sources->frame, fresh->frame);
         m.blender.reset();  // it reads the old caches
         *m.sources = std::move(*fresh);
-        m.balance = morphBalance(load_.garden->morphs[m.spec], *m.sources);
+        m.balance = morphBalance(load_.garden->morphs[static_cast<std::size_t>(r.source.spec)], *m.sources);
         // The weights keep their place in the triangle, balanced for the new sources.
         MorphWeights w = weightsFromBarycentric(m.weights->barycentric, m.balance);
         w.point = m.weights->point;

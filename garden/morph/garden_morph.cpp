@@ -1,8 +1,19 @@
 #include "garden/morph/garden_morph.h"
 
+#include <algorithm>
+
 #include "voxel/sampler.h"
 
 namespace hg::garden {
+
+bool feedsMorph(const MorphSpec& morph, std::size_t sculpture) {
+    return std::find(morph.sourceIndex.begin(), morph.sourceIndex.end(), sculpture) != morph.sourceIndex.end();
+}
+
+bool isMorphSource(const Garden& garden, std::size_t sculpture) {
+    return std::any_of(garden.morphs.begin(), garden.morphs.end(),
+                       [sculpture](const MorphSpec& m) { return feedsMorph(m, sculpture); });
+}
 
 MorphTriangle morphTriangle(const Garden& garden, std::size_t morph) {
     MorphTriangle t;

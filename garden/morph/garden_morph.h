@@ -16,6 +16,11 @@
 
 namespace hg::garden {
 
+// Sculpture `sculpture` (its index in Garden::sculptures) is one of the
+// morph's three sources; ... of any of the garden's morphs.
+bool feedsMorph(const MorphSpec& morph, std::size_t sculpture);
+bool isMorphSource(const Garden& garden, std::size_t sculpture);
+
 // Corner i is source i's position (x, z). `morph` < garden.morphs.size().
 MorphTriangle morphTriangle(const Garden& garden, std::size_t morph);
 

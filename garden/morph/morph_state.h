@@ -6,7 +6,6 @@
 #pragma once
 
 #include <array>
-#include <cstddef>
 #include <memory>
 #include <optional>
 
@@ -16,8 +15,8 @@
 
 namespace hg::garden {
 
+// Which morph of the garden file it is, is its Sculpture's `source.spec`.
 struct MorphState {
-    std::size_t spec = 0;  // its entry in Garden::morphs (and GardenLoad::morphErrors)
     std::unique_ptr<MorphSources> sources;
     std::array<double, 3> balance{1.0, 1.0, 1.0};
     std::optional<MorphWeights> weights;
