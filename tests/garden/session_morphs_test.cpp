@@ -10,6 +10,7 @@
 
 #include "garden/app/garden_session.h"
 #include "garden/morph/morph_state.h"
+#include "garden/replay/replay_runner.h"
 #include "two_morph_garden.h"
 #include "voxel/volume.h"
 
@@ -198,6 +199,25 @@ TEST_F(SessionMorphs, TheTwoMorphsGardenInContentOpensWithBothBlending) {
         ASSERT_TRUE(s.morphWeights(r)) << r;
         EXPECT_EQ(differing(*s.morphResult(r), *s.blendFromScratch(r)), 0) << r;
     }
+}
+
+TEST_F(SessionMorphs, TheTwoMorphsReplayWeighsEachMorphOnItsOwn) {
+    const ReplayScript script = loadReplayScript(std::string(HG_SOURCE_DIR) + "/content/replays/two_morphs.json");
+    SessionSettings settings = test::smallSessionSettings();
+    settings.sculptureResolution = 24;
+    settings.morphResolution = 24;
+    settings.morphSamplesPerFrame = 20000;
+    settings.remeshChunksPerFrame = 64;
+    GardenSession s(loadGarden(script.garden), settings);
+    ASSERT_TRUE(runReplay(script, s, nullptr, ReplayOptions{}).ok());
+    ASSERT_TRUE(s.idle());
+    const int first = s.findSculpture("metamorphosis");
+    const int second = s.findSculpture("second metamorphosis");
+    EXPECT_NEAR(s.morphWeights(first)->w[0], 0.6, 1e-12) << "the first morph's weights, set while it was active";
+    EXPECT_EQ(s.activeMorph(), second) << "selected, then steered";
+    EXPECT_NEAR(s.morphWeights(second)->point[0], 12.5, 1e-9);
+    EXPECT_NEAR(s.morphWeights(second)->point[1], -1.5, 1e-9);
+    for (int r : {first, second}) EXPECT_EQ(differing(*s.morphResult(r), *s.blendFromScratch(r)), 0) << r;
 }
 
 }  // namespace
