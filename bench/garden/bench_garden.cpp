@@ -919,10 +919,11 @@ void stagesTable(const Options& o, nlohmann::json& json) {
         for (const char* m : modes) anyRow = anyRow || o.bench.matches(std::string("stages/") + r.name + "/" + m);
     if (!anyRow) return;
     std::printf("Stages before the render: content/replays' carving and morph replays, headless, the morph and the\n"
-                "remesh on the scheduler's time, frames paced at 90 Hz. in-frame: meshing in the frame, edits whole;\n"
-                "off-thread: meshing off the frame thread and edits spread over frames (the window's and the\n"
-                "headset's settings). CPU ms per frame: p99 / max.\n\n");
-    std::printf("| replay | remesh | frames | input | lod | morph | remesh | before render | frames over 11.1 ms | "
+                "remesh on the scheduler's time, frames paced at 90 Hz. in-frame: meshing and blending in the\n"
+                "frame, edits whole; off-thread: meshing and blending off the frame thread (the frame writes the\n"
+                "blend's batches) and edits spread over frames (the window's and the headset's settings).\n"
+                "CPU ms per frame: p99 / max.\n\n");
+    std::printf("| replay | work | frames | input | lod | morph | remesh | before render | frames over 11.1 ms | "
                 "chunks meshed | played in (s) |\n");
     std::printf("|---|---|---:|---|---|---|---|---|---:|---:|---:|\n");
     for (const Replay& rp : replays)
@@ -945,8 +946,8 @@ void stagesTable(const Options& o, nlohmann::json& json) {
             SessionSettings settings;
             settings.remeshChunksPerFrame = 0;
             settings.morphSamplesPerFrame = 0;
-            settings.remeshOffFrameThread = std::string(mode) == "off-thread";
-            settings.spreadEdits = settings.remeshOffFrameThread;
+            settings.workOffFrameThread = std::string(mode) == "off-thread";
+            settings.spreadEdits = settings.workOffFrameThread;
             settings.viewportHeight = script.viewport[1];
             GardenSession session(std::move(load), settings);
             PacedSink sink;

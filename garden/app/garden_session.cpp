@@ -18,6 +18,7 @@
 #include "garden/morph/morph_state.h"
 #include "garden/sculpt/sculpture_edits.h"
 #include "garden/scene/to_glm.h"
+#include "jobs/job_thread.h"
 #include "polygonizer/realtime/meshing_worker.h"
 #include "voxel/sampler.h"
 
@@ -505,7 +506,13 @@ void GardenSession::morph() {
             }
         };
         r.morph->blender->setViewer(toModel(r, navigator_.eye()));
-        const BlendStep step = r.morph->blender->step(budget);
+        BlendStep step;
+        if (settings_.morphSamplesPerFrame == 0 && settings_.workOffFrameThread) {
+            if (!blending_) blending_ = std::make_unique<jobs::JobThread>();
+            step = r.morph->blender->stepInBackground(budget, *blending_);
+        } else {
+            step = r.morph->blender->step(budget);
+        }
         stats().morphSamples += step.samples;
         samplesLeft -= std::min(samplesLeft, step.samples);
     }
@@ -520,7 +527,7 @@ void GardenSession::remesh() {
         if (sculptures_[i].onShow() && sculptures_[i].queue->pending() > 0)
             order.emplace_back(glm::length(sculptures_[i].worldCentre() - navigator_.eye()), i);
     std::sort(order.begin(), order.end());
-    if (settings_.remeshChunksPerFrame == 0 && settings_.remeshOffFrameThread) {
+    if (settings_.remeshChunksPerFrame == 0 && settings_.workOffFrameThread) {
         remeshInBackground(order);
         return;
     }

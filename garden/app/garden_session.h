@@ -47,6 +47,9 @@ struct MorphSources;
 struct GestureRecognizer;
 namespace deform { class DeformableModel; }
 }  // namespace hg::garden
+namespace hg::jobs {
+class JobThread;
+}
 namespace hg::voxel {
 struct VolumeRequest;
 }
@@ -72,14 +75,14 @@ struct SessionSettings {
     // gathers the chunks' samples and shows the meshes finished since the
     // last frame: it never waits for a mesh).
     std::size_t remeshChunksPerFrame = 0;
-    // With the allowance: mesh off the frame thread (false: within the
-    // frame, in batches while the allowance lasts). The window and the
-    // headset set it: their frames are paced by the display, so the worker
-    // meshes while a frame waits. A caller that runs frames back to back
-    // until idle (tests, headless replays) would only spin while the worker
-    // meshes, so it stays off by default; bench_garden's stages rows
+    // With the allowances: mesh and blend morphs off the frame thread
+    // (false: within the frame, in batches while the allowance lasts). The
+    // window and the headset set it: their frames are paced by the display,
+    // so the workers run while a frame waits. A caller that runs frames back
+    // to back until idle (tests, headless replays) would only spin while the
+    // workers run, so it stays off by default; bench_garden's stages rows
     // measure both.
-    bool remeshOffFrameThread = false;
+    bool workOffFrameThread = false;
     int chunkSize = 32;
     int maxLevel = 3;
     double pixelError = 1.0;
@@ -588,9 +591,11 @@ private:
 
     GardenLoad load_;
     SessionSettings settings_;
-    // Meshes chunks off the frame thread (made at the first use); declared
-    // before the sculptures so that their queues' jobs go first.
+    // Mesh chunks and blend morphs off the frame thread (made at the first
+    // use); declared before the sculptures, whose queues and blenders let
+    // go of their jobs as they go.
     std::unique_ptr<poly::MeshingWorker> meshing_;
+    std::unique_ptr<jobs::JobThread> blending_;
     std::vector<Sculpture> sculptures_;
     Navigator navigator_;
     FrameScheduler scheduler_;

@@ -229,7 +229,7 @@ int runDesktopGarden(const DesktopOptions& options) {
         // The window opens at once; sculptures arrive nearest first and the
         // Garden panel says how many are still coming.
         settings.progressiveLoading = true;
-        settings.remeshOffFrameThread = true;  // vsync paces the frames; the worker meshes meanwhile
+        settings.workOffFrameThread = true;  // vsync paces the frames; the workers mesh and blend meanwhile
         settings.spreadEdits = true;           // a big edit lands over a few frames, none held
         OpenedSession opened = openLoadedOrSession(
             std::move(load), {options.session, options.garden, options.gardenGiven, "hypergarden (desktop)"}, settings);

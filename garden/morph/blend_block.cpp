@@ -47,6 +47,18 @@ BlendInputs inputs(const MorphSources& s, const MorphWeights& weights) {
     return in;
 }
 
+void sampleValues(const BlendItem& item, std::uint32_t s0, std::uint32_t s1, const BlendInputs& in, float* out) {
+    const auto& o = item.origin;
+    const bool coarse = item.pass == BlendPass::Coarse;
+    const float* src[3];
+    for (std::size_t f = 0; f < 3; ++f) src[f] = coarse ? in.f[f]->coarse(o) : in.f[f]->block(o);
+    std::size_t n = 0;
+    forSamples(itemLattice(o, item.pass, in.box), o, s0, s1, [&](int i, int j, int k, int off) {
+        const int at = coarse ? coarseOffset(i - o[0], j - o[1], k - o[2]) : off;
+        out[n++] = blendValue(src[0][at], src[1][at], src[2][at], in.w[0], in.w[1], in.w[2], in.band);
+    });
+}
+
 void diffBytes(const std::uint32_t* __restrict oldBits, const std::uint32_t* __restrict newBits,
                const std::uint8_t* __restrict oldOn, const std::uint8_t* __restrict newOn, std::uint8_t* __restrict diff) {
     for (int i = 0; i < kBlockVoxels; ++i)

@@ -63,6 +63,19 @@ struct Lattice {
 // The voxels of the block at `origin` that `pass` blends, clipped to the box.
 Lattice itemLattice(const std::array<int, 3>& origin, BlendPass pass, const voxel::IndexBox& indexBox);
 
+// Calls visit(i, j, k, leafOffset) for samples [s0, s1) of the lattice of
+// the block at `o`.
+template <class Visit>
+void forSamples(const Lattice& l, const std::array<int, 3>& o, std::uint32_t s0, std::uint32_t s1, Visit&& visit) {
+    const std::uint32_t nx = static_cast<std::uint32_t>(l.count[0]), ny = static_cast<std::uint32_t>(l.count[1]);
+    for (std::uint32_t r = s0; r < s1; ++r) {
+        const int i = l.start[0] + l.stride * static_cast<int>(r % nx);
+        const int j = l.start[1] + l.stride * static_cast<int>((r / nx) % ny);
+        const int k = l.start[2] + l.stride * static_cast<int>(r / (nx * ny));
+        visit(i, j, k, blockOffset(i - o[0], j - o[1], k - o[2]));
+    }
+}
+
 struct BlendInputs {
     const BlockedField* f[3];
     float w[3];
@@ -79,6 +92,11 @@ struct BlockValues {
     std::uint8_t on[kBlockVoxels];
     FloatLeaf::NodeMaskType mask;
 };
+
+// The blended values of samples [s0, s1) of `item`, in order, into `out`
+// (s1 - s0 floats). The coarse lattice reads the sources' compact copies
+// (the same floats as their blocks).
+void sampleValues(const BlendItem& item, std::uint32_t s0, std::uint32_t s1, const BlendInputs& in, float* out);
 
 // The whole block at `o`: every voxel of it inside the index box blended,
 // the rest the background (outside, inactive).

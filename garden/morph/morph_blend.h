@@ -33,6 +33,17 @@
 // boxes whose stored values changed. When the list drains the result
 // equals blendMorph(sources, weights) bit for bit (values and active states
 // at every voxel, and the same leaves).
+//
+// Off the frame thread (stepInBackground, what the window and the headset
+// run): the next items of the list go to a thread as a job that computes
+// their values from the sources alone (garden/morph/blend_job.h); a later
+// step, at a frame boundary, writes them into the grid within its budget
+// (a memcmp and a copy per block, and the caller's commit) and hands the
+// thread the next items. The frame never waits for the thread. The values
+// are the same kernel's, so a list drained this way gives the same grid
+// bit for bit. A restart drops the job under way (it is for the old
+// weights); a job is sized to about 8 ms of the thread's time, so the frame
+// writes one job while the thread computes the next.
 #pragma once
 
 #include <array>
@@ -45,6 +56,10 @@
 #include "garden/morph/morph_weights.h"
 #include "voxel/index_box.h"
 #include "voxel/volume.h"
+
+namespace hg::jobs {
+class JobThread;
+}
 
 namespace hg::garden {
 
@@ -115,11 +130,19 @@ public:
     // Blends the next items within `budget`. The result grid's tree may gain
     // or lose leaves: ValueAccessors on it must not be held across a step.
     BlendStep step(const BlendBudget& budget);
+    // The same work with the blending done by `thread`: writes what the job
+    // it finished computed (within `budget`, whose commit is called as in
+    // step()), then hands it the next items. Never waits; the report counts
+    // the samples written.
+    BlendStep stepInBackground(const BlendBudget& budget, jobs::JobThread& thread);
 
+    // Nothing left to blend or write (a job under way counts as work left).
     bool done() const;
     bool coarseDone() const;
     std::uint64_t totalSamples() const;
     std::uint64_t remainingSamples() const;
+    // Items are with a thread or wait to be written.
+    bool inBackground() const;
     const MorphWeights& weights() const;
     // The list in processing order, and the index of the next item.
     const std::vector<BlendItem>& workList() const;

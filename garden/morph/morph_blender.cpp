@@ -4,9 +4,11 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <exception>
 #include <stdexcept>
 
 #include "garden/morph/blend_block_vdb.h"
+#include "garden/morph/blend_job.h"
 #include "garden/morph/morph_blend.h"
 
 namespace hg::garden {
@@ -16,6 +18,19 @@ using namespace blend;
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+constexpr std::uint64_t kFirstTimedBatch = 4096;
+// A job is sized to take the thread about this long, at the rate its last
+// job measured: about a frame, so that the frame writes one job while the
+// thread computes the next.
+constexpr double kJobSeconds = 0.008;
+constexpr std::uint64_t kMostJobSamples = 16 * kBlendBatch;
+// A job's values are written in slices of at most this many samples (16
+// blocks), the time checked between them: writing a block that did not
+// change is a compare, one that did costs its commit too (the LOD pyramid,
+// the remesh queue), so the rate swings from slice to slice and large
+// slices would overshoot the stage's share.
+constexpr std::uint64_t kWriteSlice = 8192;
 
 std::string checkResult(const MorphSources& s, const voxel::Volume& result) {
     const voxel::VolumeFrame& a = s.frame;
@@ -46,8 +61,25 @@ struct MorphBlender::Impl {
     double samplesPerSecond = 0.0;   // measured by the last timed step (0: none yet)
     std::array<double, 3> sortedFor{};  // the viewer the list is sorted for
     bool wholeListSorted = false;       // ... all of it, not only what was left
+    // Off the frame thread: the job a thread computes, and the one whose
+    // values are being written (pieces [written, ...) left). A restart
+    // bumps the generation: a job of an older one is dropped.
+    std::shared_ptr<BlendJob> computing;
+    std::shared_ptr<BlendJob> writing;
+    std::size_t written = 0;
+    std::uint64_t generation = 0;
+    double jobSamplesPerSecond = 0.0;   // the thread's rate, from the last job
+    double writeSamplesPerSecond = 0.0; // the frame's rate writing jobs' values
 
     Impl(const MorphSources& s, voxel::Volume& r) : sources(s), result(r) {}
+    // A job under way reads the sources, which go with the blender: the
+    // only place the frame thread waits for one (it stops at its next
+    // range of pieces once abandoned).
+    ~Impl() {
+        if (!computing) return;
+        computing->abandon();
+        computing->wait();
+    }
 
     std::array<double, 3> toIndex(const std::array<double, 3>& model) const {
         const voxel::VolumeFrame& f = sources.frame;
@@ -111,6 +143,10 @@ struct MorphBlender::Impl {
     }
 
     void restart() {
+        ++generation;
+        if (computing) computing->abandon();  // dropped once the thread lets go of it
+        writing.reset();
+        written = 0;
         if (items.empty()) build();
         else if (!wholeListSorted || viewer != sortedFor) sortFrom(0);
         next = 0;
@@ -132,6 +168,10 @@ struct MorphBlender::Impl {
         int lo[3] = {0, 0, 0}, hi[3] = {-1, -1, -1};
         bool collapse = false;
         float collapseValue = 0.0f;
+        // Values computed off the frame thread (null: blend them here): the
+        // whole block's, or samples s0..s1's in order.
+        const BlockValues* block = nullptr;
+        const float* values = nullptr;
 
         void noteChange(int i, int j, int k) {
             if (changed++ == 0) {
@@ -143,19 +183,6 @@ struct MorphBlender::Impl {
             lo[2] = std::min(lo[2], k); hi[2] = std::max(hi[2], k);
         }
     };
-
-    // Calls visit(i, j, k, leafOffset) for samples [s0, s1) of the lattice.
-    template <class Visit>
-    static void forSamples(const Lattice& l, const std::array<int, 3>& o, std::uint32_t s0, std::uint32_t s1,
-                           Visit&& visit) {
-        const std::uint32_t nx = static_cast<std::uint32_t>(l.count[0]), ny = static_cast<std::uint32_t>(l.count[1]);
-        for (std::uint32_t r = s0; r < s1; ++r) {
-            const int i = l.start[0] + l.stride * static_cast<int>(r % nx);
-            const int j = l.start[1] + l.stride * static_cast<int>((r / nx) % ny);
-            const int k = l.start[2] + l.stride * static_cast<int>(r / (nx * ny));
-            visit(i, j, k, blockOffset(i - o[0], j - o[1], k - o[2]));
-        }
-    }
 
     // Blends the segment's samples; writes them straight into the block's
     // leaf when it has one (each block appears once per batch, so workers
@@ -176,8 +203,9 @@ struct MorphBlender::Impl {
     // values and one mask.
     void blendWholeBlock(Segment& s, const BlendInputs& in) const {
         const auto& o = items[s.item].origin;
-        BlockValues values;
-        blendBlock(o, in, values);
+        BlockValues local;
+        if (!s.block) blendBlock(o, in, local);
+        const BlockValues& values = s.block ? *s.block : local;
         std::uint8_t diff[kBlockVoxels];
         if (s.leaf) {
             const float* old = s.leaf->buffer().data();
@@ -207,18 +235,23 @@ struct MorphBlender::Impl {
         if (s.leaf) storeBlock(*s.leaf, values);  // else writeNewLeaf() blends it again
     }
 
-    // Part of a block, or the coarse lattice: sample by sample. The coarse
-    // lattice reads the sources' compact copies (the same floats).
+    // The segment's sample values: computed off the frame thread, or here
+    // into `local` (a block's worth).
+    const float* segmentValues(const Segment& s, const BlendInputs& in, float* local) const {
+        if (s.values) return s.values;
+        sampleValues(items[s.item], s.s0, s.s1, in, local);
+        return local;
+    }
+
+    // Part of a block, or the coarse lattice: sample by sample.
     void blendSamples(Segment& s, const BlendInputs& in) const {
         const BlendItem& item = items[s.item];
         const auto& o = item.origin;
-        const Lattice l = itemLattice(o, item.pass, in.box);
-        const float* src[3];
-        for (std::size_t f = 0; f < 3; ++f)
-            src[f] = item.pass == BlendPass::Coarse ? in.f[f]->coarse(o) : in.f[f]->block(o);
-        forSamples(l, o, s.s0, s.s1, [&](int i, int j, int k, int off) {
-            const int at = item.pass == BlendPass::Coarse ? coarseOffset(i - o[0], j - o[1], k - o[2]) : off;
-            const float v = blendValue(src[0][at], src[1][at], src[2][at], in.w[0], in.w[1], in.w[2], in.band);
+        float local[kBlockVoxels];
+        const float* values = segmentValues(s, in, local);
+        std::size_t n = 0;
+        forSamples(itemLattice(o, item.pass, in.box), o, s.s0, s.s1, [&](int i, int j, int k, int off) {
+            const float v = values[n++];
             const bool on = std::fabs(v) < in.band;
             const auto index = static_cast<openvdb::Index>(off);
             if (s.leaf) {
@@ -239,28 +272,31 @@ struct MorphBlender::Impl {
         const BlendItem& item = items[s.item];
         const auto& o = item.origin;
         if (s.whole) {
+            if (s.block) {
+                storeBlock(*s.leaf, *s.block);
+                return;
+            }
             BlockValues values;
             blendBlock(o, in, values);
             storeBlock(*s.leaf, values);
             return;
         }
-        const Lattice l = itemLattice(o, item.pass, in.box);
-        const float* a = in.f[0]->block(o);
-        const float* b = in.f[1]->block(o);
-        const float* c = in.f[2]->block(o);
-        forSamples(l, o, s.s0, s.s1, [&](int, int, int, int off) {
-            const float v = blendValue(a[off], b[off], c[off], in.w[0], in.w[1], in.w[2], in.band);
+        float local[kBlockVoxels];
+        const float* values = segmentValues(s, in, local);
+        std::size_t n = 0;
+        forSamples(itemLattice(o, item.pass, in.box), o, s.s0, s.s1, [&](int, int, int, int off) {
+            const float v = values[n++];
             s.leaf->setValueOnly(static_cast<openvdb::Index>(off), v);
             s.leaf->setActiveState(static_cast<openvdb::Index>(off), std::fabs(v) < in.band);
         });
     }
 
-    // Blends `samples` samples from the cursor on, never past the end of the
-    // coarse pass (so that no block appears twice in one batch).
-    void runBatch(std::uint64_t samples, BlendStep& report) {
+    // The next `samples` samples from the cursor on, never past the end of
+    // the coarse pass (so that no block appears twice in one batch); the
+    // cursor moves past them.
+    std::vector<Segment> take(std::uint64_t samples) {
         std::vector<Segment> segs;
         const std::size_t passEnd = next < coarseItems ? coarseItems : items.size();
-        std::uint64_t batchSamples = 0;
         while (samples > 0 && next < passEnd) {
             const BlendItem& item = items[next];
             Segment s;
@@ -269,7 +305,7 @@ struct MorphBlender::Impl {
             s.s1 = static_cast<std::uint32_t>(std::min<std::uint64_t>(item.samples, nextDone + samples));
             s.finishes = s.s1 == item.samples;
             samples -= s.s1 - s.s0;
-            batchSamples += s.s1 - s.s0;
+            consumed += s.s1 - s.s0;
             if (s.finishes) {
                 ++next;
                 nextDone = 0;
@@ -278,11 +314,90 @@ struct MorphBlender::Impl {
             }
             segs.push_back(std::move(s));
         }
-        if (segs.empty()) return;
-        report.samples += batchSamples;
-        consumed += batchSamples;
+        return segs;
+    }
 
-        const BlendInputs in = inputs(sources, weights);
+    // Blends `samples` samples from the cursor on, in the frame.
+    void runBatch(std::uint64_t samples, BlendStep& report) {
+        std::vector<Segment> segs = take(samples);
+        if (!segs.empty()) write(segs, inputs(sources, weights), report);
+    }
+
+    // --- Off the frame thread (stepInBackground) ---
+
+    bool current(const std::shared_ptr<BlendJob>& job) const { return job && job->generation() == generation; }
+    static bool holdsCoarse(const std::shared_ptr<BlendJob>& job) {
+        return job && !job->pieces().empty() && job->pieces().front().item.pass == BlendPass::Coarse;
+    }
+    // Samples handed to jobs of these weights and not yet written.
+    std::uint64_t inJobs() const {
+        std::uint64_t n = current(computing) ? computing->samples() : 0;
+        if (writing)
+            for (std::size_t i = written; i < writing->pieces().size(); ++i)
+                n += writing->pieces()[i].s1 - writing->pieces()[i].s0;
+        return n;
+    }
+
+    // The next items from the cursor on, as a job for `thread`.
+    void submit(jobs::JobThread& thread) {
+        const double want = jobSamplesPerSecond > 0.0 ? jobSamplesPerSecond * kJobSeconds
+                                                      : static_cast<double>(kBlendBatch);
+        const auto samples = static_cast<std::uint64_t>(std::clamp(want, static_cast<double>(kFirstTimedBatch),
+                                                                   static_cast<double>(kMostJobSamples)));
+        auto job = std::make_shared<BlendJob>(inputs(sources, weights), generation);
+        for (const Segment& s : take(samples)) job->add(s.item, items[s.item], s.s0, s.s1);
+        computing = job;
+        thread.submit(std::move(job));
+    }
+
+    // The job the thread finished becomes the one to write, unless it is
+    // for older weights (dropped). Never waits.
+    void takeFinishedJob() {
+        if (writing || !computing || !computing->done()) return;
+        const std::shared_ptr<BlendJob> job = std::move(computing);
+        computing.reset();
+        if (job->generation() != generation) return;
+        if (job->error) std::rethrow_exception(job->error);
+        if (!job->ran()) {
+            // Dropped by a thread that stopped: its items were taken from
+            // the list, so the list starts again (what is blended already
+            // comes out the same and changes nothing).
+            restart();
+            return;
+        }
+        if (job->seconds() > 0.0) jobSamplesPerSecond = static_cast<double>(job->samples()) / job->seconds();
+        writing = job;
+        written = 0;
+    }
+
+    // The written job's next pieces, about `samples` of them (at least one
+    // piece), as segments carrying their computed values.
+    std::vector<Segment> jobSegments(std::uint64_t samples) {
+        std::vector<Segment> segs;
+        std::uint64_t n = 0;
+        const auto& pieces = writing->pieces();
+        while (written < pieces.size() && (segs.empty() || n < samples)) {
+            const BlendPiece& p = pieces[written++];
+            Segment s;
+            s.item = p.index;
+            s.s0 = p.s0;
+            s.s1 = p.s1;
+            s.finishes = p.finishes;
+            if (p.whole) s.block = &writing->block(p);
+            else s.values = writing->values(p);
+            n += p.s1 - p.s0;
+            segs.push_back(s);
+        }
+        return segs;
+    }
+
+    // Blends the segments (with the values a job computed, where it did)
+    // and stores them in the result grid; the report gains their samples
+    // and changes.
+    void write(std::vector<Segment>& segs, const BlendInputs& in, BlendStep& report) {
+        std::uint64_t batchSamples = 0;
+        for (const Segment& s : segs) batchSamples += s.s1 - s.s0;
+        report.samples += batchSamples;
         openvdb::FloatTree& tree = voxel::vdb(result).tree();
         // About 4096 samples per task.
         const std::size_t grain = std::max<std::size_t>(1, 4096 / (1 + batchSamples / segs.size()));
@@ -352,54 +467,104 @@ void MorphBlender::setViewer(const std::array<double, 3>& viewer) {
 }
 
 namespace {
-constexpr std::uint64_t kFirstTimedBatch = 4096;
+
+// How many samples the next batch of a step may take (0: stop): what the
+// budget's count leaves, and under a time limit what the rate fits.
+std::uint64_t nextBatch(const BlendBudget& budget, const BlendStep& report, Clock::time_point start, double lastRate,
+                        std::uint64_t most = kBlendBatch) {
+    std::uint64_t batch = most;
+    if (budget.maxSamples > 0) batch = std::min(batch, budget.maxSamples - report.samples);
+    const double limit = budget.maxMilliseconds * 1e-3;
+    if (limit <= 0.0) return batch;
+    const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
+    if (elapsed >= limit) return 0;
+    if (report.samples > 0) {
+        // What the rate measured so far fits into the time left.
+        const double fits = static_cast<double>(report.samples) / std::max(elapsed, 1e-9) * (limit - elapsed);
+        return std::min<std::uint64_t>(batch, static_cast<std::uint64_t>(fits));
+    }
+    // The first batch of a step: half of what the last step's rate fits
+    // (the rate changes from region to region: blocks near the surface cost
+    // more than empty ones), or a small one to measure it (a whole batch
+    // can take several milliseconds, more than a frame's share).
+    const double fits = lastRate > 0.0 ? 0.5 * lastRate * (limit - elapsed) : static_cast<double>(kFirstTimedBatch);
+    return std::min<std::uint64_t>(batch, std::max<std::uint64_t>(1, static_cast<std::uint64_t>(fits)));
+}
+
+// Hands each batch's changed boxes to the caller, within the step.
+void commitNew(const BlendBudget& budget, const BlendStep& report, std::size_t reported) {
+    if (budget.commit && report.changed.size() > reported)
+        budget.commit(std::vector<voxel::IndexBox>(report.changed.begin() + static_cast<std::ptrdiff_t>(reported),
+                                                   report.changed.end()));
+}
+
+void finishReport(const MorphBlender& blender, const BlendBudget& budget, Clock::time_point start, BlendStep& report,
+                  double& rate) {
+    report.coarseDone = blender.coarseDone();
+    report.done = blender.done();
+    report.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    if (budget.maxMilliseconds > 0.0 && report.samples > 0 && report.seconds > 0.0)
+        rate = static_cast<double>(report.samples) / report.seconds;
+}
+
 }  // namespace
 
 BlendStep MorphBlender::step(const BlendBudget& budget) {
     Impl& m = *impl_;
+    // The frame blends itself from here on; what the jobs held was taken
+    // from the list, so it starts again (a job under way is abandoned, not
+    // waited for).
+    if (m.writing || m.current(m.computing)) m.restart();
     const auto start = Clock::now();
     BlendStep report;
-    const double limit = budget.maxMilliseconds * 1e-3;
     while (m.next < m.items.size()) {
-        std::uint64_t batch = kBlendBatch;
-        if (budget.maxSamples > 0) batch = std::min(batch, budget.maxSamples - report.samples);
-        if (limit > 0.0) {
-            double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
-            if (elapsed >= limit) break;
-            if (report.samples > 0) {
-                // What the rate measured so far fits into the time left.
-                double fits = static_cast<double>(report.samples) / std::max(elapsed, 1e-9) * (limit - elapsed);
-                batch = std::min<std::uint64_t>(batch, static_cast<std::uint64_t>(fits));
-            } else {
-                // The first batch of a step: half of what the last step's
-                // rate fits (the rate changes from region to region: blocks
-                // near the surface cost more than empty ones), or a small
-                // one to measure it (a whole batch can take several
-                // milliseconds, more than a frame's share).
-                const double fits = m.samplesPerSecond > 0.0 ? 0.5 * m.samplesPerSecond * (limit - elapsed)
-                                                              : static_cast<double>(kFirstTimedBatch);
-                batch = std::min<std::uint64_t>(batch, std::max<std::uint64_t>(1, static_cast<std::uint64_t>(fits)));
-            }
-        }
+        const std::uint64_t batch = nextBatch(budget, report, start, m.samplesPerSecond);
         if (batch == 0) break;
         const std::size_t reported = report.changed.size();
         m.runBatch(batch, report);
-        if (budget.commit && report.changed.size() > reported)
-            budget.commit(std::vector<voxel::IndexBox>(report.changed.begin() + static_cast<std::ptrdiff_t>(reported),
-                                                       report.changed.end()));
+        commitNew(budget, report, reported);
     }
-    report.coarseDone = coarseDone();
-    report.done = done();
-    report.seconds = std::chrono::duration<double>(Clock::now() - start).count();
-    if (limit > 0.0 && report.samples > 0 && report.seconds > 0.0)
-        m.samplesPerSecond = static_cast<double>(report.samples) / report.seconds;
+    finishReport(*this, budget, start, report, m.samplesPerSecond);
     return report;
 }
 
-bool MorphBlender::done() const { return impl_->next >= impl_->items.size(); }
-bool MorphBlender::coarseDone() const { return impl_->next >= impl_->coarseItems; }
+BlendStep MorphBlender::stepInBackground(const BlendBudget& budget, jobs::JobThread& thread) {
+    Impl& m = *impl_;
+    const auto start = Clock::now();
+    BlendStep report;
+    for (;;) {
+        m.takeFinishedJob();
+        if (!m.writing) break;
+        const std::uint64_t most = budget.maxMilliseconds > 0.0 ? kWriteSlice : kBlendBatch;
+        const std::uint64_t batch = nextBatch(budget, report, start, m.writeSamplesPerSecond, most);
+        if (batch == 0) break;
+        std::vector<Impl::Segment> segs = m.jobSegments(batch);
+        const std::size_t reported = report.changed.size();
+        m.write(segs, m.writing->inputs(), report);
+        commitNew(budget, report, reported);
+        if (m.written == m.writing->pieces().size()) {
+            m.writing.reset();
+            m.written = 0;
+        }
+    }
+    if (!m.computing && m.next < m.items.size()) m.submit(thread);
+    finishReport(*this, budget, start, report, m.writeSamplesPerSecond);
+    return report;
+}
+
+bool MorphBlender::done() const {
+    const Impl& m = *impl_;
+    return m.next >= m.items.size() && !m.writing && !m.current(m.computing);
+}
+
+bool MorphBlender::coarseDone() const {
+    const Impl& m = *impl_;
+    return m.next >= m.coarseItems && !m.holdsCoarse(m.writing) && !(m.current(m.computing) && m.holdsCoarse(m.computing));
+}
+
+bool MorphBlender::inBackground() const { return impl_->writing || impl_->current(impl_->computing); }
 std::uint64_t MorphBlender::totalSamples() const { return impl_->total; }
-std::uint64_t MorphBlender::remainingSamples() const { return impl_->total - impl_->consumed; }
+std::uint64_t MorphBlender::remainingSamples() const { return impl_->total - impl_->consumed + impl_->inJobs(); }
 const MorphWeights& MorphBlender::weights() const { return impl_->weights; }
 const std::vector<BlendItem>& MorphBlender::workList() const { return impl_->items; }
 std::size_t MorphBlender::cursor() const { return impl_->next; }

@@ -1,4 +1,4 @@
-// Meshes chunks off the frame thread (docs/design.md §5, "Work off the frame
+// Meshes chunks off the frame thread (docs/design.md §5, "Meshing off the frame
 // thread"). The remesh queue gathers a batch of chunks' samples on the frame
 // thread (ChunkSamples: a copy, so the grid may change at once) and hands
 // them to the worker as a job; the worker meshes the job's chunks on its own
@@ -8,67 +8,27 @@
 // abandoned and skipped or dropped.
 #pragma once
 
-#include <atomic>
-#include <condition_variable>
-#include <deque>
-#include <exception>
 #include <memory>
-#include <mutex>
-#include <thread>
 #include <vector>
 
+#include "jobs/job_thread.h"
 #include "polygonizer/realtime/chunk_mesher.h"
 
 namespace hg::poly {
 
-struct MeshingJob {
+struct MeshingJob final : jobs::BackgroundJob {
     std::vector<std::size_t> chunks;        // which chunk each sample set is
     std::vector<ChunkLod> lods;             // the level each was gathered at
     std::vector<std::uint64_t> stamps;      // the chunk's dirty stamp when gathered
     std::vector<ChunkSamples> samples;      // released once meshed
-    std::vector<std::shared_ptr<const Mesh>> meshes;  // filled by the worker
-    std::exception_ptr error;               // what meshing threw (the queue rethrows it)
-
-    bool done() const { return done_.load(std::memory_order_acquire); }
-    // Blocks until the worker has finished (or skipped) the job.
-    void wait() const;
-    // The queue no longer wants the meshes: the worker skips a job it has
-    // not started.
-    void abandon() { abandoned_.store(true, std::memory_order_release); }
+    // Filled by the worker; empty for a job dropped by a worker that stopped.
+    std::vector<std::shared_ptr<const Mesh>> meshes;
 
 private:
-    friend class MeshingWorker;
-    void finish();
-    std::atomic<bool> done_{false};
-    std::atomic<bool> abandoned_{false};
-    mutable std::mutex mutex_;
-    mutable std::condition_variable finished_;
+    void run() override;
 };
 
-class MeshingWorker {
-public:
-    MeshingWorker();
-    // Finishes the job under way; jobs not started are dropped (marked done,
-    // without meshes).
-    ~MeshingWorker();
-    MeshingWorker(const MeshingWorker&) = delete;
-    MeshingWorker& operator=(const MeshingWorker&) = delete;
-
-    // Queued behind the jobs already handed over (first come, first meshed).
-    void submit(std::shared_ptr<MeshingJob> job);
-    // Jobs handed over and not yet finished, and of those not yet started.
-    std::size_t backlog() const;
-    std::size_t queued() const;
-
-private:
-    void run();
-
-    mutable std::mutex mutex_;
-    std::condition_variable wake_;
-    std::deque<std::shared_ptr<MeshingJob>> jobs_;
-    std::size_t busy_ = 0;  // jobs taken and under way
-    bool stopping_ = false;
-    std::thread thread_;
-};
+// The thread the queue's jobs run on (one per garden session).
+class MeshingWorker final : public jobs::JobThread {};
 
 }  // namespace hg::poly

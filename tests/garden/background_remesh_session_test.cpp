@@ -1,8 +1,9 @@
-// The running garden meshing off the frame thread (the scheduler's remesh
-// allowance, SessionSettings::remeshOffFrameThread): a walk, a morph and
-// strokes made while chunks are with the worker settle on the meshes of the
-// grids as they are, the same meshes as remeshing within the frame, and the
-// frames keep running while the worker meshes.
+// The running garden working off the frame thread (the scheduler's
+// allowances, SessionSettings::workOffFrameThread): a walk, a morph and
+// strokes made while chunks and blend batches are with the workers settle
+// on the grids and meshes of working within the frame (the morph result's
+// grid bit for bit that of the blend from scratch), and the frames keep
+// running while the workers work.
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -68,10 +69,11 @@ TEST_F(BackgroundRemeshSession, SettlesOnTheSameMeshesAsRemeshingInTheFrame) {
     const ReplayScript script = walkMorphAndCarve(dir.string() + "/garden.json");
     Shown in[2];
     std::size_t framesWhileMeshing = 0;
+    std::size_t blendedInFrames = 0;
     for (int offThread = 0; offThread < 2; ++offThread) {
         SessionSettings settings = test::smallSessionSettings();
         settings.remeshChunksPerFrame = 0;  // the scheduler's allowance
-        settings.remeshOffFrameThread = offThread != 0;
+        settings.workOffFrameThread = offThread != 0;
         GardenSession s(loadGarden(writeGarden()), settings);
         PacedSink paced;
         const ReplayResult r = runReplay(script, s, offThread ? &paced : nullptr, ReplayOptions{});
@@ -81,11 +83,15 @@ TEST_F(BackgroundRemeshSession, SettlesOnTheSameMeshesAsRemeshingInTheFrame) {
         if (offThread) {
             // Frames that showed nothing new while chunks were pending: the
             // frame ran on while the worker meshed.
-            for (const FrameStats& f : r.stats) framesWhileMeshing += f.remeshPending > 0 && f.chunksMeshed == 0;
+            for (const FrameStats& f : r.stats) {
+                framesWhileMeshing += f.remeshPending > 0 && f.chunksMeshed == 0;
+                blendedInFrames += f.morphSamples > 0;
+            }
         }
         // The morph result shows the mesh of its from-scratch grid.
         const Sculpture& result = s.sculptures()[static_cast<std::size_t>(s.findSculpture("metamorphosis"))];
         const std::unique_ptr<voxel::Volume> scratch = s.blendFromScratch();
+        EXPECT_EQ(test::differingVoxels(*result.volume, *scratch), 0);
         poly::LodPyramid pyramid(*scratch, s.settings().maxLevel + 1);
         for (std::size_t c = 0; c < result.queue->count(); ++c) {
             const poly::Mesh fresh = poly::meshChunk(pyramid, *result.layout, c, result.queue->shownLod(c));
@@ -108,6 +114,7 @@ TEST_F(BackgroundRemeshSession, SettlesOnTheSameMeshesAsRemeshingInTheFrame) {
         EXPECT_EQ(in[0].indices[i], in[1].indices[i]) << "chunk " << i;
     }
     EXPECT_GT(framesWhileMeshing, 0u) << "off the frame thread, a frame does not wait for the worker";
+    EXPECT_GT(blendedInFrames, 1u) << "the blend's batches were written over several frames";
 }
 
 }  // namespace

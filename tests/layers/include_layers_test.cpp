@@ -22,7 +22,7 @@ namespace fs = std::filesystem;
 // must not include each other.
 const std::map<std::string, int>& layers() {
     static const std::map<std::string, int> l = {
-        {"frep/kernels", 0},   {"io", 0},
+        {"frep/kernels", 0},   {"io", 0}, {"jobs", 0},
         {"frep/language", 1},
         {"frep/compiler", 2},
         {"frep/eval", 3},
@@ -62,7 +62,7 @@ struct Include {
 std::vector<Include> projectIncludes(const fs::path& root) {
     std::vector<Include> out;
     const std::regex include(R"re(^\s*#\s*include\s+"([^"]+)")re");
-    for (const char* top : {"frep", "io", "voxel", "polygonizer", "garden", "xr", "cli"}) {
+    for (const char* top : {"frep", "io", "jobs", "voxel", "polygonizer", "garden", "xr", "cli"}) {
         if (!fs::exists(root / top)) continue;
         for (const auto& entry : fs::recursive_directory_iterator(root / top)) {
             const std::string ext = entry.path().extension().string();
@@ -144,7 +144,7 @@ TEST(IncludeLayers, OnlyTheRendererCallsOpenGL) {
     const std::regex call(R"re((^|[^\w:.>])gl(?!X)[A-Z][a-z]\w*\()re");
     std::ostringstream wrong;
     std::size_t files = 0;
-    for (const char* top : {"frep", "io", "voxel", "polygonizer", "garden", "xr", "cli"}) {
+    for (const char* top : {"frep", "io", "jobs", "voxel", "polygonizer", "garden", "xr", "cli"}) {
         for (const auto& entry : fs::recursive_directory_iterator(root / top)) {
             const std::string ext = entry.path().extension().string();
             if (!entry.is_regular_file() || (ext != ".h" && ext != ".cpp")) continue;
