@@ -5,13 +5,11 @@
 // a viewer that moves, a thread that stops, a switch back to the frame).
 #include <gtest/gtest.h>
 
-#include <atomic>
 #include <chrono>
-#include <condition_variable>
-#include <mutex>
 #include <thread>
 
 #include "garden/morph/morph_blend.h"
+#include "../jobs/gate_job.h"
 #include "jobs/job_thread.h"
 #include "morph_blend_fixture.h"
 #include "polygonizer/realtime/lod_pyramid.h"
@@ -20,29 +18,15 @@ namespace hg::garden {
 namespace {
 
 using namespace test;
+using jobs::test::Gate;
 
-// Holds the thread until opened: whatever is submitted behind it waits.
-class Gate final : public jobs::BackgroundJob {
-public:
-    void open() {
-        {
-            std::lock_guard<std::mutex> lock(mutex_);
-            open_ = true;
-        }
-        opened_.notify_all();
-    }
-    std::atomic<bool> entered{false};
-
-private:
-    void run() override {
-        entered = true;
-        std::unique_lock<std::mutex> lock(mutex_);
-        opened_.wait(lock, [this] { return open_; });
-    }
-    std::mutex mutex_;
-    std::condition_variable opened_;
-    bool open_ = false;
-};
+// A budget of time only, as the session's morph stage gives.
+BlendBudget timed(double ms) {
+    BlendBudget b;
+    b.maxSamples = 0;
+    b.maxMilliseconds = ms;
+    return b;
+}
 
 // Steps until drained, yielding between steps as frames would; returns the
 // samples written.
@@ -66,9 +50,7 @@ TEST_F(BlendJobTest, DrainsToTheFromScratchBlendWithEveryChangeReported) {
     blender.restart(w2, viewer);
     const std::uint64_t total = blender.totalSamples();
     jobs::JobThread thread;
-    BlendBudget budget;
-    budget.maxSamples = 0;
-    budget.maxMilliseconds = 0.3;
+    BlendBudget budget = timed(0.3);
     budget.commit = [&](const std::vector<voxel::IndexBox>& boxes) {
         for (const auto& b : boxes) pyramid.update(b);
     };
@@ -94,13 +76,7 @@ TEST_F(BlendJobTest, DrainsToTheFromScratchBlendWithEveryChangeReported) {
     EXPECT_EQ(leafOrigins(result), leafOrigins(scratch));
     EXPECT_EQ(result.activeVoxelCount(), scratch.activeVoxelCount());
     // The pyramid followed the reported boxes.
-    poly::LodPyramid fresh(scratch, 4);
-    const voxel::IndexBox& b = sources->frame.indexBox;
-    for (int level = 1; level < 4; ++level)
-        for (int k = (b.lo[2] >> level) - 1; k <= (b.hi[2] >> level) + 1; ++k)
-            for (int j = (b.lo[1] >> level) - 1; j <= (b.hi[1] >> level) + 1; ++j)
-                for (int i = (b.lo[0] >> level) - 1; i <= (b.hi[0] >> level) + 1; ++i)
-                    ASSERT_EQ(bits(pyramid.value(level, i, j, k)), bits(fresh.value(level, i, j, k)));
+    expectPyramidOf(pyramid, scratch, sources->frame.indexBox);
     // Drained: a step writes nothing and hands nothing over.
     const BlendStep idle = blender.stepInBackground(budget, thread);
     EXPECT_EQ(idle.samples, 0u);
@@ -116,9 +92,7 @@ TEST_F(BlendJobTest, TheFrameNeverWaitsForTheThread) {
     jobs::JobThread thread;
     auto gate = std::make_shared<Gate>();
     thread.submit(gate);
-    BlendBudget budget;
-    budget.maxSamples = 0;
-    budget.maxMilliseconds = 0.3;
+    BlendBudget budget = timed(0.3);
     // The first step hands the thread a job, which waits behind the gate;
     // the steps after it return at once with nothing written.
     for (int frame = 0; frame < 20; ++frame) {
@@ -146,9 +120,7 @@ TEST_F(BlendJobTest, NewWeightsDropTheJobUnderWay) {
     MorphBlender blender(*sources, result);
     blender.restart(w2, viewer);
     jobs::JobThread thread;
-    BlendBudget budget;
-    budget.maxSamples = 0;
-    budget.maxMilliseconds = 0.2;
+    BlendBudget budget = timed(0.2);
     blender.stepInBackground(budget, thread);  // the coarse pass, as one job
     settle(thread);
     // Its values are written (some of them) while the next job waits behind a gate.
@@ -178,9 +150,7 @@ TEST_F(BlendJobTest, AViewerThatMovesKeepsTheJobsItems) {
     MorphBlender blender(*sources, result);
     blender.restart(w3, viewer);
     jobs::JobThread thread;
-    BlendBudget budget;
-    budget.maxSamples = 0;
-    budget.maxMilliseconds = 0.1;
+    BlendBudget budget = timed(0.1);
     const std::array<std::array<double, 3>, 3> places{{{-1.5, -1.0, 1.3}, {0.0, 2.0, 0.0}, {1.5, 1.1, -1.0}}};
     for (int steps = 0; !blender.done(); ++steps) {
         blender.setViewer(places[static_cast<std::size_t>(steps / 7) % places.size()]);
@@ -195,9 +165,7 @@ TEST_F(BlendJobTest, AJobDroppedByAThreadThatStopsIsBlendedAgain) {
     voxel::Volume result = blendMorph(*sources, w1);
     MorphBlender blender(*sources, result);
     blender.restart(w2, viewer);
-    BlendBudget budget;
-    budget.maxSamples = 0;
-    budget.maxMilliseconds = 0.2;
+    BlendBudget budget = timed(0.2);
     {
         auto stopping = std::make_unique<jobs::JobThread>();
         auto gate = std::make_shared<Gate>();
@@ -225,15 +193,13 @@ TEST_F(BlendJobTest, BackToTheFrameMidwayStartsTheListAgain) {
     MorphBlender blender(*sources, result);
     blender.restart(w2, viewer);
     jobs::JobThread thread;
-    BlendBudget timed;
-    timed.maxSamples = 0;
-    timed.maxMilliseconds = 0.2;
-    blender.stepInBackground(timed, thread);
+    const BlendBudget timedBudget = timed(0.2);
+    blender.stepInBackground(timedBudget, thread);
     settle(thread);
     auto gate = std::make_shared<Gate>();
     thread.submit(gate);
     while (!gate->entered) std::this_thread::yield();
-    blender.stepInBackground(timed, thread);  // writes part of the coarse pass; the next job waits
+    blender.stepInBackground(timedBudget, thread);  // writes part of the coarse pass; the next job waits
     ASSERT_TRUE(blender.inBackground());
     // The frame blends itself now, without waiting for the job behind the gate.
     BlendBudget counted;

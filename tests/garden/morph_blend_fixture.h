@@ -12,6 +12,7 @@
 
 #include "garden/morph/morph_blend.h"
 #include "garden_test_util.h"
+#include "polygonizer/realtime/lod_pyramid.h"
 #include "voxel/volume_vdb.h"
 
 namespace hg::garden::test {
@@ -67,6 +68,18 @@ inline std::set<std::array<int, 3>> leafOrigins(const voxel::Volume& v) {
     for (auto it = voxel::vdb(v).tree().cbeginLeaf(); it; ++it)
         out.insert({it->origin().x(), it->origin().y(), it->origin().z()});
     return out;
+}
+
+// A pyramid kept up to date by changed boxes holds the values of one built
+// from `scratch`, on every level above 0 over the frame's box.
+inline void expectPyramidOf(const poly::LodPyramid& pyramid, const voxel::Volume& scratch, const voxel::IndexBox& b) {
+    poly::LodPyramid fresh(scratch, 4);
+    for (int level = 1; level < 4; ++level)
+        for (int k = (b.lo[2] >> level) - 1; k <= (b.hi[2] >> level) + 1; ++k)
+            for (int j = (b.lo[1] >> level) - 1; j <= (b.hi[1] >> level) + 1; ++j)
+                for (int i = (b.lo[0] >> level) - 1; i <= (b.hi[0] >> level) + 1; ++i)
+                    ASSERT_EQ(bits(pyramid.value(level, i, j, k)), bits(fresh.value(level, i, j, k)))
+                        << "level " << level << " at " << i << " " << j << " " << k;
 }
 
 class MorphBlend : public ::testing::Test {

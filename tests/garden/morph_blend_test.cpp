@@ -138,14 +138,7 @@ TEST_F(MorphBlend, ChangedBoxesCoverEveryChangeAndKeepAPyramidUpToDate) {
     EXPECT_GT(gone, 0u);
     EXPECT_GT(added, 0u);
     // The pyramid followed the reported boxes to the rebuilt one's values.
-    poly::LodPyramid fresh(scratch, 4);
-    const voxel::IndexBox& b = sources->frame.indexBox;
-    for (int level = 1; level < 4; ++level)
-        for (int k = (b.lo[2] >> level) - 1; k <= (b.hi[2] >> level) + 1; ++k)
-            for (int j = (b.lo[1] >> level) - 1; j <= (b.hi[1] >> level) + 1; ++j)
-                for (int i = (b.lo[0] >> level) - 1; i <= (b.hi[0] >> level) + 1; ++i)
-                    ASSERT_EQ(bits(pyramid.value(level, i, j, k)), bits(fresh.value(level, i, j, k)))
-                        << "level " << level << " at " << i << " " << j << " " << k;
+    expectPyramidOf(pyramid, scratch, sources->frame.indexBox);
 }
 
 TEST_F(MorphBlend, CoarseLatticeFirstThenNearestBlocksFirst) {

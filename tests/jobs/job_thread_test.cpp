@@ -5,17 +5,18 @@
 // waits for ever.
 #include <gtest/gtest.h>
 
-#include <atomic>
-#include <condition_variable>
 #include <mutex>
 #include <stdexcept>
 #include <thread>
 #include <vector>
 
+#include "gate_job.h"
 #include "jobs/job_thread.h"
 
 namespace hg::jobs {
 namespace {
+
+using test::Gate;
 
 // Appends its number to a shared list.
 class Numbered final : public BackgroundJob {
@@ -32,28 +33,6 @@ private:
     int n_;
     std::vector<int>& out_;
     std::mutex& m_;
-};
-
-class Gate final : public BackgroundJob {
-public:
-    void open() {
-        {
-            std::lock_guard<std::mutex> lock(mutex_);
-            open_ = true;
-        }
-        opened_.notify_all();
-    }
-    std::atomic<bool> entered{false};
-
-private:
-    void run() override {
-        entered = true;
-        std::unique_lock<std::mutex> lock(mutex_);
-        opened_.wait(lock, [this] { return open_; });
-    }
-    std::mutex mutex_;
-    std::condition_variable opened_;
-    bool open_ = false;
 };
 
 class Throws final : public BackgroundJob {
