@@ -480,6 +480,7 @@ void GardenSession::morph() {
     std::vector<int> order = morphResults();
     std::stable_partition(order.begin(), order.end(), [this](int r) { return r == activeMorph_; });
     std::uint64_t samplesLeft = settings_.morphSamplesPerFrame;
+    const bool offThread = settings_.morphSamplesPerFrame == 0 && settings_.workOffFrameThread;
     const double until = scheduler_.elapsedMs() + scheduler_.allowanceMs(Stage::Morph);
     bool first = true;
     for (int index : order) {
@@ -492,7 +493,13 @@ void GardenSession::morph() {
         } else {
             budget.maxSamples = 0;
             const double left = until - scheduler_.elapsedMs();
-            if (left <= 0.0 && !first) break;
+            if (left <= 0.0 && !first) {
+                // Off the frame thread a morph with no time left still hands
+                // the thread its next batch (which costs nothing here), after
+                // writing at most one block.
+                if (!offThread) break;
+                budget.maxSamples = 1;
+            }
             budget.maxMilliseconds = std::max(left, 0.01);  // 0 would mean no limit
         }
         first = false;
@@ -507,7 +514,7 @@ void GardenSession::morph() {
         };
         r.morph->blender->setViewer(toModel(r, navigator_.eye()));
         BlendStep step;
-        if (settings_.morphSamplesPerFrame == 0 && settings_.workOffFrameThread) {
+        if (offThread) {
             if (!blending_) blending_ = std::make_unique<jobs::JobThread>();
             step = r.morph->blender->stepInBackground(budget, *blending_);
         } else {

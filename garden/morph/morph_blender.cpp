@@ -473,7 +473,12 @@ namespace {
 std::uint64_t nextBatch(const BlendBudget& budget, const BlendStep& report, Clock::time_point start, double lastRate,
                         std::uint64_t most = kBlendBatch) {
     std::uint64_t batch = most;
-    if (budget.maxSamples > 0) batch = std::min(batch, budget.maxSamples - report.samples);
+    if (budget.maxSamples > 0) {
+        // (A job's values are written a whole piece at a time, so a step may
+        // pass the count by less than a block.)
+        if (report.samples >= budget.maxSamples) return 0;
+        batch = std::min(batch, budget.maxSamples - report.samples);
+    }
     const double limit = budget.maxMilliseconds * 1e-3;
     if (limit <= 0.0) return batch;
     const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();

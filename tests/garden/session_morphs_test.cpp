@@ -6,6 +6,9 @@
 // several weighs the first.
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <thread>
+
 #include <glm/gtc/quaternion.hpp>
 
 #include "garden/app/garden_session.h"
@@ -65,6 +68,33 @@ TEST_F(SessionMorphs, EachMorphBlendsItsOwnSourcesAndTheSelectorActsOnTheActiveO
         EXPECT_EQ(differing(*s->morphResult(r), *scratch), 0) << s->sculptures()[static_cast<std::size_t>(r)].name;
     }
     EXPECT_GT(differing(*s->morphResult(first), *s->morphResult(second)), 0) << "two blends, two grids";
+}
+
+TEST_F(SessionMorphs, OffTheFrameThreadEachMorphDrainsToItsOwnBlend) {
+    // The window's and the headset's settings: the blends' batches on a job
+    // thread, written by the frames within the stage's share.
+    SessionSettings settings = test::smallSessionSettings();
+    settings.morphSamplesPerFrame = 0;
+    settings.workOffFrameThread = true;
+    GardenSession s(loadGarden(test::writeTwoMorphGarden(dir)), settings);
+    const int first = s.findSculpture("metamorphosis");
+    const int second = s.findSculpture("second");
+    s.setMorphWeights({0.2, 0.2, 0.6});
+    s.select(second);
+    s.setMorphWeights({0.7, 0.2, 0.1});
+    std::size_t framesWriting = 0;
+    for (int f = 0; f < 20000 && !s.idle(); ++f) {
+        const FrameStats& stats = s.frame(FrameInput(Hands{}, 1.0 / 90.0));
+        framesWriting += stats.morphSamples > 0;
+        std::this_thread::sleep_for(std::chrono::microseconds(200));  // as a display paces frames
+    }
+    ASSERT_TRUE(s.idle());
+    EXPECT_GT(framesWriting, 1u);
+    for (int r : {first, second}) {
+        std::unique_ptr<voxel::Volume> scratch = s.blendFromScratch(r);
+        ASSERT_TRUE(scratch && s.morphResult(r));
+        EXPECT_EQ(differing(*s.morphResult(r), *scratch), 0) << s.sculptures()[static_cast<std::size_t>(r)].name;
+    }
 }
 
 TEST_F(SessionMorphs, TheActiveMorphBlendsFirstAndTheOthersTakeWhatItLeaves) {
