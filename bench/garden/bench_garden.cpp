@@ -70,6 +70,7 @@
 #include "../bench_common.h"
 
 #include "garden/app/garden_session.h"
+#include "garden/app/memory_report.h"
 #include "garden/replay/replay_runner.h"
 #include "garden/replay/replay_script.h"
 #include "garden/scene/json_reader.h"
@@ -742,10 +743,10 @@ void scaleTable(const Options& o, nlohmann::json& json) {
         headed = true;
         std::printf("| sculptures | chunks | first frame (s) | loading at first frame | settled (s) | %sinput | lod | remesh | %stotal | "
                     "frames over 11.1 ms | chunks tested by LOD (mean) | triangles shown (mean) | %snew mesh KiB per frame (max) | "
-                    "peak memory (MiB) |\n",
+                    "peak memory (MiB) | held after the walk: grids / levels / meshes / morph sources (MiB) |\n",
                     gl ? "draw | " : "", gl ? "upload | render | GPU ms | " : "",
                     gl ? "chunks drawn (mean) | triangles drawn (mean) | draw calls (mean) | " : "");
-        std::printf("|---:|---:|---:|---:|---:|%s---|---|---|%s---|---:|---:|---:|%s---:|---:|\n", gl ? "---|" : "",
+        std::printf("|---:|---:|---:|---:|---:|%s---|---|---|%s---|---:|---:|---:|%s---:|---:|---|\n", gl ? "---|" : "",
                     gl ? "---|---|---|" : "", gl ? "---:|---:|---:|" : "");
     };
     for (int n : o.scaleCounts) {
@@ -840,6 +841,11 @@ void scaleTable(const Options& o, nlohmann::json& json) {
             for (const Sculpture& st : scene.session->sculptures())
                 if (st.layout) chunks += st.layout->count();
             const double peakMiB = static_cast<double>(peakResidentBytes()) / (1024.0 * 1024.0);
+            const MemoryReport held = memoryReport(*scene.session);
+            auto mib = [](std::size_t b) { return static_cast<double>(b) / (1024.0 * 1024.0); };
+            char heldCell[96];
+            std::snprintf(heldCell, sizeof heldCell, "%.0f / %.0f / %.0f / %.0f", mib(held.grids), mib(held.levels),
+                          mib(held.meshes), mib(held.morphSources));
             std::string drawColumns, glColumns, countColumns;
             if (gl) {
                 drawColumns = modes[m] + " | ";
@@ -851,12 +857,12 @@ void scaleTable(const Options& o, nlohmann::json& json) {
                 countColumns = b;
             }
             head();
-            std::printf("| %d | %zu | %.2f | %zu | %.1f (%zu frames) | %s%s | %s | %s | %s%s | %zu of %zu | %.0f | %.0f | %s%.0f | %.0f |\n",
+            std::printf("| %d | %zu | %.2f | %zu | %.1f (%zu frames) | %s%s | %s | %s | %s%s | %zu of %zu | %.0f | %.0f | %s%.0f | %.0f | %s |\n",
                         n, chunks, firstFrame, loadingAtFirst, settled, settleFrames, drawColumns.c_str(),
                         spreadCell(stage(Stage::Input)).c_str(), spreadCell(stage(Stage::Lod)).c_str(),
                         spreadCell(stage(Stage::Remesh)).c_str(), glColumns.c_str(), spreadCell(spread(totals)).c_str(),
                         over, run.frames.size(), spread(visited).mean, spread(shown).mean, countColumns.c_str(),
-                        static_cast<double>(bytesMax) / 1024.0, peakMiB);
+                        static_cast<double>(bytesMax) / 1024.0, peakMiB, heldCell);
             std::fflush(stdout);
             nlohmann::json stages = nlohmann::json::object();
             for (int k = 0; k < kStageCount; ++k)
@@ -873,7 +879,9 @@ void scaleTable(const Options& o, nlohmann::json& json) {
                                      {"chunks_drawn", spreadJson(spread(drawn))},
                                      {"triangles_drawn", spreadJson(spread(triangles))},
                                      {"frames_over_budget", over}, {"lod_chunks_visited", spreadJson(spread(visited))},
-                                     {"triangles_shown", spreadJson(spread(shown))}, {"peak_resident_bytes", peakResidentBytes()}});
+                                     {"triangles_shown", spreadJson(spread(shown))}, {"peak_resident_bytes", peakResidentBytes()},
+                                     {"held_bytes", {{"grids", held.grids}, {"levels", held.levels}, {"meshes", held.meshes},
+                                                     {"edit_bases", held.editBases}, {"morph_sources", held.morphSources}}}});
         }
     }
     std::printf("\n");

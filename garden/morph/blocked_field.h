@@ -47,6 +47,8 @@ public:
     // Every block, one after another (edge blocks padded).
     const float* data() const { return values_.data(); }
     std::size_t size() const { return values_.size(); }
+    // Memory held: the blocks and the coarse copy.
+    std::size_t bytes() const { return (values_.capacity() + coarse_.capacity()) * sizeof(float); }
 
 private:
     std::size_t blockIndex(const std::array<int, 3>& origin) const {

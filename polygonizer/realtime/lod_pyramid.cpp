@@ -1,6 +1,7 @@
 #include "polygonizer/realtime/lod_pyramid.h"
 
 #include <stdexcept>
+#include <type_traits>
 #include <vector>
 
 #include "voxel/volume_vdb.h"
@@ -11,6 +12,21 @@ namespace {
 
 using openvdb::Coord;
 
+// The coarse levels' trees: the same 8^3 leaves as the sculpture's grid,
+// with internal nodes of 8^3 children instead of OpenVDB's 32^3 and 16^3.
+// A standard tree's top node is a 32,768-entry table (256 KiB) and its
+// next a 4,096-entry one (32 KiB), however few voxels they hold; a frame's
+// index box starts below 0 (the band's padding), so a small sculpture's
+// grid straddles the origin and needs up to eight of each. At 64^3 the
+// three coarse levels of a sculpture held about 2 MiB, more than its grid.
+// Here those tables are 512 entries (4 KiB); a top node covers 512 voxels
+// a side, enough for a coarse level in one or two per axis. Values, and
+// so meshes, are the same: only the tree's shape differs.
+using CoarseTree = openvdb::tree::Tree4<float, 3, 3, 3>::Type;
+using CoarseGrid = openvdb::Grid<CoarseTree>;
+static_assert(std::is_same_v<CoarseTree::LeafNodeType, openvdb::FloatTree::LeafNodeType>,
+              "both trees share their leaves (gather reads either)");
+
 // Level-L index of the first level-L voxel at or above level-0 index v.
 int ceilShift(int v, int level) { return -((-v) >> level); }
 int floorShift(int v, int level) { return v >> level; }
@@ -19,16 +35,19 @@ int floorShift(int v, int level) { return v >> level; }
 
 struct LodPyramid::Impl {
     const voxel::Volume* volume;
-    std::vector<openvdb::FloatGrid::Ptr> grids;  // levels 1..n-1 (level 0 is the volume's)
+    std::vector<CoarseGrid::Ptr> grids;  // levels 1..n-1 (level 0 is the volume's)
 
-    const openvdb::FloatGrid& grid(int level) const {
-        return level == 0 ? voxel::vdb(*volume) : *grids[static_cast<size_t>(level - 1)];
+    // f(tree) with level `level`'s tree (of either type).
+    template <class F>
+    decltype(auto) withTree(int level, F&& f) const {
+        if (level == 0) return f(voxel::vdb(*volume).tree());
+        return f(grids[static_cast<size_t>(level - 1)]->tree());
     }
 
     // Level-L voxels sampling the level-0 box, from level 0 directly.
     std::size_t resample(int level, const voxel::IndexBox& box) {
-        openvdb::FloatGrid& coarse = *grids[static_cast<size_t>(level - 1)];
-        openvdb::FloatGrid::Accessor out = coarse.getAccessor();
+        CoarseGrid& coarse = *grids[static_cast<size_t>(level - 1)];
+        CoarseGrid::Accessor out = coarse.getAccessor();
         openvdb::FloatGrid::ConstAccessor in = voxel::vdb(*volume).getConstAccessor();
         const float band = volume->frame.band;
         std::size_t n = 0;
@@ -48,12 +67,17 @@ struct LodPyramid::Impl {
     // Whole level from the level below: tiles first (scaled), then the
     // even voxels of its leaves.
     void build(int level) {
-        const openvdb::FloatGrid& fine = grid(level - 1);
-        auto coarse = openvdb::FloatGrid::create(fine.background());
-        auto xform = fine.transform().copy();
-        xform->preScale(2.0);
+        auto coarse = CoarseGrid::create(voxel::vdb(*volume).background());
+        auto xform = voxel::vdb(*volume).transform().copy();
+        xform->preScale(static_cast<double>(1 << level));
         coarse->setTransform(xform);
-        for (auto it = fine.tree().cbeginValueAll(); it; ++it) {
+        withTree(level - 1, [&](const auto& fine) { halve(fine, *coarse); });
+        grids.push_back(coarse);
+    }
+
+    template <class FineTree>
+    static void halve(const FineTree& fine, CoarseGrid& coarse) {
+        for (auto it = fine.cbeginValueAll(); it; ++it) {
             // Internal nodes list every empty slot as a background tile: those
             // the coarse grid's background already holds.
             if (it.isVoxelValue() || (!it.isValueOn() && *it == fine.background())) continue;
@@ -62,10 +86,10 @@ struct LodPyramid::Impl {
             Coord lo(ceilShift(bb.min().x(), 1), ceilShift(bb.min().y(), 1), ceilShift(bb.min().z(), 1));
             Coord hi(floorShift(bb.max().x(), 1), floorShift(bb.max().y(), 1), floorShift(bb.max().z(), 1));
             if (lo.x() <= hi.x() && lo.y() <= hi.y() && lo.z() <= hi.z())
-                coarse->tree().fill(openvdb::CoordBBox(lo, hi), *it, it.isValueOn());
+                coarse.tree().fill(openvdb::CoordBBox(lo, hi), *it, it.isValueOn());
         }
-        openvdb::FloatGrid::Accessor out = coarse->getAccessor();
-        for (auto leaf = fine.tree().cbeginLeaf(); leaf; ++leaf)
+        CoarseGrid::Accessor out = coarse.getAccessor();
+        for (auto leaf = fine.cbeginLeaf(); leaf; ++leaf)
             for (auto v = leaf->cbeginValueAll(); v; ++v) {
                 const Coord c = v.getCoord();
                 if ((c.x() & 1) || (c.y() & 1) || (c.z() & 1)) continue;
@@ -73,7 +97,6 @@ struct LodPyramid::Impl {
                 if (v.isValueOn()) out.setValueOn(half, *v);
                 else out.setValueOff(half, *v);
             }
-        grids.push_back(coarse);
     }
 };
 
@@ -87,17 +110,26 @@ LodPyramid::~LodPyramid() = default;
 
 int LodPyramid::levels() const { return static_cast<int>(impl_->grids.size()) + 1; }
 
-float LodPyramid::value(int level, int i, int j, int k) const {
-    return impl_->grid(level).tree().getValue(Coord(i, j, k));
+std::size_t LodPyramid::memoryBytes() const {
+    std::size_t n = 0;
+    for (const auto& g : impl_->grids) n += static_cast<std::size_t>(g->memUsage());
+    return n;
 }
 
-void LodPyramid::gather(int level, const voxel::IndexBox& box, float* out) const {
+float LodPyramid::value(int level, int i, int j, int k) const {
+    return impl_->withTree(level, [&](const auto& tree) { return tree.getValue(Coord(i, j, k)); });
+}
+
+namespace {
+
+// LodPyramid::gather on one level's tree (of either type).
+template <class Tree>
+void gatherFrom(const Tree& tree, const voxel::Volume& volume, int level, const voxel::IndexBox& box, float* out) {
     // A leaf at a time (one probe per 8^3 block, then its buffer), not a
     // tree lookup per voxel: this is most of a chunk remesh otherwise.
-    const openvdb::FloatTree& tree = impl_->grid(level).tree();
     const float background = tree.background();
     // The level-L indices whose level-0 position lies in the index box.
-    const voxel::IndexBox& inside = impl_->volume->frame.indexBox;
+    const voxel::IndexBox& inside = volume.frame.indexBox;
     int in[2][3];
     for (int a = 0; a < 3; ++a) {
         in[0][a] = ceilShift(inside.lo[a], level);
@@ -138,6 +170,13 @@ void LodPyramid::gather(int level, const voxel::IndexBox& box, float* out) const
                     }
             }
 }
+
+}  // namespace
+
+void LodPyramid::gather(int level, const voxel::IndexBox& box, float* out) const {
+    impl_->withTree(level, [&](const auto& tree) { gatherFrom(tree, *impl_->volume, level, box, out); });
+}
+
 
 std::size_t LodPyramid::update(const voxel::IndexBox& box) {
     std::size_t n = 0;

@@ -31,6 +31,15 @@ std::size_t meshBytes(const Mesh& m) {
     return (m.positions.size() + m.normals.size()) * sizeof(float) + m.indices.size() * sizeof(std::uint32_t);
 }
 
+std::size_t RemeshQueue::meshBytesHeld() const {
+    std::size_t n = 0;
+    for (const Slot& s : slots_) {
+        if (s.shown) n += meshBytes(*s.shown);
+        if (s.staged && s.staged != s.shown) n += meshBytes(*s.staged);
+    }
+    return n;
+}
+
 RemeshQueue::RemeshQueue(const LodPyramid& pyramid, const ChunkLayout& layout, const std::vector<int>& levels)
     : pyramid_(pyramid), layout_(layout), slots_(layout.count()) {
     const std::vector<ChunkLod> lods = chunkLods(layout, levels);

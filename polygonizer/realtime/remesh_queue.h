@@ -107,6 +107,9 @@ public:
     // of chunks asks for them every frame at no cost.
     std::size_t pending() const { return dirty_; }
     std::size_t shownTriangles() const { return shownTriangles_; }
+    // Bytes of the meshes held, shown and staged (meshBytes; a walk over
+    // the chunks: for reports, not every frame).
+    std::size_t meshBytesHeld() const;
     std::size_t count() const { return slots_.size(); }
 
 private:

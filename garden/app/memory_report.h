@@ -1,0 +1,26 @@
+// What a running garden holds in memory, by kind (issue 25: "a memory
+// budget that the user can set and the program reports"; the report comes
+// first, so that a budget knows what it would page). Read on the session's
+// thread; it walks every chunk, so it is for reports (the stats panel,
+// benches), not every frame.
+#pragma once
+
+#include <cstddef>
+
+namespace hg::garden {
+
+class GardenSession;
+
+struct MemoryReport {
+    std::size_t grids = 0;         // the sculptures' grids (LOD level 0)
+    std::size_t levels = 0;        // the LOD pyramids' coarser levels
+    std::size_t meshes = 0;        // chunk meshes held for drawing (shown and staged)
+    std::size_t editBases = 0;     // edited sculptures' grids before their edits
+    std::size_t morphSources = 0;  // the morphs' source caches
+    std::size_t sculptures = 0;    // sculptures with a grid
+    std::size_t total() const { return grids + levels + meshes + editBases + morphSources; }
+};
+
+MemoryReport memoryReport(const GardenSession& session);
+
+}  // namespace hg::garden
