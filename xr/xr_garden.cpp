@@ -363,7 +363,8 @@ private:
         ImGui::Text("tool radius %.3f m", session_.tool().radius);
         if (desktopButton_ && ImGui::Button("Desktop (F9)")) desktopAsked_ = true;
         ImGui::End();
-        garden::drawStatsPanel(session_.scheduler().history());
+        garden::drawStatsPanel(session_.scheduler().history(), false,
+                               [this]() -> const garden::MemoryReport& { return memoryWatch_.read(session_); });
         overlay_->render();
     }
 
@@ -401,6 +402,7 @@ private:
     int scriptFrame_ = 0;
     std::unique_ptr<Controllers> controllers_;
     garden::Overlay* overlay_ = nullptr;  // the mirror's panels (none when hidden)
+    garden::MemoryWatch memoryWatch_{std::chrono::milliseconds(2000)};  // the stats panel's memory lines
     std::array<garden::ImageTarget, 2> targets_;
     WorldGrab grab_;
     HandPanel panel_;

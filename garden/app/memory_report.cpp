@@ -24,4 +24,14 @@ MemoryReport memoryReport(const GardenSession& session) {
     return r;
 }
 
+const MemoryReport& MemoryWatch::read(const GardenSession& session) {
+    const auto now = std::chrono::steady_clock::now();
+    if (!any_ || now - taken_ >= every_) {
+        last_ = memoryReport(session);
+        taken_ = now;
+        any_ = true;
+    }
+    return last_;
+}
+
 }  // namespace hg::garden

@@ -5,6 +5,7 @@
 // benches), not every frame.
 #pragma once
 
+#include <chrono>
 #include <cstddef>
 
 namespace hg::garden {
@@ -22,5 +23,19 @@ struct MemoryReport {
 };
 
 MemoryReport memoryReport(const GardenSession& session);
+
+// The report taken again at most every `every` (for a panel drawn every
+// frame: a report walks every grid's tree).
+class MemoryWatch {
+public:
+    explicit MemoryWatch(std::chrono::milliseconds every = std::chrono::milliseconds(1000)) : every_(every) {}
+    const MemoryReport& read(const GardenSession& session);
+
+private:
+    std::chrono::milliseconds every_;
+    std::chrono::steady_clock::time_point taken_{};
+    bool any_ = false;
+    MemoryReport last_;
+};
 
 }  // namespace hg::garden

@@ -326,6 +326,7 @@ int runDesktopOn(GardenSession& session, GardenWindow& gardenWindow, const Deskt
     events = WindowEvents{};
     // Exports go next to the session, or into the working folder without one.
     ExportPanel exportPanel(options.session);
+    MemoryWatch memoryWatch(std::chrono::milliseconds(2000));  // the stats panel's memory lines
     AddPanel addPanel;
     Notice notice;
     std::string headsetMessage;
@@ -356,7 +357,8 @@ int runDesktopOn(GardenSession& session, GardenWindow& gardenWindow, const Deskt
         if (link && link->panel) link->goTo = link->panel->draw(session, link->recorder);
         ImGui::End();
         drawToolPanel(session);
-        drawStatsPanel(session.scheduler().history(), pressed.stats);
+        drawStatsPanel(session.scheduler().history(), pressed.stats,
+                       [&]() -> const MemoryReport& { return memoryWatch.read(session); });
         drawHistoryPanel(session, showHistory);
         drawHelpPanel(showHelp, {0.5f * static_cast<float>(fb.x), static_cast<float>(fb.y)});
         if (drawFirstRunPanel(firstRun)) firstRunDismissed();

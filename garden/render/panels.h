@@ -9,6 +9,7 @@
 #include <glm/vec2.hpp>
 
 #include "garden/app/frame_stats.h"
+#include "garden/app/memory_report.h"
 
 namespace hg::garden {
 
@@ -19,7 +20,10 @@ struct KeyRow;
 // morph, remesh and upload counters and queues, triangles and draw calls,
 // and a graph of the frame time over the history with the budget as a line.
 // Folded to its title at first; `toggle` unfolds it, or folds it again (F3).
-void drawStatsPanel(const FrameHistory& history, bool toggle = false);
+// `memory` (may be empty): what the session holds, shown below the counters;
+// called only while the panel is unfolded (a report walks every grid).
+void drawStatsPanel(const FrameHistory& history, bool toggle = false,
+                    const std::function<const MemoryReport&()>& memory = {});
 constexpr const char* kStatsPanelTitle = "Frame stats (F3)";
 
 // The tool panel: the tool in hand and its parameters (the session's

@@ -49,7 +49,7 @@ void frameGraph(const FrameHistory& history, double budgetMs) {
 
 }  // namespace
 
-void drawStatsPanel(const FrameHistory& history, bool toggle) {
+void drawStatsPanel(const FrameHistory& history, bool toggle, const std::function<const MemoryReport&()>& memory) {
     // Always fitted to its contents: they change from "no frames yet" to the
     // full panel, and a size fitted once would clip them.
     // Folded at first: numbers for whoever looks for them, not a new user's view.
@@ -103,6 +103,16 @@ void drawStatsPanel(const FrameHistory& history, bool toggle) {
         counterRow("chunks drawn", last->chunksDrawn);
         counterRow("draw calls", last->drawCalls);
         ImGui::EndTable();
+    }
+    if (memory) {
+        const MemoryReport& held = memory();
+        // What the garden holds, by kind: the sculptures' grids first (the
+        // most of it), then their coarser levels, meshes, edits' bases and
+        // the morphs' source caches.
+        auto mib = [](std::size_t b) { return static_cast<double>(b) / (1024.0 * 1024.0); };
+        ImGui::Text("memory held: %.0f MiB for %zu sculptures", mib(held.total()), held.sculptures);
+        ImGui::Text("grids %.0f, levels %.0f, meshes %.0f, edit bases %.0f, morph sources %.0f MiB", mib(held.grids),
+                    mib(held.levels), mib(held.meshes), mib(held.editBases), mib(held.morphSources));
     }
     frameGraph(history, last->budgetMs);
     ImGui::End();

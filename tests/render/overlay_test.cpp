@@ -186,6 +186,34 @@ TEST_F(HeadlessImGui, StatsPanelDrawsWithAndWithoutFrames) {
     // The graph draws a segment per frame kept (4 vertices each).
     EXPECT_GT(full, one + 4 * 100);
     EXPECT_EQ(sampleHistory(300).frames().size(), 120u);
+    // Given what the session holds, it adds two lines, and asks only while
+    // unfolded.
+    MemoryReport held;
+    held.grids = 300u << 20;
+    held.levels = 40u << 20;
+    held.sculptures = 200;
+    int asked = 0;
+    const std::function<const MemoryReport&()> memory = [&]() -> const MemoryReport& {
+        ++asked;
+        return held;
+    };
+    int withMemory = 0;
+    for (int f = 0; f < 2; ++f) {
+        ImGui::NewFrame();
+        drawStatsPanel(sampleHistory(300), false, memory);
+        ImGui::Render();
+        withMemory = ImGui::GetDrawData()->TotalVtxCount;
+    }
+    EXPECT_GT(withMemory, full + 200) << "the memory lines";
+    EXPECT_GT(asked, 0);
+    ImGui::SetWindowCollapsed(kStatsPanelTitle, true);
+    asked = 0;
+    for (int f = 0; f < 2; ++f) {
+        ImGui::NewFrame();
+        drawStatsPanel(sampleHistory(300), false, memory);
+        ImGui::Render();
+    }
+    EXPECT_EQ(asked, 0) << "folded, it does not walk the grids";
 }
 
 TEST_F(GlTest, OverlayDrawsOverTheSceneWithoutGlErrors) {
