@@ -29,6 +29,15 @@ protected:
         for (int f = 0; f < 3000 && !s.idle(); ++f) s.frame(FrameInput(Hands{}, 1.0 / 90.0));
         ASSERT_TRUE(s.idle());
     }
+    // content/gardens/two-morphs.json at 24^3, settling in a few frames.
+    static SessionSettings contentGardenSettings() {
+        SessionSettings settings = test::smallSessionSettings();
+        settings.sculptureResolution = 24;
+        settings.morphResolution = 24;
+        settings.morphSamplesPerFrame = 20000;
+        settings.remeshChunksPerFrame = 64;
+        return settings;
+    }
     // Voxels whose value or activity differs.
     static int differing(const voxel::Volume& a, const voxel::Volume& b) { return test::differingVoxels(a, b); }
 };
@@ -215,11 +224,7 @@ TEST_F(SessionMorphs, TheTwoMorphsGardenInContentOpensWithBothBlending) {
     ASSERT_TRUE(load.ok()) << load.error;
     ASSERT_EQ(load.garden->morphs.size(), 2u);
     for (const std::string& why : load.morphErrors) EXPECT_EQ(why, "");
-    SessionSettings settings = test::smallSessionSettings();
-    settings.sculptureResolution = 24;
-    settings.morphResolution = 24;
-    settings.morphSamplesPerFrame = 20000;
-    settings.remeshChunksPerFrame = 64;
+    const SessionSettings settings = contentGardenSettings();
     GardenSession s(load, settings);
     ASSERT_EQ(s.morphResults().size(), 2u);
     s.setActiveMorph(s.findSculpture("second metamorphosis"));
@@ -233,11 +238,7 @@ TEST_F(SessionMorphs, TheTwoMorphsGardenInContentOpensWithBothBlending) {
 
 TEST_F(SessionMorphs, TheTwoMorphsReplayWeighsEachMorphOnItsOwn) {
     const ReplayScript script = loadReplayScript(std::string(HG_SOURCE_DIR) + "/content/replays/two_morphs.json");
-    SessionSettings settings = test::smallSessionSettings();
-    settings.sculptureResolution = 24;
-    settings.morphResolution = 24;
-    settings.morphSamplesPerFrame = 20000;
-    settings.remeshChunksPerFrame = 64;
+    const SessionSettings settings = contentGardenSettings();
     GardenSession s(loadGarden(script.garden), settings);
     ASSERT_TRUE(runReplay(script, s, nullptr, ReplayOptions{}).ok());
     ASSERT_TRUE(s.idle());
