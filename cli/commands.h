@@ -69,6 +69,7 @@ struct GardenOptions {
     int width = 1280, height = 720;
     bool noVsync = false;
     double budgetMs = 11.1;
+    std::size_t memoryBudgetMiB = 1024;  // what the sculptures may hold; far grids go to disk beyond it (0: no budget)
     int frames = 0;                   // stop after N frames (0: until the window closes)
     std::string exitScreenshot;       // with frames: a PNG of the last frame
     std::string screenshotDir;        // "": the session's screenshots/, else ~/Pictures/hypergarden

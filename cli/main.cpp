@@ -54,6 +54,9 @@ int main(int argc, char** argv) {
     app.add_option("--height", gardenOpts.height, "Window height in pixels (default 720)");
     app.add_flag("--no-vsync", gardenOpts.noVsync, "Do not wait for the display's refresh");
     app.add_option("--budget-ms", gardenOpts.budgetMs, "Frame budget in milliseconds (default 11.1, 90 Hz)");
+    app.add_option("--memory-budget", gardenOpts.memoryBudgetMiB,
+                   "MiB the sculptures may hold in memory; beyond it far sculptures' grids wait on disk until "
+                   "you come near (default 1024; 0: no budget; docs/desktop.md)");
     app.add_option("--frames", gardenOpts.frames, "Close after this many frames (default: when the window closes)");
     app.add_option("--quality", gardenOpts.quality,
                    "Picture: auto (default: low on software rendering, else high), low, medium or high "

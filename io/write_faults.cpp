@@ -17,7 +17,7 @@ namespace hg::io {
 namespace {
 
 constexpr std::array<const char*, static_cast<std::size_t>(WriteSite::Count)> kSiteNames = {
-    "journal", "snapshot-grid", "snapshot-manifest", "session-file", "settings", "export", "screenshot", "stats"};
+    "journal", "snapshot-grid", "snapshot-manifest", "session-file", "settings", "export", "screenshot", "stats", "page-file"};
 
 struct Seam {
     std::mutex mutex;
@@ -97,7 +97,7 @@ std::optional<FaultPlan> parseFaultPlan(const std::string& text, std::string& wh
             }
         if (!found) {
             why = "unknown write site '" + site + "' (expected journal, snapshot-grid, snapshot-manifest, session-file, "
-                  "settings, export, screenshot or stats)";
+                  "settings, export, screenshot, stats or page-file)";
             return std::nullopt;
         }
     }

@@ -23,6 +23,7 @@ enum class WriteSite {
     Export,            // exported HyperFun, meshes and volumes
     Screenshot,        // screenshots
     Stats,             // replay statistics
+    PageFile,          // far sculptures' grids paged to disk (voxel/grid_page.h)
     Count
 };
 const char* writeSiteName(WriteSite site);

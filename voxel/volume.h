@@ -8,6 +8,7 @@
 // includes voxel/volume_vdb.h.
 #pragma once
 
+#include <atomic>
 #include <cstddef>
 #include <memory>
 #include <string>
@@ -26,6 +27,7 @@ struct VolumeSource {
 };
 
 struct VolumeGrid;  // defined in voxel/volume_vdb.h
+class GridPage;    // voxel/grid_page.h
 
 // How a volume's model box was found (voxel/model_box.h).
 enum class BoxOrigin {
@@ -64,13 +66,35 @@ public:
     bool active(int i, int j, int k) const;
     std::size_t activeVoxelCount() const;
     std::size_t leafCount() const;
+    // The grid's memory; 0 while it is paged out.
     std::size_t memoryBytes() const;
 
-    VolumeGrid& grid() { return *grid_; }
-    const VolumeGrid& grid() const { return *grid_; }
+    // The grid, brought back first when it is paged out (below).
+    VolumeGrid& grid() { return resident_.load(std::memory_order_acquire) ? *grid_ : bringBack(); }
+    const VolumeGrid& grid() const { return resident_.load(std::memory_order_acquire) ? *grid_ : bringBack(); }
+
+    // --- a far grid on disk (voxel/grid_page.h; docs/design.md §5) --------
+    // The grid handed to a page that a job thread then writes (GridPage::
+    // write) and lets go. From here the volume is paged out: grid() (and
+    // value(), clone(), ...) brings it back, waiting for the write if it is
+    // under way. Only on the thread that owns the volume, while no other
+    // thread reads it. `folder` must exist.
+    std::shared_ptr<GridPage> pageOut(const std::string& folder);
+    bool resident() const { return resident_.load(std::memory_order_acquire); }
+    // The page it is out on (null while resident).
+    const std::shared_ptr<GridPage>& page() const { return page_; }
+    // The grid its page read back off this thread (GridPage::readAhead),
+    // taken: whether there was one (false while resident, or before).
+    bool adoptReadAhead();
 
 private:
-    std::unique_ptr<VolumeGrid> grid_;
+    VolumeGrid& bringBack() const;
+
+    // Null while paged out; resident_ says which without a lock, for the
+    // threads that read the grid while one of them brings it back.
+    mutable std::unique_ptr<VolumeGrid> grid_;
+    mutable std::shared_ptr<GridPage> page_;
+    mutable std::atomic<bool> resident_{true};
 };
 
 }  // namespace hg::voxel

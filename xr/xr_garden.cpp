@@ -524,6 +524,7 @@ int runXrGarden(const XrOptions& options,
         wo.title = kMirrorTitle;
         garden::GardenWindow window(wo, options.mirror || static_cast<bool>(options.desktop));
         garden::SessionSettings settings;
+        settings.memoryBudgetBytes = options.memoryBudgetBytes;
         settings.workOffFrameThread = true;  // xrWaitFrame paces the frames; the workers mesh and blend meanwhile
         settings.spreadEdits = true;           // a big edit lands over a few frames, none held
         garden::OpenedSession opened = garden::openLoadedOrSession(

@@ -8,6 +8,7 @@
 // desktop's F9 comes back (headsetFromDesktop).
 #pragma once
 
+#include <cstddef>
 #include <functional>
 #include <optional>
 #include <string>
@@ -30,6 +31,8 @@ struct XrOptions {
     std::string garden;      // the garden file ("" with a script: the script's)
     bool gardenGiven = false;  // named by the user: told when an existing session keeps its own
     std::string session;     // a session folder ("" : none)
+    // What the sculptures may hold (SessionSettings::memoryBudgetBytes; --memory-budget).
+    std::size_t memoryBudgetBytes = std::size_t{1024} << 20;
     std::string script;      // a replay script whose commands run at their frames ("" : none)
     int frames = 0;          // ask the runtime to end the session after this many frames (0: never)
     // The left hand holds the tool; seated: raise the tracked heights by a

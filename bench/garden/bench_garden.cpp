@@ -46,7 +46,7 @@
 //       [--offscreen] [--viewport WxH] [--max-frames N] [--remesh-chunks N]
 //       [--walk-speed S] [--samples N,N,...] [--resolutions R,R]
 //       [--scale N,N,...] [--scale-resolution R] [--scale-frames N]
-//       [--scale-load start|progressive] [--upload-bytes N]
+//       [--scale-load start|progressive] [--upload-bytes N] [--memory-budget MIB]
 //
 // Row names for --filter: morph/128/1600 ... morph/256/1000000,
 // nav/keys/lod, nav/keys/nolod, nav/all/lod, nav/all/nolod, scale/48,
@@ -103,6 +103,7 @@ struct Options {
     int scaleFrames = 1000;
     bool scaleProgressive = true;
     std::size_t uploadBytes = 0;  // SessionSettings::uploadBytesPerFrame (0: no limit)
+    std::size_t memoryBudgetMiB = 1024;  // SessionSettings::memoryBudgetBytes (0: none)
     // Offscreen scale rows: each walk drawn with multi-draw, one call per
     // chunk, or both in turn over the same garden (the peer in the same run).
     std::vector<std::string> drawModes{"multi", "per-chunk"};
@@ -140,6 +141,7 @@ bool parseOptions(int argc, char** argv, Options& o) {
         else if (a == "--scale-resolution" && hasValue) o.scaleResolution = std::max(16, std::atoi(argv[++i]));
         else if (a == "--scale-frames" && hasValue) o.scaleFrames = std::max(10, std::atoi(argv[++i]));
         else if (a == "--upload-bytes" && hasValue) o.uploadBytes = std::strtoull(argv[++i], nullptr, 10);
+        else if (a == "--memory-budget" && hasValue) o.memoryBudgetMiB = std::strtoull(argv[++i], nullptr, 10);
         else if (a == "--draw" && hasValue) {
             const std::string how = argv[++i];
             if (how != "multi" && how != "per-chunk" && how != "both") {
@@ -169,7 +171,7 @@ bool parseOptions(int argc, char** argv, Options& o) {
                      "       [--offscreen] [--viewport WxH] [--max-frames N] [--remesh-chunks N] [--walk-speed S]\n"
                      "       [--samples N,N,...] [--resolutions R,R] [--scale N,N,...] [--scale-resolution R]\n"
                      "       [--scale-frames N] [--scale-load start|progressive] [--upload-bytes N]\n"
-                     "       [--draw multi|per-chunk|both] [--quality low|medium|high]\n");
+                     "       [--draw multi|per-chunk|both] [--quality low|medium|high] [--memory-budget MIB]\n");
         return false;
     }
     return true;
@@ -743,7 +745,7 @@ void scaleTable(const Options& o, nlohmann::json& json) {
         headed = true;
         std::printf("| sculptures | chunks | first frame (s) | loading at first frame | settled (s) | %sinput | lod | remesh | %stotal | "
                     "frames over 11.1 ms | chunks tested by LOD (mean) | triangles shown (mean) | %snew mesh KiB per frame (max) | "
-                    "peak memory (MiB) | held after the walk: grids / levels / meshes / morph sources (MiB) |\n",
+                    "peak memory (MiB) | held after the walk: grids / levels / meshes / morph sources (MiB), grids on disk |\n",
                     gl ? "draw | " : "", gl ? "upload | render | GPU ms | " : "",
                     gl ? "chunks drawn (mean) | triangles drawn (mean) | draw calls (mean) | " : "");
         std::printf("|---:|---:|---:|---:|---:|%s---|---|---|%s---|---:|---:|---:|%s---:|---:|---|\n", gl ? "---|" : "",
@@ -768,6 +770,7 @@ void scaleTable(const Options& o, nlohmann::json& json) {
         settings.remeshChunksPerFrame = o.remeshChunks;
         settings.progressiveLoading = o.scaleProgressive;
         settings.uploadBytesPerFrame = o.uploadBytes;
+        settings.memoryBudgetBytes = o.memoryBudgetMiB << 20;
         Scene scene;
         FrameRenderer* inner = nullptr;
 #ifdef HG_BENCH_OFFSCREEN
@@ -843,9 +846,9 @@ void scaleTable(const Options& o, nlohmann::json& json) {
             const double peakMiB = static_cast<double>(peakResidentBytes()) / (1024.0 * 1024.0);
             const MemoryReport held = memoryReport(*scene.session);
             auto mib = [](std::size_t b) { return static_cast<double>(b) / (1024.0 * 1024.0); };
-            char heldCell[96];
-            std::snprintf(heldCell, sizeof heldCell, "%.0f / %.0f / %.0f / %.0f", mib(held.grids), mib(held.levels),
-                          mib(held.meshes), mib(held.morphSources));
+            char heldCell[128];
+            std::snprintf(heldCell, sizeof heldCell, "%.0f / %.0f / %.0f / %.0f, %zu", mib(held.grids), mib(held.levels),
+                          mib(held.meshes), mib(held.morphSources), held.pagedOut);
             std::string drawColumns, glColumns, countColumns;
             if (gl) {
                 drawColumns = modes[m] + " | ";

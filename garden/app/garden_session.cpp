@@ -10,6 +10,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "garden/gesture/gesture_recognizer.h"
+#include "garden/app/grid_pager.h"
 #include "garden/app/sculpture_loader.h"
 #include "garden/app/sculpture_sampling.h"
 #include "garden/morph/garden_morph.h"
@@ -27,6 +28,24 @@ namespace hg::garden {
 namespace {
 
 constexpr int kLevelRefreshFrames = 45;
+// A far grid is read back from disk once the viewer is within this factor
+// of the distance where its chunks take level 0, and may go again only
+// beyond the larger one (so a visitor at the edge does not make it come and
+// go).
+constexpr double kBringBackMargin = 1.5;
+constexpr double kLetGoMargin = 2.0;
+
+// From a model point to the nearest point of the chunks' bound (0 inside).
+double distanceToBound(const poly::ChunkLayout& layout, const std::array<double, 3>& p) {
+    double lo[3], hi[3];
+    layout.modelBounds(lo, hi);
+    double d2 = 0.0;
+    for (int a = 0; a < 3; ++a) {
+        const double d = std::max({lo[a] - p[a], 0.0, p[a] - hi[a]});
+        d2 += d * d;
+    }
+    return std::sqrt(d2);
+}
 // How near its triangle (metres on the ground) a drag of the selector must begin.
 constexpr double kMorphPickReach = 0.25;
 
@@ -96,7 +115,10 @@ voxel::VolumeRequest GardenSession::volumeRequest(const SculptureSpec& spec) {
 }
 
 GardenSession::GardenSession(GardenLoad load, SessionSettings settings)
-    : load_(std::move(load)), settings_(settings), scheduler_(settings.scheduler) {
+    : load_(std::move(load)),
+      settings_(settings),
+      pager_(std::make_unique<GridPager>(settings.memoryBudgetBytes, settings.pageFolder)),
+      scheduler_(settings.scheduler) {
     if (settings_.sculptureResolution > 0)
         for (SculptureSpec& spec : load_.garden->sculptures) spec.resolution = settings_.sculptureResolution;
     if (settings_.morphResolution > 0)
@@ -431,21 +453,12 @@ void GardenSession::input(const Hands& hands, double dt) {
 
 void GardenSession::selectLevels() {
     scheduler_.beginStage(Stage::Lod);
-    for (Sculpture& s : sculptures_) {
+    gridNeeds_.assign(sculptures_.size(), GridNeed{});
+    for (std::size_t index = 0; index < sculptures_.size(); ++index) {
+        Sculpture& s = sculptures_[index];
         if (!s.onShow()) continue;
         const std::array<double, 3> eye = toModel(s, navigator_.eye());
         s.queue->setViewer(eye);
-        // New levels go to a queue once it has shown the last ones, or at
-        // most every half second of frames: while the viewer walks, levels
-        // change every frame, and a queue that took each change would keep
-        // growing its group of dirty chunks and never show it. Yet a long
-        // morph re-blend keeps the result's queue busy, and its levels must
-        // still follow the viewer.
-        if (s.queue->pending() > 0 && ++s.framesSinceLevels < kLevelRefreshFrames) continue;
-        s.framesSinceLevels = 0;
-        // The sculpture first (poly::uniformLevel): one level for all its
-        // chunks when its bound says so, and nothing to do when that is the
-        // level it has; its chunks are visited only when their levels differ.
         poly::Camera cam;
         cam.position = eye;
         cam.fovY = settings_.fovY;
@@ -458,7 +471,26 @@ void GardenSession::selectLevels() {
                               static_cast<float>(detail_->center[2]));
             lod.detail = poly::Sphere{toModel(s, c), detail_->radius / s.scale()};
         }
-        const std::optional<int> uniform = settings_.lod ? poly::uniformLevel(*s.layout, cam, lod) : 0;
+        GridNeed& need = gridNeeds_[index] = gridNeed(index, cam, lod);
+        // New levels go to a queue once it has shown the last ones, or at
+        // most every half second of frames: while the viewer walks, levels
+        // change every frame, and a queue that took each change would keep
+        // growing its group of dirty chunks and never show it. Yet a long
+        // morph re-blend keeps the result's queue busy, and its levels must
+        // still follow the viewer.
+        if (s.queue->pending() > 0 && ++s.framesSinceLevels < kLevelRefreshFrames) continue;
+        s.framesSinceLevels = 0;
+        // The sculpture first (poly::uniformLevel): one level for all its
+        // chunks when its bound says so, and nothing to do when that is the
+        // level it has; its chunks are visited only when their levels differ.
+        // A grid on disk keeps its chunks at level 1 or coarser (its coarse
+        // levels are in memory) until the pager has it back.
+        const int finest = s.volume->resident() ? 0 : 1;
+        std::optional<int> uniform = settings_.lod ? poly::uniformLevel(*s.layout, cam, lod) : 0;
+        if (uniform) {
+            need.wanted = need.wanted || *uniform == 0;
+            uniform = std::max(*uniform, finest);
+        }
         if (uniform && *uniform == s.uniformLevel) continue;
         std::vector<int> levels;
         if (uniform) {
@@ -466,10 +498,37 @@ void GardenSession::selectLevels() {
         } else {
             levels = poly::selectLevelsPerChunk(*s.layout, cam, lod);
             stats().lodChunksVisited += s.layout->count();
+            for (int& l : levels) {
+                need.wanted = need.wanted || l == 0;
+                l = std::max(l, finest);
+            }
         }
         s.uniformLevel = uniform ? *uniform : -1;
         s.queue->setLevels(levels);
     }
+    pager_->step(sculptures_, gridNeeds_);
+}
+
+GridNeed GardenSession::gridNeed(std::size_t index, const poly::Camera& camera, const poly::LodSettings& lod) const {
+    const Sculpture& s = sculptures_[index];
+    GridNeed need;
+    const double nearest = distanceToBound(*s.layout, camera.position);
+    need.distance = nearest * s.scale();
+    const double h = s.layout->frame().voxelSize;
+    const int i = static_cast<int>(index);
+    const bool inUse = i == selected_ || i == strokeSculpture_ || i == liveMove_ || (moveDrag_ && moveDrag_->sculpture == i);
+    need.wanted = !settings_.lod || inUse || poly::levelAtDistance(camera, h, nearest / kBringBackMargin, lod) == 0;
+    // Only a grid that is a pure function of its source may go (edits and
+    // blends live in theirs), once every chunk shows level 1 or coarser.
+    need.mayGo = !need.wanted && !s.edits && !s.morph && !s.morphResult() && s.uniformLevel >= 1 &&
+                 s.queue->pending() == 0 && !s.queue->meshing() &&
+                 poly::levelAtDistance(camera, h, nearest / kLetGoMargin, lod) >= 1;
+    return need;
+}
+
+void GardenSession::settlePaging() {
+    if (gridNeeds_.size() != sculptures_.size()) gridNeeds_.resize(sculptures_.size());
+    pager_->settle(sculptures_, gridNeeds_);
 }
 
 void GardenSession::morph() {

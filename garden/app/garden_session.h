@@ -43,6 +43,8 @@ namespace hg::garden {
 
 struct MorphState;
 class SculptureLoader;
+class GridPager;
+struct GridNeed;
 struct MorphSources;
 struct GestureRecognizer;
 namespace deform { class DeformableModel; }
@@ -114,6 +116,13 @@ struct SessionSettings {
     bool spreadEdits = false;
     // The gesture recognizer's weights ("": content/gestures/weights.json).
     std::string gestureWeights;
+    // What the sculptures may hold in memory (grids, coarse levels, meshes,
+    // edits' bases, morph caches; garden/app/memory_report.h): over it, the
+    // farthest grids are kept on disk until a visitor or a tool comes near
+    // (garden/app/grid_pager.h). 0: no budget. The folder "" is one of the
+    // process's own under the user's cache folder, removed at the end.
+    std::size_t memoryBudgetBytes = std::size_t{1024} << 20;
+    std::string pageFolder;
 };
 
 // What one frame is given: the hands (world frame), the time since the
@@ -433,6 +442,11 @@ public:
     // every one is in (what needs the whole garden: a journal to play).
     std::size_t sculpturesLoading() const;
     void finishLoading();
+    // Far grids on disk (garden/app/grid_pager.h): the pager, and a wait
+    // until every grid it is writing or reading back is done and taken.
+    const GridPager* pager() const { return pager_.get(); }
+    GridPager* pager() { return pager_.get(); }
+    void settlePaging();
     std::size_t remeshPending() const;
     // Triangles of the meshes on show, over every sculpture.
     std::size_t trianglesShown() const;
@@ -458,6 +472,8 @@ private:
     // A new edit's grid update is spread over frames (SessionSettings::spreadEdits).
     bool spreading() const { return settings_.spreadEdits && settings_.remeshChunksPerFrame == 0 && !restoring_; }
     void selectLevels();
+    // What level selection says of each sculpture's grid (garden/app/grid_pager.h).
+    GridNeed gridNeed(std::size_t index, const poly::Camera& camera, const poly::LodSettings& lod) const;
     void morph();
     void remesh();
     void remeshInBackground(const std::vector<std::pair<float, std::size_t>>& order);
@@ -596,6 +612,10 @@ private:
     // go of their jobs as they go.
     std::unique_ptr<poly::MeshingWorker> meshing_;
     std::unique_ptr<jobs::JobThread> blending_;
+    // Far grids kept on disk within the memory budget; declared before the
+    // sculptures, whose volumes may read back from its folder until they go.
+    std::unique_ptr<GridPager> pager_;
+    std::vector<GridNeed> gridNeeds_;  // this frame's, by sculpture
     std::vector<Sculpture> sculptures_;
     Navigator navigator_;
     FrameScheduler scheduler_;

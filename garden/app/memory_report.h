@@ -7,6 +7,7 @@
 
 #include <chrono>
 #include <cstddef>
+#include <string>
 
 namespace hg::garden {
 
@@ -19,9 +20,19 @@ struct MemoryReport {
     std::size_t editBases = 0;     // edited sculptures' grids before their edits
     std::size_t morphSources = 0;  // the morphs' source caches
     std::size_t sculptures = 0;    // sculptures with a grid
+    // Far grids kept on disk instead (garden/app/grid_pager.h), the budget
+    // the rest is kept within (0: none), and why paging stopped ("" : it did not).
+    std::size_t pagedOut = 0;
+    std::size_t budget = 0;
+    std::string pagingProblem;
     std::size_t total() const { return grids + levels + meshes + editBases + morphSources; }
+    MemoryReport& operator+=(const MemoryReport& o);
 };
 
+struct Sculpture;
+// One sculpture's share (its grid counted only while in memory).
+MemoryReport sculptureMemory(const Sculpture& s);
+// Every sculpture's, read now, with the pager's budget and problem.
 MemoryReport memoryReport(const GardenSession& session);
 
 // The report taken again at most every `every` (for a panel drawn every

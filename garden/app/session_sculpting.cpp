@@ -402,7 +402,15 @@ std::optional<std::pair<int, glm::vec3>> GardenSession::toolHit(const Pose& aim)
         const glm::dvec3 d = glm::dvec3(toModelM * glm::dvec4(glm::dvec3(aim.forward()), 0.0));
         // t is in world ray lengths (d is the world direction taken into the
         // model): comparable across sculptures.
-        const auto t = marchToSurface(*s.volume, {o.x, o.y, o.z}, {d.x, d.y, d.z});
+        // A far grid on disk is not read back for a ray: its first coarse
+        // level (in memory, and what is on show) answers.
+        const poly::LodPyramid& pyramid = *s.pyramid;
+        const auto t = s.volume->resident() || pyramid.levels() < 2
+                           ? marchToSurface(*s.volume, {o.x, o.y, o.z}, {d.x, d.y, d.z})
+                           : marchToSurface(
+                                 s.volume->frame, 1,
+                                 [&pyramid](int a, int b, int c) { return pyramid.value(1, a, b, c); },
+                                 {o.x, o.y, o.z}, {d.x, d.y, d.z});
         if (!t || *t >= bestT) continue;
         bestT = *t;
         best = std::make_pair(static_cast<int>(i), aim.position + aim.forward() * static_cast<float>(*t));

@@ -225,6 +225,7 @@ int runDesktopGarden(const DesktopOptions& options) {
 
         SessionSettings settings;
         settings.scheduler.budgetMs = options.budgetMs;
+        settings.memoryBudgetBytes = options.memoryBudgetBytes;
         settings.viewportHeight = window.window().framebufferSize().y;
         // The window opens at once; sculptures arrive nearest first and the
         // Garden panel says how many are still coming.

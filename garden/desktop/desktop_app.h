@@ -7,6 +7,7 @@
 // headset and comes back when the headset session ends.
 #pragma once
 
+#include <cstddef>
 #include <functional>
 #include <optional>
 #include <string>
@@ -31,6 +32,8 @@ struct DesktopOptions {
     int width = 1280, height = 720;
     bool vsync = true;
     double budgetMs = 11.1;
+    // What the sculptures may hold (SessionSettings::memoryBudgetBytes; --memory-budget).
+    std::size_t memoryBudgetBytes = std::size_t{1024} << 20;
     // Where F12 screenshots go; "": the session's screenshots/ folder, or
     // ~/Pictures/hypergarden without a session (screenshotFolder).
     std::string screenshotDir;

@@ -6,7 +6,13 @@
 namespace hg::garden {
 
 std::optional<double> marchToSurface(const voxel::Volume& volume, const ModelPoint& o, const ModelPoint& d) {
-    const voxel::VolumeFrame& f = volume.frame;
+    return marchToSurface(volume.frame, 0, [&volume](int i, int j, int k) { return volume.value(i, j, k); }, o, d);
+}
+
+std::optional<double> marchToSurface(const voxel::VolumeFrame& f, int level,
+                                     const std::function<float(int, int, int)>& value, const ModelPoint& o,
+                                     const ModelPoint& d) {
+    const double voxel = std::ldexp(f.voxelSize, level);
     // A ray from a NaN pose (a singular placement, a lost controller) meets
     // nothing; left in, NaN passes the box test and the march never ends.
     for (int a = 0; a < 3; ++a)
@@ -26,14 +32,14 @@ std::optional<double> marchToSurface(const voxel::Volume& volume, const ModelPoi
     if (!(t1 >= t0)) return std::nullopt;
     const double length = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
     if (!(length > 0.0)) return std::nullopt;
-    const double step = 0.5 * f.voxelSize / length;
+    const double step = 0.5 * voxel / length;
     // Trilinear: the surface between voxels, not at the nearest one (a
     // half-voxel error is most of a small impact's depth).
     const auto sample = [&](double t) {
         double g[3];
         int i[3];
         for (int a = 0; a < 3; ++a) {
-            g[a] = (o[a] + d[a] * t - f.modelBox.lo[a]) / f.voxelSize;
+            g[a] = (o[a] + d[a] * t - f.modelBox.lo[a]) / voxel;
             i[a] = static_cast<int>(std::floor(g[a]));
             g[a] -= i[a];
         }
@@ -41,7 +47,7 @@ std::optional<double> marchToSurface(const voxel::Volume& volume, const ModelPoi
         for (int c = 0; c < 8; ++c) {
             const int dx = c & 1, dy = (c >> 1) & 1, dz = (c >> 2) & 1;
             const double w = (dx ? g[0] : 1.0 - g[0]) * (dy ? g[1] : 1.0 - g[1]) * (dz ? g[2] : 1.0 - g[2]);
-            v += w * static_cast<double>(volume.value(i[0] + dx, i[1] + dy, i[2] + dz));
+            v += w * static_cast<double>(value(i[0] + dx, i[1] + dy, i[2] + dz));
         }
         return v;
     };
