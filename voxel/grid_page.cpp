@@ -19,20 +19,18 @@ namespace hg::voxel {
 
 namespace fs = std::filesystem;
 
-GridPage::GridPage(std::unique_ptr<VolumeGrid> grid, std::string folder)
-    : grid_(std::move(grid)), folder_(std::move(folder)) {}
+GridPage::GridPage(std::unique_ptr<VolumeGrid> grid, std::string folder, std::string readFrom)
+    : grid_(std::move(grid)), folder_(std::move(folder)), readFrom_(std::move(readFrom)) {}
 
 GridPage::~GridPage() = default;
 
-void GridPage::write() {
-    openvdb::FloatGrid::ConstPtr grid;
-    {
-        std::lock_guard<std::mutex> lock(mutex_);
-        if (state_ != State::Holding) return;
-        state_ = State::Writing;
-        grid = grid_->grid;  // still the page's: takeBack() waits while it is written
-    }
-    std::string bytes, why, path, tag;
+namespace {
+
+// The grid as a page file's bytes, and the name its content gives it in
+// `folder`: "" or why not.
+std::string encodePage(const openvdb::FloatGrid::ConstPtr& grid, const std::string& folder, std::string& bytes,
+                       std::string& path) {
+    std::string tag;
     try {
         // Only the active mask's compression: lossless like the rest, and
         // reading back (what a visitor walking up waits for) needs no inflate.
@@ -43,21 +41,42 @@ void GridPage::write() {
         bytes = out.str();
         tag = stream.getUniqueTag();
     } catch (const std::exception& e) {
-        why = std::string("cannot encode the grid: ") + e.what();
+        return std::string("cannot encode the grid: ") + e.what();
     }
-    if (why.empty()) {
-        // Named by content: an identical grid (a copy of the same sculpture,
-        // or this one paged out before) is on disk already.
-        // Every archive carries a random tag of its own: hashed as blanks.
-        std::string hashed = bytes;
-        if (const std::size_t at = tag.empty() ? std::string::npos : hashed.find(tag); at != std::string::npos)
-            hashed.replace(at, tag.size(), tag.size(), '-');
-        char name[64];
-        std::snprintf(name, sizeof name, "%016zx-%zu.vdb", std::hash<std::string_view>{}(hashed), bytes.size());
-        path = (fs::path(folder_) / name).string();
-        std::error_code ec;
-        const bool there = fs::exists(path, ec) && fs::file_size(path, ec) == bytes.size() && !ec;
-        if (!there) why = io::writeFileAtomically(path, bytes, io::WriteSite::PageFile);
+    // Named by content: an identical grid (a copy of the same sculpture, or
+    // this one paged out before) is on disk already. Every archive carries
+    // a random tag of its own: hashed as blanks.
+    std::string hashed = bytes;
+    if (const std::size_t at = tag.empty() ? std::string::npos : hashed.find(tag); at != std::string::npos)
+        hashed.replace(at, tag.size(), tag.size(), '-');
+    char name[64];
+    std::snprintf(name, sizeof name, "%016zx-%zu.vdb", std::hash<std::string_view>{}(hashed), bytes.size());
+    path = (fs::path(folder) / name).string();
+    return "";
+}
+
+}  // namespace
+
+void GridPage::write() {
+    openvdb::FloatGrid::ConstPtr grid;
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        if (state_ != State::Holding) return;
+        state_ = State::Writing;
+        grid = grid_->grid;  // still the page's: takeBack() waits while it is written
+    }
+    std::string bytes, why, path;
+    std::size_t size = 0;
+    std::error_code ec;
+    if (!readFrom_.empty() && fs::is_regular_file(readFrom_, ec)) {
+        // Unchanged since it was read from there: nothing to encode or write.
+        path = readFrom_;
+        size = static_cast<std::size_t>(fs::file_size(path, ec));
+    } else {
+        why = encodePage(grid, folder_, bytes, path);
+        size = bytes.size();
+        const bool there = why.empty() && fs::exists(path, ec) && fs::file_size(path, ec) == size && !ec;
+        if (why.empty() && !there) why = io::writeFileAtomically(path, bytes, io::WriteSite::PageFile);
     }
     std::unique_ptr<VolumeGrid> written;
     {
@@ -65,7 +84,7 @@ void GridPage::write() {
         if (why.empty()) {
             state_ = State::Written;
             path_ = path;
-            fileBytes_ = bytes.size();
+            fileBytes_ = size;
             written = std::move(grid_);
         } else {
             state_ = State::Failed;

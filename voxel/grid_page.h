@@ -28,8 +28,10 @@ public:
         TakenBack,  // taken back before it was written: nothing to write
     };
 
-    // `folder` must exist; the file goes there.
-    GridPage(std::unique_ptr<VolumeGrid> grid, std::string folder);
+    // `folder` must exist; the file goes there. `readFrom`: a page file the
+    // grid was read from and has not changed since (a far grid going again):
+    // while it is still there, write() only lets the grid go.
+    GridPage(std::unique_ptr<VolumeGrid> grid, std::string folder, std::string readFrom = "");
     ~GridPage();
     GridPage(const GridPage&) = delete;
     GridPage& operator=(const GridPage&) = delete;
@@ -63,7 +65,7 @@ private:
     State state_ = State::Holding;
     std::unique_ptr<VolumeGrid> grid_;
     std::unique_ptr<VolumeGrid> readAhead_;
-    std::string folder_, path_, problem_;
+    std::string folder_, readFrom_, path_, problem_;
     std::size_t fileBytes_ = 0;
 };
 

@@ -43,7 +43,9 @@ Volume::Volume(Volume&& o) noexcept
       source(std::move(o.source)),
       grid_(std::move(o.grid_)),
       page_(std::move(o.page_)),
-      resident_(o.resident_.load(std::memory_order_acquire)) {
+      resident_(o.resident_.load(std::memory_order_acquire)),
+      readFrom_(std::move(o.readFrom_)),
+      touched_(o.touched_.load(std::memory_order_relaxed)) {
     o.resident_.store(false, std::memory_order_release);
 }
 
@@ -57,6 +59,8 @@ Volume& Volume::operator=(Volume&& o) noexcept {
     grid_ = std::move(o.grid_);
     page_ = std::move(o.page_);
     resident_.store(o.resident_.load(std::memory_order_acquire), std::memory_order_release);
+    readFrom_ = std::move(o.readFrom_);
+    touched_.store(o.touched_.load(std::memory_order_relaxed), std::memory_order_relaxed);
     o.resident_.store(false, std::memory_order_release);
     return *this;
 }
@@ -75,7 +79,10 @@ VolumeGrid& Volume::bringBack() const {
     std::lock_guard<std::mutex> lock(pageLock());
     if (!resident_.load(std::memory_order_acquire)) {
         if (!page_) throw std::logic_error("a volume read after it was moved from");
+        const bool fromFile = page_->state() == GridPage::State::Written;
         grid_ = page_->takeBack();
+        readFrom_ = fromFile ? page_->path() : std::string();
+        touched_.store(!fromFile, std::memory_order_relaxed);
         page_.reset();
         resident_.store(true, std::memory_order_release);
     }
@@ -85,7 +92,8 @@ VolumeGrid& Volume::bringBack() const {
 std::shared_ptr<GridPage> Volume::pageOut(const std::string& folder) {
     if (!resident()) return page_;
     std::lock_guard<std::mutex> lock(pageLock());
-    page_ = std::make_shared<GridPage>(std::move(grid_), folder);
+    page_ = std::make_shared<GridPage>(std::move(grid_), folder,
+                                       touched_.load(std::memory_order_relaxed) ? std::string() : readFrom_);
     resident_.store(false, std::memory_order_release);
     return page_;
 }
@@ -96,6 +104,8 @@ bool Volume::adoptReadAhead() {
     // The file stays on disk for the next time; only the page's claim on
     // this volume ends.
     grid_ = page_->takeBack();
+    readFrom_ = page_->path();
+    touched_.store(false, std::memory_order_relaxed);
     page_.reset();
     resident_.store(true, std::memory_order_release);
     return true;

@@ -70,7 +70,12 @@ public:
     std::size_t memoryBytes() const;
 
     // The grid, brought back first when it is paged out (below).
-    VolumeGrid& grid() { return resident_.load(std::memory_order_acquire) ? *grid_ : bringBack(); }
+    // (Non-const: the caller may change it, so a page it was read from no
+    // longer stands for it.)
+    VolumeGrid& grid() {
+        touched_.store(true, std::memory_order_relaxed);
+        return resident_.load(std::memory_order_acquire) ? *grid_ : bringBack();
+    }
     const VolumeGrid& grid() const { return resident_.load(std::memory_order_acquire) ? *grid_ : bringBack(); }
 
     // --- a far grid on disk (voxel/grid_page.h; docs/design.md §5) --------
@@ -95,6 +100,11 @@ private:
     mutable std::unique_ptr<VolumeGrid> grid_;
     mutable std::shared_ptr<GridPage> page_;
     mutable std::atomic<bool> resident_{true};
+    // The page file it was last read back from, and whether it may have
+    // changed since (a mutable grid() was asked for): pageOut then names
+    // that file instead of writing the grid again.
+    mutable std::string readFrom_;
+    mutable std::atomic<bool> touched_{true};
 };
 
 }  // namespace hg::voxel

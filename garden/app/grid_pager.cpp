@@ -1,10 +1,12 @@
 #include "garden/app/grid_pager.h"
 
 #include <algorithm>
+#include <cerrno>
 #include <cstdlib>
 #include <filesystem>
 #include <system_error>
 
+#include <signal.h>
 #include <unistd.h>
 
 #include "garden/app/sculpture.h"
@@ -20,9 +22,11 @@ namespace {
 // Writes in flight at once: each holds its grid until written, so more
 // would only hold memory the budget already counts as gone.
 constexpr std::size_t kWritesInFlight = 4;
-// Sculptures whose figures are read again each frame, in turn (a grid's
-// memory is a walk over its tree).
-constexpr std::size_t kRefreshPerFrame = 8;
+// Sculptures whose figures are read again each frame, in turn: a grid's
+// memory is a parallel walk over its tree (OpenVDB's memUsage), about
+// 10 us at 64^3, and the rest only changes when the viewer moves or an
+// edit lands. A grid that comes or goes is read at once.
+constexpr std::size_t kRefreshPerFrame = 1;
 // After a failed write (a full disk), the pause before paging again.
 constexpr std::chrono::seconds kPauseAfterFailure(10);
 }  // namespace
@@ -68,9 +72,29 @@ std::string GridPager::defaultPageFolder() {
     return (base / "hypergarden" / ("pages-" + std::to_string(::getpid()))).string();
 }
 
+namespace {
+// Page folders of processes that are gone (killed, crashed): nothing reads
+// them any more. Only names this pager's own scheme makes are touched.
+void removeOrphanedFolders(const fs::path& parent) {
+    std::error_code ec;
+    for (fs::directory_iterator it(parent, ec), end; !ec && it != end; it.increment(ec)) {
+        const std::string name = it->path().filename().string();
+        if (name.rfind("pages-", 0) != 0) continue;
+        char* stop = nullptr;
+        const long pid = std::strtol(name.c_str() + 6, &stop, 10);
+        if (pid <= 0 || !stop || *stop != '\0' || pid == ::getpid()) continue;
+        if (::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH) {
+            std::error_code ignored;
+            fs::remove_all(it->path(), ignored);
+        }
+    }
+}
+}  // namespace
+
 bool GridPager::ensureFolder() {
     if (folderReady_) return true;
     std::error_code ec;
+    if (ownFolder_) removeOrphanedFolders(fs::path(folder_).parent_path());
     fs::create_directories(folder_, ec);
     if (ec || !fs::is_directory(folder_, ec)) {
         pause("cannot make the page folder " + folder_ + ": " + (ec ? ec.message() : "not a folder"));
@@ -102,7 +126,9 @@ void GridPager::step(std::vector<Sculpture>& sculptures, const std::vector<GridN
     entries_.resize(sculptures.size());
     takeFinished(sculptures);
     bringBackWanted(sculptures, needs);
-    if (!sculptures.empty()) {
+    // With no budget nothing reads the figures but a report (which reads
+    // the sculptures itself): they are kept only for what changed here.
+    if (budget_ > 0 && !sculptures.empty()) {
         for (std::size_t n = 0; n < std::min(kRefreshPerFrame, sculptures.size()); ++n) {
             nextRefresh_ = (nextRefresh_ + 1) % sculptures.size();
             refresh(sculptures[nextRefresh_], entries_[nextRefresh_]);

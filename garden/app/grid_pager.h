@@ -61,9 +61,10 @@ public:
 
     std::size_t budget() const { return budget_; }
     void setBudget(std::size_t bytes) { budget_ = bytes; }
-    // What the sculptures hold, from figures kept per sculpture (a few
-    // refreshed each frame, and each one whose grid came or went), with
-    // the grids on disk and the budget: cheap enough for every frame.
+    // What the sculptures hold, from figures kept per sculpture (with a
+    // budget, one refreshed each frame in turn, and each one whose grid came
+    // or went), with the grids on disk and the budget: cheap enough for
+    // every frame.
     MemoryReport report() const;
     // Why paging stopped last ("" : it did not).
     const std::string& problem() const { return problem_; }

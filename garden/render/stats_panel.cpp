@@ -114,7 +114,10 @@ void drawStatsPanel(const FrameHistory& history, bool toggle, const std::functio
         ImGui::Text("grids %.0f, levels %.0f, meshes %.0f, edit bases %.0f, morph sources %.0f MiB", mib(held.grids),
                     mib(held.levels), mib(held.meshes), mib(held.editBases), mib(held.morphSources));
         // The budget (--memory-budget) and the far grids it keeps on disk.
-        if (held.budget > 0)
+        if (held.budget > 0 && held.total() > held.budget)
+            ImGui::Text("budget %.0f MiB: %zu far grids on disk, the rest near enough to stay", mib(held.budget),
+                        held.pagedOut);
+        else if (held.budget > 0)
             ImGui::Text("budget %.0f MiB: %zu far grids on disk", mib(held.budget), held.pagedOut);
         else
             ImGui::TextUnformatted("no memory budget: every grid in memory");

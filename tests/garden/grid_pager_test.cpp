@@ -12,6 +12,9 @@
 #include <filesystem>
 #include <fstream>
 
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include "garden/app/garden_session.h"
 #include "garden/app/grid_pager.h"
 #include "garden/app/memory_report.h"
@@ -215,6 +218,45 @@ TEST(GridPager, TheBudgetHoldsOnAThousandSculptures) {
     EXPECT_EQ(kept.total(), now.total()) << "the pager's figures are the sculptures' own";
     EXPECT_LE(now.total(), budget) << "held " << now.total() << " of " << whole << " whole";
     EXPECT_EQ(now.budget, budget);
+}
+
+}  // namespace
+}  // namespace hg::garden
+
+namespace hg::garden {
+namespace {
+
+// The default page folder is the process's own under the cache folder; it
+// goes with the session, and so do the folders of processes that died
+// without removing theirs (only folders of the pager's own naming).
+TEST(GridPager, ItsFolderGoesWithItAndSoDoThoseOfDeadProcesses) {
+    TempDir dir;
+    fs::create_directories(dir.path);
+    ASSERT_EQ(::setenv("XDG_CACHE_HOME", dir.path.c_str(), 1), 0);
+    const fs::path pages = dir.path / "hypergarden";
+    const pid_t child = ::fork();
+    if (child == 0) ::_exit(0);
+    ASSERT_GT(child, 0);
+    ::waitpid(child, nullptr, 0);  // a process id no one has now
+    const fs::path dead = pages / ("pages-" + std::to_string(child));
+    fs::create_directories(dead);
+    std::ofstream((dead / "left.vdb").string()) << "a page";
+    fs::create_directories(pages / "pages-notanumber");
+    fs::create_directories(pages / "mine");
+    const std::string own = GridPager::defaultPageFolder();
+    EXPECT_EQ(own, (pages / ("pages-" + std::to_string(::getpid()))).string());
+    {
+        GardenSession session(scaleGarden(16, 40), pagingSettings(1, ""));
+        settle(session);
+        EXPECT_GT(pagedOut(session), 0u);
+        EXPECT_EQ(session.pager()->folder(), own);
+        EXPECT_TRUE(fs::is_directory(own));
+        EXPECT_FALSE(fs::exists(dead)) << "a dead process's pages are removed";
+        EXPECT_TRUE(fs::exists(pages / "pages-notanumber"));
+        EXPECT_TRUE(fs::exists(pages / "mine"));
+    }
+    EXPECT_FALSE(fs::exists(own)) << "the session's pages go with it";
+    ::unsetenv("XDG_CACHE_HOME");
 }
 
 }  // namespace

@@ -154,6 +154,37 @@ TEST(GridPage, ManyThreadsReadingBringItBackOnce) {
     expectSameGrid(v, before);
 }
 
+// A grid read back and not changed since goes again without a write (the
+// disk refuses every write here, and the page still goes); one changed
+// through its mutable grid() is written again.
+TEST(GridPage, AnUnchangedGridGoesAgainWithoutAWrite) {
+    TempDir dir;
+    Volume v = torusBlock(32);
+    const Volume before = v.clone();
+    const std::shared_ptr<GridPage> first = v.pageOut(dir.path.string());
+    first->write();
+    ASSERT_EQ(first->state(), GridPage::State::Written);
+    EXPECT_TRUE(sameBits(static_cast<const Volume&>(v).value(0, 0, 0), before.value(0, 0, 0)));  // read back, const
+    io::FaultPlan full;
+    full.anySite = false;
+    full.site = io::WriteSite::PageFile;
+    full.first = 1;
+    full.last = SIZE_MAX;
+    full.error = ENOSPC;
+    io::setFaultPlan(full);
+    const std::shared_ptr<GridPage> again = v.pageOut(dir.path.string());
+    again->write();
+    EXPECT_EQ(again->state(), GridPage::State::Written) << again->problem();
+    EXPECT_EQ(again->path(), first->path());
+    expectSameGrid(v, before);  // and back again
+    vdb(v).tree().setValue(openvdb::Coord(0, 0, 0), 1.5f);  // a change, through the mutable grid
+    const std::shared_ptr<GridPage> changed = v.pageOut(dir.path.string());
+    changed->write();
+    io::setFaultPlan(std::nullopt);
+    EXPECT_EQ(changed->state(), GridPage::State::Failed) << "a grid that changed is written again";
+    EXPECT_EQ(v.value(0, 0, 0), 1.5f) << "and, refused, kept";
+}
+
 TEST(GridPage, AMissingPageIsAnErrorNamingItsFile) {
     TempDir dir;
     Volume v = torusBlock(32);
