@@ -20,22 +20,16 @@
 #include "garden/app/memory_report.h"
 #include "garden/scene/scale_garden.h"
 #include "io/write_faults.h"
+#include "tests/disk_full.h"
 #include "tests/same_grid.h"
+#include "tests/test_folder.h"
 
 namespace hg::garden {
 namespace {
 
 namespace fs = std::filesystem;
 
-struct TempDir {
-    fs::path path;
-    TempDir() {
-        path = fs::temp_directory_path() / ("hg_grid_pager_" + std::to_string(::getpid()) + "_" +
-                                            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::remove_all(path);
-    }
-    ~TempDir() { fs::remove_all(path); }
-};
+using TempDir = test::TestFolder;
 
 GardenLoad scaleGarden(int count, int resolution) {
     ScaleGardenSpec spec;
@@ -112,7 +106,7 @@ void walkTo(GardenSession& session, const Sculpture& s) {
 }
 
 TEST(GridPager, FarGridsGoToDiskAndComeBackTheSame) {
-    TempDir dir;
+    TempDir dir("hg_grid_pager", false);
     GardenSession paging(scaleGarden(16, 40), pagingSettings(1, dir.path.string()));
     GardenSession whole(scaleGarden(16, 40), pagingSettings(0, ""));
     settle(paging);
@@ -149,7 +143,7 @@ TEST(GridPager, FarGridsGoToDiskAndComeBackTheSame) {
 }
 
 TEST(GridPager, EditingAFarSculptureBringsItsGridBackFirst) {
-    TempDir dir;
+    TempDir dir("hg_grid_pager", false);
     GardenSession paging(scaleGarden(16, 40), pagingSettings(1, dir.path.string()));
     GardenSession whole(scaleGarden(16, 40), pagingSettings(0, ""));
     settle(paging);
@@ -176,14 +170,8 @@ TEST(GridPager, EditingAFarSculptureBringsItsGridBackFirst) {
 }
 
 TEST(GridPager, AFullDiskKeepsEveryGridAndSaysSo) {
-    TempDir dir;
-    io::FaultPlan full;
-    full.anySite = false;
-    full.site = io::WriteSite::PageFile;
-    full.first = 1;
-    full.last = SIZE_MAX;
-    full.error = ENOSPC;
-    io::setFaultPlan(full);
+    TempDir dir("hg_grid_pager", false);
+    io::setFaultPlan(test::diskFullAt(io::WriteSite::PageFile));
     GardenSession paging(scaleGarden(9, 40), pagingSettings(1, dir.path.string()));
     GardenSession whole(scaleGarden(9, 40), pagingSettings(0, ""));
     settle(paging);
@@ -203,7 +191,7 @@ TEST(GridPager, AFullDiskKeepsEveryGridAndSaysSo) {
 // of a third of that: after the walk settles, the pager's figures and a
 // fresh walk over every sculpture agree, and both are within the budget.
 TEST(GridPager, TheBudgetHoldsOnAThousandSculptures) {
-    TempDir dir;
+    TempDir dir("hg_grid_pager", false);
     SessionSettings settings = pagingSettings(0, dir.path.string());
     settings.remeshChunksPerFrame = 4096;
     GardenSession session(pebbleGarden(dir, 1000), settings);
@@ -230,7 +218,7 @@ namespace {
 // goes with the session, and so do the folders of processes that died
 // without removing theirs (only folders of the pager's own naming).
 TEST(GridPager, ItsFolderGoesWithItAndSoDoThoseOfDeadProcesses) {
-    TempDir dir;
+    TempDir dir("hg_grid_pager", false);
     fs::create_directories(dir.path);
     ASSERT_EQ(::setenv("XDG_CACHE_HOME", dir.path.c_str(), 1), 0);
     const fs::path pages = dir.path / "hypergarden";

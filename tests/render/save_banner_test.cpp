@@ -19,6 +19,7 @@
 #include "garden/session/open_session.h"
 #include "headless_imgui.h"
 #include "io/write_faults.h"
+#include "tests/disk_full.h"
 
 namespace hg::garden {
 namespace {
@@ -69,13 +70,7 @@ TEST_F(SaveBannerTest, AFailedWriteShowsTheBannerAndRetryClearsIt) {
     stroke(0.6);
     EXPECT_FALSE(frame(s, {0, 0}, false));
     EXPECT_FALSE(frame(s, {0, 0}, false));
-    io::FaultPlan full;
-    full.anySite = false;
-    full.site = io::WriteSite::Journal;
-    full.first = 1;
-    full.last = SIZE_MAX;
-    full.error = ENOSPC;
-    io::setFaultPlan(full);
+    io::setFaultPlan(::hg::test::diskFullAt(io::WriteSite::Journal));
     stroke(0.65);
     stroke(0.7);
     EXPECT_TRUE(frame(s, {0, 0}, false));

@@ -15,7 +15,9 @@
 #include <thread>
 
 #include "io/write_faults.h"
+#include "tests/disk_full.h"
 #include "tests/same_grid.h"
+#include "tests/test_folder.h"
 #include "test_models.h"
 #include "voxel/grid_page.h"
 #include "voxel/sampler.h"
@@ -26,18 +28,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct TempDir {
-    fs::path path;
-    TempDir() {
-        path = fs::temp_directory_path() / ("hg_grid_page_" + std::to_string(::getpid()) + "_" +
-                                            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::create_directories(path);
-    }
-    ~TempDir() { fs::remove_all(path); }
-    std::size_t entries() const {
-        return static_cast<std::size_t>(std::distance(fs::directory_iterator(path), fs::directory_iterator()));
-    }
-};
+using TempDir = ::hg::test::TestFolder;
 
 Volume torusBlock(int resolution = 64) {
     frep::Model model = test::modelFromSource(test::kTorusBlock, {0.25, -3});
@@ -52,7 +43,7 @@ using ::hg::test::expectSameGrid;
 using ::hg::test::sameBits;
 
 TEST(GridPage, PagedOutAndBackIsTheSameGridBitForBit) {
-    TempDir dir;
+    TempDir dir("hg_grid_page");
     Volume v = torusBlock();
     const Volume before = v.clone();
     ASSERT_GT(v.memoryBytes(), 0u);
@@ -74,7 +65,7 @@ TEST(GridPage, PagedOutAndBackIsTheSameGridBitForBit) {
 }
 
 TEST(GridPage, TakenBackBeforeItsWriteWritesNothing) {
-    TempDir dir;
+    TempDir dir("hg_grid_page");
     Volume v = torusBlock(32);
     const Volume before = v.clone();
     const std::shared_ptr<GridPage> page = v.pageOut(dir.path.string());
@@ -88,16 +79,10 @@ TEST(GridPage, TakenBackBeforeItsWriteWritesNothing) {
 }
 
 TEST(GridPage, AFailedWriteKeepsTheGridAndSaysWhy) {
-    TempDir dir;
+    TempDir dir("hg_grid_page");
     Volume v = torusBlock(32);
     const Volume before = v.clone();
-    io::FaultPlan full;
-    full.anySite = false;
-    full.site = io::WriteSite::PageFile;
-    full.first = 1;
-    full.last = SIZE_MAX;
-    full.error = ENOSPC;
-    io::setFaultPlan(full);
+    io::setFaultPlan(::hg::test::diskFullAt(io::WriteSite::PageFile));
     const std::shared_ptr<GridPage> page = v.pageOut(dir.path.string());
     page->write();
     io::setFaultPlan(std::nullopt);
@@ -110,7 +95,7 @@ TEST(GridPage, AFailedWriteKeepsTheGridAndSaysWhy) {
 }
 
 TEST(GridPage, IdenticalGridsShareOneFile) {
-    TempDir dir;
+    TempDir dir("hg_grid_page");
     Volume a = torusBlock(32);
     Volume b = a.clone();
     const std::shared_ptr<GridPage> pa = a.pageOut(dir.path.string());
@@ -124,7 +109,7 @@ TEST(GridPage, IdenticalGridsShareOneFile) {
 }
 
 TEST(GridPage, ReadBackOffTheOwnersThreadIsAdopted) {
-    TempDir dir;
+    TempDir dir("hg_grid_page");
     Volume v = torusBlock(32);
     const Volume before = v.clone();
     const std::shared_ptr<GridPage> page = v.pageOut(dir.path.string());
@@ -139,7 +124,7 @@ TEST(GridPage, ReadBackOffTheOwnersThreadIsAdopted) {
 }
 
 TEST(GridPage, ManyThreadsReadingBringItBackOnce) {
-    TempDir dir;
+    TempDir dir("hg_grid_page");
     Volume v = torusBlock(48);
     const Volume before = v.clone();
     v.pageOut(dir.path.string())->write();
@@ -158,20 +143,14 @@ TEST(GridPage, ManyThreadsReadingBringItBackOnce) {
 // disk refuses every write here, and the page still goes); one changed
 // through its mutable grid() is written again.
 TEST(GridPage, AnUnchangedGridGoesAgainWithoutAWrite) {
-    TempDir dir;
+    TempDir dir("hg_grid_page");
     Volume v = torusBlock(32);
     const Volume before = v.clone();
     const std::shared_ptr<GridPage> first = v.pageOut(dir.path.string());
     first->write();
     ASSERT_EQ(first->state(), GridPage::State::Written);
     EXPECT_TRUE(sameBits(static_cast<const Volume&>(v).value(0, 0, 0), before.value(0, 0, 0)));  // read back, const
-    io::FaultPlan full;
-    full.anySite = false;
-    full.site = io::WriteSite::PageFile;
-    full.first = 1;
-    full.last = SIZE_MAX;
-    full.error = ENOSPC;
-    io::setFaultPlan(full);
+    io::setFaultPlan(::hg::test::diskFullAt(io::WriteSite::PageFile));
     const std::shared_ptr<GridPage> again = v.pageOut(dir.path.string());
     again->write();
     EXPECT_EQ(again->state(), GridPage::State::Written) << again->problem();
@@ -186,7 +165,7 @@ TEST(GridPage, AnUnchangedGridGoesAgainWithoutAWrite) {
 }
 
 TEST(GridPage, AMissingPageIsAnErrorNamingItsFile) {
-    TempDir dir;
+    TempDir dir("hg_grid_page");
     Volume v = torusBlock(32);
     const std::shared_ptr<GridPage> page = v.pageOut(dir.path.string());
     page->write();

@@ -11,6 +11,7 @@
 #include <fstream>
 
 #include "test_models.h"
+#include "tests/test_folder.h"
 #include "voxel/sampler.h"
 #include "voxel/vdb_io.h"
 #include "voxel/volume_vdb.h"
@@ -20,19 +21,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct TempDir {
-    fs::path path;
-    TempDir() {
-        path = fs::temp_directory_path() / ("hg_vdb_io_" + std::to_string(::getpid()) + "_" +
-                                            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::create_directories(path);
-    }
-    ~TempDir() { fs::remove_all(path); }
-    std::string file(const std::string& name) const { return (path / name).string(); }
-    std::size_t entries() const {
-        return static_cast<std::size_t>(std::distance(fs::directory_iterator(path), fs::directory_iterator()));
-    }
-};
+using TempDir = ::hg::test::TestFolder;
 
 Volume torusBlock() {
     frep::Model model = test::modelFromSource(test::kTorusBlock, {0.25, -3});
@@ -45,7 +34,7 @@ Volume torusBlock() {
 }
 
 TEST(VdbIo, RoundTripKeepsValuesFrameAndMetadata) {
-    TempDir dir;
+    TempDir dir("hg_vdb_io");
     Volume v = torusBlock();
     ASSERT_EQ(writeVolume(v, dir.file("tb.vdb")), "");
     EXPECT_EQ(dir.entries(), 1u) << "no temporary file is left beside the output";
@@ -89,7 +78,7 @@ TEST(VdbIo, RoundTripKeepsValuesFrameAndMetadata) {
 }
 
 TEST(VdbIo, LevelSetExportFollowsOpenVdbsConvention) {
-    TempDir dir;
+    TempDir dir("hg_vdb_io");
     Volume v = torusBlock();
     const std::string path = dir.file("tb_ls.vdb");
     ASSERT_EQ(writeLevelSet(v, path), "");
@@ -136,7 +125,7 @@ TEST(VdbIo, LevelSetExportFollowsOpenVdbsConvention) {
 }
 
 TEST(VdbIo, FailuresSayWhyAndLeaveNothingBehind) {
-    TempDir dir;
+    TempDir dir("hg_vdb_io");
     Volume v = torusBlock();
     std::string why = writeVolume(v, dir.file("no/such/dir/tb.vdb"));
     EXPECT_NE(why.find("cannot write"), std::string::npos) << why;
