@@ -310,7 +310,7 @@ private:
             }
             if (overlay_) drawPanels();
             const garden::RenderStats rs = renderer_.endFrame();
-            drawn = {rs.trianglesDrawn, rs.chunksDrawn, rs.drawCalls, rs.gpuMs()};
+            drawn = {rs.trianglesDrawn, rs.chunksDrawn, rs.drawCalls, rs.gpuMs(), rs.impostorsDrawn};
             ++info_.framesRendered;
         }
         headset_.endFrame(f, render, kNearZ, kFarZ);

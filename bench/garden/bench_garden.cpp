@@ -47,6 +47,7 @@
 //       [--walk-speed S] [--samples N,N,...] [--resolutions R,R]
 //       [--scale N,N,...] [--scale-resolution R] [--scale-frames N]
 //       [--scale-load start|progressive] [--upload-bytes N] [--memory-budget MIB]
+//       [--draw multi|per-chunk|both] [--quality low|medium|high] [--impostor-distance M,M,...]
 //
 // Row names for --filter: morph/128/1600 ... morph/256/1000000,
 // nav/keys/lod, nav/keys/nolod, nav/all/lod, nav/all/nolod, scale/48,
@@ -107,6 +108,7 @@ struct Options {
     // Offscreen scale rows: each walk drawn with multi-draw, one call per
     // chunk, or both in turn over the same garden (the peer in the same run).
     std::vector<std::string> drawModes{"multi", "per-chunk"};
+    std::vector<double> impostorDistances{30.0};  // offscreen scale rows: one walk each (0: no impostors)
     std::string quality = "high";
 };
 
@@ -142,6 +144,7 @@ bool parseOptions(int argc, char** argv, Options& o) {
         else if (a == "--scale-frames" && hasValue) o.scaleFrames = std::max(10, std::atoi(argv[++i]));
         else if (a == "--upload-bytes" && hasValue) o.uploadBytes = std::strtoull(argv[++i], nullptr, 10);
         else if (a == "--memory-budget" && hasValue) o.memoryBudgetMiB = std::strtoull(argv[++i], nullptr, 10);
+        else if (a == "--impostor-distance" && hasValue) o.impostorDistances = parseList<double>(argv[++i]);
         else if (a == "--draw" && hasValue) {
             const std::string how = argv[++i];
             if (how != "multi" && how != "per-chunk" && how != "both") {
@@ -171,7 +174,8 @@ bool parseOptions(int argc, char** argv, Options& o) {
                      "       [--offscreen] [--viewport WxH] [--max-frames N] [--remesh-chunks N] [--walk-speed S]\n"
                      "       [--samples N,N,...] [--resolutions R,R] [--scale N,N,...] [--scale-resolution R]\n"
                      "       [--scale-frames N] [--scale-load start|progressive] [--upload-bytes N]\n"
-                     "       [--draw multi|per-chunk|both] [--quality low|medium|high] [--memory-budget MIB]\n");
+                     "       [--draw multi|per-chunk|both] [--quality low|medium|high] [--memory-budget MIB]\n"
+                     "       [--impostor-distance M,M,...]\n");
         return false;
     }
     return true;
@@ -747,9 +751,9 @@ void scaleTable(const Options& o, nlohmann::json& json) {
                     "frames over 11.1 ms | chunks tested by LOD (mean) | triangles shown (mean) | %snew mesh KiB per frame (max) | "
                     "peak memory (MiB) | held after the walk: grids / levels / meshes / morph sources (MiB), grids on disk |\n",
                     gl ? "draw | " : "", gl ? "upload | render | GPU ms | " : "",
-                    gl ? "chunks drawn (mean) | triangles drawn (mean) | draw calls (mean) | " : "");
+                    gl ? "chunks drawn (mean) | impostors drawn (mean) | triangles drawn (mean) | draw calls (mean) | " : "");
         std::printf("|---:|---:|---:|---:|---:|%s---|---|---|%s---|---:|---:|---:|%s---:|---:|---|\n", gl ? "---|" : "",
-                    gl ? "---|---|---|" : "", gl ? "---:|---:|---:|" : "");
+                    gl ? "---|---|---|" : "", gl ? "---:|---:|---:|---:|" : "");
     };
     for (int n : o.scaleCounts) {
         const std::string name = "scale/" + std::to_string(n);
@@ -805,12 +809,24 @@ void scaleTable(const Options& o, nlohmann::json& json) {
             std::fprintf(stderr, "%s: %s\n", name.c_str(), r.ok() ? "not settled within --max-frames" : r.error.c_str());
             continue;
         }
-        const std::vector<std::string> modes = gl ? o.drawModes : std::vector<std::string>{""};
+        // Offscreen: each draw mode with each impostor distance, walked in turn.
+        struct Mode {
+            std::string draw;
+            double cards = 0.0;
+        };
+        std::vector<Mode> modes;
+        for (const std::string& d : gl ? o.drawModes : std::vector<std::string>{""})
+            for (double cards : gl ? o.impostorDistances : std::vector<double>{0.0}) modes.push_back({d, cards});
         for (std::size_t m = 0; m < modes.size(); ++m) {
 #ifdef HG_BENCH_OFFSCREEN
-            if (gl && !scene.offscreen->setMultiDraw(modes[m] == "multi")) {
+            if (gl && !scene.offscreen->setMultiDraw(modes[m].draw == "multi")) {
                 std::fprintf(stderr, "%s: this GL has no multi-draw (GL 4.3)\n", name.c_str());
                 continue;
+            }
+            if (gl) {
+                RenderQuality q = qualityOf(*parseQualityPreset(o.quality));
+                q.impostorDistance = static_cast<float>(modes[m].cards);
+                scene.offscreen->setQuality(q);
             }
 #endif
             // Back at the start and settled again: each mode walks the same garden from the same state.
@@ -824,7 +840,7 @@ void scaleTable(const Options& o, nlohmann::json& json) {
                 continue;
             }
             std::array<std::vector<double>, kStageCount> perStage;
-            std::vector<double> totals, visited, shown, gpu, calls, drawn, triangles;
+            std::vector<double> totals, visited, shown, gpu, calls, drawn, triangles, cards;
             std::size_t over = 0, bytesMax = 0;
             for (std::size_t i = 0; i < run.frames.size(); ++i) {
                 const FrameStats& f = run.frames[i];
@@ -836,6 +852,7 @@ void scaleTable(const Options& o, nlohmann::json& json) {
                 calls.push_back(static_cast<double>(f.drawCalls));
                 drawn.push_back(static_cast<double>(f.chunksDrawn));
                 triangles.push_back(static_cast<double>(f.trianglesDrawn));
+                cards.push_back(static_cast<double>(f.impostorsDrawn));
                 over += f.totalMs > 11.1 ? 1 : 0;
                 bytesMax = std::max(bytesMax, f.meshBytesShown);
             }
@@ -851,12 +868,17 @@ void scaleTable(const Options& o, nlohmann::json& json) {
                           mib(held.meshes), mib(held.morphSources), held.pagedOut);
             std::string drawColumns, glColumns, countColumns;
             if (gl) {
-                drawColumns = modes[m] + " | ";
+                char mode[64];
+                if (modes[m].cards > 0.0)
+                    std::snprintf(mode, sizeof mode, "%s, cards beyond %.0f m", modes[m].draw.c_str(), modes[m].cards);
+                else
+                    std::snprintf(mode, sizeof mode, "%s, no cards", modes[m].draw.c_str());
+                drawColumns = std::string(mode) + " | ";
                 glColumns = spreadCell(stage(Stage::Upload)) + " | " + spreadCell(stage(Stage::Render)) + " | " +
                             (gpu.empty() ? std::string("-") : spreadCell(spread(gpu))) + " | ";
-                char b[96];
-                std::snprintf(b, sizeof b, "%.0f | %.0f | %.1f | ", spread(drawn).mean, spread(triangles).mean,
-                              spread(calls).mean);
+                char b[128];
+                std::snprintf(b, sizeof b, "%.0f | %.0f | %.0f | %.1f | ", spread(drawn).mean, spread(cards).mean,
+                              spread(triangles).mean, spread(calls).mean);
                 countColumns = b;
             }
             head();
@@ -875,7 +897,9 @@ void scaleTable(const Options& o, nlohmann::json& json) {
                                      {"progressive", o.scaleProgressive}, {"loading_at_first_frame", loadingAtFirst},
                                      {"upload_bytes_per_frame", o.uploadBytes}, {"mesh_bytes_shown_max", bytesMax},
                                      {"settle_frames", settleFrames}, {"walk_frames", run.frames.size()},
-                                     {"offscreen", gl}, {"draw", modes[m]}, {"quality", gl ? o.quality : ""},
+                                     {"offscreen", gl}, {"draw", modes[m].draw}, {"quality", gl ? o.quality : ""},
+                                     {"impostor_distance", modes[m].cards},
+                                     {"impostors_drawn", spreadJson(spread(cards))},
                                      {"viewport", {o.width, o.height}},
                                      {"stage_ms", stages}, {"total_ms", spreadJson(spread(totals))},
                                      {"gpu_ms", spreadJson(spread(gpu))}, {"draw_calls", spreadJson(spread(calls))},

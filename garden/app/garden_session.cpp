@@ -405,6 +405,7 @@ void GardenSession::uploadAndRender(ViewSink& views) {
     stats().chunksDrawn = drawn.chunksDrawn;
     stats().drawCalls = drawn.drawCalls;
     stats().gpuMs = drawn.gpuMs;
+    stats().impostorsDrawn = drawn.impostorsDrawn;
 }
 
 void GardenSession::input(const Hands& hands, double dt) {

@@ -121,21 +121,10 @@ Renderer::Renderer()
       batch_(std::make_unique<ChunkBatch>()),
       shadowBatch_(std::make_unique<ChunkBatch>()),
       multiDraw_(multiDrawAvailable()) {
-    auto lit = [](const ShaderProgram& p) {
-        return LitUniforms{p.uniform("uEye"),         p.uniform("uAmbient"),       p.uniform("uLightCount"),
-                           p.uniform("uLightDir"),    p.uniform("uLightColor"),    p.uniform("uPointCount"),
-                           p.uniform("uPointPosition"), p.uniform("uPointColor"), p.uniform("uPointRange")};
-    };
-    meshLit_ = lit(meshProgram_);
-    groundLit_ = lit(groundProgram_);
-    auto shadowed = [](const ShaderProgram& p) {
-        p.use();
-        glUniform1i(p.uniform("uShadowMap"), kShadowUnit);
-        return ShadowUniforms{p.uniform("uShadows"), p.uniform("uShadowMatrix"), p.uniform("uShadowOffset"),
-                              p.uniform("uShadowTexel")};
-    };
-    meshShadow_ = shadowed(meshProgram_);
-    groundShadow_ = shadowed(groundProgram_);
+    meshLit_ = litUniforms(meshProgram_);
+    groundLit_ = litUniforms(groundProgram_);
+    meshShadow_ = shadowUniforms(meshProgram_);
+    groundShadow_ = shadowUniforms(groundProgram_);
     const ShaderProgram& m = meshProgram_;
     mesh_ = {m.uniform("uViewProjection"), m.uniform("uBump")};
     m.use();
@@ -183,6 +172,94 @@ Renderer::Renderer()
 }
 
 Renderer::~Renderer() = default;
+
+Renderer::LitUniforms Renderer::litUniforms(const ShaderProgram& p) {
+    return LitUniforms{p.uniform("uEye"),         p.uniform("uAmbient"),       p.uniform("uLightCount"),
+                       p.uniform("uLightDir"),    p.uniform("uLightColor"),    p.uniform("uPointCount"),
+                       p.uniform("uPointPosition"), p.uniform("uPointColor"), p.uniform("uPointRange")};
+}
+
+Renderer::ShadowUniforms Renderer::shadowUniforms(const ShaderProgram& p) {
+    p.use();
+    glUniform1i(p.uniform("uShadowMap"), kShadowUnit);
+    return ShadowUniforms{p.uniform("uShadows"), p.uniform("uShadowMatrix"), p.uniform("uShadowOffset"),
+                          p.uniform("uShadowTexel")};
+}
+
+// --- impostors -------------------------------------------------------------------
+
+void Renderer::ensureImpostors() {
+    if (atlas_) return;
+    atlas_ = std::make_unique<ImpostorAtlas>(impostorSettings_);
+    cards_ = std::make_unique<ImpostorCards>();
+    // The mesh program itself, made to write what a frame holds instead of
+    // lighting it: the impostor shows the very colours and relief.
+    std::string fragment = shaders::kMeshFragment;
+    const std::string version = "#version 330 core\n";
+    fragment.insert(version.size(), "#define HG_BAKE 1\n");
+    bakeProgram_ = std::make_unique<ShaderProgram>("impostor bake", shaders::kMeshVertex, fragment.c_str());
+    bakeProgram_->use();
+    glUniform1i(bakeProgram_->uniform("uDrawRecords"), kDrawRecordUnit);
+    bakeBatch_ = std::make_unique<ChunkBatch>();
+    cardLit_ = litUniforms(cards_->sceneProgram());
+    cardShadow_ = shadowUniforms(cards_->sceneProgram());
+    glUseProgram(0);
+}
+
+bool Renderer::hasImpostor(ImpostorKey key, std::uint64_t version) const {
+    return atlas_ && atlas_->has(key, version);
+}
+
+bool Renderer::bakeImpostor(ImpostorKey key, std::uint64_t version, const std::vector<ChunkId>& ids,
+                            const RenderMaterial& material) {
+    ensureImpostors();
+    bakeBatch_->clear();
+    glm::vec3 lo(1e30f), hi(-1e30f);
+    bool previousNormals = false;
+    std::size_t record = 0;
+    for (ChunkId id : ids) {
+        auto found = chunks_.find(id);
+        if (found == chunks_.end()) return false;
+        const ChunkRecord& c = found->second;
+        const ArenaSlot* slot = arena_->slot(id);
+        if (c.indexCount == 0 || slot == nullptr) continue;
+        if (bakeBatch_->empty() || c.hasNormals != previousNormals) {
+            record = bakeBatch_->addRecord(drawRecord(glm::mat4(1.0f), material, c.hasNormals));
+            previousNormals = c.hasNormals;
+        }
+        bakeBatch_->add(*slot, record);
+        lo = glm::min(lo, c.lo);
+        hi = glm::max(hi, c.hi);
+    }
+    if (bakeBatch_->empty()) return false;
+    GLint draw = 0, read = 0;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &draw);
+    glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &read);
+    bakeProgram_->use();
+    glUniform1f(bakeProgram_->uniform("uBump"), quality_.materialBump ? 1.0f : 0.0f);
+    const bool baked = atlas_->bake(key, version, *bakeBatch_, *arena_, multiDraw_, *bakeProgram_, 0.5f * (lo + hi),
+                                    0.5f * glm::length(hi - lo));
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(draw));
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(read));
+    glUseProgram(0);
+    if (baked) stats_.impostorsBaked += 1;
+    return baked;
+}
+
+bool Renderer::drawImpostor(ImpostorKey key, std::uint64_t version, const glm::mat4& model,
+                            const RenderMaterial& material) {
+    if (!atlas_) return false;
+    const ImpostorEntry* e = atlas_->use(key, version);
+    if (e == nullptr) return false;
+    ImpostorCard card;
+    card.model = model;
+    card.sphere = glm::vec4(e->centre, e->radius);
+    card.look = glm::vec4(static_cast<float>(e->layer), material.specular, material.shininess, material.metallic);
+    cardDraws_.push_back(card);
+    stats_.impostorsDrawn += 1;
+    stats_.trianglesDrawn += 2;
+    return true;
+}
 
 // --- chunk buffers -----------------------------------------------------------
 
@@ -251,6 +328,7 @@ void Renderer::beginFrame(const View& view) {
     sceneDraws_.clear();
     flatDraws_.clear();
     linePoints_.clear();
+    cardDraws_.clear();
 }
 
 void Renderer::setLighting(const LitUniforms& u, const ShadowUniforms& s, bool shadowed) const {
@@ -413,14 +491,30 @@ void Renderer::gatherChunks(glm::vec3& lo, glm::vec3& hi) {
         lo = glm::min(lo, centre - glm::vec3(radius));
         hi = glm::max(hi, centre + glm::vec3(radius));
     }
+    // Cards cast too (facing the sun), fitted by their bounding spheres.
+    cardsCast_ = false;
+    for (const ImpostorCard& card : cardDraws_) {
+        const glm::vec3 centre = glm::vec3(card.model * glm::vec4(glm::vec3(card.sphere), 1.0f));
+        const float radius = card.sphere.w * glm::length(glm::vec3(card.model[0]));
+        if (glm::length(centre - view_.eye) - radius > shadowReach) continue;
+        cardsCast_ = true;
+        lo = glm::min(lo, centre - glm::vec3(radius));
+        hi = glm::max(hi, centre + glm::vec3(radius));
+    }
 }
 
 bool Renderer::renderShadows(const glm::vec3& lo, const glm::vec3& hi) {
     // The ground only receives: the casters are the view's chunks.
-    if (!quality_.shadows || view_.lights.empty() || shadowBatch_->empty()) return false;
+    if (!quality_.shadows || view_.lights.empty() || (shadowBatch_->empty() && !cardsCast_)) return false;
     timers_->begin(GpuPass::Shadow);
     stats_.shadowDrawCalls += shadow_->render(*shadowBatch_, *arena_, multiDraw_, lo, hi,
                                               view_.lights.front().direction, quality_.shadowMapSize);
+    if (!cardDraws_.empty()) {
+        glDisable(GL_CULL_FACE);
+        stats_.shadowDrawCalls +=
+            cards_->drawShadows(*atlas_, shadow_->lightViewProjection(), view_.lights.front().direction);
+        glEnable(GL_CULL_FACE);
+    }
     timers_->end();
     return true;
 }
@@ -462,6 +556,11 @@ void Renderer::renderScene(bool shadowed) {
     // tests then skip its pixels.
     meshProgram_.use();
     stats_.drawCalls += batch_->draw(*arena_, multiDraw_);
+    if (!cardDraws_.empty()) {
+        cards_->sceneProgram().use();
+        setLighting(cardLit_, cardShadow_, shadowed);
+        stats_.drawCalls += cards_->drawScene(*atlas_, viewProjection, view_.eye);
+    }
     for (const SceneDraw& d : sceneDraws_)
         if (d.ground) drawGroundNow(d.groundStyle);
     sky_->draw(view_);
@@ -478,6 +577,7 @@ void Renderer::finishView() {
     targets_->ensure(sceneSize, quality_.msaaSamples);
 
     glm::vec3 lo, hi;
+    if (!cardDraws_.empty()) cards_->send(cardDraws_);
     gatherChunks(lo, hi);
     const bool shadowed = renderShadows(lo, hi);
     renderScene(shadowed);
@@ -590,6 +690,7 @@ void Renderer::drawFlatNow(const FlatDraw& d) {
 
 RenderStats Renderer::endFrame() {
     finishView();
+    if (atlas_) atlas_->nextFrame();
     RenderStats done = stats_;
     const auto& ms = timers_->latest();
     done.gpuShadowMs = ms[static_cast<std::size_t>(GpuPass::Shadow)];

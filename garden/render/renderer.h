@@ -35,6 +35,8 @@
 
 #include "garden/render/chunk_arena.h"
 #include "garden/render/gl_objects.h"
+#include "garden/render/impostor_atlas.h"
+#include "garden/render/impostor_cards.h"
 #include "garden/render/render_quality.h"
 #include "garden/render/shader_program.h"
 #include "polygonizer/mesh.h"
@@ -125,6 +127,8 @@ struct RenderStats {
     std::size_t drawCalls = 0;        // GL draw calls for the scene, lines and sphere: one per batch of chunks
     std::size_t shadowDrawCalls = 0;  // GL draw calls of the casters into the shadow map
     std::size_t bytesUploaded = 0;
+    std::size_t impostorsDrawn = 0;   // cards drawn in place of far sculptures' chunks
+    std::size_t impostorsBaked = 0;   // impostors rendered into the atlas since the last endFrame
     // GPU milliseconds per pass of the latest view the GPU has finished
     // (GL timer queries, read without waiting: a view or a few behind); -1
     // where a pass did not run or no result is in yet.
@@ -172,6 +176,25 @@ public:
     // off; returns whether it is on.
     bool setMultiDraw(bool on);
     bool multiDraw() const { return multiDraw_; }
+
+    // --- impostors (impostor_atlas.h, impostor_cards.h) -------------------------
+    // Made on first use: a renderer that never draws one compiles nothing for them.
+    bool hasImpostor(ImpostorKey key, std::uint64_t version) const;
+    // Renders impostor `key` at `version` from the resident chunks `ids`
+    // (one sculpture's, in model space) with `material`. False when one of
+    // them has no buffers, they hold no triangles, or every layer of the
+    // atlas holds an impostor drawn in this frame. Call between views (it
+    // draws into the atlas; the bound framebuffer and viewport are kept).
+    bool bakeImpostor(ImpostorKey key, std::uint64_t version, const std::vector<ChunkId>& ids,
+                      const RenderMaterial& material);
+    // A card for impostor `key` (current at `version`) placed by `model`,
+    // lit with `material`'s highlight. False when none is current.
+    bool drawImpostor(ImpostorKey key, std::uint64_t version, const glm::mat4& model, const RenderMaterial& material);
+    // Null before the first impostor.
+    const ImpostorAtlas* impostorAtlas() const { return atlas_.get(); }
+    // Frames per side and pixels per frame of the atlas made on first use
+    // (a test's smaller atlas); no effect once it is made.
+    void setImpostorSettings(const ImpostorSettings& settings) { impostorSettings_ = settings; }
 
     // --- quality -------------------------------------------------------------
     void setQuality(const RenderQuality& quality) { quality_ = quality; }
@@ -241,6 +264,9 @@ private:
         bool depthTested = true;
     };
 
+    static LitUniforms litUniforms(const ShaderProgram& p);
+    static ShadowUniforms shadowUniforms(const ShaderProgram& p);
+    void ensureImpostors();
     // Frame lighting and the shadow for the bound program whose locations are `u`.
     void setLighting(const LitUniforms& u, const ShadowUniforms& s, bool shadowed) const;
     // The view's chunk draws into batch_, the casters among them (within
@@ -290,6 +316,17 @@ private:
     std::unique_ptr<ChunkArena> arena_;  // every chunk's mesh
     std::unique_ptr<ChunkBatch> batch_;        // the open view's chunk draws
     std::unique_ptr<ChunkBatch> shadowBatch_;  // those of them that cast the sun's shadow
+    // Impostors: the atlas, the cards, the mesh program built to bake, the
+    // batch a bake draws, and the view's cards.
+    ImpostorSettings impostorSettings_;
+    std::unique_ptr<ImpostorAtlas> atlas_;
+    std::unique_ptr<ImpostorCards> cards_;
+    std::unique_ptr<ShaderProgram> bakeProgram_;
+    std::unique_ptr<ChunkBatch> bakeBatch_;
+    LitUniforms cardLit_{};
+    ShadowUniforms cardShadow_{};
+    std::vector<ImpostorCard> cardDraws_;
+    bool cardsCast_ = false;  // a card is within the shadow's reach in the open view
     bool multiDraw_ = false;
 
     View view_;

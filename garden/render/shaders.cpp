@@ -98,7 +98,16 @@ in vec3 vNormal;
 in vec3 vModel;
 flat in int vDraw;
 uniform float uBump;  // 1: the detail's relief tilts the shading normal (RenderQuality::materialBump)
-out vec4 fragColor;
+layout(location = 0) out vec4 fragColor;
+#ifdef HG_BAKE
+// An impostor's view (impostor_atlas.h): the surface's colour before
+// lighting, and its model-space normal and depth along the view, in
+// reaches (the view's half-width) from the centre.
+layout(location = 1) out vec4 bakeNormalDepth;
+uniform vec3 uBakeCentre;
+uniform vec3 uBakeToViewer;
+uniform float uBakeReach;
+#endif
 // Value noise in model space (hash after Dave Hoskins' hash13), and its sum
 // over four octaves, about 0..1 with mean 0.5.
 float hash3(vec3 p) {
@@ -227,6 +236,11 @@ void main() {
     }
     // (A draw's cavity is the same over a triangle: derivatives defined.)
     if (finish.z > 0.0) base *= cavityFactor(n, finish.z);
+#ifdef HG_BAKE
+    fragColor = vec4(base, 1.0);
+    bakeNormalDepth = vec4(n, dot(vModel - uBakeCentre, uBakeToViewer) / uBakeReach);
+    return;
+#endif
     // A metal's highlight is its own colour and strong; its diffuse light
     // fades (Blinn-Phong's stand-in for a metal's missing diffuse term).
     specular = mix(specular, base * (0.6 + specular), metallic);
@@ -320,6 +334,8 @@ uniform vec4 uColor;
 out vec4 fragColor;
 void main() { fragColor = uColor; }
 )";
+
+const char* const kLightingGlsl = HG_LIGHTING_GLSL;
 
 #undef HG_LIGHTING_GLSL
 

@@ -43,6 +43,11 @@ extern const char* const kMeshFragment;
 extern const char* const kGroundVertex;
 extern const char* const kGroundFragment;
 
+// The lit programs' shared functions (after "#version"): the frame's
+// lights, the sun's shadow and shade(), for programs built elsewhere (the
+// impostor cards).
+extern const char* const kLightingGlsl;
+
 // A triangle over the whole viewport (no vertex buffer; vUv in [0, 1]).
 extern const char* const kFullscreenVertex;
 

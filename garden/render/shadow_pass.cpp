@@ -87,6 +87,7 @@ std::size_t ShadowPass::render(ChunkBatch& casters, ChunkArena& arena, bool mult
     const glm::mat4 lightViewProjection = projection * rotation;
     const glm::mat4 bias = glm::translate(glm::mat4(1.0f), glm::vec3(0.5f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.5f));
     worldToTexture_ = bias * lightViewProjection;
+    lightMatrix_ = lightViewProjection;
     texelWorld_ = texel;
 
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.get());

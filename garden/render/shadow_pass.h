@@ -26,6 +26,8 @@ public:
 
     // World point to shadow-map texture coordinates and depth, all in [0, 1].
     const glm::mat4& worldToTexture() const { return worldToTexture_; }
+    // World point to the map's clip space (what render drew with).
+    const glm::mat4& lightViewProjection() const { return lightMatrix_; }
     // Metres one texel spans: how far the lit programs offset along the normal.
     float texelWorld() const { return texelWorld_; }
     int size() const { return size_; }
@@ -40,6 +42,7 @@ private:
     gl::Texture depth_;
     int size_ = 0;
     glm::mat4 worldToTexture_{1.0f};
+    glm::mat4 lightMatrix_{1.0f};
     float texelWorld_ = 0.0f;
 };
 

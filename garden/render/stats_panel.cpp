@@ -102,6 +102,7 @@ void drawStatsPanel(const FrameHistory& history, bool toggle, const std::functio
         counterRow("triangles drawn", last->trianglesDrawn);
         counterRow("chunks drawn", last->chunksDrawn);
         counterRow("draw calls", last->drawCalls);
+        counterRow("impostors drawn", last->impostorsDrawn);
         ImGui::EndTable();
     }
     if (memory) {

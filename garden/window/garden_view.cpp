@@ -4,8 +4,10 @@
 #include <chrono>
 #include <cmath>
 
+#include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "garden/window/impostor_identity.h"
 #include "garden/window/view_lights.h"
 #include "garden/render/material_look.h"
 #include "garden/scene/to_glm.h"
@@ -114,7 +116,64 @@ ViewUpload GardenView::upload(const GardenSession& session, double allowanceMs) 
         uploaded_[s] = q.shownGeneration() + 1;
         spent = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count() >= allowanceMs;
     }
+    if (!spent) bakeImpostors(session, start, allowanceMs);
     return done;
+}
+
+bool GardenView::drawnAsCard(const GardenSession& session, std::size_t s, const RenderMaterial& m,
+                             const double lo[3], const double hi[3], const glm::vec3& eye) {
+    if (far_.size() <= s) far_.resize(s + 1);
+    Far& f = far_[s];
+    f.wanted = false;
+    const float distance = renderer_.quality().impostorDistance;
+    if (!(distance > 0.0f) || m.edges != 0) return f.card = false;
+    const Sculpture& st = session.sculptures()[s];
+    const glm::vec3 a(static_cast<float>(lo[0]), static_cast<float>(lo[1]), static_cast<float>(lo[2]));
+    const glm::vec3 b(static_cast<float>(hi[0]), static_cast<float>(hi[1]), static_cast<float>(hi[2]));
+    const glm::vec3 centre = glm::vec3(st.modelToWorld() * glm::vec4(0.5f * (a + b), 1.0f));
+    const float radius = 0.5f * glm::length(b - a) * static_cast<float>(st.scale());
+    const float away = glm::length(eye - centre) - radius;
+    // A little nearer to go back to the chunks than to leave them: no
+    // flicker for a visitor standing at the distance.
+    if (away <= (f.card ? 0.9f : 1.0f) * distance) return f.card = false;
+    const ImpostorId id = impostorId(session, s, m);
+    if (renderer_.drawImpostor(id.key, id.version, st.modelToWorld(), m)) return f.card = true;
+    f.wanted = true;
+    f.away = away;
+    return f.card = false;
+}
+
+RenderMaterial GardenView::materialOf(const Sculpture& st) const {
+    const frep::Box3& box = st.layout->frame().modelBox;
+    const double size = std::max({box.hi[0] - box.lo[0], box.hi[1] - box.lo[1], box.hi[2] - box.lo[2]});
+    return lookedAt(renderMaterial(st.material, detailScaleFor(size)), look_);
+}
+
+void GardenView::bakeImpostors(const GardenSession& session, const std::chrono::steady_clock::time_point& start,
+                               double allowanceMs) {
+    std::vector<std::size_t> wanted;
+    for (std::size_t s = 0; s < far_.size() && s < session.sculptures().size(); ++s)
+        if (far_[s].wanted) wanted.push_back(s);
+    std::sort(wanted.begin(), wanted.end(), [&](std::size_t a, std::size_t b) { return far_[a].away < far_[b].away; });
+    int baked = 0;
+    std::vector<ChunkId> ids;
+    for (std::size_t s : wanted) {
+        if (baked >= kBakesPerFrame ||
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count() >= allowanceMs)
+            break;
+        const Sculpture& st = session.sculptures()[s];
+        // From the meshes on show, whole: every chunk meshed at its level and uploaded.
+        if (!st.onShow() || st.queue->pending() != 0 || st.queue->meshing() || s >= uploaded_.size() ||
+            uploaded_[s] != st.queue->shownGeneration() + 1)
+            continue;
+        const RenderMaterial m = materialOf(st);
+        const ImpostorId id = impostorId(session, s, m);
+        far_[s].wanted = false;
+        if (renderer_.hasImpostor(id.key, id.version)) continue;  // a copy's bake, this frame
+        ids.clear();
+        for (std::size_t c = 0; c < st.queue->count(); ++c) ids.push_back(chunkId(s, c));
+        if (renderer_.bakeImpostor(id.key, id.version, ids, m)) ++baked;
+    }
 }
 
 void GardenView::render(const GardenSession& session, glm::ivec2 viewport, float fovY) {
@@ -152,9 +211,7 @@ void GardenView::render(const GardenSession& session, glm::ivec2 viewport, const
             continue;
         }
         if (!st.hasGrid()) continue;  // still loading
-        const frep::Box3& box = st.layout->frame().modelBox;
-        const double size = std::max({box.hi[0] - box.lo[0], box.hi[1] - box.lo[1], box.hi[2] - box.lo[2]});
-        const RenderMaterial m = lookedAt(renderMaterial(st.material, detailScaleFor(size)), look_);
+        const RenderMaterial m = materialOf(st);
         const glm::mat4 mvp = v.projection * v.view * st.modelToWorld();
         // The sculpture's whole box first (the layout's first and last
         // chunks hold its corners): one test instead of one per chunk for a
@@ -166,6 +223,7 @@ void GardenView::render(const GardenSession& session, glm::ivec2 viewport, const
         st.layout->modelBox(chunks - 1, last, hi);
         const InView whole = frustumTest(mvp, lo, hi);
         if (whole == InView::Outside) continue;
+        if (drawnAsCard(session, s, m, lo, hi, eye)) continue;
         for (std::size_t c = 0; c < chunks; ++c) {
             const auto mesh = st.queue->mesh(c);
             if (!mesh || mesh->empty()) continue;

@@ -5,6 +5,7 @@
 // --offscreen`, so screenshots show what the window shows.
 #pragma once
 
+#include <chrono>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -24,11 +25,17 @@ public:
     // Uploads the chunks whose shown mesh changed. A sculpture's chunks go
     // up together (its remesh queue shows groups at once, and so must the
     // GPU); once `allowanceMs` is spent the next sculptures wait for the
-    // next frame. The bytes uploaded, and the sculptures that wait.
+    // next frame. The bytes uploaded, and the sculptures that wait. Then
+    // bakes the impostors the last render wanted (nearest first, at most
+    // kBakesPerFrame, within the allowance), from sculptures whose meshes
+    // are all meshed and uploaded.
     ViewUpload upload(const GardenSession& session, double allowanceMs);
 
     // Draws into the bound framebuffer of `viewport` pixels; chunks outside
-    // the view frustum are not drawn.
+    // the view frustum are not drawn. A sculpture whose bounding sphere is
+    // beyond the renderer's RenderQuality::impostorDistance from the eye is
+    // drawn as its impostor card once one is baked (and back as chunks
+    // within 0.9 times that distance); not with the wireframe overlay.
     void render(const GardenSession& session, glm::ivec2 viewport, float fovY);
     // The same through a given camera (an XR eye: its own view and
     // off-centre projection, `eye` its world position).
@@ -50,7 +57,21 @@ public:
     // paths: a turntable shows one sculpture, with nothing passing in front.
     void showOnly(int index) { only_ = index; }
 
+    // Impostors baked per upload at most (each renders views^2 frames of
+    // one sculpture's coarse meshes).
+    static constexpr int kBakesPerFrame = 2;
+
 private:
+    // What a sculpture's chunks are drawn with: its material, sized for its
+    // detail, as the clay view or wireframe may change it.
+    RenderMaterial materialOf(const Sculpture& st) const;
+    // Draws sculpture `s` (model box lo..hi, in view) as its impostor card
+    // when it is far enough and one is current; else notes that it wants one.
+    bool drawnAsCard(const GardenSession& session, std::size_t s, const RenderMaterial& m, const double lo[3],
+                     const double hi[3], const glm::vec3& eye);
+    void bakeImpostors(const GardenSession& session, const std::chrono::steady_clock::time_point& start,
+                       double allowanceMs);
+
     Renderer& renderer_;
     ViewLook look_;
     int only_ = -1;
@@ -65,6 +86,14 @@ private:
         std::size_t chunks = 0;
     };
     std::vector<Uploaded> frames_;
+    // Per sculpture: drawn as a card in the last view, and whether (and how
+    // far beyond the distance) it wanted an impostor none was baked for.
+    struct Far {
+        bool card = false;
+        bool wanted = false;
+        float away = 0.0f;
+    };
+    std::vector<Far> far_;
 };
 
 }  // namespace hg::garden

@@ -70,6 +70,7 @@ void RemeshQueue::setLevels(const std::vector<int>& levels) {
 }
 
 void RemeshQueue::markChanged(const voxel::IndexBox& box) {
+    ++changes_;
     // A chunk reads its level's samples from its low corner to one past its
     // high corner, and one more on each side for gradients: at most one
     // cell of the coarsest level beyond its voxels. Only the chunks whose

@@ -102,6 +102,9 @@ public:
     // Grows whenever any chunk's shown mesh changes: a renderer that saw
     // this value has nothing new to upload.
     std::uint64_t shownGeneration() const { return shownGeneration_; }
+    // Grows with each markChanged (the surface itself changed, not its
+    // levels): what a picture of the whole sculpture, an impostor, follows.
+    std::uint64_t changes() const { return changes_; }
     // Dirty chunks (meshed or not, not yet shown), and the triangles of
     // every shown mesh: counted as they change, so a garden of thousands
     // of chunks asks for them every frame at no cost.
@@ -136,6 +139,7 @@ private:
     std::vector<Slot> slots_;
     std::array<double, 3> viewer_{};
     std::uint64_t shownGeneration_ = 0;
+    std::uint64_t changes_ = 0;
     std::size_t dirty_ = 0;
     std::size_t shownTriangles_ = 0;
     std::shared_ptr<MeshingJob> job_;  // under way on a worker
