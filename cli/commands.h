@@ -59,6 +59,7 @@ struct ReplayCommandOptions {
     bool noLod = false;               // every chunk at level 0
     std::string session;              // play into this session folder ("" : none)
     std::string quality = "high";     // --quality low|medium|high (offscreen rendering)
+    float impostorDistance = 30.0f;   // --impostor-distance: far sculptures as cards beyond it (0: never)
 };
 
 struct GardenOptions {
@@ -75,6 +76,7 @@ struct GardenOptions {
     std::string screenshotDir;        // "": the session's screenshots/, else ~/Pictures/hypergarden
     std::string session;              // open (or create) this session folder ("" : none)
     std::string quality = "auto";     // --quality auto|low|medium|high
+    float impostorDistance = 30.0f;   // --impostor-distance: far sculptures as cards beyond it (0: never)
     bool xr = false;                  // in a headset through OpenXR (docs/xr.md)
     std::string xrScript;             // with xr: a replay script's commands at their frames
     bool leftHanded = false;          // with xr: the left hand holds the tool

@@ -89,6 +89,7 @@ int runGarden(const GardenOptions& given) {
     d.vsync = !options.noVsync;
     d.budgetMs = options.budgetMs;
     d.memoryBudgetBytes = x.memoryBudgetBytes = options.memoryBudgetMiB << 20;
+    d.impostorDistance = x.impostorDistance = options.impostorDistance;
     d.screenshotDir = options.screenshotDir;
     d.session = options.session;
     // "auto" (no preset) is decided once the window knows its GL renderer.

@@ -57,6 +57,10 @@ int main(int argc, char** argv) {
     app.add_option("--memory-budget", gardenOpts.memoryBudgetMiB,
                    "MiB the sculptures may hold in memory; beyond it far sculptures' grids wait on disk until "
                    "you come near (default 1024; 0: no budget; docs/desktop.md)");
+    app.add_option("--impostor-distance", gardenOpts.impostorDistance,
+                   "Metres beyond which a sculpture is drawn as an impostor, a card of pictures made from it "
+                   "(default 30; 0: never; docs/rendering.md)")
+        ->check(CLI::NonNegativeNumber);
     app.add_option("--frames", gardenOpts.frames, "Close after this many frames (default: when the window closes)");
     app.add_option("--quality", gardenOpts.quality,
                    "Picture: auto (default: low on software rendering, else high), low, medium or high "
@@ -136,6 +140,9 @@ int main(int argc, char** argv) {
     replay->add_flag("--no-lod", replayOpts.noLod, "Every chunk at full detail");
     replay->add_option("--quality", replayOpts.quality, "Offscreen: low, medium or high (default; docs/rendering.md)")
         ->check(CLI::IsMember({"low", "medium", "high"}));
+    replay->add_option("--impostor-distance", replayOpts.impostorDistance,
+                       "Offscreen: far sculptures as impostor cards beyond this many metres (default 30; 0: never)")
+        ->check(CLI::NonNegativeNumber);
     replay->add_option("--session", replayOpts.session,
                        "Play into this session folder (made from the script's garden when new)");
     SessionCommandOptions sessionOpts;

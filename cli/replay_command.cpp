@@ -74,6 +74,7 @@ int runReplay(const ReplayCommandOptions& options) {
             return 1;
         }
         offscreen->setQuality(qualityOf(parseQualityPreset(options.quality).value_or(QualityPreset::High)));
+        offscreen->setImpostorDistance(options.impostorDistance);
     }
     ReplayOptions ro;
     ro.screenshotEvery = options.screenshotEvery;

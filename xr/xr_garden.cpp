@@ -80,6 +80,7 @@ public:
         if (options_.smoothTurn) user_.smoothTurn = *options_.smoothTurn;
         applyTurning();
         if (options_.quality) renderer_.setQuality(*options_.quality);
+        view_.setImpostorDistance(options_.impostorDistance);
         if (options_.mirror) overlay_ = w.overlay();
         gardenWindow_.events() = garden::WindowEvents{};
         controllers_ = std::make_unique<Controllers>(headset_.instance(), user_.leftHanded);

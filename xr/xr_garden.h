@@ -51,6 +51,7 @@ struct XrOptions {
     // Neither: the renderer's quality as it is.
     std::optional<garden::RenderQuality> quality;
     bool autoQuality = false;
+    float impostorDistance = 30.0f;  // far sculptures as cards beyond it (0: never; --impostor-distance)
     std::optional<garden::QualityPreset> autoCeiling;
     bool mirror = true;      // show the mirror window (hidden when false)
     // Called after every focused frame with its stats and its index from

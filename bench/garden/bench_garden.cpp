@@ -51,7 +51,8 @@
 //
 // Row names for --filter: morph/128/1600 ... morph/256/1000000,
 // nav/keys/lod, nav/keys/nolod, nav/all/lod, nav/all/nolod, scale/48,
-// scale/200, scale/1000, stages/carve/in-frame, stages/carve/off-thread,
+// scale/200, scale/1000, cards/48, cards/200, cards/1000 (with --offscreen),
+// stages/carve/in-frame, stages/carve/off-thread,
 // stages/morph/in-frame, stages/morph/off-thread.
 #include <algorithm>
 #include <chrono>
@@ -823,11 +824,7 @@ void scaleTable(const Options& o, nlohmann::json& json) {
                 std::fprintf(stderr, "%s: this GL has no multi-draw (GL 4.3)\n", name.c_str());
                 continue;
             }
-            if (gl) {
-                RenderQuality q = qualityOf(*parseQualityPreset(o.quality));
-                q.impostorDistance = static_cast<float>(modes[m].cards);
-                scene.offscreen->setQuality(q);
-            }
+            if (gl) scene.offscreen->setImpostorDistance(static_cast<float>(modes[m].cards));
 #endif
             // Back at the start and settled again: each mode walks the same garden from the same state.
             if (m > 0 && settle(o, scene, walk) == 0) {
@@ -912,6 +909,96 @@ void scaleTable(const Options& o, nlohmann::json& json) {
         }
     }
     std::printf("\n");
+}
+
+// The render stage alone with and without impostors (issue 25): the scale
+// garden settled headless from the visitor's start, then drawn offscreen
+// from there, each impostor distance in turn after the cards are baked;
+// the render's wall time per frame includes glFinish (on llvmpipe, the
+// rasterizing itself).
+void cardsTable(const Options& o, nlohmann::json& json) {
+#ifdef HG_BENCH_OFFSCREEN
+    if (!o.offscreen) return;
+    bool anyRow = false;
+    for (int n : o.scaleCounts) anyRow = anyRow || o.bench.matches("cards/" + std::to_string(n));
+    if (!anyRow) return;
+    constexpr int kFrames = 30;
+    std::printf("Impostors: the scale garden (3 m apart, %d^3) from the visitor's start, drawn offscreen at %d x %d, "
+                "quality %s, %d frames each: render ms per frame (draw calls, then glFinish) mean / p95 / p99 / max.\n\n",
+                o.scaleResolution, o.width, o.height, o.quality.c_str(), kFrames);
+    bool headed = false;
+    for (int n : o.scaleCounts) {
+        const std::string name = "cards/" + std::to_string(n);
+        if (!o.bench.matches(name)) continue;
+        ScaleGardenSpec spec;
+        spec.count = n;
+        spec.resolution = o.scaleResolution;
+        GardenLoad load = loadScaleGarden(defaultGarden(), spec);
+        if (!load.ok()) {
+            std::fprintf(stderr, "%s: %s\n", name.c_str(), load.error.c_str());
+            continue;
+        }
+        SessionSettings settings;
+        settings.viewportHeight = o.height;
+        settings.remeshChunksPerFrame = 4096;
+        GardenSession session(std::move(load), settings);
+        session.finishLoading();
+        for (int f = 0; f < o.maxFrames && !session.idle(); ++f) session.frame(FrameInput{});
+        std::string error;
+        std::unique_ptr<OffscreenGarden> offscreen = OffscreenGarden::create(o.width, o.height, error);
+        if (!offscreen) {
+            std::fprintf(stderr, "%s: %s\n", name.c_str(), error.c_str());
+            return;
+        }
+        offscreen->setQuality(qualityOf(*parseQualityPreset(o.quality)));
+        if (!headed) {
+            std::printf("GL: %s\n\n", GlWindow::glVersionString().c_str());
+            std::printf("| sculptures | impostors beyond | render ms | chunks drawn | impostors drawn | impostors baked | "
+                        "triangles drawn | draw calls | bake ms (first frames) |\n|---:|---|---|---:|---:|---:|---:|---:|---:|\n");
+            headed = true;
+        }
+        for (double distance : o.impostorDistances) {
+            offscreen->setImpostorDistance(static_cast<float>(distance));
+            // Uploads, then the frames that ask for cards and bake them.
+            const auto bakeStart = Clock::now();
+            for (int f = 0; f < 4; ++f) {
+                offscreen->upload(session, 1e9);
+                offscreen->render(session);
+            }
+            for (int f = 0; f < 200; ++f) {  // two bakes a frame: until every card is baked
+                offscreen->upload(session, 1e9);
+                const ViewDraw d = offscreen->render(session);
+                (void)d;
+                if (f > 0 && offscreen->impostorsWanted() == 0) break;
+            }
+            const double bakeMs = std::chrono::duration<double, std::milli>(Clock::now() - bakeStart).count();
+            std::vector<double> ms;
+            ViewDraw last;
+            for (int f = 0; f < kFrames; ++f) {
+                const auto t = Clock::now();
+                last = offscreen->render(session);
+                ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t).count());
+            }
+            char cards[48];
+            if (distance > 0.0) std::snprintf(cards, sizeof cards, "%.0f m", distance);
+            else std::snprintf(cards, sizeof cards, "none");
+            const std::size_t baked = offscreen->impostorsBaked();
+            std::printf("| %d | %s | %s | %zu | %zu | %zu | %zu | %zu | %.0f |\n", n, cards, spreadCell(spread(ms)).c_str(),
+                        last.chunksDrawn, last.impostorsDrawn, baked, last.trianglesDrawn, last.drawCalls, bakeMs);
+            std::fflush(stdout);
+            json["cards"].push_back({{"name", name}, {"sculptures", n}, {"resolution", o.scaleResolution},
+                                     {"impostor_distance", distance}, {"render_ms", spreadJson(spread(ms))},
+                                     {"chunks_drawn", last.chunksDrawn}, {"impostors_drawn", last.impostorsDrawn},
+                                     {"impostors_baked", baked}, {"triangles_drawn", last.trianglesDrawn},
+                                     {"draw_calls", last.drawCalls}, {"bake_ms", bakeMs},
+                                     {"viewport", {o.width, o.height}}, {"quality", o.quality}});
+        }
+    }
+    std::printf("\n");
+#else
+    (void)o;
+    (void)json;
+#endif
 }
 
 }  // namespace
@@ -1042,7 +1129,7 @@ int main(int argc, char** argv) {
 #endif
     nlohmann::json json = {{"morph", nlohmann::json::array()}, {"navigation", nlohmann::json::array()},
                            {"navigation_ratio", nlohmann::json::array()}, {"scale", nlohmann::json::array()},
-                           {"stages", nlohmann::json::array()}};
+                           {"stages", nlohmann::json::array()}, {"cards", nlohmann::json::array()}};
     json["options"] = {{"offscreen", o.offscreen}, {"viewport", {o.width, o.height}}, {"max_frames", o.maxFrames},
                        {"remesh_chunks", o.remeshChunks}, {"walk_speed", o.walkSpeed}, {"repeat", o.bench.repeat},
                        {"scale_resolution", o.scaleResolution}, {"scale_frames", o.scaleFrames},
@@ -1050,6 +1137,7 @@ int main(int argc, char** argv) {
     morphTable(o, json);
     navigationTable(o, json);
     scaleTable(o, json);
+    cardsTable(o, json);
     stagesTable(o, json);
     if (!o.bench.jsonPath.empty()) std::ofstream(o.bench.jsonPath) << json.dump(2) << "\n";
     return 0;

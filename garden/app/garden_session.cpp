@@ -225,7 +225,9 @@ void GardenSession::attachLoaded() {
     const glm::vec3 eye = navigator_.eye();
     loader_->setViewer({eye.x, eye.y, eye.z});
     // At least one grid a frame (its coarse meshes come with it), more
-    // while half the remesh allowance lasts: the rest is for finer levels.
+    // while half the remesh allowance lasts: the rest is for finer levels;
+    // none while the pager is writing grids out to come within the budget.
+    if (pager_->backlog()) return;
     const double until = scheduler_.elapsedMs() + 0.5 * scheduler_.allowanceMs(Stage::Remesh);
     for (std::size_t n = 0;; ++n) {
         if (n > 0 && scheduler_.elapsedMs() >= until) break;

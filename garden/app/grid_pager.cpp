@@ -112,6 +112,7 @@ void GridPager::pause(const std::string& why) {
 void GridPager::refresh(const Sculpture& s, Entry& e) {
     e.held = sculptureMemory(s);
     e.counted = true;
+    e.hadGrid = s.hasGrid();
 }
 
 MemoryReport GridPager::report() const {
@@ -134,9 +135,17 @@ void GridPager::step(std::vector<Sculpture>& sculptures, const std::vector<GridN
             refresh(sculptures[nextRefresh_], entries_[nextRefresh_]);
         }
         for (std::size_t i = 0; i < sculptures.size(); ++i)
-            if (!entries_[i].counted) refresh(sculptures[i], entries_[i]);
+            if (!entries_[i].counted || entries_[i].hadGrid != sculptures[i].hasGrid())
+                refresh(sculptures[i], entries_[i]);
     }
     pageOutFarthest(sculptures, needs);
+    std::size_t held = 0;
+    bool writing = false;
+    for (const Entry& e : entries_) {
+        held += e.held.total();
+        writing = writing || e.writing;
+    }
+    backlog_ = budget_ > 0 && writing && held > budget_;
 }
 
 void GridPager::settle(std::vector<Sculpture>& sculptures, const std::vector<GridNeed>& needs) {

@@ -68,6 +68,10 @@ public:
     MemoryReport report() const;
     // Why paging stopped last ("" : it did not).
     const std::string& problem() const { return problem_; }
+    // Over the budget with writes under way: memory is about to come down,
+    // so a loading garden waits before it takes more grids in (else a
+    // garden of copies, sampled in moments, peaks far above the budget).
+    bool backlog() const { return backlog_; }
     const std::string& folder() const { return folder_; }
     std::size_t pagedOutTotal() const { return pagedOut_; }  // grids let go, over the session
     std::size_t broughtBackTotal() const { return broughtBack_; }
@@ -84,6 +88,7 @@ private:
         std::shared_ptr<ReadJob> reading;
         MemoryReport held;   // this sculpture's figures, as last read
         bool counted = false;
+        bool hadGrid = false;  // when they were read: a grid arriving (loading) is counted at once
     };
 
     void takeFinished(std::vector<Sculpture>& sculptures);
@@ -102,6 +107,7 @@ private:
     std::string problem_;
     std::chrono::steady_clock::time_point pausedUntil_{};
     std::size_t pagedOut_ = 0, broughtBack_ = 0;
+    bool backlog_ = false;
     // Declared last: they stop (finishing the job under way) before the
     // entries and the folder go.
     std::unique_ptr<jobs::JobThread> writer_, reader_;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <sstream>
 
 #include "garden/app/sculpture_sampling.h"
 
@@ -27,7 +28,11 @@ void SculptureLoader::run() {
     for (;;) {
         Job job;
         {
-            std::lock_guard<std::mutex> lock(mutex_);
+            std::unique_lock<std::mutex> lock(mutex_);
+            // Not more than kAhead grids ahead of the frame (closing is
+            // noticed within a few milliseconds).
+            while (!all_ && !stop_.cancelled() && finished_.size() >= kAhead)
+                taken_.wait_for(lock, std::chrono::milliseconds(5));
             if (stop_.cancelled() || waiting_.empty()) return;
             auto distance = [this](const Job& j) {
                 double s = 0.0;
@@ -41,16 +46,49 @@ void SculptureLoader::run() {
         }
         Loaded done;
         done.sculpture = job.sculpture;
-        voxel::VoxelizeResult r = sampleSculptureSource(job.spec, *job.source, job.request, &stop_);
-        if (r.cancelled) {  // closing: nobody takes it
-            cutShort_ = true;
-            return;
+        const std::string key = sourceKey(job);
+        const auto kept = key.empty() ? kept_.end() : kept_.find(key);
+        if (kept != kept_.end()) {
+            done.volume = std::make_unique<voxel::Volume>(kept->second->clone());
+        } else {
+            voxel::VoxelizeResult r = sampleSculptureSource(job.spec, *job.source, job.request, &stop_);
+            if (r.cancelled) {  // closing: nobody takes it
+                cutShort_ = true;
+                return;
+            }
+            if (r.volume) done.volume = std::make_unique<voxel::Volume>(std::move(*r.volume));
+            else done.error = r.error;
         }
-        if (r.volume) done.volume = std::make_unique<voxel::Volume>(std::move(*r.volume));
-        else done.error = r.error;
         std::lock_guard<std::mutex> lock(mutex_);
+        (kept != kept_.end() ? copied_ : sampled_) += 1;
+        // Kept while a copy waits; let go with the last one.
+        const bool wanted = !key.empty() && done.volume &&
+                            std::any_of(waiting_.begin(), waiting_.end(), [&](const Job& j) { return sourceKey(j) == key; });
+        if (wanted && kept == kept_.end()) kept_[key] = std::make_unique<voxel::Volume>(done.volume->clone());
+        if (!wanted && kept != kept_.end()) kept_.erase(kept);
         finished_.push_back(std::move(done));
     }
+}
+
+std::string SculptureLoader::sourceKey(const Job& job) {
+    if (!job.source->model || job.spec.scan || job.spec.mesh) return "";
+    std::ostringstream key;
+    key.precision(17);
+    key << job.spec.file << '\n' << job.spec.body << '\n' << job.request.resolution << ' ' << job.request.band;
+    for (double a : job.spec.a) key << ' ' << a;
+    if (job.request.box)
+        for (int i = 0; i < 3; ++i) key << ' ' << job.request.box->lo[i] << ' ' << job.request.box->hi[i];
+    return key.str();
+}
+
+std::size_t SculptureLoader::sampled() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return sampled_;
+}
+
+std::size_t SculptureLoader::copied() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return copied_;
 }
 
 std::vector<SculptureLoader::Loaded> SculptureLoader::take(std::size_t max) {
@@ -60,6 +98,7 @@ std::vector<SculptureLoader::Loaded> SculptureLoader::take(std::size_t max) {
                             std::make_move_iterator(finished_.begin() + static_cast<std::ptrdiff_t>(n)));
     finished_.erase(finished_.begin(), finished_.begin() + static_cast<std::ptrdiff_t>(n));
     remaining_ -= n;
+    taken_.notify_one();
     return out;
 }
 
@@ -69,6 +108,11 @@ std::size_t SculptureLoader::remaining() const {
 }
 
 void SculptureLoader::wait() {
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        all_ = true;
+    }
+    taken_.notify_one();
     for (;;) {
         {
             std::lock_guard<std::mutex> lock(mutex_);

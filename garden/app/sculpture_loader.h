@@ -4,12 +4,21 @@
 // takes the finished grids (GardenSession attaches a coarse mesh at once
 // and the finer levels stream in through the remesh queue). A grid sampled
 // here is the grid the session would sample at start: voxelize() and a
-// scan's rebuild are deterministic.
+// scan's rebuild are deterministic. So copies of one HyperFun source (the
+// same file, body, a[], box, resolution and band) are sampled once: the
+// grid is kept while a copy still waits, and each copy gets a deep copy
+// of it, bit for bit what its own sampling would give. The worker keeps at
+// most kAhead finished grids that the frame has not taken (a copy is made
+// in milliseconds: without the limit a garden of copies would pile up its
+// grids here, outside the memory budget's reach), except while wait()
+// wants them all.
 #pragma once
 
 #include <array>
 #include <atomic>
+#include <condition_variable>
 #include <cstddef>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -54,8 +63,12 @@ public:
     std::vector<Loaded> take(std::size_t max = 0);
     // Sculptures not yet taken (sampling, waiting or finished).
     std::size_t remaining() const;
-    // Blocks until every sculpture is sampled.
+    static constexpr std::size_t kAhead = 2;
+    // Blocks until every sculpture is sampled (the kAhead limit lifted).
     void wait();
+    // Sculptures sampled, and those given a copy of another's grid.
+    std::size_t sampled() const;
+    std::size_t copied() const;
     // How far the sampling under way has come (0 to 1; 0 before the first
     // report), for the panel.
     double fractionUnderWay() const { return stop_.fraction(); }
@@ -65,10 +78,18 @@ public:
 
 private:
     void run();
+    // The grid a job would sample, as a key: its HyperFun source and what
+    // it asks for ("" for a scan or a mesh, never shared).
+    static std::string sourceKey(const Job& job);
 
     mutable std::mutex mutex_;
     std::vector<Job> waiting_;
     std::vector<Loaded> finished_;
+    // Grids sampled whose copies still wait, by sourceKey (worker thread only).
+    std::map<std::string, std::unique_ptr<voxel::Volume>> kept_;
+    std::size_t sampled_ = 0, copied_ = 0;
+    std::condition_variable taken_;  // the frame took finished grids, or wait() wants them all
+    bool all_ = false;               // wait(): no limit ahead
     std::size_t remaining_ = 0;
     std::array<double, 3> viewer_{};
     io::NullProgress stop_;  // cancelled on close; the sampling under way asks it

@@ -323,6 +323,7 @@ int runDesktopOn(GardenSession& session, GardenWindow& gardenWindow, const Deskt
         renderer.setQuality(options.quality);
     }
     GardenView& view = gardenWindow.view();
+    view.setImpostorDistance(options.impostorDistance);
     WindowEvents& events = gardenWindow.events();
     events = WindowEvents{};
     // Exports go next to the session, or into the working folder without one.

@@ -41,6 +41,7 @@ struct DesktopOptions {
     std::string exitScreenshot; // a PNG of the last frame, overlay included ("" : none)
     std::string session;        // a session folder (made from `garden` when new); "" : none
     RenderQuality quality;      // --quality: what the renderer spends on the picture
+    float impostorDistance = 30.0f;  // --impostor-distance: far sculptures as cards beyond it (0: never)
     bool autoQuality = false;   // instead: from rendererPreset, stepped by the GPU's time (QualityGovernor)
     HeadsetEntry headset;       // F9 and the Headset button (empty: the desktop only)
     // Called at the end of every desktop frame with its index; true asks

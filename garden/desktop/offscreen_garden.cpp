@@ -62,6 +62,15 @@ void OffscreenGarden::setCamera(const std::optional<Camera>& camera) { impl_->ca
 
 void OffscreenGarden::showOnly(int index) { impl_->view.showOnly(index); }
 
+void OffscreenGarden::setImpostorDistance(float metres) { impl_->view.setImpostorDistance(metres); }
+
+std::size_t OffscreenGarden::impostorsWanted() const { return impl_->view.impostorsWanted(); }
+
+std::size_t OffscreenGarden::impostorsBaked() const {
+    const ImpostorAtlas* atlas = impl_->renderer.impostorAtlas();
+    return atlas ? atlas->bakes() : 0;
+}
+
 bool OffscreenGarden::setMultiDraw(bool on) { return impl_->renderer.setMultiDraw(on) == on; }
 
 std::string OffscreenGarden::screenshot(const std::string& path) {

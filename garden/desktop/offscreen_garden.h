@@ -40,6 +40,12 @@ public:
     void setCamera(const std::optional<Camera>& camera);
     // Only sculpture `index` drawn (-1: every one; GardenView::showOnly).
     void showOnly(int index);
+    // Far sculptures as cards beyond `metres` (0: never; GardenView::setImpostorDistance).
+    void setImpostorDistance(float metres);
+    // Far sculptures the last render drew as chunks for want of a baked
+    // impostor, and impostors baked so far (benches).
+    std::size_t impostorsWanted() const;
+    std::size_t impostorsBaked() const;
 
 private:
     struct Impl;

@@ -112,10 +112,23 @@ glm::mat4 ImpostorAtlas::frameViewProjection(const glm::vec3& toViewer, const gl
 
 void ImpostorAtlas::grow(int layers) {
     const int side = settings_.views * settings_.framePixels;
-    albedo_ = gl::Texture::create();
-    normalDepth_ = gl::Texture::create();
-    storage(albedo_.get(), GL_SRGB8_ALPHA8, GL_RGBA, GL_UNSIGNED_BYTE, side, layers);
-    storage(normalDepth_.get(), GL_RGBA16F, GL_RGBA, GL_HALF_FLOAT, side, layers);
+    gl::Texture albedo = gl::Texture::create();
+    gl::Texture normalDepth = gl::Texture::create();
+    storage(albedo.get(), GL_SRGB8_ALPHA8, GL_RGBA, GL_UNSIGNED_BYTE, side, layers);
+    storage(normalDepth.get(), GL_RGBA16F, GL_RGBA, GL_HALF_FLOAT, side, layers);
+    // What was baked moves into the new textures on the GPU (GL 4.3's
+    // image copy); without it, it is baked again as it is wanted.
+    const bool copy = layers_ > 0 && (epoxy_gl_version() >= 43 || epoxy_has_gl_extension("GL_ARB_copy_image"));
+    if (copy)
+        for (int level = 0; level <= kImpostorMipLevels; ++level) {
+            const int s = std::max(1, side >> level);
+            glCopyImageSubData(albedo_.get(), GL_TEXTURE_2D_ARRAY, level, 0, 0, 0, albedo.get(), GL_TEXTURE_2D_ARRAY,
+                               level, 0, 0, 0, s, s, layers_);
+            glCopyImageSubData(normalDepth_.get(), GL_TEXTURE_2D_ARRAY, level, 0, 0, 0, normalDepth.get(),
+                               GL_TEXTURE_2D_ARRAY, level, 0, 0, 0, s, s, layers_);
+        }
+    albedo_ = std::move(albedo);
+    normalDepth_ = std::move(normalDepth);
     if (!depth_) {
         depth_ = gl::Renderbuffer::create();
         glBindRenderbuffer(GL_RENDERBUFFER, depth_.get());
@@ -123,11 +136,15 @@ void ImpostorAtlas::grow(int layers) {
         glBindRenderbuffer(GL_RENDERBUFFER, 0);
         fbo_ = gl::Framebuffer::create();
     }
-    // New textures: what the old ones held is baked again when wanted.
-    entries_.clear();
+    if (!copy) {
+        entries_.clear();
+        owner_.assign(static_cast<std::size_t>(layers), 0);
+        owned_.assign(static_cast<std::size_t>(layers), false);
+    } else {
+        owner_.resize(static_cast<std::size_t>(layers), 0);
+        owned_.resize(static_cast<std::size_t>(layers), false);
+    }
     layers_ = layers;
-    owner_.assign(static_cast<std::size_t>(layers), 0);
-    owned_.assign(static_cast<std::size_t>(layers), false);
 }
 
 int ImpostorAtlas::layerFor(ImpostorKey key) {
@@ -136,8 +153,11 @@ int ImpostorAtlas::layerFor(ImpostorKey key) {
     for (int l = 0; l < layers_; ++l)
         if (!owned_[static_cast<std::size_t>(l)]) return l;
     if (layers_ < settings_.maxLayers) {
+        const int first = layers_;
         grow(std::min(settings_.maxLayers, std::max(4, 2 * layers_)));
-        return 0;
+        for (int l = 0; l < layers_; ++l)
+            if (!owned_[static_cast<std::size_t>(l)]) return l;
+        return first;
     }
     // The least recently drawn, if it was not drawn in this frame.
     int oldest = -1;

@@ -14,7 +14,8 @@
 // caller: copies of one source with one material share one) and a version
 // (a new version is a new bake into the same layer). Layers are reused
 // least recently drawn first; the atlas grows, up to its most layers, by
-// making new textures (what was baked is baked again as it is wanted).
+// making new textures and copying the old ones' layers into them on the
+// GPU (GL 4.3; without it, what was baked is baked again as it is wanted).
 #pragma once
 
 #include <glm/mat4x4.hpp>

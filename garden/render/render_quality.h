@@ -20,7 +20,6 @@ struct RenderQuality {
     float renderScale = 1.0f;        // the scene drawn at this share of the window's width and height (0.25..1)
     bool smoothUpscale = true;       // below scale 1, stretched bilinearly (false: nearest scene pixel)
     bool materialBump = true;        // the materials' detail as relief too (the shading normal perturbed)
-    float impostorDistance = 30.0f;  // metres beyond which a sculpture is drawn as an impostor card (0: never)
 };
 
 }  // namespace hg::garden

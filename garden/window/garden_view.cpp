@@ -125,7 +125,7 @@ bool GardenView::drawnAsCard(const GardenSession& session, std::size_t s, const 
     if (far_.size() <= s) far_.resize(s + 1);
     Far& f = far_[s];
     f.wanted = false;
-    const float distance = renderer_.quality().impostorDistance;
+    const float distance = impostorDistance_;
     if (!(distance > 0.0f) || m.edges != 0) return f.card = false;
     const Sculpture& st = session.sculptures()[s];
     const glm::vec3 a(static_cast<float>(lo[0]), static_cast<float>(lo[1]), static_cast<float>(lo[2]));
@@ -141,6 +141,10 @@ bool GardenView::drawnAsCard(const GardenSession& session, std::size_t s, const 
     f.wanted = true;
     f.away = away;
     return f.card = false;
+}
+
+std::size_t GardenView::impostorsWanted() const {
+    return static_cast<std::size_t>(std::count_if(far_.begin(), far_.end(), [](const Far& f) { return f.wanted; }));
 }
 
 RenderMaterial GardenView::materialOf(const Sculpture& st) const {

@@ -33,7 +33,7 @@ public:
 
     // Draws into the bound framebuffer of `viewport` pixels; chunks outside
     // the view frustum are not drawn. A sculpture whose bounding sphere is
-    // beyond the renderer's RenderQuality::impostorDistance from the eye is
+    // beyond impostorDistance() from the eye is
     // drawn as its impostor card once one is baked (and back as chunks
     // within 0.9 times that distance); not with the wireframe overlay.
     void render(const GardenSession& session, glm::ivec2 viewport, float fovY);
@@ -57,6 +57,13 @@ public:
     // paths: a turntable shows one sculpture, with nothing passing in front.
     void showOnly(int index) { only_ = index; }
 
+    // Metres from the eye to a sculpture's bounding sphere beyond which it
+    // is drawn as its impostor card (0: never; --impostor-distance).
+    static constexpr float kDefaultImpostorDistance = 30.0f;
+    void setImpostorDistance(float metres) { impostorDistance_ = metres; }
+    float impostorDistance() const { return impostorDistance_; }
+    // Sculptures the last render drew as chunks for want of a current impostor.
+    std::size_t impostorsWanted() const;
     // Impostors baked per upload at most (each renders views^2 frames of
     // one sculpture's coarse meshes).
     static constexpr int kBakesPerFrame = 2;
@@ -74,6 +81,7 @@ private:
 
     Renderer& renderer_;
     ViewLook look_;
+    float impostorDistance_ = kDefaultImpostorDistance;
     int only_ = -1;
     // Per sculpture, the queue's shownGeneration() + 1 last uploaded (0:
     // never): a sculpture whose queue showed nothing new is not looked at.

@@ -66,6 +66,26 @@ TEST_F(ReplayCli, OffscreenWritesScreenshotsAndStats) {
     EXPECT_GT(chunks, 0u);
 }
 
+// --impostor-distance: sculptures farther than it from the eye are drawn
+// as impostor cards (reported per frame as impostors_drawn), none with 0.
+TEST_F(ReplayCli, FarSculpturesAreImpostorsUnlessTheDistanceIsZero) {
+    if (!displayAvailable()) GTEST_SKIP() << "no X display: run under xvfb-run -a";
+    const std::string s = script(R"([{"until_idle": true, "frames": 3000}, {"frames": 5}])");
+    auto cards = [&](const std::string& distance) {
+        auto r = ::hg::test::runHypergarden("replay " + s + " --offscreen 160x120 --impostor-distance " + distance +
+                                            " --stats " + path("stats.json"));
+        EXPECT_EQ(r.status, 0) << r.output;
+        std::ifstream in(dir / "stats.json");
+        const nlohmann::json j = nlohmann::json::parse(in);
+        return j["frames"].back()["impostors_drawn"].get<std::size_t>();
+    };
+    EXPECT_GT(cards("1"), 0u) << "within a metre of the start, nothing: every sculpture in view is a card";
+    EXPECT_EQ(cards("0"), 0u);
+    auto r = ::hg::test::runHypergarden("replay " + s + " --offscreen 160x120 --impostor-distance -3");
+    EXPECT_NE(r.status, 0);
+    EXPECT_NE(r.output.find("--impostor-distance"), std::string::npos) << r.output;
+}
+
 TEST_F(ReplayCli, AnExportCommandWritesTheSculptureAsThePanelDoes) {
     const std::string stl = (dir / "out" / "ball-c.stl").string();
     const std::string hf = (dir / "a.hf").string();

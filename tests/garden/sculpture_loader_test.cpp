@@ -13,6 +13,7 @@
 #include <glm/geometric.hpp>
 
 #include "garden/app/garden_session.h"
+#include "garden/app/sculpture_loader.h"
 #include "garden/scene/scale_garden.h"
 
 namespace hg::garden {
@@ -110,6 +111,48 @@ TEST(ProgressiveLoading, ALoadingSculptureIsNotEditableAndFinishLoadingBringsAll
     session.finishLoading();
     EXPECT_EQ(session.sculpturesLoading(), 0u);
     for (const Sculpture& s : session.sculptures()) EXPECT_TRUE(s.hasGrid()) << s.name;
+}
+
+// Copies of one source are sampled once: twenty sculptures of the default
+// garden's nine sources take nine samplings, and every copy's grid is the
+// grid its own sampling gives, voxel for voxel.
+TEST(ProgressiveLoading, CopiesOfOneSourceAreSampledOnce) {
+    GardenLoad load = scaleGarden(20);
+    ASSERT_TRUE(load.ok()) << load.error;
+    const Garden& g = *load.garden;
+    std::vector<SculptureLoader::Job> jobs;
+    for (std::size_t i = 0; i < g.sculptures.size(); ++i) {
+        voxel::VolumeRequest request;
+        request.box = g.sculptures[i].box;
+        request.resolution = g.sculptures[i].resolution;
+        request.band = g.sculptures[i].band;
+        const auto& p = g.sculptures[i].placement.position;
+        jobs.push_back({i, std::make_shared<const SculptureLoad>(load.sculptures[i]), g.sculptures[i], request,
+                        {p[0], p[1], p[2]}});
+    }
+    SculptureLoader loader(jobs, {0.0, 1.7, 0.0});
+    loader.wait();
+    EXPECT_EQ(loader.sampled(), 9u);
+    EXPECT_EQ(loader.copied(), 11u);
+    std::vector<SculptureLoader::Loaded> got = loader.take();
+    ASSERT_EQ(got.size(), 20u);
+    for (const SculptureLoader::Loaded& l : got) {
+        ASSERT_TRUE(l.volume) << l.error;
+        const SculptureLoader::Job& job = jobs[l.sculpture];
+        voxel::VoxelizeResult own = voxel::voxelize(*job.source->model, job.request);
+        ASSERT_TRUE(own.volume) << own.error;
+        const voxel::IndexBox& box = own.volume->frame.indexBox;
+        for (int a = 0; a < 3; ++a) {
+            ASSERT_EQ(l.volume->frame.indexBox.lo[a], box.lo[a]);
+            ASSERT_EQ(l.volume->frame.indexBox.hi[a], box.hi[a]);
+        }
+        for (int k = box.lo[2]; k <= box.hi[2]; ++k)
+            for (int j = box.lo[1]; j <= box.hi[1]; ++j)
+                for (int i = box.lo[0]; i <= box.hi[0]; ++i) {
+                    ASSERT_EQ(l.volume->value(i, j, k), own.volume->value(i, j, k)) << g.sculptures[l.sculpture].name;
+                    ASSERT_EQ(l.volume->active(i, j, k), own.volume->active(i, j, k)) << g.sculptures[l.sculpture].name;
+                }
+    }
 }
 
 // A journal played into a session that loads progressively (the desktop

@@ -54,14 +54,19 @@ protected:
     }
 
     // A garden of mushrooms at `positions` (x, z; yaw degrees), red.
-    std::string writeGarden(const std::vector<glm::vec3>& placements) const {
+    // With `shades`, sculpture i is in a red of its own (impostors are per material).
+    std::string writeGarden(const std::vector<glm::vec3>& placements, bool shades = false) const {
         std::ofstream out(folder_->path / "garden.json");
-        out << R"({"version": 1, "name": "far", "materials": {"red": {"color": [0.85, 0.12, 0.1], "roughness": 0.5}},)"
+        out << R"({"version": 1, "name": "far", "materials": {"red": {"color": [0.85, 0.12, 0.1], "roughness": 0.5})";
+        for (std::size_t i = 0; i < placements.size(); ++i)
+            out << R"(, "red)" << i << R"(": {"color": [0.85, 0.12, )" << 0.02 * static_cast<double>(i) << "]}";
+        out << "},"
             << R"( "lights": [{"type": "directional", "direction": [-0.6, -0.7, -0.35], "intensity": 1.0},)"
             << R"( {"type": "ambient", "color": [1, 1, 1], "intensity": 0.25}], "sculptures": [)";
         for (std::size_t i = 0; i < placements.size(); ++i)
             out << (i ? ", " : "") << R"({"name": "m)" << i << R"(", "file": "mushroom.hf", "resolution": 48,)"
-                << R"( "box": {"min": [-0.75, -0.05, -0.6], "max": [0.8, 1.75, 0.6]}, "material": "red",)"
+                << R"( "box": {"min": [-0.75, -0.05, -0.6], "max": [0.8, 1.75, 0.6]}, "material": "red)"
+                << (shades ? std::to_string(i) : std::string()) << R"(",)"
                 << R"( "placement": {"position": [)" << placements[i].x << ", 0, " << placements[i].y
                 << R"(], "yaw": )" << placements[i].z << "}}";
         out << "]}";
@@ -111,14 +116,13 @@ protected:
     };
     Pair meshAndCard(GardenView& view, const GardenSession& session, RenderQuality q, float fovDegrees) {
         Pair out;
-        q.impostorDistance = 0.0f;
         renderer_->setQuality(q);
+        view.setImpostorDistance(0.0f);
         view.upload(session, 1e9);
         out.mesh = draw(view, session, fovDegrees);
         out.meshColor = color_;
         out.meshDepth = depth_;
-        q.impostorDistance = 30.0f;
-        renderer_->setQuality(q);
+        view.setImpostorDistance(30.0f);
         out.asking = draw(view, session, fovDegrees);
         view.upload(session, 1e9);
         out.card = draw(view, session, fovDegrees);
@@ -293,6 +297,30 @@ TEST_F(ImpostorViewTest, CopiesShareOneImpostorAndAnEditedCopyHasItsOwn) {
     EXPECT_EQ(s.impostorsDrawn, 3u);
     EXPECT_EQ(renderer_->impostorAtlas()->count(), 2u);
     EXPECT_LT(count(test::reddish), redBefore - 100) << "the card shows the cut";
+}
+
+// Six impostors (one material each) grow the atlas from four layers to
+// eight: the layers baked before move into the new textures, so each
+// impostor is baked once and every sculpture is drawn as a card.
+TEST_F(ImpostorViewTest, TheAtlasGrowsWithoutBakingAgain) {
+    std::vector<glm::vec3> row;
+    for (int i = 0; i < 6; ++i) row.push_back({-7.5f + 3.0f * static_cast<float>(i), 0.0f, 0.0f});
+    GardenSession session(loadGarden(writeGarden(row, true)), settings(20.0f));
+    place(session, {0.0f, 1.7f, 45.0f}, {0.0f, 0.8f, 0.0f});
+    settle(session);
+    GardenView view(*renderer_);
+    renderer_->setQuality(test::plainQuality());
+    RenderStats s;
+    for (int f = 0; f < 6; ++f) {
+        view.upload(session, 1e9);
+        s = draw(view, session, 20.0f);
+    }
+    EXPECT_EQ(s.impostorsDrawn, 6u);
+    ASSERT_NE(renderer_->impostorAtlas(), nullptr);
+    EXPECT_EQ(renderer_->impostorAtlas()->layers(), 8u);
+    EXPECT_EQ(renderer_->impostorAtlas()->count(), 6u);
+    EXPECT_EQ(renderer_->impostorAtlas()->bakes(), 6u) << "none baked again when the atlas grew";
+    EXPECT_GT(count(test::reddish), 600) << "the cards show their sculptures";
 }
 
 // Hundreds of small sculptures: beyond the distance they go out as cards
