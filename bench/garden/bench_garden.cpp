@@ -62,6 +62,7 @@
 #include <fstream>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -729,6 +730,18 @@ std::string spreadCell(const Spread& s) {
     return b;
 }
 
+// The scale garden of `n` copies for row `name`; none (and a message) when it cannot be read.
+std::optional<GardenLoad> scaleLoad(const Options& o, const std::string& name, int n, double spacing) {
+    ScaleGardenSpec spec;
+    spec.count = n;
+    spec.spacing = spacing;
+    spec.resolution = o.scaleResolution;
+    GardenLoad load = loadScaleGarden(defaultGarden(), spec);
+    if (load.ok()) return load;
+    std::fprintf(stderr, "%s: %s\n", name.c_str(), load.error.c_str());
+    return std::nullopt;
+}
+
 void scaleTable(const Options& o, nlohmann::json& json) {
     bool anyRow = false;
     for (int n : o.scaleCounts) anyRow = anyRow || o.bench.matches("scale/" + std::to_string(n));
@@ -760,16 +773,10 @@ void scaleTable(const Options& o, nlohmann::json& json) {
         const std::string name = "scale/" + std::to_string(n);
         if (!o.bench.matches(name)) continue;
         resetPeakResident();
-        ScaleGardenSpec spec;
-        spec.count = n;
-        spec.spacing = kSpacing;
-        spec.resolution = o.scaleResolution;
         const auto t0 = Clock::now();
-        GardenLoad load = loadScaleGarden(defaultGarden(), spec);
-        if (!load.ok()) {
-            std::fprintf(stderr, "%s: %s\n", name.c_str(), load.error.c_str());
-            continue;
-        }
+        std::optional<GardenLoad> loaded = scaleLoad(o, name, n, kSpacing);
+        if (!loaded) continue;
+        GardenLoad& load = *loaded;
         SessionSettings settings;
         settings.viewportHeight = o.height;
         settings.remeshChunksPerFrame = o.remeshChunks;
@@ -930,18 +937,12 @@ void cardsTable(const Options& o, nlohmann::json& json) {
     for (int n : o.scaleCounts) {
         const std::string name = "cards/" + std::to_string(n);
         if (!o.bench.matches(name)) continue;
-        ScaleGardenSpec spec;
-        spec.count = n;
-        spec.resolution = o.scaleResolution;
-        GardenLoad load = loadScaleGarden(defaultGarden(), spec);
-        if (!load.ok()) {
-            std::fprintf(stderr, "%s: %s\n", name.c_str(), load.error.c_str());
-            continue;
-        }
+        std::optional<GardenLoad> load = scaleLoad(o, name, n, 3.0);
+        if (!load) continue;
         SessionSettings settings;
         settings.viewportHeight = o.height;
         settings.remeshChunksPerFrame = 4096;
-        GardenSession session(std::move(load), settings);
+        GardenSession session(std::move(*load), settings);
         session.finishLoading();
         for (int f = 0; f < o.maxFrames && !session.idle(); ++f) session.frame(FrameInput{});
         std::string error;

@@ -136,6 +136,20 @@ protected:
         return {c[i], c[i + 1], c[i + 2], c[i + 3]};
     }
 
+    // With HG_IMPOSTOR_DUMP set, the two pictures side by side (meshes
+    // left, card right) as a PPM, to look at.
+    static void dump(const std::string& path, const Pair& p) {
+        if (!std::getenv("HG_IMPOSTOR_DUMP")) return;
+        std::ofstream out(path, std::ios::binary);
+        out << "P6 " << 2 * kWidth << " " << kHeight << " 255\n";
+        for (int y = 0; y < kHeight; ++y)
+            for (int half = 0; half < 2; ++half)
+                for (int x = 0; x < kWidth; ++x) {
+                    const test::Rgba q = at(half ? p.cardColor : p.meshColor, x, y);
+                    out << char(q.r) << char(q.g) << char(q.b);
+                }
+    }
+
     // The red pixels of both pictures: overlap over union, and the mean
     // difference of colour (0..255 a channel) where both are red.
     struct Likeness {
@@ -196,16 +210,7 @@ TEST_F(ImpostorViewTest, AFarSculptureAsACardLooksLikeItsMeshes) {
         EXPECT_EQ(p.card.chunksDrawn, 0u);
         EXPECT_LE(p.card.trianglesDrawn, 4u) << "the ground and one card";
         const Likeness l = likeness(p);
-        if (std::getenv("HG_IMPOSTOR_DUMP")) {
-            std::ofstream out(std::string("/tmp/impostor_") + c.what + ".ppm", std::ios::binary);
-            out << "P6 " << 2 * kWidth << " " << kHeight << " 255\n";
-            for (int y = 0; y < kHeight; ++y)
-                for (int half = 0; half < 2; ++half)
-                    for (int x = 0; x < kWidth; ++x) {
-                        const test::Rgba q = at(half ? p.cardColor : p.meshColor, x, y);
-                        out << char(q.r) << char(q.g) << char(q.b);
-                    }
-        }
+        dump(std::string("/tmp/impostor_") + c.what + ".ppm", p);
         std::printf("%s: overlap %.3f colour %.2f depth %.3f m (%d / %d)\n", c.what, l.overlap, l.colourDifference,
                     l.depthDifference, l.mesh, l.card);
         EXPECT_GT(l.mesh, 6000) << "the sculpture fills much of the view";
@@ -230,16 +235,7 @@ TEST_F(ImpostorViewTest, ACardCastsTheSculpturesShadow) {
     RenderQuality unlit = test::plainQuality();
     const Pair plain = meshAndCard(view, session, unlit, kNarrowFov);
     ASSERT_EQ(shadowed.card.impostorsDrawn, 1u);
-    if (std::getenv("HG_IMPOSTOR_DUMP")) {
-        std::ofstream out("/tmp/impostor_shadow.ppm", std::ios::binary);
-        out << "P6 " << 2 * kWidth << " " << kHeight << " 255\n";
-        for (int y = 0; y < kHeight; ++y)
-            for (int half = 0; half < 2; ++half)
-                for (int x = 0; x < kWidth; ++x) {
-                    const test::Rgba q = at(half ? shadowed.cardColor : shadowed.meshColor, x, y);
-                    out << char(q.r) << char(q.g) << char(q.b);
-                }
-    }
+    dump("/tmp/impostor_shadow.ppm", shadowed);
     // Shadowed: not red, and at most 80% as bright as without the shadow.
     auto shade = [&](const std::vector<std::uint8_t>& with, const std::vector<std::uint8_t>& without) {
         std::vector<bool> s(static_cast<std::size_t>(kWidth * kHeight));
