@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <sstream>
 
 #include "garden/app/sculpture_sampling.h"
 
@@ -71,14 +70,7 @@ void SculptureLoader::run() {
 }
 
 std::string SculptureLoader::sourceKey(const Job& job) {
-    if (!job.source->model || job.spec.scan || job.spec.mesh) return "";
-    std::ostringstream key;
-    key.precision(17);
-    key << job.spec.file << '\n' << job.spec.body << '\n' << job.request.resolution << ' ' << job.request.band;
-    for (double a : job.spec.a) key << ' ' << a;
-    if (job.request.box)
-        for (int i = 0; i < 3; ++i) key << ' ' << job.request.box->lo[i] << ' ' << job.request.box->hi[i];
-    return key.str();
+    return job.source->model ? sampledSourceKey(job.spec) : "";
 }
 
 std::size_t SculptureLoader::sampled() const {

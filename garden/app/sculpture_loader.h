@@ -78,8 +78,8 @@ public:
 
 private:
     void run();
-    // The grid a job would sample, as a key: its HyperFun source and what
-    // it asks for ("" for a scan or a mesh, never shared).
+    // The grid a job would sample, as a key (sampledSourceKey; "" for a
+    // scan, a mesh or a source that did not parse: never shared).
     static std::string sourceKey(const Job& job);
 
     mutable std::mutex mutex_;

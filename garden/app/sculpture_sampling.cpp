@@ -1,10 +1,23 @@
 #include "garden/app/sculpture_sampling.h"
 
+#include <sstream>
+
 #include "polygonizer/mesh.h"
 #include "voxel/mesh_volume.h"
 #include "voxel/scalar_volume.h"
 
 namespace hg::garden {
+
+std::string sampledSourceKey(const SculptureSpec& spec) {
+    if (spec.scan || spec.mesh) return "";
+    std::ostringstream key;
+    key.precision(17);
+    key << spec.file << '\n' << spec.body << '\n' << spec.resolution << ' ' << spec.band;
+    for (double a : spec.a) key << ' ' << a;
+    if (spec.box)
+        for (int i = 0; i < 3; ++i) key << ' ' << spec.box->lo[i] << ' ' << spec.box->hi[i];
+    return key.str();
+}
 
 voxel::VoxelizeResult sampleSculptureSource(const SculptureSpec& spec, const SculptureLoad& load,
                                             const voxel::VolumeRequest& request, io::Progress* progress) {

@@ -5,6 +5,7 @@
 // source read again after it changed on disk all come here.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "garden/app/sculpture.h"
@@ -21,6 +22,12 @@ namespace hg::garden {
 // scan's or a mesh's level set is made whole.
 voxel::VoxelizeResult sampleSculptureSource(const SculptureSpec& spec, const SculptureLoad& load,
                                             const voxel::VolumeRequest& request, io::Progress* progress = nullptr);
+
+// What a HyperFun sculpture's unedited grid is sampled from, as text: its
+// file, body, a[], box, resolution and band. Sampling is deterministic, so
+// equal keys give equal grids (the loader samples copies once; copies
+// share an impostor). "" for a scan or a mesh: never shared.
+std::string sampledSourceKey(const SculptureSpec& spec);
 
 // The model boxes the sculptures' grids were sampled in, by index (none
 // for a morph result, one without a grid yet, or a missing one): what a

@@ -37,8 +37,6 @@ void main() {
 }
 )";
 
-constexpr GLint kAlbedoUnit = 5;
-constexpr GLint kNormalDepthUnit = 6;
 
 void storage(GLuint texture, GLenum internalFormat, GLenum format, GLenum type, int size, int layers) {
     glBindTexture(GL_TEXTURE_2D_ARRAY, texture);
@@ -65,8 +63,8 @@ ImpostorAtlas::ImpostorAtlas(const ImpostorSettings& settings)
     downsampleLevel_ = downsample_.uniform("uLevel");
     downsampleLayer_ = downsample_.uniform("uLayer");
     downsample_.use();
-    glUniform1i(downsample_.uniform("uAlbedo"), kAlbedoUnit);
-    glUniform1i(downsample_.uniform("uNormalDepth"), kNormalDepthUnit);
+    glUniform1i(downsample_.uniform("uAlbedo"), kImpostorAlbedoUnit);
+    glUniform1i(downsample_.uniform("uNormalDepth"), kImpostorNormalDepthUnit);
     glUseProgram(0);
     emptyVao_ = gl::VertexArray::create();
 }
@@ -244,9 +242,9 @@ void ImpostorAtlas::downsample(int layer) {
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_CULL_FACE);
     glBindVertexArray(emptyVao_.get());
-    glActiveTexture(GL_TEXTURE0 + kAlbedoUnit);
+    glActiveTexture(GL_TEXTURE0 + kImpostorAlbedoUnit);
     glBindTexture(GL_TEXTURE_2D_ARRAY, albedo_.get());
-    glActiveTexture(GL_TEXTURE0 + kNormalDepthUnit);
+    glActiveTexture(GL_TEXTURE0 + kImpostorNormalDepthUnit);
     glBindTexture(GL_TEXTURE_2D_ARRAY, normalDepth_.get());
     for (int level = 1; level <= kImpostorMipLevels; ++level) {
         // Only the level read is visible to the sampler while the one below
@@ -256,7 +254,7 @@ void ImpostorAtlas::downsample(int layer) {
             glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_BASE_LEVEL, level - 1);
             glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAX_LEVEL, level - 1);
         }
-        glActiveTexture(GL_TEXTURE0 + kAlbedoUnit);
+        glActiveTexture(GL_TEXTURE0 + kImpostorAlbedoUnit);
         glBindTexture(GL_TEXTURE_2D_ARRAY, albedo_.get());
         glUniform1i(downsampleLevel_, 0);
         glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, albedo_.get(), level, layer);
@@ -271,7 +269,7 @@ void ImpostorAtlas::downsample(int layer) {
         glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAX_LEVEL, kImpostorMipLevels);
     }
     glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
-    glActiveTexture(GL_TEXTURE0 + kAlbedoUnit);
+    glActiveTexture(GL_TEXTURE0 + kImpostorAlbedoUnit);
     glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
     glActiveTexture(GL_TEXTURE0);
     glBindVertexArray(0);

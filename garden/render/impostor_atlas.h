@@ -119,5 +119,9 @@ private:
 
 // The mip levels below the frames' own.
 constexpr int kImpostorMipLevels = 3;
+// Texture units the atlas's two textures are read from (its mips and the
+// cards; the shadow map is on 3, draw records on 4).
+constexpr GLint kImpostorAlbedoUnit = 5;
+constexpr GLint kImpostorNormalDepthUnit = 6;
 
 }  // namespace hg::garden

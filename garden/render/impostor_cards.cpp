@@ -166,10 +166,6 @@ std::string sceneFragment() {
 }
 std::string shadowFragment() { return std::string("#version 330 core\n") + kSampleGlsl + kShadowMain; }
 
-// Texture units the cards read the atlas from (the shadow map is on 3,
-// draw records on 4).
-constexpr GLint kAlbedoUnit = 5;
-constexpr GLint kNormalDepthUnit = 6;
 constexpr GLuint kCardFloats = 24;
 
 }  // namespace
@@ -179,8 +175,8 @@ ImpostorCards::ImpostorCards()
       shadow_("impostor shadow", kCardVertex, shadowFragment().c_str()) {
     for (const ShaderProgram* p : {&scene_, &shadow_}) {
         p->use();
-        glUniform1i(p->uniform("uImpostorAlbedo"), kAlbedoUnit);
-        glUniform1i(p->uniform("uImpostorNormalDepth"), kNormalDepthUnit);
+        glUniform1i(p->uniform("uImpostorAlbedo"), kImpostorAlbedoUnit);
+        glUniform1i(p->uniform("uImpostorNormalDepth"), kImpostorNormalDepthUnit);
         glUniform1f(p->uniform("uReach"), ImpostorAtlas::kReach);
     }
     glUseProgram(0);
@@ -218,9 +214,9 @@ void ImpostorCards::send(const std::vector<ImpostorCard>& cards) {
 void ImpostorCards::bindAtlas(const ImpostorAtlas& atlas, const ShaderProgram& program) const {
     glUniform1i(program.uniform("uViews"), atlas.settings().views);
     glUniform1f(program.uniform("uFramePixels"), static_cast<float>(atlas.settings().framePixels));
-    glActiveTexture(GL_TEXTURE0 + kAlbedoUnit);
+    glActiveTexture(GL_TEXTURE0 + kImpostorAlbedoUnit);
     glBindTexture(GL_TEXTURE_2D_ARRAY, atlas.albedo());
-    glActiveTexture(GL_TEXTURE0 + kNormalDepthUnit);
+    glActiveTexture(GL_TEXTURE0 + kImpostorNormalDepthUnit);
     glBindTexture(GL_TEXTURE_2D_ARRAY, atlas.normalDepth());
     glActiveTexture(GL_TEXTURE0);
 }

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "garden/app/garden_session.h"
+#include "garden/app/sculpture_sampling.h"
 #include "garden/render/renderer.h"
 #include "garden/sculpt/sculpture_edits.h"
 
@@ -48,15 +49,9 @@ ImpostorId impostorId(const GardenSession& session, std::size_t sculpture, const
     const auto& specs = session.garden().sculptures;
     if (st.source.kind == SculptureSource::Kind::HyperFun && unedited && st.source.spec >= 0 &&
         static_cast<std::size_t>(st.source.spec) < specs.size()) {
-        const SculptureSpec& spec = specs[static_cast<std::size_t>(st.source.spec)];
         Hash h;
-        h << std::string("hyperfun") << spec.file << spec.body << spec.a.size();
-        for (double a : spec.a) h << a;
-        h << spec.box.has_value();
-        if (spec.box)
-            for (int i = 0; i < 3; ++i) h << spec.box->lo[i] << spec.box->hi[i];
-        h << spec.resolution << spec.band << st.sourceStamp;
-        h << material;
+        h << std::string("hyperfun") << sampledSourceKey(specs[static_cast<std::size_t>(st.source.spec)])
+          << st.sourceStamp << material;
         return {h.value(), 1};
     }
     Hash key;
