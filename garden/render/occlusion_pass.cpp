@@ -1,46 +1,36 @@
 #include "garden/render/occlusion_pass.h"
 
 #include <glm/gtc/type_ptr.hpp>
-#include <glm/matrix.hpp>
 #include <glm/vec3.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "garden/render/shaders.h"
+#include "garden/render/view_depth_pyramid.h"
 
 namespace hg::garden {
 namespace {
 
 constexpr int kMaxSamples = 32;
+constexpr int kPyramidUnit = 0;
 
-// Shared: the scene depth (sample 0) and view-space positions from it.
-#define HG_VIEW_POSITION_GLSL                                                              \
-    "uniform sampler2DMS uDepth;\n"                                                        \
-    "uniform mat4 uInverseProjection;\n"                                                   \
-    "uniform ivec2 uFullSize;\n"                                                           \
-    "uniform int uScale;\n"                                                                \
-    "float depthAt(ivec2 p) { return texelFetch(uDepth, clamp(p, ivec2(0), uFullSize - 1), 0).r; }\n" \
-    "vec3 viewAt(ivec2 p, float d) {\n"                                                    \
-    "    vec2 ndc = (vec2(p) + 0.5) / vec2(uFullSize) * 2.0 - 1.0;\n"                      \
-    "    vec4 v = uInverseProjection * vec4(ndc, d * 2.0 - 1.0, 1.0);\n"                   \
-    "    return v.xyz / v.w;\n"                                                            \
-    "}\n"                                                                                  \
-    "vec3 viewAt(ivec2 p) { return viewAt(p, depthAt(p)); }\n"
-
-const char* const kOcclusionFragment = "#version 330 core\n" HG_VIEW_POSITION_GLSL R"(
+const char* const kOcclusionBody = R"(
 uniform mat4 uProjection;
+uniform int uScale;
 uniform int uSamples;
 uniform float uRadius;
+uniform float uFarZ;  // view z at depth 1, a hair nearer
 uniform vec3 uKernel[32];
 out float open;
 void main() {
     ivec2 p = ivec2(gl_FragCoord.xy) * uScale;
-    float d = depthAt(p);
-    if (d >= 1.0) { open = 1.0; return; }
-    vec3 P = viewAt(p, d);
+    float z = zAt(p, 0);
+    if (z <= uFarZ) { open = 1.0; return; }
+    vec3 P = viewAt(p, z);
     // The normal from the neighbours on the nearer side in depth, so a
     // silhouette's pixel does not take the background's slope.
     vec3 l = viewAt(p - ivec2(1, 0)), r = viewAt(p + ivec2(1, 0));
@@ -65,7 +55,10 @@ void main() {
         vec2 uv = c.xy / c.w * 0.5 + 0.5;
         if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) continue;
         ivec2 q = ivec2(uv * vec2(uFullSize));
-        float sceneZ = viewAt(q).z;
+        // Samples 16 or more pixels out read a coarser level (one level a
+        // doubling), so one pixel's reads stay close in memory.
+        int level = clamp(int(log2(max(length(vec2(q - p)), 1.0))) - 3, 0, kPyramidTop);
+        float sceneZ = zAt(q, level);
         // Something in front of the sample hides it, unless that something
         // is far in front of this point (a separate object: no contact).
         float near = smoothstep(0.0, 1.0, uRadius / max(abs(P.z - sceneZ), 1e-4));
@@ -75,18 +68,19 @@ void main() {
 }
 )";
 
-const char* const kBlurFragment = "#version 330 core\n" HG_VIEW_POSITION_GLSL R"(
+const char* const kBlurBody = R"(
 uniform sampler2D uOcclusion;
+uniform int uScale;
 uniform ivec2 uDirection;
 out float open;
 void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
     ivec2 size = textureSize(uOcclusion, 0);
-    float z = viewAt(p * uScale).z;
+    float z = zAt(p * uScale, 0);
     float sum = 0.0, weights = 0.0;
     for (int i = -4; i <= 4; ++i) {
         ivec2 q = clamp(p + i * uDirection, ivec2(0), size - 1);
-        float dz = abs(viewAt(q * uScale).z - z);
+        float dz = abs(zAt(q * uScale, 0) - z);
         // Gaussian in pixels, and nearly nothing from across a depth step.
         float w = exp(-float(i * i) / 8.0) * exp(-dz / (0.02 * abs(z) + 1e-3));
         sum += w * texelFetch(uOcclusion, q, 0).r;
@@ -96,7 +90,12 @@ void main() {
 }
 )";
 
-#undef HG_VIEW_POSITION_GLSL
+// The pass's fragment shader: the version, the pyramid's reader, `body`.
+std::string fragmentSource(const char* body) {
+    return std::string("#version 330 core\nconst int kPyramidTop = ") + std::to_string(ViewDepthPyramid::kLevels - 1) +
+           ";\n" + kViewPositionGlsl + body;
+}
+
 
 // Fixed directions in the hemisphere (z up) with lengths in [0.5, 1] (the
 // shader scales them by the sample's place in the count): the same picture
@@ -124,20 +123,20 @@ std::vector<glm::vec3> hemisphereKernel() {
 }  // namespace
 
 OcclusionPass::OcclusionPass()
-    : occlusion_("ambient occlusion", shaders::kFullscreenVertex, kOcclusionFragment),
-      blur_("occlusion blur", shaders::kFullscreenVertex, kBlurFragment),
-      empty_(gl::VertexArray::create()) {
+    : occlusion_("ambient occlusion", shaders::kFullscreenVertex, fragmentSource(kOcclusionBody).c_str()),
+      blur_("occlusion blur", shaders::kFullscreenVertex, fragmentSource(kBlurBody).c_str()),
+      empty_(gl::VertexArray::create()),
+      occlusionView_(occlusion_, kPyramidUnit),
+      blurView_(blur_, kPyramidUnit) {
     const ShaderProgram& o = occlusion_;
-    o_ = {o.uniform("uInverseProjection"), o.uniform("uProjection"), o.uniform("uFullSize"),
-          o.uniform("uScale"), o.uniform("uSamples"), o.uniform("uRadius")};
+    o_ = {o.uniform("uProjection"), o.uniform("uScale"), o.uniform("uSamples"), o.uniform("uRadius"),
+          o.uniform("uFarZ")};
     o.use();
-    glUniform1i(o.uniform("uDepth"), 0);
     const std::vector<glm::vec3> kernel = hemisphereKernel();
     glUniform3fv(o.uniform("uKernel"), kMaxSamples, glm::value_ptr(kernel[0]));
     const ShaderProgram& b = blur_;
-    b_ = {b.uniform("uInverseProjection"), b.uniform("uFullSize"), b.uniform("uScale"), b.uniform("uDirection")};
+    b_ = {b.uniform("uScale"), b.uniform("uDirection")};
     b.use();
-    glUniform1i(b.uniform("uDepth"), 0);
     glUniform1i(b.uniform("uOcclusion"), 1);
 }
 
@@ -147,30 +146,33 @@ GLuint OcclusionPass::render(const SceneTargets& scene, const glm::mat4& project
     const glm::ivec2 size = glm::max((full + scale - 1) / scale, glm::ivec2(1));
     raw_.ensure(size);
     blurred_.ensure(size);
-    const glm::mat4 inverse = glm::inverse(projection);
 
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_BLEND);
     glDisable(GL_CULL_FACE);
+    pyramid_.build(scene, projection);
+    // View z of the far plane (depth 1), a hair nearer: what lies beyond is sky.
+    const glm::mat4& p = projection;
+    const float farZ = (p[3][2] - p[3][3]) / (p[2][3] - p[2][2]) * (1.0f - 1e-5f);
+
     glViewport(0, 0, size.x, size.y);
-    glActiveTexture(GL_TEXTURE0);
-    glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, scene.depthTexture());
+    glActiveTexture(GL_TEXTURE0 + kPyramidUnit);
+    glBindTexture(GL_TEXTURE_2D, pyramid_.texture());
     glBindVertexArray(empty_.get());
 
     glBindFramebuffer(GL_FRAMEBUFFER, raw_.fbo.get());
     occlusion_.use();
-    glUniformMatrix4fv(o_.inverseProjection, 1, GL_FALSE, glm::value_ptr(inverse));
+    occlusionView_.set(projection, full);
     glUniformMatrix4fv(o_.projection, 1, GL_FALSE, glm::value_ptr(projection));
-    glUniform2i(o_.fullSize, full.x, full.y);
     glUniform1i(o_.scale, scale);
     glUniform1i(o_.samples, std::clamp(quality.aoSamples, 1, kMaxSamples));
     glUniform1f(o_.radius, std::max(quality.aoRadius, 1e-3f));
+    glUniform1f(o_.farZ, farZ);
     glDrawArrays(GL_TRIANGLES, 0, 3);
 
     // Horizontal into `blurred_`, vertical back into `raw_`.
     blur_.use();
-    glUniformMatrix4fv(b_.inverseProjection, 1, GL_FALSE, glm::value_ptr(inverse));
-    glUniform2i(b_.fullSize, full.x, full.y);
+    blurView_.set(projection, full);
     glUniform1i(b_.scale, scale);
     glActiveTexture(GL_TEXTURE1);
     glBindFramebuffer(GL_FRAMEBUFFER, blurred_.fbo.get());
@@ -181,6 +183,8 @@ GLuint OcclusionPass::render(const SceneTargets& scene, const glm::mat4& project
     glBindTexture(GL_TEXTURE_2D, blurred_.texture.get());
     glUniform2i(b_.direction, 0, 1);
     glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glActiveTexture(GL_TEXTURE0 + kPyramidUnit);
     glBindTexture(GL_TEXTURE_2D, 0);
     glActiveTexture(GL_TEXTURE0);
 

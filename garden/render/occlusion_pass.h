@@ -1,7 +1,8 @@
 // Screen-space ambient occlusion from the scene's depth: a normal-oriented
 // hemisphere of samples per pixel (normals rebuilt from depth), rotated per
 // pixel, then a separable depth-aware (bilateral) blur that smooths the
-// noise without bleeding across silhouettes. Full or half resolution.
+// noise without bleeding across silhouettes. Full or half resolution. The
+// depth is read as view z from a pyramid made first (view_depth_pyramid.h).
 // docs/rendering.md has the parameters and their cost.
 #pragma once
 
@@ -11,6 +12,7 @@
 #include "garden/render/render_quality.h"
 #include "garden/render/render_targets.h"
 #include "garden/render/shader_program.h"
+#include "garden/render/view_depth_pyramid.h"
 
 namespace hg::garden {
 
@@ -27,12 +29,14 @@ private:
     ShaderProgram occlusion_;
     ShaderProgram blur_;
     gl::VertexArray empty_;
+    ViewDepthPyramid pyramid_;
+    ViewPositionUniforms occlusionView_, blurView_;
     ScalarTarget raw_, blurred_;
     struct {
-        GLint inverseProjection, projection, fullSize, scale, samples, radius;
+        GLint projection, scale, samples, radius, farZ;
     } o_{};
     struct {
-        GLint inverseProjection, fullSize, scale, direction;
+        GLint scale, direction;
     } b_{};
 };
 
