@@ -311,7 +311,7 @@ private:
             }
             if (overlay_) drawPanels();
             const garden::RenderStats rs = renderer_.endFrame();
-            drawn = {rs.trianglesDrawn, rs.chunksDrawn, rs.drawCalls, rs.gpuMs(), rs.impostorsDrawn};
+            drawn = {rs.trianglesDrawn, rs.chunksDrawn, rs.drawCalls, rs.gpuMs(), rs.impostorsDrawn, rs.sculpturesHidden};
             ++info_.framesRendered;
         }
         headset_.endFrame(f, render, kNearZ, kFarZ);

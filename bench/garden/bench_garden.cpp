@@ -48,6 +48,7 @@
 //       [--scale N,N,...] [--scale-resolution R] [--scale-frames N]
 //       [--scale-load start|progressive] [--upload-bytes N] [--memory-budget MIB]
 //       [--draw multi|per-chunk|both] [--quality low|medium|high] [--impostor-distance M,M,...]
+//       [--hidden on|off|both]
 //
 // Row names for --filter: morph/128/1600 ... morph/256/1000000,
 // nav/keys/lod, nav/keys/nolod, nav/all/lod, nav/all/nolod, scale/48,
@@ -111,6 +112,7 @@ struct Options {
     // chunk, or both in turn over the same garden (the peer in the same run).
     std::vector<std::string> drawModes{"multi", "per-chunk"};
     std::vector<double> impostorDistances{30.0};  // offscreen scale rows: one walk each (0: no impostors)
+    std::vector<bool> hiddenCulling{true};  // offscreen scale rows: hidden sculptures left out (occlusion queries)
     std::string quality = "high";
 };
 
@@ -147,7 +149,14 @@ bool parseOptions(int argc, char** argv, Options& o) {
         else if (a == "--upload-bytes" && hasValue) o.uploadBytes = std::strtoull(argv[++i], nullptr, 10);
         else if (a == "--memory-budget" && hasValue) o.memoryBudgetMiB = std::strtoull(argv[++i], nullptr, 10);
         else if (a == "--impostor-distance" && hasValue) o.impostorDistances = parseList<double>(argv[++i]);
-        else if (a == "--draw" && hasValue) {
+        else if (a == "--hidden" && hasValue) {
+            const std::string how = argv[++i];
+            if (how != "on" && how != "off" && how != "both") {
+                std::fprintf(stderr, "--hidden: on, off or both\n");
+                return false;
+            }
+            o.hiddenCulling = how == "both" ? std::vector<bool>{true, false} : std::vector<bool>{how == "on"};
+        } else if (a == "--draw" && hasValue) {
             const std::string how = argv[++i];
             if (how != "multi" && how != "per-chunk" && how != "both") {
                 std::fprintf(stderr, "--draw: multi, per-chunk or both\n");
@@ -177,7 +186,7 @@ bool parseOptions(int argc, char** argv, Options& o) {
                      "       [--samples N,N,...] [--resolutions R,R] [--scale N,N,...] [--scale-resolution R]\n"
                      "       [--scale-frames N] [--scale-load start|progressive] [--upload-bytes N]\n"
                      "       [--draw multi|per-chunk|both] [--quality low|medium|high] [--memory-budget MIB]\n"
-                     "       [--impostor-distance M,M,...]\n");
+                     "       [--impostor-distance M,M,...] [--hidden on|off|both]\n");
         return false;
     }
     return true;
@@ -765,9 +774,11 @@ void scaleTable(const Options& o, nlohmann::json& json) {
                     "frames over 11.1 ms | chunks tested by LOD (mean) | triangles shown (mean) | %snew mesh KiB per frame (max) | "
                     "peak memory (MiB) | held after the walk: grids / levels / meshes / morph sources (MiB), grids on disk |\n",
                     gl ? "draw | " : "", gl ? "upload | render | GPU ms | " : "",
-                    gl ? "chunks drawn (mean) | impostors drawn (mean) | triangles drawn (mean) | draw calls (mean) | " : "");
+                    gl ? "chunks drawn (mean) | impostors drawn (mean) | sculptures hidden (mean) | triangles drawn (mean) | "
+                         "draw calls (mean) | "
+                       : "");
         std::printf("|---:|---:|---:|---:|---:|%s---|---|---|%s---|---:|---:|---:|%s---:|---:|---|\n", gl ? "---|" : "",
-                    gl ? "---|---|---|" : "", gl ? "---:|---:|---:|---:|" : "");
+                    gl ? "---|---|---|" : "", gl ? "---:|---:|---:|---:|---:|" : "");
     };
     for (int n : o.scaleCounts) {
         const std::string name = "scale/" + std::to_string(n);
@@ -821,10 +832,12 @@ void scaleTable(const Options& o, nlohmann::json& json) {
         struct Mode {
             std::string draw;
             double cards = 0.0;
+            bool hidden = false;  // hidden sculptures left out
         };
         std::vector<Mode> modes;
         for (const std::string& d : gl ? o.drawModes : std::vector<std::string>{""})
-            for (double cards : gl ? o.impostorDistances : std::vector<double>{0.0}) modes.push_back({d, cards});
+            for (double cards : gl ? o.impostorDistances : std::vector<double>{0.0})
+                for (bool hidden : gl ? o.hiddenCulling : std::vector<bool>{false}) modes.push_back({d, cards, hidden});
         for (std::size_t m = 0; m < modes.size(); ++m) {
 #ifdef HG_BENCH_OFFSCREEN
             if (gl && !scene.offscreen->setMultiDraw(modes[m].draw == "multi")) {
@@ -832,6 +845,7 @@ void scaleTable(const Options& o, nlohmann::json& json) {
                 continue;
             }
             if (gl) scene.offscreen->setImpostorDistance(static_cast<float>(modes[m].cards));
+            if (gl) scene.offscreen->setOcclusionCulling(modes[m].hidden);
 #endif
             // Back at the start and settled again: each mode walks the same garden from the same state.
             if (m > 0 && settle(o, scene, walk) == 0) {
@@ -844,7 +858,7 @@ void scaleTable(const Options& o, nlohmann::json& json) {
                 continue;
             }
             std::array<std::vector<double>, kStageCount> perStage;
-            std::vector<double> totals, visited, shown, gpu, calls, drawn, triangles, cards;
+            std::vector<double> totals, visited, shown, gpu, calls, drawn, triangles, cards, hidden;
             std::size_t over = 0, bytesMax = 0;
             for (std::size_t i = 0; i < run.frames.size(); ++i) {
                 const FrameStats& f = run.frames[i];
@@ -857,6 +871,7 @@ void scaleTable(const Options& o, nlohmann::json& json) {
                 drawn.push_back(static_cast<double>(f.chunksDrawn));
                 triangles.push_back(static_cast<double>(f.trianglesDrawn));
                 cards.push_back(static_cast<double>(f.impostorsDrawn));
+                hidden.push_back(static_cast<double>(f.sculpturesHidden));
                 over += f.totalMs > 11.1 ? 1 : 0;
                 bytesMax = std::max(bytesMax, f.meshBytesShown);
             }
@@ -873,16 +888,18 @@ void scaleTable(const Options& o, nlohmann::json& json) {
             std::string drawColumns, glColumns, countColumns;
             if (gl) {
                 char mode[64];
+                const char* culling = modes[m].hidden ? "hidden left out" : "all drawn";
                 if (modes[m].cards > 0.0)
-                    std::snprintf(mode, sizeof mode, "%s, cards beyond %.0f m", modes[m].draw.c_str(), modes[m].cards);
+                    std::snprintf(mode, sizeof mode, "%s, cards beyond %.0f m, %s", modes[m].draw.c_str(), modes[m].cards,
+                                  culling);
                 else
-                    std::snprintf(mode, sizeof mode, "%s, no cards", modes[m].draw.c_str());
+                    std::snprintf(mode, sizeof mode, "%s, no cards, %s", modes[m].draw.c_str(), culling);
                 drawColumns = std::string(mode) + " | ";
                 glColumns = spreadCell(stage(Stage::Upload)) + " | " + spreadCell(stage(Stage::Render)) + " | " +
                             (gpu.empty() ? std::string("-") : spreadCell(spread(gpu))) + " | ";
                 char b[128];
-                std::snprintf(b, sizeof b, "%.0f | %.0f | %.0f | %.1f | ", spread(drawn).mean, spread(cards).mean,
-                              spread(triangles).mean, spread(calls).mean);
+                std::snprintf(b, sizeof b, "%.0f | %.0f | %.1f | %.0f | %.1f | ", spread(drawn).mean, spread(cards).mean,
+                              spread(hidden).mean, spread(triangles).mean, spread(calls).mean);
                 countColumns = b;
             }
             head();
@@ -904,6 +921,8 @@ void scaleTable(const Options& o, nlohmann::json& json) {
                                      {"offscreen", gl}, {"draw", modes[m].draw}, {"quality", gl ? o.quality : ""},
                                      {"impostor_distance", modes[m].cards},
                                      {"impostors_drawn", spreadJson(spread(cards))},
+                                     {"hidden_left_out", modes[m].hidden},
+                                     {"sculptures_hidden", spreadJson(spread(hidden))},
                                      {"viewport", {o.width, o.height}},
                                      {"stage_ms", stages}, {"total_ms", spreadJson(spread(totals))},
                                      {"gpu_ms", spreadJson(spread(gpu))}, {"draw_calls", spreadJson(spread(calls))},

@@ -36,6 +36,7 @@ struct FrameStats {
     std::size_t chunksDrawn = 0;                // chunk draws after view culling
     std::size_t drawCalls = 0;                  // GL draw calls (chunks go out batched)
     std::size_t impostorsDrawn = 0;             // far sculptures drawn as impostor cards
+    std::size_t sculpturesHidden = 0;           // left out as hidden behind nearer ones
     // GPU milliseconds of the latest frame the GPU finished (timer queries,
     // read without waiting: a frame or a few behind); -1 where unknown.
     double gpuMs = -1.0;

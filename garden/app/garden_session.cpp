@@ -408,6 +408,7 @@ void GardenSession::uploadAndRender(ViewSink& views) {
     stats().drawCalls = drawn.drawCalls;
     stats().gpuMs = drawn.gpuMs;
     stats().impostorsDrawn = drawn.impostorsDrawn;
+    stats().sculpturesHidden = drawn.sculpturesHidden;
 }
 
 void GardenSession::input(const Hands& hands, double dt) {

@@ -25,6 +25,7 @@ struct ViewDraw {
     std::size_t drawCalls = 0;  // GL calls: one per batch of chunks where multi-draw is on
     double gpuMs = -1.0;        // the GPU's time for the latest frame it finished; -1 unknown
     std::size_t impostorsDrawn = 0;  // far sculptures drawn as cards (impostors) instead of chunks
+    std::size_t sculpturesHidden = 0;  // left out as hidden behind nearer ones (occlusion queries)
 };
 
 class ViewSink {

@@ -53,7 +53,7 @@ ViewDraw OffscreenGarden::render(GardenSession& session) {
     // The CPU cost of drawing includes waiting for llvmpipe here: a software
     // GPU; on hardware this is where the driver would queue the frame.
     OffscreenTarget::finish();
-    return {r.trianglesDrawn, r.chunksDrawn, r.drawCalls, r.gpuMs(), r.impostorsDrawn};
+    return {r.trianglesDrawn, r.chunksDrawn, r.drawCalls, r.gpuMs(), r.impostorsDrawn, r.sculpturesHidden};
 }
 
 void OffscreenGarden::setQuality(const RenderQuality& quality) { impl_->renderer.setQuality(quality); }
@@ -72,6 +72,7 @@ std::size_t OffscreenGarden::impostorsBaked() const {
 }
 
 bool OffscreenGarden::setMultiDraw(bool on) { return impl_->renderer.setMultiDraw(on) == on; }
+void OffscreenGarden::setOcclusionCulling(bool on) { impl_->renderer.setOcclusionCulling(on); }
 
 std::string OffscreenGarden::screenshot(const std::string& path) {
     impl_->target.bind();

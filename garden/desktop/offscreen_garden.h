@@ -29,6 +29,9 @@ public:
     // Chunks in one multi-draw (the default where GL 4.3 is there) or a call
     // each; false when multi-draw was asked for and is missing.
     bool setMultiDraw(bool on);
+    // Sculptures hidden behind nearer ones left out (the default) or drawn
+    // (Renderer::setOcclusionCulling).
+    void setOcclusionCulling(bool on);
 
     // A camera of the caller's instead of the session's navigator (none:
     // the navigator's, as the window shows it).

@@ -15,6 +15,7 @@
 #include "garden/render/chunk_batch.h"
 #include "garden/render/gpu_timers.h"
 #include "garden/render/occlusion_pass.h"
+#include "garden/render/visibility_queries.h"
 #include "garden/render/post_process.h"
 #include "garden/render/render_targets.h"
 #include "garden/render/shaders.h"
@@ -297,6 +298,14 @@ bool Renderer::has(ChunkId id, std::uint64_t version) const {
 
 bool Renderer::has(ChunkId id) const { return chunks_.count(id) != 0; }
 
+bool Renderer::bounds(ChunkId id, glm::vec3& lo, glm::vec3& hi) const {
+    auto found = chunks_.find(id);
+    if (found == chunks_.end() || found->second.indexCount == 0) return false;
+    lo = found->second.lo;
+    hi = found->second.hi;
+    return true;
+}
+
 void Renderer::drop(ChunkId id) {
     auto found = chunks_.find(id);
     if (found == chunks_.end()) return;
@@ -325,6 +334,8 @@ void Renderer::beginFrame(const View& view) {
     output_ = static_cast<GLuint>(bound);
     view_ = view;
     viewOpen_ = true;
+    if (visibility_) visibility_->beginView(viewsThisFrame_, view.eye, frames_);
+    ++viewsThisFrame_;
     sceneDraws_.clear();
     flatDraws_.clear();
     linePoints_.clear();
@@ -373,7 +384,7 @@ void Renderer::setLighting(const LitUniforms& u, const ShadowUniforms& s, bool s
     }
 }
 
-bool Renderer::drawChunk(ChunkId id, const glm::mat4& model, const RenderMaterial& material) {
+bool Renderer::drawChunk(ChunkId id, const glm::mat4& model, const RenderMaterial& material, bool seen) {
     auto found = chunks_.find(id);
     if (found == chunks_.end()) return false;
     const ChunkRecord& c = found->second;
@@ -382,7 +393,9 @@ bool Renderer::drawChunk(ChunkId id, const glm::mat4& model, const RenderMateria
     d.id = id;
     d.model = model;
     d.material = material;
+    d.castOnly = !seen;
     sceneDraws_.push_back(d);
+    if (!seen) return true;
     stats_.chunksDrawn += 1;
     stats_.trianglesDrawn += c.indexCount / 3;
     return true;
@@ -458,7 +471,7 @@ void Renderer::gatherChunks(glm::vec3& lo, glm::vec3& hi) {
     bool previousNormals = false;
     DrawRecord current{};
     std::size_t record = 0, shadowRecord = 0;
-    bool shadowRecordMade = false;
+    bool recordMade = false, shadowRecordMade = false;
     float stretch = 1.0f;  // the model matrix's largest scale, for chunk radii
     for (const SceneDraw& d : sceneDraws_) {
         if (d.ground) continue;
@@ -470,14 +483,19 @@ void Renderer::gatherChunks(glm::vec3& lo, glm::vec3& hi) {
                           previous->material == d.material;
         if (!same) {
             current = drawRecord(d.model, d.material, c.hasNormals);
-            record = batch_->addRecord(current);
-            shadowRecordMade = false;
+            recordMade = shadowRecordMade = false;
             stretch = std::max({glm::length(glm::vec3(d.model[0])), glm::length(glm::vec3(d.model[1])),
                                 glm::length(glm::vec3(d.model[2]))});
             previous = &d;
             previousNormals = c.hasNormals;
         }
-        batch_->add(*slot, record);
+        if (!d.castOnly) {
+            if (!recordMade) {
+                record = batch_->addRecord(current);
+                recordMade = true;
+            }
+            batch_->add(*slot, record);
+        }
         // A caster when it comes within the shadow's reach of the eye; the
         // map is fitted to the casters' bounding spheres.
         const glm::vec3 centre = glm::vec3(d.model * glm::vec4(0.5f * (c.lo + c.hi), 1.0f));
@@ -564,6 +582,8 @@ void Renderer::renderScene(bool shadowed) {
     for (const SceneDraw& d : sceneDraws_)
         if (d.ground) drawGroundNow(d.groundStyle);
     sky_->draw(view_);
+    // Every box against the finished depth (sky included: it writes none).
+    if (visibility_) stats_.visibilityTests += visibility_->issue(viewProjection);
     timers_->end();
 }
 
@@ -623,7 +643,7 @@ void Renderer::drawEdges() {
     glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
     glBindVertexArray(arena_->vertexArray());
     for (const SceneDraw& d : sceneDraws_) {
-        if (d.ground || d.material.edges == 0) continue;
+        if (d.ground || d.castOnly || d.material.edges == 0) continue;
         const ArenaSlot* slot = arena_->slot(d.id);
         if (slot == nullptr) continue;
         setMat4(flat_.model, d.model);
@@ -688,9 +708,32 @@ void Renderer::drawFlatNow(const FlatDraw& d) {
     }
 }
 
+void Renderer::setOcclusionCulling(bool on) {
+    occlusionCulling_ = on;
+    if (!on && visibility_) visibility_->clear();
+}
+
+bool Renderer::wasHidden(std::uint64_t key) {
+    if (!occlusionCulling_ || !visibility_) return false;
+    const bool hidden = visibility_->hidden(key);
+    stats_.sculpturesHidden += hidden ? 1 : 0;
+    return hidden;
+}
+
+void Renderer::testVisibility(std::uint64_t key, const glm::vec3& worldLo, const glm::vec3& worldHi) {
+    if (!occlusionCulling_ || !viewOpen_) return;
+    if (!visibility_) {
+        visibility_ = std::make_unique<VisibilityQueries>();
+        visibility_->beginView(viewsThisFrame_ - 1, view_.eye, frames_);
+    }
+    visibility_->test(key, worldLo, worldHi, view_.projection * view_.view);
+}
+
 RenderStats Renderer::endFrame() {
     finishView();
     if (atlas_) atlas_->nextFrame();
+    viewsThisFrame_ = 0;
+    ++frames_;
     RenderStats done = stats_;
     const auto& ms = timers_->latest();
     done.gpuShadowMs = ms[static_cast<std::size_t>(GpuPass::Shadow)];

@@ -129,6 +129,8 @@ struct RenderStats {
     std::size_t bytesUploaded = 0;
     std::size_t impostorsDrawn = 0;   // cards drawn in place of far sculptures' chunks
     std::size_t impostorsBaked = 0;   // impostors rendered into the atlas since the last endFrame
+    std::size_t sculpturesHidden = 0;  // left out as hidden behind nearer ones (wasHidden said so)
+    std::size_t visibilityTests = 0;   // boxes drawn in occlusion queries (visibility_queries.h)
     // GPU milliseconds per pass of the latest view the GPU has finished
     // (GL timer queries, read without waiting: a view or a few behind); -1
     // where a pass did not run or no result is in yet.
@@ -146,6 +148,7 @@ class GpuTimers;
 class ShadowPass;
 class OcclusionPass;
 class SkyPass;
+class VisibilityQueries;
 
 class Renderer {
 public:
@@ -164,6 +167,9 @@ public:
     std::size_t upload(ChunkId id, std::uint64_t version, const poly::Mesh& mesh);
     bool has(ChunkId id, std::uint64_t version) const;
     bool has(ChunkId id) const;
+    // The model-space box around chunk `id`'s vertices; false when it has
+    // no buffers or no triangles.
+    bool bounds(ChunkId id, glm::vec3& lo, glm::vec3& hi) const;
     void drop(ChunkId id);
     std::size_t chunkCount() const { return chunks_.size(); }
     std::size_t residentBytes() const { return residentBytes_; }
@@ -196,6 +202,18 @@ public:
     // (a test's smaller atlas); no effect once it is made.
     void setImpostorSettings(const ImpostorSettings& settings) { impostorSettings_ = settings; }
 
+    // --- hidden sculptures (visibility_queries.h) --------------------------------
+    // On by default. Off forgets every result; wasHidden is then always false.
+    void setOcclusionCulling(bool on);
+    bool occlusionCulling() const { return occlusionCulling_; }
+    // Whether the caller's object `key` (a sculpture) was hidden behind
+    // nearer things when its box was last tested in this view's place in
+    // the frame, and that result is still trusted; counted in the stats as
+    // hidden, since the caller then leaves it out (drawChunk, seen false).
+    bool wasHidden(std::uint64_t key);
+    // Tests `key`'s world box after this view's scene pass, for a later frame's wasHidden.
+    void testVisibility(std::uint64_t key, const glm::vec3& worldLo, const glm::vec3& worldHi);
+
     // --- quality -------------------------------------------------------------
     void setQuality(const RenderQuality& quality) { quality_ = quality; }
     const RenderQuality& quality() const { return quality_; }
@@ -207,8 +225,9 @@ public:
     void beginFrame(const View& view);
     // Draws an uploaded chunk with `model` (rotation, translation, uniform or
     // not scale: normals use the inverse transpose). False when `id` has no
-    // buffers, so the caller can see it is not resident yet.
-    bool drawChunk(ChunkId id, const glm::mat4& model, const RenderMaterial& material);
+    // buffers, so the caller can see it is not resident yet. `seen` false:
+    // only its shadow (a hidden sculpture's chunk still casts).
+    bool drawChunk(ChunkId id, const glm::mat4& model, const RenderMaterial& material, bool seen = true);
     void drawGround(const GroundStyle& ground);
     // Unlit lines of one pixel; `depthTested` false draws them over
     // everything (gizmos that must stay visible).
@@ -248,6 +267,7 @@ private:
     // A lit draw waiting for finishView: a chunk, or the ground.
     struct SceneDraw {
         bool ground = false;
+        bool castOnly = false;  // hidden: into the shadow map only
         ChunkId id = 0;
         glm::mat4 model{1.0f};
         RenderMaterial material;
@@ -311,6 +331,10 @@ private:
     std::unique_ptr<ShadowPass> shadow_;
     std::unique_ptr<OcclusionPass> occlusion_;
     std::unique_ptr<SkyPass> sky_;
+    std::unique_ptr<VisibilityQueries> visibility_;  // made on first use
+    bool occlusionCulling_ = true;
+    int viewsThisFrame_ = 0;
+    std::uint64_t frames_ = 0;  // endFrame calls
     std::unique_ptr<PostProcess> post_;
     std::unique_ptr<GpuTimers> timers_;
     std::unique_ptr<ChunkArena> arena_;  // every chunk's mesh

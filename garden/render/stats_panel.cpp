@@ -103,6 +103,7 @@ void drawStatsPanel(const FrameHistory& history, bool toggle, const std::functio
         counterRow("chunks drawn", last->chunksDrawn);
         counterRow("draw calls", last->drawCalls);
         counterRow("impostors drawn", last->impostorsDrawn);
+        counterRow("sculptures hidden", last->sculpturesHidden);
         ImGui::EndTable();
     }
     if (memory) {

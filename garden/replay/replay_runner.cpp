@@ -259,7 +259,7 @@ std::string statsJson(const ReplayScript& script, const ReplayResult& result) {
                           {"uploads_pending", f.uploadsPending}, {"triangles_shown", f.trianglesShown},
                           {"triangles_drawn", f.trianglesDrawn},
                           {"chunks_drawn", f.chunksDrawn}, {"draw_calls", f.drawCalls},
-                          {"impostors_drawn", f.impostorsDrawn},
+                          {"impostors_drawn", f.impostorsDrawn}, {"sculptures_hidden", f.sculpturesHidden},
                           {"gpu_ms", f.gpuMs}});
     }
     const double n = std::max<double>(1.0, static_cast<double>(result.stats.size()));

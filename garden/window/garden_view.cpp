@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -84,6 +85,17 @@ InView frustumTest(const glm::mat4& modelViewProjection, const double lo[3], con
     return allInside ? InView::Wholly : InView::Partly;
 }
 
+// The world box around a model box placed by `model`.
+void worldBox(const glm::mat4& model, const glm::vec3& lo, const glm::vec3& hi, glm::vec3& worldLo, glm::vec3& worldHi) {
+    worldLo = glm::vec3(1e30f);
+    worldHi = glm::vec3(-1e30f);
+    for (int c = 0; c < 8; ++c) {
+        const glm::vec3 p(model * glm::vec4(c & 1 ? hi.x : lo.x, c & 2 ? hi.y : lo.y, c & 4 ? hi.z : lo.z, 1.0f));
+        worldLo = glm::min(worldLo, p);
+        worldHi = glm::max(worldHi, p);
+    }
+}
+
 }  // namespace
 
 ViewUpload GardenView::upload(const GardenSession& session, double allowanceMs) {
@@ -114,6 +126,17 @@ ViewUpload GardenView::upload(const GardenSession& session, double allowanceMs) 
         for (std::size_t c = 0; c < q.count(); ++c)
             if (const auto m = q.mesh(c)) bytes += renderer_.upload(chunkId(s, c), q.version(c), *m);
         uploaded_[s] = q.shownGeneration() + 1;
+        // The box around what is on show, for the visibility test: the
+        // layout's box holds empty chunks and the band around the surface.
+        Uploaded& u = frames_[s];
+        u.meshLo = glm::vec3(1e30f);
+        u.meshHi = glm::vec3(-1e30f);
+        for (std::size_t c = 0; c < q.count(); ++c) {
+            glm::vec3 lo, hi;
+            if (!renderer_.bounds(chunkId(s, c), lo, hi)) continue;
+            u.meshLo = glm::min(u.meshLo, lo);
+            u.meshHi = glm::max(u.meshHi, hi);
+        }
         spent = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count() >= allowanceMs;
     }
     if (!spent) bakeImpostors(session, start, allowanceMs);
@@ -228,6 +251,14 @@ void GardenView::render(const GardenSession& session, glm::ivec2 viewport, const
         const InView whole = frustumTest(mvp, lo, hi);
         if (whole == InView::Outside) continue;
         if (drawnAsCard(session, s, m, lo, hi, eye)) continue;
+        // Hidden behind nearer sculptures when last tested: its chunks only
+        // cast their shadow (docs/rendering.md, "Hidden sculptures").
+        const bool seen = !renderer_.wasHidden(s);
+        if (renderer_.occlusionCulling() && s < frames_.size() && frames_[s].meshLo.x <= frames_[s].meshHi.x) {
+            glm::vec3 worldLo, worldHi;
+            worldBox(st.modelToWorld(), frames_[s].meshLo, frames_[s].meshHi, worldLo, worldHi);
+            renderer_.testVisibility(s, worldLo, worldHi);
+        }
         for (std::size_t c = 0; c < chunks; ++c) {
             const auto mesh = st.queue->mesh(c);
             if (!mesh || mesh->empty()) continue;
@@ -235,7 +266,7 @@ void GardenView::render(const GardenSession& session, glm::ivec2 viewport, const
                 st.layout->modelBox(c, lo, hi);
                 if (frustumTest(mvp, lo, hi) == InView::Outside) continue;
             }
-            renderer_.drawChunk(chunkId(s, c), st.modelToWorld(), m);
+            renderer_.drawChunk(chunkId(s, c), st.modelToWorld(), m, seen);
         }
     }
     if (only_ >= 0) return;  // one sculpture on show: no markers on the ground

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 
 #include "garden/app/garden_session.h"
 #include "garden/render/material_look.h"
@@ -92,6 +93,9 @@ private:
     struct Uploaded {
         std::uint64_t frameGeneration = 0;
         std::size_t chunks = 0;
+        // Model-space box of the meshes uploaded (lo > hi: none), which the
+        // visibility test draws (docs/rendering.md, "Hidden sculptures").
+        glm::vec3 meshLo{1e30f}, meshHi{-1e30f};
     };
     std::vector<Uploaded> frames_;
     // Per sculpture: drawn as a card in the last view, and whether (and how

@@ -1,0 +1,129 @@
+#include "garden/render/visibility_queries.h"
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <glm/vec4.hpp>
+
+namespace hg::garden {
+namespace {
+
+// A box's 12 triangles from gl_VertexID alone (corner bits x, y, z).
+const char* const kBoxVertex = R"(#version 330 core
+uniform mat4 uViewProjection;
+uniform vec3 uLo, uHi;
+const int kCorner[36] = int[36](0, 1, 3, 0, 3, 2,  4, 6, 7, 4, 7, 5,  0, 4, 5, 0, 5, 1,
+                                2, 3, 7, 2, 7, 6,  0, 2, 6, 0, 6, 4,  1, 5, 7, 1, 7, 3);
+void main() {
+    int c = kCorner[gl_VertexID];
+    vec3 p = mix(uLo, uHi, vec3(float(c & 1), float((c >> 1) & 1), float((c >> 2) & 1)));
+    gl_Position = uViewProjection * vec4(p, 1.0);
+}
+)";
+const char* const kBoxFragment = R"(#version 330 core
+void main() {}
+)";
+
+// Every corner in front of the near plane and inside the view's sides:
+// every ray that could meet the box is in the picture, so a box none of
+// whose pixels passed the depth test hides nothing that another turn of
+// the head (from the same point) would show.
+bool whollyInView(const glm::mat4& viewProjection, const glm::vec3& lo, const glm::vec3& hi) {
+    for (int c = 0; c < 8; ++c) {
+        const glm::vec4 p = viewProjection * glm::vec4(c & 1 ? hi.x : lo.x, c & 2 ? hi.y : lo.y, c & 4 ? hi.z : lo.z, 1.0f);
+        if (p.w <= 0.0f || p.x < -p.w || p.x > p.w || p.y < -p.w || p.y > p.w || p.z < -p.w || p.z > p.w) return false;
+    }
+    return true;
+}
+
+}  // namespace
+
+VisibilityQueries::VisibilityQueries()
+    : program_("visibility boxes", kBoxVertex, kBoxFragment),
+      empty_(gl::VertexArray::create()),
+      viewProjection_(program_.uniform("uViewProjection")),
+      lo_(program_.uniform("uLo")),
+      hi_(program_.uniform("uHi")) {}
+
+void VisibilityQueries::beginView(int slot, const glm::vec3& eye, std::uint64_t frame) {
+    slot_ = slot;
+    eye_ = eye;
+    frame_ = frame;
+    boxes_.clear();
+}
+
+VisibilityQueries::Entry& VisibilityQueries::entry(std::uint64_t key) {
+    // A sculpture's index fills the low 48 bits; the view's slot the rest.
+    return entries_[(static_cast<std::uint64_t>(slot_) << 48) ^ key];
+}
+
+void VisibilityQueries::collect(Entry& e) {
+    if (!e.inFlight) return;
+    GLuint available = 0;
+    glGetQueryObjectuiv(e.query.get(), GL_QUERY_RESULT_AVAILABLE, &available);
+    if (!available) return;
+    GLuint passed = 0;
+    glGetQueryObjectuiv(e.query.get(), GL_QUERY_RESULT, &passed);
+    e.inFlight = false;
+    e.known = true;
+    e.wasHidden = passed == 0;
+    e.testedFrom = e.flightEye;
+    e.testedFrame = e.flightFrame;
+}
+
+bool VisibilityQueries::hidden(std::uint64_t key) {
+    auto found = entries_.find((static_cast<std::uint64_t>(slot_) << 48) ^ key);
+    if (found == entries_.end()) return false;
+    Entry& e = found->second;
+    collect(e);
+    return e.known && e.wasHidden && frame_ - e.testedFrame <= kTrustedFrames &&
+           glm::distance(eye_, e.testedFrom) <= kTrustedMove;
+}
+
+void VisibilityQueries::test(std::uint64_t key, const glm::vec3& lo, const glm::vec3& hi,
+                             const glm::mat4& viewProjection) {
+    const glm::vec3 grownLo = lo - glm::vec3(kMargin), grownHi = hi + glm::vec3(kMargin);
+    if (!whollyInView(viewProjection, grownLo, grownHi)) return;
+    Entry& e = entry(key);
+    collect(e);
+    if (e.inFlight) return;
+    boxes_.push_back({&e, grownLo, grownHi});
+}
+
+std::size_t VisibilityQueries::issue(const glm::mat4& viewProjection) {
+    if (boxes_.empty()) return 0;
+    program_.use();
+    glUniformMatrix4fv(viewProjection_, 1, GL_FALSE, glm::value_ptr(viewProjection));
+    glBindVertexArray(empty_.get());
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    glDepthMask(GL_FALSE);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LEQUAL);
+    glDisable(GL_CULL_FACE);  // the far faces count too: the box is a volume
+    for (const Box& b : boxes_) {
+        Entry& e = *b.entry;
+        if (!e.query) e.query = gl::Query::create();
+        glUniform3fv(lo_, 1, glm::value_ptr(b.lo));
+        glUniform3fv(hi_, 1, glm::value_ptr(b.hi));
+        glBeginQuery(GL_ANY_SAMPLES_PASSED, e.query.get());
+        glDrawArrays(GL_TRIANGLES, 0, 36);
+        glEndQuery(GL_ANY_SAMPLES_PASSED);
+        e.inFlight = true;
+        e.flightEye = eye_;
+        e.flightFrame = frame_;
+    }
+    glEnable(GL_CULL_FACE);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glBindVertexArray(0);
+    const std::size_t issued = boxes_.size();
+    boxes_.clear();
+    return issued;
+}
+
+void VisibilityQueries::clear() {
+    entries_.clear();
+    boxes_.clear();
+}
+
+}  // namespace hg::garden

@@ -1,0 +1,86 @@
+// Whole sculptures hidden behind nearer ones are not drawn (issue 25;
+// docs/rendering.md, "Hidden sculptures"). After a view's scene pass every
+// sculpture's world box that lies wholly in view is drawn against the
+// scene's depth inside a GL_ANY_SAMPLES_PASSED query (no colour, no depth
+// written). A later frame reads the result without waiting for the GPU:
+// a box none of whose samples passed was hidden, and the sculpture's chunks
+// are then left out of the scene pass (they still cast the sun's shadow).
+//
+// A result is trusted only while it can still be true:
+//   - the box is grown by kMargin before it is tested, and the result
+//     counts only while the eye is within kTrustedMove of where it was
+//     tested from (turning the head does not change what hides what: the
+//     box was wholly in view, so every ray to it was tested);
+//   - it is at most kTrustedFrames old (an occluder removed or moved
+//     shows what it hid within a few frames);
+//   - each view of a frame (a headset's two eyes) keeps its own results.
+// So the cost of a wrong guess is bounded; the usual case (a visitor
+// standing or walking among sculptures) is exact.
+#pragma once
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+#include "garden/render/gl_objects.h"
+#include "garden/render/shader_program.h"
+
+namespace hg::garden {
+
+class VisibilityQueries {
+public:
+    static constexpr float kMargin = 0.1f;        // metres the box grows by on every side
+    static constexpr float kTrustedMove = 0.05f;  // metres the eye may move from where a box was tested
+    static constexpr std::uint64_t kTrustedFrames = 4;
+
+    VisibilityQueries();  // throws GlError naming a shader that fails
+
+    // The next view (`slot`: its place in the frame) from `eye`, in frame `frame`.
+    void beginView(int slot, const glm::vec3& eye, std::uint64_t frame);
+    // Whether `key`'s box was hidden when last tested in this view's slot,
+    // and that result is still trusted. Reads results that have come in.
+    bool hidden(std::uint64_t key);
+    // To test after the scene pass: `key`'s world box lo..hi (grown here by
+    // kMargin). Skipped while an earlier test of it is still in flight, or
+    // when the grown box is not wholly in front of the view (the caller
+    // passes `viewProjection`).
+    void test(std::uint64_t key, const glm::vec3& lo, const glm::vec3& hi, const glm::mat4& viewProjection);
+    // Draws the view's boxes against the depth of the bound framebuffer
+    // (the scene's); returns how many. Leaves colour and depth writes on.
+    std::size_t issue(const glm::mat4& viewProjection);
+    // Forgets every result and test (culling turned off).
+    void clear();
+
+private:
+    struct Entry {
+        gl::Query query;
+        bool inFlight = false;
+        glm::vec3 flightEye{0.0f};
+        std::uint64_t flightFrame = 0;
+        bool known = false;  // a result came in
+        bool wasHidden = false;
+        glm::vec3 testedFrom{0.0f};
+        std::uint64_t testedFrame = 0;
+    };
+    struct Box {
+        Entry* entry;
+        glm::vec3 lo, hi;
+    };
+    Entry& entry(std::uint64_t key);
+    static void collect(Entry& e);
+
+    ShaderProgram program_;
+    gl::VertexArray empty_;
+    GLint viewProjection_ = -1, lo_ = -1, hi_ = -1;
+    std::unordered_map<std::uint64_t, Entry> entries_;  // by slot and key
+    std::vector<Box> boxes_;                           // the open view's tests
+    int slot_ = 0;
+    glm::vec3 eye_{0.0f};
+    std::uint64_t frame_ = 0;
+};
+
+}  // namespace hg::garden

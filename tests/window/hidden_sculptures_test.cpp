@@ -1,0 +1,154 @@
+// Sculptures hidden behind nearer ones (garden/render/visibility_queries.h,
+// the view's use in garden/window/garden_view.cpp): left out of the scene
+// pass once an occlusion query found their box hidden, and the picture is
+// the same as with every sculpture drawn, frame by frame, while the eye
+// walks out from behind a wall and the hidden sculptures come into view,
+// shadows included (a hidden sculpture still casts).
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <vector>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "../render/gl_fixture.h"
+#include "garden/app/garden_session.h"
+#include "garden/window/garden_view.h"
+#include "tests/test_folder.h"
+
+namespace hg::garden {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A wall 3 m wide, 2 m tall and 0.3 m deep.
+const char* const kWall =
+    "wall(x[3], a[1]) {\n"
+    "  wall = (1.5 - x[1]) & (1.5 + x[1]) & x[2] & (2 - x[2]) & (0.15 - x[3]) & (0.15 + x[3]);\n"
+    "}\n";
+// A stem and a cap, 1.45 m tall.
+const char* const kMushroom =
+    "mushroom(x[3], a[1]) {\n"
+    "  stem = 0.09 - (x[1]^2 + x[3]^2);\n"
+    "  stem = stem & x[2] & (1.2 - x[2]);\n"
+    "  cap = 0.25 - (x[1]^2 + (x[2] - 1.2)^2 + x[3]^2);\n"
+    "  mushroom = stem | cap;\n"
+    "}\n";
+
+class HiddenSculpturesTest : public test::GlTest {
+protected:
+    void SetUp() override {
+        test::GlTest::SetUp();
+        if (IsSkipped() || HasFatalFailure()) return;
+        folder_ = std::make_unique<hg::test::TestFolder>("hg_hidden_sculptures");
+        fs::create_directories(folder_->path);
+        std::ofstream(folder_->path / "wall.hf") << kWall;
+        std::ofstream(folder_->path / "mushroom.hf") << kMushroom;
+        // The sun low from the -x side: the mushrooms' shadows reach out past the wall's end.
+        std::ofstream out(folder_->path / "garden.json");
+        out << R"({"version": 1, "name": "hidden", "materials": {"grey": {"color": [0.6, 0.6, 0.6]},)"
+            << R"( "red": {"color": [0.85, 0.12, 0.1]}},)"
+            << R"( "lights": [{"type": "directional", "direction": [0.85, -0.45, 0.25], "intensity": 1.0},)"
+            << R"( {"type": "ambient", "color": [1, 1, 1], "intensity": 0.25}], "sculptures": [)"
+            << R"({"name": "wall", "file": "wall.hf", "resolution": 48, "material": "grey",)"
+            << R"( "box": {"min": [-1.6, -0.05, -0.25], "max": [1.6, 2.1, 0.25]}, "placement": {"position": [0, 0, 0]}})";
+        for (int i = 0; i < 3; ++i)
+            out << R"(, {"name": "m)" << i << R"(", "file": "mushroom.hf", "resolution": 40, "material": "red",)"
+                << R"( "box": {"min": [-0.55, -0.05, -0.55], "max": [0.55, 1.5, 0.55]},)"
+                << R"( "placement": {"position": [)" << (i - 1) * 0.9 << ", 0, -2.5]}}";
+        out << "]}";
+    }
+    void TearDown() override {
+        folder_.reset();
+        test::GlTest::TearDown();
+    }
+
+    SessionSettings settings() const {
+        SessionSettings s;
+        s.chunkSize = 16;
+        s.maxLevel = 1;
+        s.viewportHeight = kHeight;
+        s.fovY = glm::radians(double(kFovY));
+        s.remeshChunksPerFrame = 4096;
+        return s;
+    }
+
+    RenderStats draw(Renderer& renderer, GardenView& view, const GardenSession& session, const glm::vec3& eye,
+                     const glm::vec3& at) {
+        target_->bind();
+        const glm::mat4 v = glm::lookAt(eye, at, glm::vec3(0, 1, 0));
+        const glm::mat4 p = glm::perspective(glm::radians(kFovY), float(kWidth) / float(kHeight), kNear, kFar);
+        view.render(session, {kWidth, kHeight}, v, p, eye);
+        const RenderStats stats = renderer.endFrame();
+        read();
+        return stats;
+    }
+
+    std::unique_ptr<hg::test::TestFolder> folder_;
+};
+
+// The eye 6 m in front of the wall, then sideways 2 cm a frame out past
+// its end, then back behind the wall and out in one jump: every frame is
+// the picture with every sculpture drawn (a second renderer in the same
+// context, culling off), while at the start the three mushrooms behind the
+// wall are left out. (The jump is what a result trusted after the eye
+// moved would get wrong.)
+TEST_F(HiddenSculpturesTest, TheWalkOutFromBehindAWallShowsWhatDrawingEverythingShows) {
+    GardenSession session(loadGarden((folder_->path / "garden.json").string()), settings());
+    session.navigator().setMode(NavigationMode::Fly);
+    session.navigator().setPose({0.0f, 1.2f, 6.0f}, 0.0f, 0.0f);
+    for (int f = 0; f < 3000 && !session.idle(); ++f) session.frame(FrameInput(Hands{}, 1.0 / 90.0));
+    ASSERT_TRUE(session.idle());
+
+    RenderQuality q = test::plainQuality();
+    q.shadows = true;
+    renderer_->setQuality(q);
+    ASSERT_TRUE(renderer_->occlusionCulling()) << "on by default";
+    GardenView culled(*renderer_);
+    culled.upload(session, 1e9);
+    Renderer everything;
+    everything.setQuality(q);
+    everything.setOcclusionCulling(false);
+    GardenView all(everything);
+    all.upload(session, 1e9);
+
+    int framesWithHidden = 0, framesCompared = 0, mushroomPixelsSeen = 0;
+    std::size_t hiddenAtStart = 0, trianglesCulled = 0, trianglesAll = 0;
+    // Three frames standing still first (the queries' results come in),
+    // the walk out, three frames back behind the wall, and one jump out.
+    std::vector<float> walk = {0.0f, 0.0f, 0.0f};
+    for (int step = 0; step <= 200; ++step) walk.push_back(0.02f * static_cast<float>(step));
+    walk.insert(walk.end(), {0.0f, 0.0f, 0.0f, 4.0f});
+    for (std::size_t step = 0; step < walk.size(); ++step) {
+        const float x = walk[step];
+        const glm::vec3 eye(x, 1.2f, 6.0f), at(x, 1.0f, 0.0f);
+        const RenderStats c = draw(*renderer_, culled, session, eye, at);
+        const std::vector<std::uint8_t> picture = color_;
+        const RenderStats a = draw(everything, all, session, eye, at);
+        EXPECT_EQ(a.sculpturesHidden, 0u);
+        if (step == 3) {
+            hiddenAtStart = c.sculpturesHidden;
+            trianglesCulled = c.trianglesDrawn;
+            trianglesAll = a.trianglesDrawn;
+        }
+        framesWithHidden += c.sculpturesHidden > 0;
+        int differ = 0, red = 0;
+        for (std::size_t i = 0; i < picture.size(); i += 4) {
+            differ += picture[i] != color_[i] || picture[i + 1] != color_[i + 1] || picture[i + 2] != color_[i + 2];
+            red += color_[i] > color_[i + 1] + 40 && color_[i] > color_[i + 2] + 40;
+        }
+        mushroomPixelsSeen = std::max(mushroomPixelsSeen, red);
+        ++framesCompared;
+        ASSERT_EQ(differ, 0) << "at x = " << x << " m the picture differs from drawing everything (" << c.sculpturesHidden
+                             << " left out)";
+    }
+    std::printf("hidden at the start %zu, triangles %zu of %zu; frames with some hidden %d of %d; red pixels at most %d\n",
+                hiddenAtStart, trianglesCulled, trianglesAll, framesWithHidden, framesCompared, mushroomPixelsSeen);
+    EXPECT_EQ(hiddenAtStart, 3u) << "the three mushrooms behind the wall";
+    EXPECT_LT(trianglesCulled, trianglesAll);
+    EXPECT_GT(mushroomPixelsSeen, 1000) << "the walk ends with the mushrooms in view";
+    EXPECT_LT(framesWithHidden, framesCompared) << "and drawn";
+}
+
+}  // namespace
+}  // namespace hg::garden
