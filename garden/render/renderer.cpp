@@ -713,9 +713,9 @@ void Renderer::setOcclusionCulling(bool on) {
     if (!on && visibility_) visibility_->clear();
 }
 
-bool Renderer::wasHidden(std::uint64_t key) {
+bool Renderer::wasHidden(std::uint64_t key, const glm::vec3& worldLo, const glm::vec3& worldHi) {
     if (!occlusionCulling_ || !visibility_) return false;
-    const bool hidden = visibility_->hidden(key);
+    const bool hidden = visibility_->hidden(key, worldLo, worldHi);
     stats_.sculpturesHidden += hidden ? 1 : 0;
     return hidden;
 }

@@ -206,11 +206,12 @@ public:
     // On by default. Off forgets every result; wasHidden is then always false.
     void setOcclusionCulling(bool on);
     bool occlusionCulling() const { return occlusionCulling_; }
-    // Whether the caller's object `key` (a sculpture) was hidden behind
-    // nearer things when its box was last tested in this view's place in
-    // the frame, and that result is still trusted; counted in the stats as
-    // hidden, since the caller then leaves it out (drawChunk, seen false).
-    bool wasHidden(std::uint64_t key);
+    // Whether the caller's object `key` (a sculpture, its world box now
+    // lo..hi) was hidden behind nearer things when its box was last tested
+    // in this view's place in the frame, and that result is still trusted;
+    // counted in the stats as hidden, since the caller then leaves it out
+    // (drawChunk, seen false).
+    bool wasHidden(std::uint64_t key, const glm::vec3& worldLo, const glm::vec3& worldHi);
     // Tests `key`'s world box after this view's scene pass, for a later frame's wasHidden.
     void testVisibility(std::uint64_t key, const glm::vec3& worldLo, const glm::vec3& worldHi);
 

@@ -1,6 +1,7 @@
 #include "garden/render/visibility_queries.h"
 
 #include <glm/geometric.hpp>
+#include <glm/vector_relational.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/vec4.hpp>
 
@@ -67,15 +68,18 @@ void VisibilityQueries::collect(Entry& e) {
     e.known = true;
     e.wasHidden = passed == 0;
     e.testedFrom = e.flightEye;
+    e.testedLo = e.flightLo;
+    e.testedHi = e.flightHi;
     e.testedFrame = e.flightFrame;
 }
 
-bool VisibilityQueries::hidden(std::uint64_t key) {
+bool VisibilityQueries::hidden(std::uint64_t key, const glm::vec3& lo, const glm::vec3& hi) {
     auto found = entries_.find((static_cast<std::uint64_t>(slot_) << 48) ^ key);
     if (found == entries_.end()) return false;
     Entry& e = found->second;
     collect(e);
-    return e.known && e.wasHidden && frame_ - e.testedFrame <= kTrustedFrames &&
+    const bool within = glm::all(glm::greaterThanEqual(lo, e.testedLo)) && glm::all(glm::lessThanEqual(hi, e.testedHi));
+    return e.known && e.wasHidden && within && frame_ - e.testedFrame <= kTrustedFrames &&
            glm::distance(eye_, e.testedFrom) <= kTrustedMove;
 }
 
@@ -109,6 +113,8 @@ std::size_t VisibilityQueries::issue(const glm::mat4& viewProjection) {
         glEndQuery(GL_ANY_SAMPLES_PASSED);
         e.inFlight = true;
         e.flightEye = eye_;
+        e.flightLo = b.lo;
+        e.flightHi = b.hi;
         e.flightFrame = frame_;
     }
     glEnable(GL_CULL_FACE);

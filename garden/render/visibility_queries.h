@@ -11,6 +11,9 @@
 //     counts only while the eye is within kTrustedMove of where it was
 //     tested from (turning the head does not change what hides what: the
 //     box was wholly in view, so every ray to it was tested);
+//   - the sculpture's box now lies within the box that was tested (one
+//     moved, turned, scaled or grown by an edit is drawn until tested
+//     again);
 //   - it is at most kTrustedFrames old (an occluder removed or moved
 //     shows what it hid within a few frames);
 //   - each view of a frame (a headset's two eyes) keeps its own results.
@@ -41,9 +44,10 @@ public:
 
     // The next view (`slot`: its place in the frame) from `eye`, in frame `frame`.
     void beginView(int slot, const glm::vec3& eye, std::uint64_t frame);
-    // Whether `key`'s box was hidden when last tested in this view's slot,
-    // and that result is still trusted. Reads results that have come in.
-    bool hidden(std::uint64_t key);
+    // Whether `key`, whose world box is now lo..hi, was hidden when last
+    // tested in this view's slot, and that result is still trusted. Reads
+    // results that have come in.
+    bool hidden(std::uint64_t key, const glm::vec3& lo, const glm::vec3& hi);
     // To test after the scene pass: `key`'s world box lo..hi (grown here by
     // kMargin). Skipped while an earlier test of it is still in flight, or
     // when the grown box is not wholly in front of the view (the caller
@@ -59,11 +63,11 @@ private:
     struct Entry {
         gl::Query query;
         bool inFlight = false;
-        glm::vec3 flightEye{0.0f};
+        glm::vec3 flightEye{0.0f}, flightLo{0.0f}, flightHi{0.0f};
         std::uint64_t flightFrame = 0;
         bool known = false;  // a result came in
         bool wasHidden = false;
-        glm::vec3 testedFrom{0.0f};
+        glm::vec3 testedFrom{0.0f}, testedLo{0.0f}, testedHi{0.0f};  // the eye, the grown box
         std::uint64_t testedFrame = 0;
     };
     struct Box {

@@ -253,10 +253,11 @@ void GardenView::render(const GardenSession& session, glm::ivec2 viewport, const
         if (drawnAsCard(session, s, m, lo, hi, eye)) continue;
         // Hidden behind nearer sculptures when last tested: its chunks only
         // cast their shadow (docs/rendering.md, "Hidden sculptures").
-        const bool seen = !renderer_.wasHidden(s);
+        bool seen = true;
         if (renderer_.occlusionCulling() && s < frames_.size() && frames_[s].meshLo.x <= frames_[s].meshHi.x) {
             glm::vec3 worldLo, worldHi;
             worldBox(st.modelToWorld(), frames_[s].meshLo, frames_[s].meshHi, worldLo, worldHi);
+            seen = !renderer_.wasHidden(s, worldLo, worldHi);
             renderer_.testVisibility(s, worldLo, worldHi);
         }
         for (std::size_t c = 0; c < chunks; ++c) {

@@ -12,6 +12,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "../render/gl_fixture.h"
+#include "garden/action/action.h"
 #include "garden/app/garden_session.h"
 #include "garden/window/garden_view.h"
 #include "tests/test_folder.h"
@@ -92,7 +93,8 @@ protected:
 // the picture with every sculpture drawn (a second renderer in the same
 // context, culling off), while at the start the three mushrooms behind the
 // wall are left out. (The jump is what a result trusted after the eye
-// moved would get wrong.)
+// moved would get wrong.) Then one of them is moved out past the wall's
+// end: drawn in the very next frame.
 TEST_F(HiddenSculpturesTest, TheWalkOutFromBehindAWallShowsWhatDrawingEverythingShows) {
     GardenSession session(loadGarden((folder_->path / "garden.json").string()), settings());
     session.navigator().setMode(NavigationMode::Fly);
@@ -142,6 +144,21 @@ TEST_F(HiddenSculpturesTest, TheWalkOutFromBehindAWallShowsWhatDrawingEverything
         ASSERT_EQ(differ, 0) << "at x = " << x << " m the picture differs from drawing everything (" << c.sculpturesHidden
                              << " left out)";
     }
+    // Back behind the wall, and one of the hidden mushrooms moved out past
+    // its end: drawn at once, though its last test found it hidden.
+    RenderStats behind;
+    for (int f = 0; f < 3; ++f) behind = draw(*renderer_, culled, session, {0.0f, 1.2f, 6.0f}, {0.0f, 1.0f, 0.0f});
+    ASSERT_EQ(behind.sculpturesHidden, 3u);
+    ASSERT_EQ(session.apply(MoveAction{"m2", Placement{{3.2, 0.0, -2.5}, 0.0, 1.0}}), "");
+    const RenderStats moved = draw(*renderer_, culled, session, {0.0f, 1.2f, 6.0f}, {0.0f, 1.0f, 0.0f});
+    const std::vector<std::uint8_t> picture = color_;
+    draw(everything, all, session, {0.0f, 1.2f, 6.0f}, {0.0f, 1.0f, 0.0f});
+    EXPECT_EQ(moved.sculpturesHidden, 2u) << "the two still behind the wall";
+    EXPECT_EQ(picture, color_) << "the moved mushroom is drawn";
+    int red = 0;
+    for (std::size_t i = 0; i < picture.size(); i += 4) red += picture[i] > picture[i + 1] + 40 && picture[i] > picture[i + 2] + 40;
+    EXPECT_GT(red, 200) << "and in view past the wall's end";
+
     std::printf("hidden at the start %zu, triangles %zu of %zu; frames with some hidden %d of %d; red pixels at most %d\n",
                 hiddenAtStart, trianglesCulled, trianglesAll, framesWithHidden, framesCompared, mushroomPixelsSeen);
     EXPECT_EQ(hiddenAtStart, 3u) << "the three mushrooms behind the wall";
