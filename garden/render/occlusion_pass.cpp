@@ -96,7 +96,6 @@ std::string fragmentSource(const char* body) {
            ";\n" + kViewPositionGlsl + body;
 }
 
-
 // Fixed directions in the hemisphere (z up) with lengths in [0.5, 1] (the
 // shader scales them by the sample's place in the count): the same picture
 // on every run and every machine (no std:: distributions).

@@ -1,5 +1,7 @@
 #include "garden/render/visibility_queries.h"
 
+#include "garden/render/frustum_test.h"
+
 #include <glm/geometric.hpp>
 #include <glm/vector_relational.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -23,18 +25,6 @@ void main() {
 const char* const kBoxFragment = R"(#version 330 core
 void main() {}
 )";
-
-// Every corner in front of the near plane and inside the view's sides:
-// every ray that could meet the box is in the picture, so a box none of
-// whose pixels passed the depth test hides nothing that another turn of
-// the head (from the same point) would show.
-bool whollyInView(const glm::mat4& viewProjection, const glm::vec3& lo, const glm::vec3& hi) {
-    for (int c = 0; c < 8; ++c) {
-        const glm::vec4 p = viewProjection * glm::vec4(c & 1 ? hi.x : lo.x, c & 2 ? hi.y : lo.y, c & 4 ? hi.z : lo.z, 1.0f);
-        if (p.w <= 0.0f || p.x < -p.w || p.x > p.w || p.y < -p.w || p.y > p.w || p.z < -p.w || p.z > p.w) return false;
-    }
-    return true;
-}
 
 }  // namespace
 
@@ -86,7 +76,10 @@ bool VisibilityQueries::hidden(std::uint64_t key, const glm::vec3& lo, const glm
 void VisibilityQueries::test(std::uint64_t key, const glm::vec3& lo, const glm::vec3& hi,
                              const glm::mat4& viewProjection) {
     const glm::vec3 grownLo = lo - glm::vec3(kMargin), grownHi = hi + glm::vec3(kMargin);
-    if (!whollyInView(viewProjection, grownLo, grownHi)) return;
+    // Every ray that could meet the box is in the picture, so a box none of
+    // whose pixels passed the depth test hides nothing that another turn of
+    // the head (from the same point) would show.
+    if (frustumTest(viewProjection, grownLo, grownHi) != InView::Wholly) return;
     Entry& e = entry(key);
     collect(e);
     if (e.inFlight) return;

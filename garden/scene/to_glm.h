@@ -11,5 +11,8 @@ namespace hg::garden {
 inline glm::vec3 toGlm(const std::array<double, 3>& v) {
     return {static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2])};
 }
+inline glm::vec3 toGlm(const double v[3]) {
+    return {static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2])};
+}
 
 }  // namespace hg::garden

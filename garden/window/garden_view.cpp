@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "garden/render/frustum_test.h"
 #include "garden/window/impostor_identity.h"
 #include "garden/window/view_lights.h"
 #include "garden/render/material_look.h"
@@ -58,31 +59,6 @@ poly::Mesh pathMesh(const PathSpec& path, double groundHeight) {
         m.indices.insert(m.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
     }
     return m;
-}
-
-// Whether a chunk's box (model units) may show: false when all eight of its
-// corners lie beyond one plane of the view frustum.
-enum class InView { Outside, Partly, Wholly };
-
-// Where a model-space box lies against the view frustum (clip space: every
-// corner tested against the six planes). Outside only when all eight
-// corners are beyond one plane: conservative, so nothing visible is lost.
-InView frustumTest(const glm::mat4& modelViewProjection, const double lo[3], const double hi[3]) {
-    int outside[6] = {0, 0, 0, 0, 0, 0};
-    bool allInside = true;
-    for (int c = 0; c < 8; ++c) {
-        const glm::vec4 p = modelViewProjection * glm::vec4(static_cast<float>(c & 1 ? hi[0] : lo[0]),
-                                                           static_cast<float>(c & 2 ? hi[1] : lo[1]),
-                                                           static_cast<float>(c & 4 ? hi[2] : lo[2]), 1.0f);
-        const bool out[6] = {p.x < -p.w, p.x > p.w, p.y < -p.w, p.y > p.w, p.z < -p.w, p.z > p.w};
-        for (int k = 0; k < 6; ++k) {
-            outside[k] += out[k];
-            allInside = allInside && !out[k];
-        }
-    }
-    for (int n : outside)
-        if (n == 8) return InView::Outside;
-    return allInside ? InView::Wholly : InView::Partly;
 }
 
 // The world box around a model box placed by `model`.
@@ -248,7 +224,7 @@ void GardenView::render(const GardenSession& session, glm::ivec2 viewport, const
         double lo[3], hi[3], last[3];
         st.layout->modelBox(0, lo, last);
         st.layout->modelBox(chunks - 1, last, hi);
-        const InView whole = frustumTest(mvp, lo, hi);
+        const InView whole = frustumTest(mvp, toGlm(lo), toGlm(hi));
         if (whole == InView::Outside) continue;
         if (drawnAsCard(session, s, m, lo, hi, eye)) continue;
         // Hidden behind nearer sculptures when last tested: its chunks only
@@ -265,7 +241,7 @@ void GardenView::render(const GardenSession& session, glm::ivec2 viewport, const
             if (!mesh || mesh->empty()) continue;
             if (whole == InView::Partly) {
                 st.layout->modelBox(c, lo, hi);
-                if (frustumTest(mvp, lo, hi) == InView::Outside) continue;
+                if (frustumTest(mvp, toGlm(lo), toGlm(hi)) == InView::Outside) continue;
             }
             renderer_.drawChunk(chunkId(s, c), st.modelToWorld(), m, seen);
         }
