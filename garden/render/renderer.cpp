@@ -729,6 +729,10 @@ void Renderer::testVisibility(std::uint64_t key, const glm::vec3& worldLo, const
     visibility_->test(key, worldLo, worldHi, view_.projection * view_.view);
 }
 
+void Renderer::forgetHiddenBehind(const glm::vec3& worldLo, const glm::vec3& worldHi) {
+    if (visibility_) visibility_->forgetBehind(worldLo, worldHi);
+}
+
 RenderStats Renderer::endFrame() {
     finishView();
     if (atlas_) atlas_->nextFrame();

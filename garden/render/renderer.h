@@ -214,6 +214,10 @@ public:
     bool wasHidden(std::uint64_t key, const glm::vec3& worldLo, const glm::vec3& worldHi);
     // Tests `key`'s world box after this view's scene pass, for a later frame's wasHidden.
     void testVisibility(std::uint64_t key, const glm::vec3& worldLo, const glm::vec3& worldHi);
+    // What the world box lo..hi covers changed (a sculpture moved, edited,
+    // remeshed or taken away, before or after): results it may have hidden
+    // are forgotten, so what it hid is drawn from the next view on.
+    void forgetHiddenBehind(const glm::vec3& worldLo, const glm::vec3& worldHi);
 
     // --- quality -------------------------------------------------------------
     void setQuality(const RenderQuality& quality) { quality_ = quality; }

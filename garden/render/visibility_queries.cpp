@@ -55,6 +55,7 @@ void VisibilityQueries::collect(Entry& e) {
     GLuint passed = 0;
     glGetQueryObjectuiv(e.query.get(), GL_QUERY_RESULT, &passed);
     e.inFlight = false;
+    if (e.flightForgotten) return;  // tested against a scene that has since changed in front of it
     e.known = true;
     e.wasHidden = passed == 0;
     e.testedFrom = e.flightEye;
@@ -109,6 +110,7 @@ std::size_t VisibilityQueries::issue(const glm::mat4& viewProjection) {
         e.flightLo = b.lo;
         e.flightHi = b.hi;
         e.flightFrame = frame_;
+        e.flightForgotten = false;
     }
     glEnable(GL_CULL_FACE);
     glDepthFunc(GL_LESS);
@@ -118,6 +120,40 @@ std::size_t VisibilityQueries::issue(const glm::mat4& viewProjection) {
     const std::size_t issued = boxes_.size();
     boxes_.clear();
     return issued;
+}
+
+namespace {
+
+// Whether the sphere (c, r) may stand between `eye` and the box lo..hi:
+// it meets the capsule around the segment from the eye to the box's centre
+// whose radius is the box's bounding sphere's (which holds every ray from
+// the eye to the box).
+bool mayStandBetween(const glm::vec3& c, float r, const glm::vec3& eye, const glm::vec3& lo, const glm::vec3& hi) {
+    const glm::vec3 centre = 0.5f * (lo + hi);
+    const float boxRadius = 0.5f * glm::length(hi - lo);
+    const glm::vec3 axis = centre - eye;
+    const float lengthSq = glm::dot(axis, axis);
+    const float t = lengthSq > 0.0f ? glm::clamp(glm::dot(c - eye, axis) / lengthSq, 0.0f, 1.0f) : 0.0f;
+    return glm::distance(c, eye + t * axis) <= r + boxRadius;
+}
+
+}  // namespace
+
+std::size_t VisibilityQueries::forgetBehind(const glm::vec3& lo, const glm::vec3& hi) {
+    const glm::vec3 c = 0.5f * (lo + hi);
+    const float r = 0.5f * glm::length(hi - lo);
+    std::size_t forgotten = 0;
+    for (auto& [key, e] : entries_) {
+        if (e.known && e.wasHidden && mayStandBetween(c, r, e.testedFrom, e.testedLo, e.testedHi)) {
+            e.known = false;
+            ++forgotten;
+        }
+        if (e.inFlight && !e.flightForgotten && mayStandBetween(c, r, e.flightEye, e.flightLo, e.flightHi)) {
+            e.flightForgotten = true;
+            ++forgotten;
+        }
+    }
+    return forgotten;
 }
 
 void VisibilityQueries::clear() {

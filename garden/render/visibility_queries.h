@@ -14,8 +14,10 @@
 //   - the sculpture's box now lies within the box that was tested (one
 //     moved, turned, scaled or grown by an edit is drawn until tested
 //     again);
-//   - it is at most kTrustedFrames old (an occluder removed or moved
-//     shows what it hid within a few frames);
+//   - nothing in front of it changed: a sculpture moved, edited, remeshed
+//     or taken away forgets the results behind it (forgetBehind), tests
+//     in flight included, so what it hid is drawn in the very next frame;
+//   - it is at most kTrustedFrames old (a bound on anything else);
 //   - each view of a frame (a headset's two eyes) keeps its own results.
 // So the cost of a wrong guess is bounded; the usual case (a visitor
 // standing or walking among sculptures) is exact.
@@ -56,6 +58,13 @@ public:
     // Draws the view's boxes against the depth of the bound framebuffer
     // (the scene's); returns how many. Leaves colour and depth writes on.
     std::size_t issue(const glm::mat4& viewProjection);
+    // Something in the world box lo..hi changed what it covers: every
+    // result, in any slot, that it may have hidden is forgotten, and so is
+    // every test in flight that it may have hidden (its result is dropped
+    // when it comes in). Conservative: the changed box's sphere against the
+    // capsule from the tested eye to the tested box's centre, as wide as
+    // that box's sphere. Returns how many were forgotten.
+    std::size_t forgetBehind(const glm::vec3& lo, const glm::vec3& hi);
     // Forgets every result and test (culling turned off).
     void clear();
 
@@ -65,6 +74,7 @@ private:
         bool inFlight = false;
         glm::vec3 flightEye{0.0f}, flightLo{0.0f}, flightHi{0.0f};
         std::uint64_t flightFrame = 0;
+        bool flightForgotten = false;  // the scene changed in front of it since it was issued
         bool known = false;  // a result came in
         bool wasHidden = false;
         glm::vec3 testedFrom{0.0f}, testedLo{0.0f}, testedHi{0.0f};  // the eye, the grown box

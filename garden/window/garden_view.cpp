@@ -146,6 +146,27 @@ std::size_t GardenView::impostorsWanted() const {
     return static_cast<std::size_t>(std::count_if(far_.begin(), far_.end(), [](const Far& f) { return f.wanted; }));
 }
 
+void GardenView::forgetHiddenBehindChanges(const GardenSession& session) {
+    const auto& sculptures = session.sculptures();
+    if (frames_.size() < sculptures.size()) frames_.resize(sculptures.size());
+    for (std::size_t s = 0; s < sculptures.size(); ++s) {
+        const Sculpture& st = sculptures[s];
+        Uploaded& u = frames_[s];
+        Uploaded::Cover now;
+        now.shown = st.onShow() && (only_ < 0 || s == static_cast<std::size_t>(only_));
+        if (now.shown) {
+            now.card = s < far_.size() && far_[s].card;
+            now.model = st.modelToWorld();
+            now.meshes = s < uploaded_.size() ? uploaded_[s] : 0;
+            if (u.meshLo.x <= u.meshHi.x) worldBox(now.model, u.meshLo, u.meshHi, now.lo, now.hi);
+        }
+        if (!now.sameAs(u.cover))
+            for (const Uploaded::Cover* c : {&u.cover, &now})
+                if (c->shown && c->lo.x <= c->hi.x) renderer_.forgetHiddenBehind(c->lo, c->hi);
+        u.cover = now;
+    }
+}
+
 RenderMaterial GardenView::materialOf(const Sculpture& st) const {
     const frep::Box3& box = st.layout->frame().modelBox;
     const double size = std::max({box.hi[0] - box.lo[0], box.hi[1] - box.lo[1], box.hi[2] - box.lo[2]});
@@ -204,6 +225,7 @@ void GardenView::render(const GardenSession& session, glm::ivec2 viewport, const
 
     for (std::size_t p = 0; p < g.paths.size(); ++p)
         renderer_.drawChunk(pathId(p), glm::mat4(1.0f), renderMaterial(g.paths[p].material));
+    if (renderer_.occlusionCulling()) forgetHiddenBehindChanges(session);
     const auto& sculptures = session.sculptures();
     for (std::size_t s = 0; s < sculptures.size(); ++s) {
         const Sculpture& st = sculptures[s];

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <vector>
 
+#include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
@@ -79,6 +80,9 @@ private:
                      const double hi[3], const glm::vec3& eye);
     void bakeImpostors(const GardenSession& session, const std::chrono::steady_clock::time_point& start,
                        double allowanceMs);
+    // Each sculpture whose cover changed since the last view (see Cover)
+    // makes the renderer forget the hidden results behind it, old place and new.
+    void forgetHiddenBehindChanges(const GardenSession& session);
 
     Renderer& renderer_;
     ViewLook look_;
@@ -96,6 +100,18 @@ private:
         // Model-space box of the meshes uploaded (lo > hi: none), which the
         // visibility test draws (docs/rendering.md, "Hidden sculptures").
         glm::vec3 meshLo{1e30f}, meshHi{-1e30f};
+        // What the sculpture covers on screen, as of the last view: drawn
+        // or not, as a card or its chunks, where, and which meshes; with its
+        // world box then (lo > hi: none).
+        struct Cover {
+            bool shown = false, card = false;
+            glm::mat4 model{1.0f};
+            std::uint64_t meshes = 0;
+            glm::vec3 lo{1e30f}, hi{-1e30f};
+            bool sameAs(const Cover& o) const {
+                return shown == o.shown && (!shown || (card == o.card && model == o.model && meshes == o.meshes));
+            }
+        } cover;
     };
     std::vector<Uploaded> frames_;
     // Per sculpture: drawn as a card in the last view, and whether (and how

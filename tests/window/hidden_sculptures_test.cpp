@@ -85,6 +85,22 @@ protected:
         return stats;
     }
 
+    // Renders the view from `eye` with culling (into `picture`) and with
+    // everything drawn (left in color_); returns the culled frame's stats.
+    RenderStats drawBoth(Renderer& everything, GardenView& culled, GardenView& all, const GardenSession& session,
+                         const glm::vec3& eye, const glm::vec3& at, std::vector<std::uint8_t>& picture) {
+        const RenderStats c = draw(*renderer_, culled, session, eye, at);
+        picture = color_;
+        draw(everything, all, session, eye, at);
+        return c;
+    }
+
+    static int redPixels(const std::vector<std::uint8_t>& rgba) {
+        int red = 0;
+        for (std::size_t i = 0; i < rgba.size(); i += 4) red += rgba[i] > rgba[i + 1] + 40 && rgba[i] > rgba[i + 2] + 40;
+        return red;
+    }
+
     std::unique_ptr<hg::test::TestFolder> folder_;
 };
 
@@ -153,11 +169,14 @@ TEST_F(HiddenSculpturesTest, TheWalkOutFromBehindAWallShowsWhatDrawingEverything
     const RenderStats moved = draw(*renderer_, culled, session, {0.0f, 1.2f, 6.0f}, {0.0f, 1.0f, 0.0f});
     const std::vector<std::uint8_t> picture = color_;
     draw(everything, all, session, {0.0f, 1.2f, 6.0f}, {0.0f, 1.0f, 0.0f});
-    EXPECT_EQ(moved.sculpturesHidden, 2u) << "the two still behind the wall";
     EXPECT_EQ(picture, color_) << "the moved mushroom is drawn";
-    int red = 0;
-    for (std::size_t i = 0; i < picture.size(); i += 4) red += picture[i] > picture[i + 1] + 40 && picture[i] > picture[i + 2] + 40;
-    EXPECT_GT(red, 200) << "and in view past the wall's end";
+    EXPECT_GT(redPixels(picture), 200) << "and in view past the wall's end";
+    // Its neighbours' results were forgotten too (it stood beside them: the
+    // test is conservative); tested again, they are left out again.
+    EXPECT_LE(moved.sculpturesHidden, 2u);
+    RenderStats later;
+    for (int f = 0; f < 4; ++f) later = draw(*renderer_, culled, session, {0.0f, 1.2f, 6.0f}, {0.0f, 1.0f, 0.0f});
+    EXPECT_EQ(later.sculpturesHidden, 2u) << "the two still behind the wall";
 
     std::printf("hidden at the start %zu, triangles %zu of %zu; frames with some hidden %d of %d; red pixels at most %d\n",
                 hiddenAtStart, trianglesCulled, trianglesAll, framesWithHidden, framesCompared, mushroomPixelsSeen);
@@ -165,6 +184,60 @@ TEST_F(HiddenSculpturesTest, TheWalkOutFromBehindAWallShowsWhatDrawingEverything
     EXPECT_LT(trianglesCulled, trianglesAll);
     EXPECT_GT(mushroomPixelsSeen, 1000) << "the walk ends with the mushrooms in view";
     EXPECT_LT(framesWithHidden, framesCompared) << "and drawn";
+}
+
+// The eye stands still behind the wall and the wall changes instead: a
+// hole carved through it, then the wall moved aside. Each time the
+// mushrooms it hid are drawn in the very first frame that shows the
+// change (the results behind a changed sculpture are forgotten, tests in
+// flight included), not when the results grow too old to trust.
+TEST_F(HiddenSculpturesTest, WhatAChangedOccluderHidIsDrawnInTheNextFrame) {
+    GardenSession session(loadGarden((folder_->path / "garden.json").string()), settings());
+    session.navigator().setMode(NavigationMode::Fly);
+    session.navigator().setPose({0.0f, 1.2f, 6.0f}, 0.0f, 0.0f);
+    const auto settle = [&] {
+        for (int f = 0; f < 3000 && !session.idle(); ++f) session.frame(FrameInput(Hands{}, 1.0 / 90.0));
+        ASSERT_TRUE(session.idle());
+    };
+    settle();
+    renderer_->setQuality(test::plainQuality());
+    GardenView culled(*renderer_);
+    Renderer everything;
+    everything.setQuality(test::plainQuality());
+    everything.setOcclusionCulling(false);
+    GardenView all(everything);
+    const glm::vec3 eye(0.0f, 1.2f, 6.0f), at(0.0f, 1.0f, 0.0f);
+    std::vector<std::uint8_t> picture;
+    const auto show = [&] {
+        culled.upload(session, 1e9);
+        all.upload(session, 1e9);
+        return drawBoth(everything, culled, all, session, eye, at, picture);
+    };
+    RenderStats stats;
+    for (int f = 0; f < 4; ++f) stats = show();
+    ASSERT_EQ(stats.sculpturesHidden, 3u);
+    ASSERT_EQ(picture, color_);
+    ASSERT_EQ(redPixels(picture), 0) << "the wall hides every mushroom";
+
+    // A hole 0.3 m across through the wall, in front of the middle mushroom's cap.
+    ASSERT_EQ(session.apply(StrokeAction{"wall", StrokeTool::Carve, 0.15, 2.0, {{0.0, 1.15, 0.45}, {0.0, 1.15, -0.45}}, {},
+                                         1.0, Falloff::Smooth, {}}),
+              "");
+    settle();
+    stats = show();
+    EXPECT_EQ(picture, color_) << "the frame after the carve equals drawing everything";
+    EXPECT_GT(redPixels(picture), 100) << "the middle mushroom shows through the hole";
+    EXPECT_LT(stats.sculpturesHidden, 3u);
+    for (int f = 0; f < 4; ++f) stats = show();
+    EXPECT_EQ(picture, color_);
+    EXPECT_EQ(stats.sculpturesHidden, 2u) << "the other two are still behind the wall, and left out again";
+
+    ASSERT_EQ(session.apply(MoveAction{"wall", Placement{{5.0, 0.0, 0.0}, 0.0, 1.0}}), "");
+    settle();
+    stats = show();
+    EXPECT_EQ(picture, color_) << "the frame after the wall moved aside equals drawing everything";
+    EXPECT_EQ(stats.sculpturesHidden, 0u);
+    EXPECT_GT(redPixels(picture), 1000) << "all three mushrooms in view";
 }
 
 }  // namespace
