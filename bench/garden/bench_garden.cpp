@@ -31,7 +31,9 @@
 //     max CPU ms per stage and in all, chunks the LOD stage tested,
 //     triangles shown, the most new mesh bytes a frame showed (what a
 //     renderer uploads; --upload-bytes sets the session's per-frame
-//     budget), peak resident memory of the row.
+//     budget), peak resident memory of the row. --level-error walks a
+//     garden for each value of SessionSettings::levelErrorPixels (0: levels
+//     by voxel size alone, the peer of levels by measured error).
 //
 //  4. Stages (issue 21): content/replays/sculpting_session.json (carving)
 //     and walk_and_morph.json in timing mode (the morph and the remesh on
@@ -48,7 +50,7 @@
 //       [--scale N,N,...] [--scale-resolution R] [--scale-frames N]
 //       [--scale-load start|progressive] [--upload-bytes N] [--memory-budget MIB]
 //       [--draw multi|per-chunk|both] [--quality low|medium|high] [--impostor-distance M,M,...]
-//       [--hidden on|off|both]
+//       [--hidden on|off|both] [--level-error P,P,...]
 //
 // Row names for --filter: morph/128/1600 ... morph/256/1000000,
 // nav/keys/lod, nav/keys/nolod, nav/all/lod, nav/all/nolod, scale/48,
@@ -67,6 +69,7 @@
 #include <sstream>
 #include <string>
 #include <thread>
+#include <type_traits>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -113,6 +116,8 @@ struct Options {
     std::vector<std::string> drawModes{"multi", "per-chunk"};
     std::vector<double> impostorDistances{30.0};  // offscreen scale rows: one walk each (0: no impostors)
     std::vector<bool> hiddenCulling{true};  // offscreen scale rows: hidden sculptures left out (occlusion queries)
+    // Scale rows: SessionSettings::levelErrorPixels, a garden each (0: levels by voxel size alone).
+    std::vector<double> levelErrors{SessionSettings{}.levelErrorPixels};
     std::string quality = "high";
 };
 
@@ -122,7 +127,10 @@ std::vector<T> parseList(const std::string& text) {
     std::stringstream in(text);
     std::string item;
     while (std::getline(in, item, ','))
-        if (!item.empty()) out.push_back(static_cast<T>(std::strtoull(item.c_str(), nullptr, 10)));
+        if (!item.empty()) {
+            if constexpr (std::is_floating_point_v<T>) out.push_back(static_cast<T>(std::strtod(item.c_str(), nullptr)));
+            else out.push_back(static_cast<T>(std::strtoull(item.c_str(), nullptr, 10)));
+        }
     return out;
 }
 
@@ -149,6 +157,7 @@ bool parseOptions(int argc, char** argv, Options& o) {
         else if (a == "--upload-bytes" && hasValue) o.uploadBytes = std::strtoull(argv[++i], nullptr, 10);
         else if (a == "--memory-budget" && hasValue) o.memoryBudgetMiB = std::strtoull(argv[++i], nullptr, 10);
         else if (a == "--impostor-distance" && hasValue) o.impostorDistances = parseList<double>(argv[++i]);
+        else if (a == "--level-error" && hasValue) o.levelErrors = parseList<double>(argv[++i]);
         else if (a == "--hidden" && hasValue) {
             const std::string how = argv[++i];
             if (how != "on" && how != "off" && how != "both") {
@@ -186,7 +195,7 @@ bool parseOptions(int argc, char** argv, Options& o) {
                      "       [--samples N,N,...] [--resolutions R,R] [--scale N,N,...] [--scale-resolution R]\n"
                      "       [--scale-frames N] [--scale-load start|progressive] [--upload-bytes N]\n"
                      "       [--draw multi|per-chunk|both] [--quality low|medium|high] [--memory-budget MIB]\n"
-                     "       [--impostor-distance M,M,...] [--hidden on|off|both]\n");
+                     "       [--impostor-distance M,M,...] [--hidden on|off|both] [--level-error P,P,...]\n");
         return false;
     }
     return true;
@@ -770,17 +779,18 @@ void scaleTable(const Options& o, nlohmann::json& json) {
     auto head = [&] {
         if (headed) return;
         headed = true;
-        std::printf("| sculptures | chunks | first frame (s) | loading at first frame | settled (s) | %sinput | lod | remesh | %stotal | "
+        std::printf("| sculptures | level error (px) | chunks | first frame (s) | loading at first frame | settled (s) | %sinput | lod | remesh | %stotal | "
                     "frames over 11.1 ms | chunks tested by LOD (mean) | triangles shown (mean) | %snew mesh KiB per frame (max) | "
                     "peak memory (MiB) | held after the walk: grids / levels / meshes / morph sources (MiB), grids on disk |\n",
                     gl ? "draw | " : "", gl ? "upload | render | GPU ms | " : "",
                     gl ? "chunks drawn (mean) | impostors drawn (mean) | sculptures hidden (mean) | triangles drawn (mean) | "
                          "draw calls (mean) | "
                        : "");
-        std::printf("|---:|---:|---:|---:|---:|%s---|---|---|%s---|---:|---:|---:|%s---:|---:|---|\n", gl ? "---|" : "",
+        std::printf("|---:|---:|---:|---:|---:|---:|%s---|---|---|%s---|---:|---:|---:|%s---:|---:|---|\n", gl ? "---|" : "",
                     gl ? "---|---|---|" : "", gl ? "---:|---:|---:|---:|---:|" : "");
     };
-    for (int n : o.scaleCounts) {
+    for (int n : o.scaleCounts)
+    for (double levelError : o.levelErrors) {
         const std::string name = "scale/" + std::to_string(n);
         if (!o.bench.matches(name)) continue;
         resetPeakResident();
@@ -794,6 +804,7 @@ void scaleTable(const Options& o, nlohmann::json& json) {
         settings.progressiveLoading = o.scaleProgressive;
         settings.uploadBytesPerFrame = o.uploadBytes;
         settings.memoryBudgetBytes = o.memoryBudgetMiB << 20;
+        settings.levelErrorPixels = levelError;
         Scene scene;
         FrameRenderer* inner = nullptr;
 #ifdef HG_BENCH_OFFSCREEN
@@ -903,8 +914,11 @@ void scaleTable(const Options& o, nlohmann::json& json) {
                 countColumns = b;
             }
             head();
-            std::printf("| %d | %zu | %.2f | %zu | %.1f (%zu frames) | %s%s | %s | %s | %s%s | %zu of %zu | %.0f | %.0f | %s%.0f | %.0f | %s |\n",
-                        n, chunks, firstFrame, loadingAtFirst, settled, settleFrames, drawColumns.c_str(),
+            char errorCell[32];
+            std::snprintf(errorCell, sizeof errorCell, "%.2f", levelError);
+            const std::string levelErrorCell = levelError > 0.0 ? errorCell : "none (voxel size)";
+            std::printf("| %d | %s | %zu | %.2f | %zu | %.1f (%zu frames) | %s%s | %s | %s | %s%s | %zu of %zu | %.0f | %.0f | %s%.0f | %.0f | %s |\n",
+                        n, levelErrorCell.c_str(), chunks, firstFrame, loadingAtFirst, settled, settleFrames, drawColumns.c_str(),
                         spreadCell(stage(Stage::Input)).c_str(), spreadCell(stage(Stage::Lod)).c_str(),
                         spreadCell(stage(Stage::Remesh)).c_str(), glColumns.c_str(), spreadCell(spread(totals)).c_str(),
                         over, run.frames.size(), spread(visited).mean, spread(shown).mean, countColumns.c_str(),
@@ -915,6 +929,7 @@ void scaleTable(const Options& o, nlohmann::json& json) {
                 stages[stageName(static_cast<Stage>(k))] = spreadJson(spread(perStage[static_cast<std::size_t>(k)]));
             json["scale"].push_back({{"name", name}, {"sculptures", n}, {"resolution", o.scaleResolution},
                                      {"chunks", chunks}, {"first_frame_s", firstFrame}, {"settled_s", settled},
+                                     {"level_error_pixels", levelError},
                                      {"progressive", o.scaleProgressive}, {"loading_at_first_frame", loadingAtFirst},
                                      {"upload_bytes_per_frame", o.uploadBytes}, {"mesh_bytes_shown_max", bytesMax},
                                      {"settle_frames", settleFrames}, {"walk_frames", run.frames.size()},

@@ -179,6 +179,7 @@ void GardenSession::attachMeshing(Sculpture& s) const {
     const SessionSettings& settings = settings_;
     s.pyramid = std::make_unique<poly::LodPyramid>(*s.volume, settings.maxLevel + 1);
     s.layout = std::make_unique<poly::ChunkLayout>(s.volume->frame, settings.chunkSize);
+    s.errors = settings.levelErrorPixels > 0.0 ? std::make_unique<poly::ChunkErrors>(*s.pyramid, *s.layout) : nullptr;
     s.queue = std::make_unique<poly::RemeshQueue>(*s.pyramid, *s.layout,
                                                   std::vector<int>(s.layout->count(), settings.maxLevel));
     s.uniformLevel = settings.maxLevel;
@@ -470,6 +471,7 @@ void GardenSession::selectLevels() {
         poly::LodSettings lod;
         lod.pixelError = settings_.pixelError;
         lod.maxLevel = settings_.maxLevel;
+        lod.errorPixels = settings_.levelErrorPixels;
         if (detail_) {
             const glm::vec3 c(static_cast<float>(detail_->center[0]), static_cast<float>(detail_->center[1]),
                               static_cast<float>(detail_->center[2]));
@@ -490,7 +492,7 @@ void GardenSession::selectLevels() {
         // A grid on disk keeps its chunks at level 1 or coarser (its coarse
         // levels are in memory) until the pager has it back.
         const int finest = s.volume->resident() ? 0 : 1;
-        std::optional<int> uniform = settings_.lod ? poly::uniformLevel(*s.layout, cam, lod) : 0;
+        std::optional<int> uniform = settings_.lod ? poly::uniformLevel(*s.layout, cam, lod, s.errors.get()) : 0;
         if (uniform) {
             need.wanted = need.wanted || *uniform == 0;
             uniform = std::max(*uniform, finest);
@@ -500,7 +502,7 @@ void GardenSession::selectLevels() {
         if (uniform) {
             levels.assign(s.layout->count(), *uniform);
         } else {
-            levels = poly::selectLevelsPerChunk(*s.layout, cam, lod);
+            levels = poly::selectLevelsPerChunk(*s.layout, cam, lod, s.errors.get());
             stats().lodChunksVisited += s.layout->count();
             for (int& l : levels) {
                 need.wanted = need.wanted || l == 0;
@@ -572,6 +574,7 @@ void GardenSession::morph() {
             for (const voxel::IndexBox& box : changed) {
                 if (r.edits) r.edits->baseChanged(box);  // the blend changed under the edits
                 r.pyramid->update(box);
+                if (r.errors) r.errors->update(box);
                 r.queue->markChanged(box);
             }
         };

@@ -88,6 +88,10 @@ struct SessionSettings {
     int chunkSize = 32;
     int maxLevel = 3;
     double pixelError = 1.0;
+    // Levels by measured error (polygonizer/realtime/chunk_errors.h): a
+    // coarser level is also taken where its surface strays from level 0's
+    // by at most this many pixels on screen (0: the voxel-size rule alone).
+    double levelErrorPixels = 0.5;
     double fovY = 1.0471975511965976;  // 60 degrees
     int viewportHeight = 720;
     bool lod = true;                   // false: every chunk at level 0

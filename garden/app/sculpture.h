@@ -15,6 +15,7 @@
 
 #include "garden/scene/garden.h"
 #include "garden/sculpt/edit.h"
+#include "polygonizer/realtime/chunk_errors.h"
 #include "polygonizer/realtime/chunk_layout.h"
 #include "polygonizer/realtime/lod_pyramid.h"
 #include "polygonizer/realtime/remesh_queue.h"
@@ -68,6 +69,8 @@ struct Sculpture {
     std::unique_ptr<voxel::Volume> volume;
     std::unique_ptr<poly::LodPyramid> pyramid;
     std::unique_ptr<poly::ChunkLayout> layout;
+    // How far each chunk's coarser levels stray (none: levels by voxel size alone).
+    std::unique_ptr<poly::ChunkErrors> errors;
     std::unique_ptr<poly::RemeshQueue> queue;
     // A morph result's caches, weights and blender (garden/morph/morph_state.h);
     // none for other sculptures, and for a result whose sources are missing.

@@ -113,6 +113,7 @@ void GardenSession::showChanged(int sculpture, const voxel::IndexBox& box) {
     if (box.empty() || restoring_) return;
     Sculpture& s = sculptures_[static_cast<std::size_t>(sculpture)];
     s.pyramid->update(box);
+    if (s.errors) s.errors->update(box);
     s.queue->markChanged(box);
 }
 

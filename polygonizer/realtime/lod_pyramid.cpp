@@ -110,6 +110,8 @@ LodPyramid::~LodPyramid() = default;
 
 int LodPyramid::levels() const { return static_cast<int>(impl_->grids.size()) + 1; }
 
+const voxel::Volume& LodPyramid::volume() const { return *impl_->volume; }
+
 std::size_t LodPyramid::memoryBytes() const {
     std::size_t n = 0;
     for (const auto& g : impl_->grids) n += static_cast<std::size_t>(g->memUsage());

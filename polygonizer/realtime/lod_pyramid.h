@@ -20,6 +20,7 @@ public:
     LodPyramid& operator=(const LodPyramid&) = delete;
 
     int levels() const;
+    const voxel::Volume& volume() const;
     // Memory of the coarse levels (level 0 is the volume's, not counted).
     std::size_t memoryBytes() const;
     // Level-L voxel (i, j, k): the level-0 value at (i, j, k) * 2^L.

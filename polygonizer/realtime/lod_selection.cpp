@@ -4,6 +4,8 @@
 #include <cmath>
 #include <deque>
 
+#include "polygonizer/realtime/chunk_errors.h"
+
 namespace hg::poly {
 
 double projectedVoxelPixels(const Camera& camera, double voxelSize, int level, double distance) {
@@ -47,7 +49,8 @@ std::pair<double, double> boxDistances(const double lo[3], const double hi[3], c
 
 }  // namespace
 
-std::optional<int> uniformLevel(const ChunkLayout& layout, const Camera& camera, const LodSettings& settings) {
+std::optional<int> uniformLevel(const ChunkLayout& layout, const Camera& camera, const LodSettings& settings,
+                                const ChunkErrors* errors) {
     if (layout.count() == 0) return std::nullopt;
     double lo[3], hi[3];
     layout.modelBounds(lo, hi);
@@ -57,22 +60,37 @@ std::optional<int> uniformLevel(const ChunkLayout& layout, const Camera& camera,
     // Every chunk's nearest point lies between the bound's nearest and
     // farthest points, and the level never falls with distance.
     const auto [nearest, farthest] = boxDistances(lo, hi, camera.position);
+    if (errors) {
+        // And no chunk errs more than the largest error, nor less than the
+        // smallest: the finest any chunk may take is the nearest point's
+        // with the largest errors, the coarsest the farthest point's with
+        // the smallest.
+        const int l = levelAtDistance(camera, h, nearest, settings, [&](int level) { return errors->largest(level); });
+        if (levelAtDistance(camera, h, farthest, settings, [&](int level) { return errors->smallest(level); }) != l)
+            return std::nullopt;
+        return l;
+    }
     const int l = levelAtDistance(camera, h, nearest, settings);
     if (levelAtDistance(camera, h, farthest, settings) != l) return std::nullopt;
     return l;
 }
 
-std::vector<int> selectLevels(const ChunkLayout& layout, const Camera& camera, const LodSettings& settings) {
-    if (const std::optional<int> l = uniformLevel(layout, camera, settings)) return std::vector<int>(layout.count(), *l);
-    return selectLevelsPerChunk(layout, camera, settings);
+std::vector<int> selectLevels(const ChunkLayout& layout, const Camera& camera, const LodSettings& settings,
+                              const ChunkErrors* errors) {
+    if (const std::optional<int> l = uniformLevel(layout, camera, settings, errors))
+        return std::vector<int>(layout.count(), *l);
+    return selectLevelsPerChunk(layout, camera, settings, errors);
 }
 
-std::vector<int> selectLevelsPerChunk(const ChunkLayout& layout, const Camera& camera, const LodSettings& settings) {
+std::vector<int> selectLevelsPerChunk(const ChunkLayout& layout, const Camera& camera, const LodSettings& settings,
+                                      const ChunkErrors* errors) {
     const double h = layout.frame().voxelSize;
     std::vector<int> level(layout.count());
     for (std::size_t i = 0; i < level.size(); ++i) {
         // The nearest point of the chunk decides: its voxels are the largest on screen.
-        int l = levelAtDistance(camera, h, distanceToChunk(layout, i, camera.position), settings);
+        const double d = distanceToChunk(layout, i, camera.position);
+        int l = errors ? levelAtDistance(camera, h, d, settings, [&](int lv) { return errors->error(i, lv); })
+                       : levelAtDistance(camera, h, d, settings);
         for (const auto& s : {settings.detail, settings.tool})
             if (s && distanceToChunk(layout, i, s->center) <= s->radius) l = 0;
         level[i] = l;

@@ -23,6 +23,8 @@
 
 namespace hg::poly {
 
+class ChunkErrors;
+
 struct Camera {
     std::array<double, 3> position{};  // model frame
     double fovY = 1.0;                 // vertical field of view, radians
@@ -37,6 +39,12 @@ struct Sphere {
 struct LodSettings {
     double pixelError = 1.0;       // the largest projected voxel, pixels
     int maxLevel = 3;              // 32^3 chunks: 32, 16, 8, 4 cells a side
+    // With measured errors (chunk_errors.h): a coarser level is also taken
+    // where its surface strays from level 0's by at most `errorPixels` on
+    // screen and its voxels project to at most `coarsePixels` (so shading,
+    // which follows the level's samples, keeps its detail within a few pixels).
+    double errorPixels = 0.5;
+    double coarsePixels = 4.0;
     std::optional<Sphere> detail;  // the movable detail sphere (seed 004)
     std::optional<Sphere> tool;    // around the active tool
 };
@@ -47,16 +55,39 @@ double projectedVoxelPixels(const Camera& camera, double voxelSize, int level, d
 // The level of a voxel of `voxelSize` seen from `distance`: the coarsest
 // that meets the pixel error, at most settings.maxLevel.
 int levelAtDistance(const Camera& camera, double voxelSize, double distance, const LodSettings& settings);
+// The same, where level L's surface is known to stray by at most
+// errorOf(L) level-0 voxels (non-decreasing in L): also the coarsest level
+// whose error projects within settings.errorPixels and whose voxels within
+// settings.coarsePixels. Never finer than the level above.
+template <class ErrorOf>
+int levelAtDistance(const Camera& camera, double voxelSize, double distance, const LodSettings& settings,
+                    ErrorOf errorOf) {
+    const int maxLevel = settings.maxLevel < 0 ? 0 : settings.maxLevel;
+    int l = 0;
+    while (l < maxLevel) {
+        const double voxel = projectedVoxelPixels(camera, voxelSize, l + 1, distance);
+        const bool small = voxel <= settings.pixelError;
+        const bool close = voxel <= settings.coarsePixels &&
+                           projectedVoxelPixels(camera, voxelSize * errorOf(l + 1), 0, distance) <= settings.errorPixels;
+        if (!small && !close) break;
+        ++l;
+    }
+    return l;
+}
 
 // The one level every chunk of the layout takes, when the layout's bound
 // shows that they all take the same (see above); none when they may differ.
-std::optional<int> uniformLevel(const ChunkLayout& layout, const Camera& camera, const LodSettings& settings);
+// With `errors` (of this layout), levels by measured error as above.
+std::optional<int> uniformLevel(const ChunkLayout& layout, const Camera& camera, const LodSettings& settings,
+                                const ChunkErrors* errors = nullptr);
 
 // One level per chunk, in the layout's order: uniformLevel's when it has
 // one, else each chunk's (selectLevelsPerChunk). The two always agree.
-std::vector<int> selectLevels(const ChunkLayout& layout, const Camera& camera, const LodSettings& settings);
+std::vector<int> selectLevels(const ChunkLayout& layout, const Camera& camera, const LodSettings& settings,
+                              const ChunkErrors* errors = nullptr);
 // Every chunk tested (the flat selection the hierarchical one must equal).
-std::vector<int> selectLevelsPerChunk(const ChunkLayout& layout, const Camera& camera, const LodSettings& settings);
+std::vector<int> selectLevelsPerChunk(const ChunkLayout& layout, const Camera& camera, const LodSettings& settings,
+                                      const ChunkErrors* errors = nullptr);
 
 // Distance from a point to a chunk's model box (0 inside).
 double distanceToChunk(const ChunkLayout& layout, std::size_t chunk, const std::array<double, 3>& p);

@@ -72,7 +72,7 @@ TEST(ScaleGarden, ABrokenTemplateIsRefusedWithItsName) {
 }
 
 // Settled at several poses inside and outside the grid, every sculpture
-// shows the per-chunk selection's levels chunk for chunk.
+// shows the per-chunk selection's levels chunk for chunk (with its measured errors).
 TEST(ScaleGarden, SessionLevelsEqualThePerChunkSelection) {
     GardenLoad load = scaleGarden(12, 48);
     ASSERT_TRUE(load.ok()) << load.error;
@@ -94,7 +94,9 @@ TEST(ScaleGarden, SessionLevelsEqualThePerChunkSelection) {
             poly::LodSettings lod;
             lod.pixelError = st.pixelError;
             lod.maxLevel = st.maxLevel;
-            const std::vector<int> flat = poly::selectLevelsPerChunk(*s.layout, cam, lod);
+            lod.errorPixels = st.levelErrorPixels;
+            ASSERT_TRUE(s.errors) << "levels by measured error, on by default";
+            const std::vector<int> flat = poly::selectLevelsPerChunk(*s.layout, cam, lod, s.errors.get());
             std::set<int> levels;
             for (std::size_t c = 0; c < flat.size(); ++c) {
                 ASSERT_EQ(s.queue->shownLod(c).level, flat[c]) << s.name << ", chunk " << c;
