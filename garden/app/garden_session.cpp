@@ -28,6 +28,13 @@ namespace hg::garden {
 namespace {
 
 constexpr int kLevelRefreshFrames = 45;
+// A sculpture whose chunks take different levels is selected chunk by
+// chunk again only once the eye has moved this fraction of its distance
+// to the sculpture (or its errors, the detail sphere or its grid's
+// residence changed): levels change at distances, so a level is at most
+// this fraction late, and a walk past hundreds of such sculptures costs a
+// test per sculpture a frame, not one per chunk.
+constexpr double kReselectMove = 0.01;
 // A far grid is read back from disk once the viewer is within this factor
 // of the distance where its chunks take level 0, and may go again only
 // beyond the larger one (so a visitor at the edge does not make it come and
@@ -183,6 +190,7 @@ void GardenSession::attachMeshing(Sculpture& s) const {
     s.queue = std::make_unique<poly::RemeshQueue>(*s.pyramid, *s.layout,
                                                   std::vector<int>(s.layout->count(), settings.maxLevel));
     s.uniformLevel = settings.maxLevel;
+    s.levelsChosen = LevelsChosen{};
     // The coarsest level at once (cheap: a few cells per chunk), so the
     // garden opens with every sculpture on show; finer levels then stream
     // in within the frame budget.
@@ -498,16 +506,28 @@ void GardenSession::selectLevels() {
             uniform = std::max(*uniform, finest);
         }
         if (uniform && *uniform == s.uniformLevel) continue;
+        LevelsChosen& chosen = s.levelsChosen;
+        LevelsChosen now{true, eye, s.errors ? s.errors->version() : 0, {0.0, 0.0, 0.0, -1.0}, finest, false};
+        if (lod.detail) now.detail = {lod.detail->center[0], lod.detail->center[1], lod.detail->center[2], lod.detail->radius};
+        if (!uniform && chosen.sameInputs(now) &&
+            glm::distance(glm::dvec3(eye[0], eye[1], eye[2]), glm::dvec3(chosen.eye[0], chosen.eye[1], chosen.eye[2])) <=
+                kReselectMove * distanceToBound(*s.layout, eye)) {
+            need.wanted = need.wanted || chosen.anyFull;
+            continue;
+        }
         std::vector<int> levels;
         if (uniform) {
             levels.assign(s.layout->count(), *uniform);
+            chosen = LevelsChosen{};
         } else {
             levels = poly::selectLevelsPerChunk(*s.layout, cam, lod, s.errors.get());
             stats().lodChunksVisited += s.layout->count();
+            chosen = now;
             for (int& l : levels) {
-                need.wanted = need.wanted || l == 0;
+                chosen.anyFull = chosen.anyFull || l == 0;
                 l = std::max(l, finest);
             }
+            need.wanted = need.wanted || chosen.anyFull;
         }
         s.uniformLevel = uniform ? *uniform : -1;
         s.queue->setLevels(levels);

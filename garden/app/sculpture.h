@@ -5,6 +5,7 @@
 // sculptures instead of a HyperFun body, and it holds its morph's state.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -49,6 +50,21 @@ struct SculptureSource {
     std::shared_ptr<const frep::Program> program;
 };
 
+// What a sculpture's last chunk-by-chunk level selection was made from
+// (GardenSession::selectLevels makes it again only when these change or the
+// eye has moved far enough).
+struct LevelsChosen {
+    bool valid = false;
+    std::array<double, 3> eye{};   // model frame
+    std::uint64_t errors = 0;      // ChunkErrors::version()
+    std::array<double, 4> detail{};  // the detail sphere's centre (model frame) and radius; radius < 0: none
+    int finest = 0;                // its grid on disk keeps level 1 or coarser
+    bool anyFull = false;          // some chunk took level 0
+    bool sameInputs(const LevelsChosen& o) const {
+        return valid && o.valid && errors == o.errors && finest == o.finest && detail == o.detail;
+    }
+};
+
 struct Sculpture {
     std::string name;
     SculptureSource source;
@@ -78,6 +94,7 @@ struct Sculpture {
     std::unique_ptr<MorphState> morph;
     int framesSinceLevels = 0;         // frames since the queue last took new levels
     int uniformLevel = -1;             // the one level the queue's chunks last took, or -1 when they differ
+    LevelsChosen levelsChosen;         // when they differ: what they were chosen from
 
     Sculpture();
     ~Sculpture();

@@ -64,6 +64,7 @@ std::size_t ChunkErrors::update(const voxel::IndexBox& box) {
                 if (layout_.contains({x, y, z})) chunks.push_back(layout_.index({x, y, z}));
     measure(chunks);
     summarize();
+    ++version_;
     return chunks.size();
 }
 

@@ -15,6 +15,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "polygonizer/realtime/chunk_layout.h"
@@ -42,6 +43,8 @@ public:
     // The level-0 `box` changed (after LodPyramid::update): every chunk
     // whose error may have changed is measured again. Returns how many.
     std::size_t update(const voxel::IndexBox& box);
+    // Grows with every update (levels chosen from older errors are stale).
+    std::uint64_t version() const { return version_; }
 
 private:
     void measure(const std::vector<std::size_t>& chunks);
@@ -51,6 +54,7 @@ private:
     const ChunkLayout& layout_;
     int levels_ = 1;
     std::size_t count_ = 0;
+    std::uint64_t version_ = 0;
     std::vector<float> errors_;  // count x (levels - 1)
     std::vector<float> largest_, smallest_;
 };

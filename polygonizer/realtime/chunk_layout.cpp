@@ -47,12 +47,7 @@ std::size_t ChunkLayout::index(const ChunkKey& k) const {
 
 std::vector<std::size_t> ChunkLayout::faceNeighbours(std::size_t i) const {
     std::vector<std::size_t> out;
-    const ChunkKey k = key(i);
-    const int d[6][3] = {{-1, 0, 0}, {1, 0, 0}, {0, -1, 0}, {0, 1, 0}, {0, 0, -1}, {0, 0, 1}};
-    for (const auto& s : d) {
-        ChunkKey n{k.x + s[0], k.y + s[1], k.z + s[2]};
-        if (contains(n)) out.push_back(index(n));
-    }
+    forEachFaceNeighbour(i, [&out](std::size_t n) { out.push_back(n); });
     return out;
 }
 

@@ -8,10 +8,12 @@
 
 namespace hg::poly {
 
+double pixelsPerUnit(const Camera& camera, double distance) {
+    return camera.viewportHeight / (2.0 * std::max(distance, 1e-9) * std::tan(0.5 * camera.fovY));
+}
+
 double projectedVoxelPixels(const Camera& camera, double voxelSize, int level, double distance) {
-    const double size = voxelSize * std::ldexp(1.0, level);
-    const double d = std::max(distance, 1e-9);
-    return size * camera.viewportHeight / (2.0 * d * std::tan(0.5 * camera.fovY));
+    return voxelSize * std::ldexp(1.0, level) * pixelsPerUnit(camera, distance);
 }
 
 double distanceToChunk(const ChunkLayout& layout, std::size_t chunk, const std::array<double, 3>& p) {
@@ -102,11 +104,12 @@ std::vector<int> selectLevelsPerChunk(const ChunkLayout& layout, const Camera& c
     while (!queue.empty()) {
         const std::size_t i = queue.front();
         queue.pop_front();
-        for (std::size_t n : layout.faceNeighbours(i))
+        layout.forEachFaceNeighbour(i, [&](std::size_t n) {
             if (level[n] > level[i] + 1) {
                 level[n] = level[i] + 1;
                 queue.push_back(n);
             }
+        });
     }
     return level;
 }

@@ -55,6 +55,9 @@ double projectedVoxelPixels(const Camera& camera, double voxelSize, int level, d
 // The level of a voxel of `voxelSize` seen from `distance`: the coarsest
 // that meets the pixel error, at most settings.maxLevel.
 int levelAtDistance(const Camera& camera, double voxelSize, double distance, const LodSettings& settings);
+// Pixels a model unit spans at `distance` (one tangent: the per-chunk pass
+// asks this once a chunk).
+double pixelsPerUnit(const Camera& camera, double distance);
 // The same, where level L's surface is known to stray by at most
 // errorOf(L) level-0 voxels (non-decreasing in L): also the coarsest level
 // whose error projects within settings.errorPixels and whose voxels within
@@ -63,12 +66,13 @@ template <class ErrorOf>
 int levelAtDistance(const Camera& camera, double voxelSize, double distance, const LodSettings& settings,
                     ErrorOf errorOf) {
     const int maxLevel = settings.maxLevel < 0 ? 0 : settings.maxLevel;
+    const double voxelPixels = voxelSize * pixelsPerUnit(camera, distance);  // level 0's
     int l = 0;
     while (l < maxLevel) {
-        const double voxel = projectedVoxelPixels(camera, voxelSize, l + 1, distance);
+        const double voxel = voxelPixels * static_cast<double>(2 << l);  // level l + 1's
         const bool small = voxel <= settings.pixelError;
-        const bool close = voxel <= settings.coarsePixels &&
-                           projectedVoxelPixels(camera, voxelSize * errorOf(l + 1), 0, distance) <= settings.errorPixels;
+        const bool close =
+            voxel <= settings.coarsePixels && voxelPixels * static_cast<double>(errorOf(l + 1)) <= settings.errorPixels;
         if (!small && !close) break;
         ++l;
     }
