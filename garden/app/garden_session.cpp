@@ -35,6 +35,10 @@ constexpr int kLevelRefreshFrames = 45;
 // this fraction late, and a walk past hundreds of such sculptures costs a
 // test per sculpture a frame, not one per chunk.
 constexpr double kReselectMove = 0.01;
+// Milliseconds a frame for measuring again the level errors of chunks an
+// edit or a blend changed (poly::ChunkErrors::refresh); until then they
+// take the voxel-size rule's levels.
+constexpr double kErrorRefreshMs = 0.5;
 // A far grid is read back from disk once the viewer is within this factor
 // of the distance where its chunks take level 0, and may go again only
 // beyond the larger one (so a visitor at the edge does not make it come and
@@ -467,11 +471,16 @@ void GardenSession::input(const Hands& hands, double dt) {
 void GardenSession::selectLevels() {
     scheduler_.beginStage(Stage::Lod);
     gridNeeds_.assign(sculptures_.size(), GridNeed{});
+    const double refreshUntil = scheduler_.elapsedMs() + kErrorRefreshMs;
     for (std::size_t index = 0; index < sculptures_.size(); ++index) {
         Sculpture& s = sculptures_[index];
         if (!s.onShow()) continue;
         const std::array<double, 3> eye = toModel(s, navigator_.eye());
         s.queue->setViewer(eye);
+        if (s.errors && s.errors->unknown() > 0 && s.volume->resident()) {
+            const double left = refreshUntil - scheduler_.elapsedMs();
+            if (left > 0.0) s.errors->refresh(eye, left);
+        }
         poly::Camera cam;
         cam.position = eye;
         cam.fovY = settings_.fovY;

@@ -1,11 +1,15 @@
 #include "polygonizer/realtime/chunk_errors.h"
 
 #include <algorithm>
+#include <chrono>
+#include <utility>
 #include <cmath>
 
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 #include "polygonizer/realtime/lod_pyramid.h"
+#include "polygonizer/realtime/lod_selection.h"
 #include "voxel/volume_vdb.h"
 
 namespace hg::poly {
@@ -44,6 +48,7 @@ bool nearSurface(const openvdb::FloatTree& tree, const voxel::IndexBox& box, flo
 ChunkErrors::ChunkErrors(const LodPyramid& pyramid, const ChunkLayout& layout)
     : pyramid_(pyramid), layout_(layout), levels_(pyramid.levels()), count_(layout.count()) {
     errors_.assign(count_ * static_cast<std::size_t>(std::max(levels_ - 1, 0)), 0.0f);
+    isUnknown_.assign(count_, false);
     std::vector<std::size_t> all(count_);
     for (std::size_t c = 0; c < count_; ++c) all[c] = c;
     measure(all);
@@ -57,15 +62,55 @@ std::size_t ChunkErrors::update(const voxel::IndexBox& box) {
     const int reach = 1 << (levels_ - 1);
     const ChunkKey lo = layout_.keyOf(box.lo[0] - reach, box.lo[1] - reach, box.lo[2] - reach);
     const ChunkKey hi = layout_.keyOf(box.hi[0] + reach, box.hi[1] + reach, box.hi[2] + reach);
-    std::vector<std::size_t> chunks;
+    const std::size_t perChunk = static_cast<std::size_t>(levels_ - 1);
+    std::size_t changed = 0;
     for (int z = lo.z; z <= hi.z; ++z)
         for (int y = lo.y; y <= hi.y; ++y)
-            for (int x = lo.x; x <= hi.x; ++x)
-                if (layout_.contains({x, y, z})) chunks.push_back(layout_.index({x, y, z}));
-    measure(chunks);
+            for (int x = lo.x; x <= hi.x; ++x) {
+                if (!layout_.contains({x, y, z})) continue;
+                const std::size_t c = layout_.index({x, y, z});
+                std::fill_n(errors_.begin() + static_cast<std::ptrdiff_t>(c * perChunk), perChunk, INFINITY);
+                if (!isUnknown_[c]) {
+                    isUnknown_[c] = true;
+                    unknown_.push_back(c);
+                }
+                ++changed;
+            }
     summarize();
     ++version_;
-    return chunks.size();
+    return changed;
+}
+
+std::size_t ChunkErrors::refresh(const std::array<double, 3>& viewer, double milliseconds) {
+    if (unknown_.empty()) return 0;
+    const auto start = std::chrono::steady_clock::now();
+    // Nearest last in the list: taken from the back.
+    std::vector<std::pair<double, std::size_t>> order;
+    order.reserve(unknown_.size());
+    for (std::size_t c : unknown_) order.emplace_back(distanceToChunk(layout_, c, viewer), c);
+    std::sort(order.begin(), order.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+    // Two chunks a worker a batch (a chunk takes a tenth of a millisecond or so).
+    const std::size_t batch = 2 * static_cast<std::size_t>(std::max(1, tbb::this_task_arena::max_concurrency()));
+    std::size_t measured = 0;
+    std::vector<std::size_t> chunks;
+    while (!order.empty()) {
+        chunks.clear();
+        while (!order.empty() && chunks.size() < batch) {
+            chunks.push_back(order.back().second);
+            order.pop_back();
+        }
+        measure(chunks);
+        for (std::size_t c : chunks) isUnknown_[c] = false;
+        measured += chunks.size();
+        if (milliseconds > 0.0 &&
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count() >= milliseconds)
+            break;
+    }
+    unknown_.clear();
+    for (auto it = order.rbegin(); it != order.rend(); ++it) unknown_.push_back(it->second);
+    summarize();
+    ++version_;
+    return measured;
 }
 
 void ChunkErrors::measure(const std::vector<std::size_t>& chunks) {

@@ -6,7 +6,8 @@
 // is how far apart the two surfaces lie there, in level-0 voxels (the
 // stored field is about one unit per voxel near the surface, voxel/volume.h).
 // A chunk's error at level L is the largest of these over its voxels and
-// every level up to L (so it never falls as the level grows).
+// every level up to L (so it never falls as the level grows). After an
+// edit the changed chunks are measured again a few at a time (refresh).
 //
 // Where a sculpture is smooth the coarse levels stray by a small part of a
 // voxel, and level selection (lod_selection.h) may take them much nearer
@@ -14,6 +15,7 @@
 // strays by voxels and keeps its fine levels.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -41,9 +43,18 @@ public:
     float smallest(int level) const { return level <= 0 ? 0.0f : smallest_[static_cast<std::size_t>(level - 1)]; }
 
     // The level-0 `box` changed (after LodPyramid::update): every chunk
-    // whose error may have changed is measured again. Returns how many.
+    // whose error may have changed is unknown until refresh() measures it
+    // again, and meanwhile errs without bound (so it takes the voxel-size
+    // rule's level: an edit is never drawn coarser than before). Measuring
+    // is left to refresh so that a stroke, which changes a box every
+    // frame, does not measure its chunks every frame. Returns how many.
     std::size_t update(const voxel::IndexBox& box);
-    // Grows with every update (levels chosen from older errors are stale).
+    // Measures unknown chunks, nearest to `viewer` (model frame) first, a
+    // batch at a time while `milliseconds` last (0: all); at least one
+    // batch when any is unknown. Returns how many were measured.
+    std::size_t refresh(const std::array<double, 3>& viewer, double milliseconds);
+    std::size_t unknown() const { return unknown_.size(); }
+    // Grows whenever an error changes (levels chosen from older errors are stale).
     std::uint64_t version() const { return version_; }
 
 private:
@@ -57,6 +68,8 @@ private:
     std::uint64_t version_ = 0;
     std::vector<float> errors_;  // count x (levels - 1)
     std::vector<float> largest_, smallest_;
+    std::vector<std::size_t> unknown_;  // changed, not measured since
+    std::vector<bool> isUnknown_;
 };
 
 }  // namespace hg::poly

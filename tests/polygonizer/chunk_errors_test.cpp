@@ -1,7 +1,9 @@
 // Measured level errors (polygonizer/realtime/chunk_errors.h) and the level
 // selection that uses them: a smooth surface strays little at coarse levels
 // and a thin rod much; the errors never fall as the level grows, and a
-// chunk far from the surface has none; a local update equals measuring again;
+// chunk far from the surface has none; a local update leaves the changed
+// chunks at the voxel-size rule's level until they are measured again, a
+// batch at a time, and then equals measuring everything again;
 // and selection with errors takes coarser levels where the surface is
 // smooth, never finer ones, fewer for the rod, stitches (neighbours
 // at most one level apart), and its hierarchical shortcut equals the
@@ -108,9 +110,35 @@ TEST(ChunkErrors, AnUpdateEqualsMeasuringAgain) {
     const voxel::IndexBox region = voxel::IndexBox::fromCorners(20, 70, 30, 70, 82, 60);
     voxel::resampleRegion(s.volume, grooved, region);
     s.pyramid.update(region);
-    const std::size_t measured = e.update(region);
-    EXPECT_GT(measured, 0u);
-    EXPECT_LT(measured, s.layout.count() / 2) << "only the chunks near the region";
+    const std::uint64_t before = e.version();
+    const std::size_t changed = e.update(region);
+    EXPECT_GT(changed, 0u);
+    EXPECT_LT(changed, s.layout.count() / 2) << "only the chunks near the region";
+    EXPECT_EQ(e.unknown(), changed);
+    EXPECT_GT(e.version(), before);
+    // Unknown until measured: they take the voxel-size rule's level.
+    EXPECT_TRUE(std::isinf(e.largest(1)));
+    Camera cam;
+    cam.position = {0.0, 0.5, 3.0};
+    LodSettings lod;
+    lod.maxLevel = 3;
+    const std::vector<int> measuring = selectLevelsPerChunk(s.layout, cam, lod, &e);
+    const voxel::IndexBox grown = voxel::IndexBox::fromCorners(region.lo[0] - 8, region.lo[1] - 8, region.lo[2] - 8,
+                                                               region.hi[0] + 8, region.hi[1] + 8, region.hi[2] + 8);
+    std::size_t inside = 0;
+    for (std::size_t c = 0; c < s.layout.count(); ++c)
+        if (grown.contains(s.layout.voxels(c))) {
+            ++inside;
+            const double d = distanceToChunk(s.layout, c, cam.position);
+            EXPECT_LE(measuring[c], levelAtDistance(cam, s.layout.frame().voxelSize, d, lod)) << "chunk " << c;
+        }
+    EXPECT_GT(inside, 0u);
+    // Measured a batch at a time: a short allowance leaves some unknown.
+    const std::size_t first = e.refresh(cam.position, 1e-6);
+    EXPECT_GT(first, 0u);
+    EXPECT_EQ(e.unknown(), changed - first);
+    while (e.unknown() > 0) ASSERT_GT(e.refresh(cam.position, 1e-6), 0u);
+    EXPECT_EQ(e.refresh(cam.position, 0.0), 0u);
     const ChunkErrors again(s.pyramid, s.layout);
     for (std::size_t c = 0; c < e.count(); ++c)
         for (int l = 1; l < 4; ++l) ASSERT_EQ(e.error(c, l), again.error(c, l)) << "chunk " << c << " level " << l;
