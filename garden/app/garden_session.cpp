@@ -157,7 +157,8 @@ GardenSession::GardenSession(GardenLoad load, SessionSettings settings)
                             volumeRequest(g.sculptures[i]), {at.x, at.y, at.z}});
         }
         const glm::vec3 eye = navigator_.eye();
-        loader_ = std::make_unique<SculptureLoader>(std::move(jobs), std::array<double, 3>{eye.x, eye.y, eye.z});
+        loader_ = std::make_unique<SculptureLoader>(std::move(jobs), std::array<double, 3>{eye.x, eye.y, eye.z},
+                                                    meshingShape());
     }
     recorded_ = 0;  // the garden's own first weights are no action of the user's
     fileSculptures_ = g.sculptures.size();
@@ -186,11 +187,14 @@ std::array<double, 3> GardenSession::toModelDirection(const Sculpture& s, const 
 
 // Builds the pyramid, layout and queue of a sampled sculpture, at the levels
 // the start pose selects.
-void GardenSession::attachMeshing(Sculpture& s) const {
+// `prepared`, when built (by the loader, on this very grid), is taken
+// as it is.
+void GardenSession::attachMeshing(Sculpture& s, PreparedMeshing prepared) const {
     const SessionSettings& settings = settings_;
-    s.pyramid = std::make_unique<poly::LodPyramid>(*s.volume, settings.maxLevel + 1);
-    s.layout = std::make_unique<poly::ChunkLayout>(s.volume->frame, settings.chunkSize);
-    s.errors = settings.levelErrorPixels > 0.0 ? std::make_unique<poly::ChunkErrors>(*s.pyramid, *s.layout) : nullptr;
+    if (!prepared.pyramid) prepared = prepareMeshing(*s.volume, meshingShape());
+    s.pyramid = std::move(prepared.pyramid);
+    s.layout = std::move(prepared.layout);
+    s.errors = std::move(prepared.errors);
     s.queue = std::make_unique<poly::RemeshQueue>(*s.pyramid, *s.layout,
                                                   std::vector<int>(s.layout->count(), settings.maxLevel));
     s.uniformLevel = settings.maxLevel;
@@ -199,6 +203,10 @@ void GardenSession::attachMeshing(Sculpture& s) const {
     // garden opens with every sculpture on show; finer levels then stream
     // in within the frame budget.
     s.queue->process(poly::RemeshBudget{});
+}
+
+MeshingShape GardenSession::meshingShape() const {
+    return {settings_.maxLevel + 1, settings_.chunkSize, settings_.levelErrorPixels > 0.0};
 }
 
 void GardenSession::describeSculpture(std::size_t index) {
@@ -222,7 +230,8 @@ void GardenSession::sampleSculpture(std::size_t index) {
     attachGrid(index, r.volume ? std::make_unique<voxel::Volume>(std::move(*r.volume)) : nullptr, r.error);
 }
 
-void GardenSession::attachGrid(std::size_t index, std::unique_ptr<voxel::Volume> volume, const std::string& error) {
+void GardenSession::attachGrid(std::size_t index, std::unique_ptr<voxel::Volume> volume, const std::string& error,
+                               PreparedMeshing prepared) {
     Sculpture& s = sculptures_[index];
     s.loading = false;
     if (!volume) {
@@ -230,7 +239,7 @@ void GardenSession::attachGrid(std::size_t index, std::unique_ptr<voxel::Volume>
         return;
     }
     s.volume = std::move(volume);
-    attachMeshing(s);
+    attachMeshing(s, std::move(prepared));
 }
 
 void GardenSession::attachLoaded() {
@@ -246,7 +255,7 @@ void GardenSession::attachLoaded() {
         if (n > 0 && scheduler_.elapsedMs() >= until) break;
         std::vector<SculptureLoader::Loaded> got = loader_->take(1);
         if (got.empty()) break;
-        attachGrid(got[0].sculpture, std::move(got[0].volume), got[0].error);
+        attachGrid(got[0].sculpture, std::move(got[0].volume), got[0].error, std::move(got[0].meshing));
     }
     if (loader_->remaining() == 0) loader_.reset();
 }
@@ -254,7 +263,8 @@ void GardenSession::attachLoaded() {
 void GardenSession::finishLoading() {
     if (!loader_) return;
     loader_->wait();
-    for (SculptureLoader::Loaded& l : loader_->take()) attachGrid(l.sculpture, std::move(l.volume), l.error);
+    for (SculptureLoader::Loaded& l : loader_->take())
+        attachGrid(l.sculpture, std::move(l.volume), l.error, std::move(l.meshing));
     loader_.reset();
 }
 
@@ -520,7 +530,7 @@ void GardenSession::selectLevels() {
         if (lod.detail) now.detail = {lod.detail->center[0], lod.detail->center[1], lod.detail->center[2], lod.detail->radius};
         if (!uniform && chosen.sameInputs(now) &&
             glm::distance(glm::dvec3(eye[0], eye[1], eye[2]), glm::dvec3(chosen.eye[0], chosen.eye[1], chosen.eye[2])) <=
-                kReselectMove * distanceToBound(*s.layout, eye)) {
+                kReselectMove * need.distance / s.scale()) {  // gridNeed's distanceToBound
             need.wanted = need.wanted || chosen.anyFull;
             continue;
         }

@@ -28,6 +28,7 @@
 
 #include "garden/app/frame_scheduler.h"
 #include "garden/app/navigator.h"
+#include "garden/app/sculpture_meshing.h"
 #include "garden/app/sculpture.h"
 #include "garden/app/view_sink.h"
 #include "garden/gesture/stroke.h"
@@ -509,11 +510,14 @@ private:
     // when its file is), then sampled and given its meshing caches.
     void describeSculpture(std::size_t index);
     void sampleSculpture(std::size_t index);
-    void attachGrid(std::size_t index, std::unique_ptr<voxel::Volume> volume, const std::string& error);
+    // `prepared` (when built, on `volume`) saves attachMeshing building it.
+    void attachGrid(std::size_t index, std::unique_ptr<voxel::Volume> volume, const std::string& error,
+                    PreparedMeshing prepared = {});
     // Progressive loading: grids the loader finished, attached within the frame.
     void attachLoaded();
     // The pyramid, layout and queue of a sampled sculpture, its coarsest level meshed.
-    void attachMeshing(Sculpture& s) const;
+    void attachMeshing(Sculpture& s, PreparedMeshing prepared = {}) const;
+    MeshingShape meshingShape() const;
     static voxel::VolumeRequest volumeRequest(const SculptureSpec& spec);
     // A file's modification time as a number (0: none); reloading compares them.
     static std::int64_t sourceStamp(const std::string& path);

@@ -11,7 +11,9 @@
 // most kAhead finished grids that the frame has not taken (a copy is made
 // in milliseconds: without the limit a garden of copies would pile up its
 // grids here, outside the memory budget's reach), except while wait()
-// wants them all.
+// wants them all. With a MeshingShape the worker also builds each grid's
+// coarse levels, chunks and level errors (sculpture_meshing.h), so the
+// frame that takes it only attaches them.
 #pragma once
 
 #include <array>
@@ -21,10 +23,12 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
 
+#include "garden/app/sculpture_meshing.h"
 #include "garden/scene/garden_file.h"
 #include "io/progress.h"
 #include "voxel/sampler.h"
@@ -46,10 +50,13 @@ public:
         std::size_t sculpture = 0;
         std::unique_ptr<voxel::Volume> volume;  // null: the sampling failed
         std::string error;
+        PreparedMeshing meshing;  // built on `volume` when the loader was given a shape
     };
 
-    // Starts sampling at once, nearest to `viewer` first.
-    SculptureLoader(std::vector<Job> jobs, const std::array<double, 3>& viewer);
+    // Starts sampling at once, nearest to `viewer` first; with `meshing`,
+    // each grid comes with its meshing built to that shape.
+    SculptureLoader(std::vector<Job> jobs, const std::array<double, 3>& viewer,
+                    std::optional<MeshingShape> meshing = std::nullopt);
     // Cancels the sculpture under way (a HyperFun body's sampling stops at
     // its next box; a scan's or a mesh's level set is let finish) and
     // samples no more.
@@ -92,6 +99,7 @@ private:
     bool all_ = false;               // wait(): no limit ahead
     std::size_t remaining_ = 0;
     std::array<double, 3> viewer_{};
+    const std::optional<MeshingShape> meshing_;
     io::NullProgress stop_;  // cancelled on close; the sampling under way asks it
     bool cutShort_ = false;  // a sampling was cancelled by close (set by the worker before it ends)
     std::thread worker_;  // last: started once everything above is set

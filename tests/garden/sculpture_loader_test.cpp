@@ -15,6 +15,9 @@
 #include "garden/app/garden_session.h"
 #include "garden/app/sculpture_loader.h"
 #include "garden/scene/scale_garden.h"
+#include "polygonizer/realtime/chunk_errors.h"
+#include "polygonizer/realtime/chunk_layout.h"
+#include "polygonizer/realtime/lod_pyramid.h"
 
 namespace hg::garden {
 namespace {
@@ -96,7 +99,66 @@ TEST(ProgressiveLoading, GridsEqualThoseSampledAtStart) {
                     ASSERT_EQ(p.value(i, j, k), q.value(i, j, k)) << atStart.sculptures()[n].name;
                     ASSERT_EQ(p.active(i, j, k), q.active(i, j, k)) << atStart.sculptures()[n].name;
                 }
+        // The loader built the coarse levels, chunks and level errors
+        // (sculpture_meshing.h): on this very grid, equal to the session's own.
+        const Sculpture& ps = progressive.sculptures()[n];
+        const Sculpture& qs = atStart.sculptures()[n];
+        ASSERT_EQ(&ps.pyramid->volume(), ps.volume.get());
+        ASSERT_EQ(ps.pyramid->levels(), qs.pyramid->levels());
+        ASSERT_EQ(ps.layout->count(), qs.layout->count());
+        ASSERT_TRUE(ps.errors && qs.errors);
+        for (int l = 1; l < qs.pyramid->levels(); ++l) {
+            for (std::size_t c = 0; c < qs.layout->count(); ++c)
+                ASSERT_EQ(ps.errors->error(c, l), qs.errors->error(c, l)) << qs.name << " chunk " << c << " level " << l;
+            for (int k = box.lo[2] >> l; k <= box.hi[2] >> l; ++k)
+                for (int j = box.lo[1] >> l; j <= box.hi[1] >> l; ++j)
+                    for (int i = box.lo[0] >> l; i <= box.hi[0] >> l; ++i)
+                        ASSERT_EQ(ps.pyramid->value(l, i, j, k), qs.pyramid->value(l, i, j, k)) << qs.name;
+        }
     }
+}
+
+// Given a meshing shape, the loader builds each grid's coarse levels,
+// chunks and level errors next to the sampling, off the frame; without
+// one it builds none (the session then builds them as it attaches).
+TEST(ProgressiveLoading, TheLoaderBuildsEachGridsMeshingToTheShapeGiven) {
+    GardenLoad load = scaleGarden(3);
+    ASSERT_TRUE(load.ok()) << load.error;
+    const Garden& g = *load.garden;
+    auto jobsOf = [&] {
+        std::vector<SculptureLoader::Job> jobs;
+        for (std::size_t i = 0; i < g.sculptures.size(); ++i) {
+            voxel::VolumeRequest request;
+            request.box = g.sculptures[i].box;
+            request.resolution = g.sculptures[i].resolution;
+            request.band = g.sculptures[i].band;
+            jobs.push_back({i, std::make_shared<const SculptureLoad>(load.sculptures[i]), g.sculptures[i], request, {}});
+        }
+        return jobs;
+    };
+    SculptureLoader shaped(jobsOf(), {0.0, 1.7, 0.0}, MeshingShape{3, 16, true});
+    shaped.wait();
+    std::vector<SculptureLoader::Loaded> got = shaped.take();
+    ASSERT_EQ(got.size(), 3u);
+    for (const SculptureLoader::Loaded& l : got) {
+        ASSERT_TRUE(l.volume) << l.error;
+        ASSERT_TRUE(l.meshing.pyramid && l.meshing.layout && l.meshing.errors);
+        EXPECT_EQ(&l.meshing.pyramid->volume(), l.volume.get());
+        EXPECT_EQ(l.meshing.pyramid->levels(), 3);
+        const poly::ChunkLayout own(l.volume->frame, 16);
+        EXPECT_EQ(l.meshing.layout->count(), own.count());
+        EXPECT_EQ(l.meshing.errors->levels(), 3);
+        EXPECT_EQ(l.meshing.errors->unknown(), 0u);
+    }
+    SculptureLoader plain(jobsOf(), {0.0, 1.7, 0.0}, MeshingShape{3, 16, false});
+    plain.wait();
+    for (const SculptureLoader::Loaded& l : plain.take()) {
+        ASSERT_TRUE(l.meshing.pyramid) << l.error;
+        EXPECT_FALSE(l.meshing.errors) << "errors measured with the measure off";
+    }
+    SculptureLoader none(jobsOf(), {0.0, 1.7, 0.0});
+    none.wait();
+    for (const SculptureLoader::Loaded& l : none.take()) EXPECT_FALSE(l.meshing.pyramid);
 }
 
 TEST(ProgressiveLoading, ALoadingSculptureIsNotEditableAndFinishLoadingBringsAll) {
