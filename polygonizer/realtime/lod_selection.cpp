@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <deque>
 
 #include "polygonizer/realtime/chunk_errors.h"
 
@@ -84,33 +83,81 @@ std::vector<int> selectLevels(const ChunkLayout& layout, const Camera& camera, c
     return selectLevelsPerChunk(layout, camera, settings, errors);
 }
 
+namespace {
+
+// Squared distance from p to each slab of chunks along one axis: chunks lie
+// on a grid, so a chunk's distance is the three axes' slabs together, in
+// the order distanceToChunk adds them (the same doubles).
+std::vector<double> slabDistances(const ChunkLayout& layout, int axis, double p) {
+    const std::array<int, 3>& n = layout.dims();
+    const std::size_t a = static_cast<std::size_t>(axis);
+    const std::size_t stride = axis == 0 ? 1 : axis == 1 ? static_cast<std::size_t>(n[0]) : static_cast<std::size_t>(n[0] * n[1]);
+    std::vector<double> out(static_cast<std::size_t>(n[a]));
+    for (std::size_t c = 0; c < out.size(); ++c) {
+        double lo[3], hi[3];
+        layout.modelBox(c * stride, lo, hi);
+        const double d = std::max({lo[a] - p, 0.0, p - hi[a]});
+        out[c] = d * d;
+    }
+    return out;
+}
+
+struct ChunkDistances {
+    std::vector<double> x, y, z;
+    ChunkDistances(const ChunkLayout& layout, const std::array<double, 3>& p)
+        : x(slabDistances(layout, 0, p[0])), y(slabDistances(layout, 1, p[1])), z(slabDistances(layout, 2, p[2])) {}
+};
+
+}  // namespace
+
 std::vector<int> selectLevelsPerChunk(const ChunkLayout& layout, const Camera& camera, const LodSettings& settings,
                                       const ChunkErrors* errors) {
     const double h = layout.frame().voxelSize;
+    const std::array<int, 3>& n = layout.dims();
+    const std::size_t nx = static_cast<std::size_t>(n[0]), ny = static_cast<std::size_t>(n[1]),
+                      nz = static_cast<std::size_t>(n[2]);
     std::vector<int> level(layout.count());
-    for (std::size_t i = 0; i < level.size(); ++i) {
-        // The nearest point of the chunk decides: its voxels are the largest on screen.
-        const double d = distanceToChunk(layout, i, camera.position);
-        int l = errors ? levelAtDistance(camera, h, d, settings, [&](int lv) { return errors->error(i, lv); })
-                       : levelAtDistance(camera, h, d, settings);
-        for (const auto& s : {settings.detail, settings.tool})
-            if (s && distanceToChunk(layout, i, s->center) <= s->radius) l = 0;
-        level[i] = l;
-    }
-    // Neighbours at most one level apart: a chunk is lowered to its finest
-    // neighbour's level + 1, and the change spreads (a breadth-first pass).
-    std::deque<std::size_t> queue;
-    for (std::size_t i = 0; i < level.size(); ++i) queue.push_back(i);
-    while (!queue.empty()) {
-        const std::size_t i = queue.front();
-        queue.pop_front();
-        layout.forEachFaceNeighbour(i, [&](std::size_t n) {
-            if (level[n] > level[i] + 1) {
-                level[n] = level[i] + 1;
-                queue.push_back(n);
+    const ChunkDistances eye(layout, camera.position);
+    std::vector<std::pair<ChunkDistances, double>> spheres;  // detail and tool: level 0 within
+    for (const auto* sphere : {&settings.detail, &settings.tool})
+        if (*sphere) spheres.emplace_back(ChunkDistances(layout, (*sphere)->center), (*sphere)->radius);
+    std::size_t i = 0;
+    for (std::size_t z = 0; z < nz; ++z)
+        for (std::size_t y = 0; y < ny; ++y)
+            for (std::size_t x = 0; x < nx; ++x, ++i) {
+                // The nearest point of the chunk decides: its voxels are the largest on screen.
+                const double d = std::sqrt(eye.x[x] + eye.y[y] + eye.z[z]);
+                int l = errors ? levelAtDistance(camera, h, d, settings, [&](int lv) { return errors->error(i, lv); })
+                               : levelAtDistance(camera, h, d, settings);
+                for (const auto& [c, radius] : spheres)
+                    if (std::sqrt(c.x[x] + c.y[y] + c.z[z]) <= radius) l = 0;
+                level[i] = l;
             }
-        });
-    }
+    // Neighbours at most one level apart: each chunk is lowered to its
+    // finest neighbour's level + 1, the change spreading. The fixed point
+    // is level[i] = min over j of (level[j] + face steps from j to i), a
+    // city-block distance transform, which a forward and a backward sweep
+    // over the grid compute exactly (on a whole grid, a shortest path's steps
+    // can be ordered to go up the axes first, then down).
+    const std::size_t sy = nx, sz = nx * ny;
+    i = 0;
+    for (std::size_t z = 0; z < nz; ++z)
+        for (std::size_t y = 0; y < ny; ++y)
+            for (std::size_t x = 0; x < nx; ++x, ++i) {
+                int& l = level[i];
+                if (x > 0) l = std::min(l, level[i - 1] + 1);
+                if (y > 0) l = std::min(l, level[i - sy] + 1);
+                if (z > 0) l = std::min(l, level[i - sz] + 1);
+            }
+    for (std::size_t z = nz; z-- > 0;)
+        for (std::size_t y = ny; y-- > 0;)
+            for (std::size_t x = nx; x-- > 0;) {
+                const std::size_t k = --i;
+                int& l = level[k];
+                if (x + 1 < nx) l = std::min(l, level[k + 1] + 1);
+                if (y + 1 < ny) l = std::min(l, level[k + sy] + 1);
+                if (z + 1 < nz) l = std::min(l, level[k + sz] + 1);
+            }
     return level;
 }
 

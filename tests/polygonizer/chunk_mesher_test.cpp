@@ -183,6 +183,33 @@ TEST(ChunkMesher, OurSculpturesAreClosedAtMixedLevels) {
     }
 }
 
+// Each chunk's transition faces are the faces whose neighbour (by key) is
+// one level finer, for levels that vary over a layout of unequal sides.
+TEST(ChunkMesher, TransitionFacesAreTheFacesWithAFinerNeighbour) {
+    voxel::Volume v = sampleProgram(kRings, 64);
+    ChunkLayout layout(v.frame, 16);
+    ASSERT_GT(layout.count(), 8u);
+    std::vector<int> levels(layout.count());
+    for (std::size_t i = 0; i < levels.size(); ++i) {
+        const ChunkKey k = layout.key(i);
+        levels[i] = (k.x + k.y + 2 * k.z) % 4 == 0 ? 1 : 2;
+    }
+    const std::vector<ChunkLod> lods = chunkLods(layout, levels);
+    int transitions = 0;
+    for (std::size_t i = 0; i < levels.size(); ++i) {
+        const ChunkKey k = layout.key(i);
+        EXPECT_EQ(lods[i].level, levels[i]);
+        for (int f = 0; f < kChunkFaces; ++f) {
+            ChunkKey n = k;
+            (f / 2 == 0 ? n.x : f / 2 == 1 ? n.y : n.z) += f % 2 ? 1 : -1;
+            const bool finer = layout.contains(n) && levels[layout.index(n)] == levels[i] - 1;
+            EXPECT_EQ((lods[i].transitionFaces >> f & 1) != 0, finer) << "chunk " << i << " face " << f;
+            transitions += finer;
+        }
+    }
+    EXPECT_GT(transitions, 10);
+}
+
 TEST(ChunkMesher, RejectsLevelsThatCannotBeStitched) {
     voxel::Volume v = sampleProgram(kRings, 64);
     ChunkLayout layout(v.frame, 16);

@@ -5,6 +5,7 @@
 // The hierarchical selection equals the per-chunk one.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -52,6 +53,49 @@ TEST(LodSelection, NeighboursDifferByAtMostOneAndEveryChunkMeetsThePixelError) {
             expectValid(layout, cam, s, selectLevels(layout, cam, s));
         }
     }
+}
+
+// Each chunk takes the coarsest level that its own pixel rule and its
+// neighbours allow, and no finer: level[i] = min over chunks j of (j's own
+// level + face steps from j to i), computed here the slow way over every
+// pair, for random cameras and spheres.
+TEST(LodSelection, EachChunkTakesTheCoarsestLevelItsNeighboursAllow) {
+    std::mt19937 rng(11);
+    ChunkLayout layout(frame(256), 16);
+    const std::size_t n = layout.count();
+    std::uniform_real_distribution<double> u(-3, 3);
+    int refined = 0;
+    for (int c = 0; c < 24; ++c) {
+        // Near and far (so that a sphere's level 0 sits among coarse chunks).
+        const double far = std::pow(10.0, std::uniform_real_distribution<double>(0, 2.5)(rng));
+        Camera cam;
+        cam.position = {u(rng) * far, 1.0 + u(rng) * far, u(rng) * far};
+        cam.viewportHeight = 1080;
+        LodSettings s;
+        s.maxLevel = 3;
+        s.pixelError = std::uniform_real_distribution<double>(0.5, 3)(rng);
+        if (c % 3 == 1) s.detail = Sphere{{u(rng) / 3, 1.0 + u(rng) / 3, u(rng) / 6}, 0.2};
+        if (c % 3 == 2) s.tool = Sphere{{u(rng) / 3, 1.0 + u(rng) / 3, u(rng) / 6}, 0.1};
+        std::vector<int> own(n);
+        for (std::size_t i = 0; i < n; ++i) {
+            own[i] = levelAtDistance(cam, layout.frame().voxelSize, distanceToChunk(layout, i, cam.position), s);
+            for (const auto& sphere : {s.detail, s.tool})
+                if (sphere && distanceToChunk(layout, i, sphere->center) <= sphere->radius) own[i] = 0;
+        }
+        const std::vector<int> levels = selectLevelsPerChunk(layout, cam, s);
+        ASSERT_EQ(levels.size(), n);
+        for (std::size_t i = 0; i < n; ++i) {
+            const ChunkKey a = layout.key(i);
+            int expected = own[i];
+            for (std::size_t j = 0; j < n; ++j) {
+                const ChunkKey b = layout.key(j);
+                expected = std::min(expected, own[j] + std::abs(a.x - b.x) + std::abs(a.y - b.y) + std::abs(a.z - b.z));
+            }
+            ASSERT_EQ(levels[i], expected) << "camera " << c << ", chunk " << i;
+            refined += expected < own[i];
+        }
+    }
+    EXPECT_GT(refined, 100) << "the neighbour rule lowered chunks";
 }
 
 TEST(LodSelection, NearIsFineAndFarIsCoarse) {
