@@ -53,7 +53,8 @@ void SculptureLoader::run() {
         const std::string key = sourceKey(job);
         const auto kept = key.empty() ? kept_.end() : kept_.find(key);
         if (kept != kept_.end()) {
-            done.volume = std::make_unique<voxel::Volume>(kept->second->clone());
+            done.volume = std::make_unique<voxel::Volume>(kept->second.volume->clone());
+            done.meshing = copyMeshing(kept->second.meshing, *done.volume);
         } else {
             voxel::VoxelizeResult r = sampleSculptureSource(job.spec, *job.source, job.request, &stop_);
             if (r.cancelled) {  // closing: nobody takes it
@@ -64,14 +65,24 @@ void SculptureLoader::run() {
             else done.error = r.error;
         }
         // Off the frame too (about 18 ms of level errors a 256^3 grid).
-        if (meshing_ && done.volume) done.meshing = prepareMeshing(*done.volume, *meshing_);
+        if (meshing_ && done.volume && !done.meshing.pyramid) done.meshing = prepareMeshing(*done.volume, *meshing_);
+        // Kept while a copy waits; let go with the last one. (Jobs only
+        // leave waiting_, so a copy found here still waits after the lock;
+        // the copying is done without it, the frame's take() not waiting.)
+        bool wanted = false;
+        if (!key.empty() && done.volume) {
+            std::lock_guard<std::mutex> lock(mutex_);
+            wanted = std::any_of(waiting_.begin(), waiting_.end(), [&](const Job& j) { return sourceKey(j) == key; });
+        }
+        const bool copy = kept != kept_.end();
+        if (wanted && !copy) {
+            Kept& k = kept_[key];
+            k.volume = std::make_unique<voxel::Volume>(done.volume->clone());
+            k.meshing = copyMeshing(done.meshing, *k.volume);
+        }
+        if (!wanted && copy) kept_.erase(kept);
         std::lock_guard<std::mutex> lock(mutex_);
-        (kept != kept_.end() ? copied_ : sampled_) += 1;
-        // Kept while a copy waits; let go with the last one.
-        const bool wanted = !key.empty() && done.volume &&
-                            std::any_of(waiting_.begin(), waiting_.end(), [&](const Job& j) { return sourceKey(j) == key; });
-        if (wanted && kept == kept_.end()) kept_[key] = std::make_unique<voxel::Volume>(done.volume->clone());
-        if (!wanted && kept != kept_.end()) kept_.erase(kept);
+        (copy ? copied_ : sampled_) += 1;
         finished_.push_back(std::move(done));
     }
 }

@@ -7,8 +7,8 @@
 // scan's rebuild are deterministic. So copies of one HyperFun source (the
 // same file, body, a[], box, resolution and band) are sampled once: the
 // grid is kept while a copy still waits, and each copy gets a deep copy
-// of it, bit for bit what its own sampling would give. The worker keeps at
-// most kAhead finished grids that the frame has not taken (a copy is made
+// of it, bit for bit what its own sampling would give (and a copy of its
+// meshing). The worker keeps at most kAhead finished grids that the frame has not taken (a copy is made
 // in milliseconds: without the limit a garden of copies would pile up its
 // grids here, outside the memory budget's reach), except while wait()
 // wants them all. With a MeshingShape the worker also builds each grid's
@@ -92,8 +92,13 @@ private:
     mutable std::mutex mutex_;
     std::vector<Job> waiting_;
     std::vector<Loaded> finished_;
-    // Grids sampled whose copies still wait, by sourceKey (worker thread only).
-    std::map<std::string, std::unique_ptr<voxel::Volume>> kept_;
+    // Grids sampled whose copies still wait, with their meshing, by
+    // sourceKey (worker thread only).
+    struct Kept {
+        std::unique_ptr<voxel::Volume> volume;
+        PreparedMeshing meshing;  // built on `volume`
+    };
+    std::map<std::string, Kept> kept_;
     std::size_t sampled_ = 0, copied_ = 0;
     std::condition_variable taken_;  // the frame took finished grids, or wait() wants them all
     bool all_ = false;               // wait(): no limit ahead

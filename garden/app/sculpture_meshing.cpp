@@ -19,4 +19,13 @@ PreparedMeshing prepareMeshing(const voxel::Volume& volume, const MeshingShape& 
     return p;
 }
 
+PreparedMeshing copyMeshing(const PreparedMeshing& source, const voxel::Volume& volume) {
+    PreparedMeshing p;
+    if (!source.pyramid) return p;
+    p.pyramid = std::make_unique<poly::LodPyramid>(*source.pyramid, volume);
+    p.layout = std::make_unique<poly::ChunkLayout>(*source.layout);
+    if (source.errors) p.errors = std::make_unique<poly::ChunkErrors>(*source.errors, *p.pyramid, *p.layout);
+    return p;
+}
+
 }  // namespace hg::garden

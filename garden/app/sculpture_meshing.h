@@ -42,5 +42,8 @@ struct PreparedMeshing {
 // Built on `volume`, which must stay where it is (a heap Volume moved by
 // its unique_ptr does) for as long as the result is used.
 PreparedMeshing prepareMeshing(const voxel::Volume& volume, const MeshingShape& shape);
+// `source` (built on a grid equal to `volume`'s) copied onto `volume`: what
+// prepareMeshing would build there, in a fraction of its time.
+PreparedMeshing copyMeshing(const PreparedMeshing& source, const voxel::Volume& volume);
 
 }  // namespace hg::garden

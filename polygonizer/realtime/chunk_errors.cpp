@@ -4,6 +4,7 @@
 #include <chrono>
 #include <utility>
 #include <cmath>
+#include <stdexcept>
 
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
@@ -53,6 +54,21 @@ ChunkErrors::ChunkErrors(const LodPyramid& pyramid, const ChunkLayout& layout)
     for (std::size_t c = 0; c < count_; ++c) all[c] = c;
     measure(all);
     summarize();
+}
+
+ChunkErrors::ChunkErrors(const ChunkErrors& source, const LodPyramid& pyramid, const ChunkLayout& layout)
+    : pyramid_(pyramid),
+      layout_(layout),
+      levels_(source.levels_),
+      count_(source.count_),
+      version_(source.version_),
+      errors_(source.errors_),
+      largest_(source.largest_),
+      smallest_(source.smallest_),
+      unknown_(source.unknown_),
+      isUnknown_(source.isUnknown_) {
+    if (pyramid.levels() != levels_ || layout.count() != count_)
+        throw std::invalid_argument("level errors copied onto a pyramid or layout of another shape");
 }
 
 std::size_t ChunkErrors::update(const voxel::IndexBox& box) {

@@ -30,6 +30,9 @@ class ChunkErrors {
 public:
     // Every chunk of `layout` at levels 1..levels-1 of `pyramid` (TBB).
     ChunkErrors(const LodPyramid& pyramid, const ChunkLayout& layout);
+    // `source`'s errors (unknown chunks stay unknown) for a pyramid and
+    // layout equal to source's: a copy of one sculpture's grid errs alike.
+    ChunkErrors(const ChunkErrors& source, const LodPyramid& pyramid, const ChunkLayout& layout);
 
     int levels() const { return levels_; }
     std::size_t count() const { return count_; }

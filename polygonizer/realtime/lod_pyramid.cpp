@@ -106,6 +106,11 @@ LodPyramid::LodPyramid(const voxel::Volume& volume, int levels) : impl_(std::mak
     for (int l = 1; l < levels; ++l) impl_->build(l);
 }
 
+LodPyramid::LodPyramid(const LodPyramid& source, const voxel::Volume& volume) : impl_(std::make_unique<Impl>()) {
+    impl_->volume = &volume;
+    for (const CoarseGrid::Ptr& g : source.impl_->grids) impl_->grids.push_back(g->deepCopy());
+}
+
 LodPyramid::~LodPyramid() = default;
 
 int LodPyramid::levels() const { return static_cast<int>(impl_->grids.size()) + 1; }

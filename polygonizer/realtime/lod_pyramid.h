@@ -15,6 +15,10 @@ class LodPyramid {
 public:
     // `volume` must outlive the pyramid; level 0 is its grid, not a copy.
     LodPyramid(const voxel::Volume& volume, int levels);
+    // A deep copy of `source`'s coarse levels over `volume`, which must
+    // hold the same grid as source's (a copy of one sculpture: the loader
+    // gives copies of one source their own grids).
+    LodPyramid(const LodPyramid& source, const voxel::Volume& volume);
     ~LodPyramid();
     LodPyramid(const LodPyramid&) = delete;
     LodPyramid& operator=(const LodPyramid&) = delete;

@@ -119,10 +119,12 @@ TEST(ProgressiveLoading, GridsEqualThoseSampledAtStart) {
 }
 
 // Given a meshing shape, the loader builds each grid's coarse levels,
-// chunks and level errors next to the sampling, off the frame; without
-// one it builds none (the session then builds them as it attaches).
+// chunks and level errors next to the sampling, off the frame (a copy of
+// one source gets a copy of its meshing); each equals building it on the
+// grid afresh. Without a shape it builds none (the session then builds
+// them as it attaches).
 TEST(ProgressiveLoading, TheLoaderBuildsEachGridsMeshingToTheShapeGiven) {
-    GardenLoad load = scaleGarden(3);
+    GardenLoad load = scaleGarden(12);  // nine sources, three of them twice
     ASSERT_TRUE(load.ok()) << load.error;
     const Garden& g = *load.garden;
     auto jobsOf = [&] {
@@ -136,19 +138,32 @@ TEST(ProgressiveLoading, TheLoaderBuildsEachGridsMeshingToTheShapeGiven) {
         }
         return jobs;
     };
-    SculptureLoader shaped(jobsOf(), {0.0, 1.7, 0.0}, MeshingShape{3, 16, true});
+    const MeshingShape shape{3, 16, true};
+    SculptureLoader shaped(jobsOf(), {0.0, 1.7, 0.0}, shape);
     shaped.wait();
+    EXPECT_EQ(shaped.copied(), 3u);
     std::vector<SculptureLoader::Loaded> got = shaped.take();
-    ASSERT_EQ(got.size(), 3u);
+    ASSERT_EQ(got.size(), 12u);
     for (const SculptureLoader::Loaded& l : got) {
+        SCOPED_TRACE(g.sculptures[l.sculpture].name);
         ASSERT_TRUE(l.volume) << l.error;
-        ASSERT_TRUE(l.meshing.pyramid && l.meshing.layout && l.meshing.errors);
-        EXPECT_EQ(&l.meshing.pyramid->volume(), l.volume.get());
-        EXPECT_EQ(l.meshing.pyramid->levels(), 3);
-        const poly::ChunkLayout own(l.volume->frame, 16);
-        EXPECT_EQ(l.meshing.layout->count(), own.count());
-        EXPECT_EQ(l.meshing.errors->levels(), 3);
-        EXPECT_EQ(l.meshing.errors->unknown(), 0u);
+        const PreparedMeshing& m = l.meshing;
+        ASSERT_TRUE(m.pyramid && m.layout && m.errors);
+        EXPECT_EQ(&m.pyramid->volume(), l.volume.get());
+        const PreparedMeshing own = prepareMeshing(*l.volume, shape);
+        ASSERT_EQ(m.pyramid->levels(), 3);
+        ASSERT_EQ(m.layout->count(), own.layout->count());
+        ASSERT_EQ(m.layout->dims(), own.layout->dims());
+        ASSERT_EQ(m.errors->unknown(), 0u);
+        const voxel::IndexBox& box = l.volume->frame.indexBox;
+        for (int lv = 1; lv < 3; ++lv) {
+            for (std::size_t c = 0; c < own.layout->count(); ++c)
+                ASSERT_EQ(m.errors->error(c, lv), own.errors->error(c, lv)) << "chunk " << c << " level " << lv;
+            for (int k = box.lo[2] >> lv; k <= box.hi[2] >> lv; ++k)
+                for (int j = box.lo[1] >> lv; j <= box.hi[1] >> lv; ++j)
+                    for (int i = box.lo[0] >> lv; i <= box.hi[0] >> lv; ++i)
+                        ASSERT_EQ(m.pyramid->value(lv, i, j, k), own.pyramid->value(lv, i, j, k));
+        }
     }
     SculptureLoader plain(jobsOf(), {0.0, 1.7, 0.0}, MeshingShape{3, 16, false});
     plain.wait();
