@@ -49,6 +49,22 @@ void loadAll(GardenSession& session) {
     while (session.sculpturesLoading() > 0) nextFrame(session);
 }
 
+// One loader job a sculpture of `load`, placed where the garden puts it.
+std::vector<SculptureLoader::Job> loaderJobs(const GardenLoad& load) {
+    const Garden& g = *load.garden;
+    std::vector<SculptureLoader::Job> jobs;
+    for (std::size_t i = 0; i < g.sculptures.size(); ++i) {
+        voxel::VolumeRequest request;
+        request.box = g.sculptures[i].box;
+        request.resolution = g.sculptures[i].resolution;
+        request.band = g.sculptures[i].band;
+        const auto& p = g.sculptures[i].placement.position;
+        jobs.push_back({i, std::make_shared<const SculptureLoad>(load.sculptures[i]), g.sculptures[i], request,
+                        {p[0], p[1], p[2]}});
+    }
+    return jobs;
+}
+
 TEST(ProgressiveLoading, TheFirstFrameComesBeforeTheSculpturesNearestFirstAndAllLoad) {
     GardenLoad load = scaleGarden(48);
     ASSERT_TRUE(load.ok()) << load.error;
@@ -127,17 +143,7 @@ TEST(ProgressiveLoading, TheLoaderBuildsEachGridsMeshingToTheShapeGiven) {
     GardenLoad load = scaleGarden(12);  // nine sources, three of them twice
     ASSERT_TRUE(load.ok()) << load.error;
     const Garden& g = *load.garden;
-    auto jobsOf = [&] {
-        std::vector<SculptureLoader::Job> jobs;
-        for (std::size_t i = 0; i < g.sculptures.size(); ++i) {
-            voxel::VolumeRequest request;
-            request.box = g.sculptures[i].box;
-            request.resolution = g.sculptures[i].resolution;
-            request.band = g.sculptures[i].band;
-            jobs.push_back({i, std::make_shared<const SculptureLoad>(load.sculptures[i]), g.sculptures[i], request, {}});
-        }
-        return jobs;
-    };
+    auto jobsOf = [&] { return loaderJobs(load); };
     const MeshingShape shape{3, 16, true};
     SculptureLoader shaped(jobsOf(), {0.0, 1.7, 0.0}, shape);
     shaped.wait();
@@ -197,16 +203,7 @@ TEST(ProgressiveLoading, CopiesOfOneSourceAreSampledOnce) {
     GardenLoad load = scaleGarden(20);
     ASSERT_TRUE(load.ok()) << load.error;
     const Garden& g = *load.garden;
-    std::vector<SculptureLoader::Job> jobs;
-    for (std::size_t i = 0; i < g.sculptures.size(); ++i) {
-        voxel::VolumeRequest request;
-        request.box = g.sculptures[i].box;
-        request.resolution = g.sculptures[i].resolution;
-        request.band = g.sculptures[i].band;
-        const auto& p = g.sculptures[i].placement.position;
-        jobs.push_back({i, std::make_shared<const SculptureLoad>(load.sculptures[i]), g.sculptures[i], request,
-                        {p[0], p[1], p[2]}});
-    }
+    const std::vector<SculptureLoader::Job> jobs = loaderJobs(load);
     SculptureLoader loader(jobs, {0.0, 1.7, 0.0});
     loader.wait();
     EXPECT_EQ(loader.sampled(), 9u);
