@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <numeric>
+#include <optional>
+#include <stdexcept>
 #include <vector>
 
 namespace hg::garden {
@@ -23,22 +25,44 @@ gl::Buffer makeBuffer(GLenum target, std::size_t size) {
 
 }  // namespace
 
+struct ChunkArena::Page {
+    gl::VertexArray vao;
+    gl::Buffer vertices, indices;
+    RangeAllocator vertexSpace, indexSpace;
+    std::size_t chunks = 0;
+};
+
 ChunkArena::ChunkArena(std::size_t vertices, std::size_t indices)
-    : vao_(gl::VertexArray::create()), vertexSpace_(vertices), indexSpace_(indices) {
-    glBindVertexArray(vao_.get());
-    vertices_ = makeBuffer(GL_ARRAY_BUFFER, vertices * kVertexBytes);
-    indices_ = makeBuffer(GL_ELEMENT_ARRAY_BUFFER, indices * kIndexBytes);
-    drawIds_ = gl::Buffer::create();
-    bindAttributes();
-    glBindVertexArray(0);
+    : drawIds_(gl::Buffer::create()), firstVertices_(vertices), firstIndices_(indices) {
     ensureDrawIds(1024);
+    makePage(vertices, indices);
 }
 
 ChunkArena::~ChunkArena() = default;
 
-void ChunkArena::bindAttributes() {
-    // The vertex array is bound by the caller.
-    glBindBuffer(GL_ARRAY_BUFFER, vertices_.get());
+std::size_t ChunkArena::makePage(std::size_t vertices, std::size_t indices) {
+    auto page = std::make_unique<Page>();
+    page->vao = gl::VertexArray::create();
+    page->vertexSpace = RangeAllocator(vertices);
+    page->indexSpace = RangeAllocator(indices);
+    glBindVertexArray(page->vao.get());
+    page->vertices = makeBuffer(GL_ARRAY_BUFFER, vertices * kVertexBytes);
+    page->indices = makeBuffer(GL_ELEMENT_ARRAY_BUFFER, indices * kIndexBytes);
+    bindAttributes(*page);
+    glBindVertexArray(0);
+    ++pagesMade_;
+    const auto empty = std::find(pages_.begin(), pages_.end(), nullptr);
+    if (empty != pages_.end()) {
+        *empty = std::move(page);
+        return static_cast<std::size_t>(empty - pages_.begin());
+    }
+    pages_.push_back(std::move(page));
+    return pages_.size() - 1;
+}
+
+void ChunkArena::bindAttributes(const Page& page) {
+    // The page's vertex array is bound by the caller.
+    glBindBuffer(GL_ARRAY_BUFFER, page.vertices.get());
     glEnableVertexAttribArray(kPositionAttribute);
     glVertexAttribPointer(kPositionAttribute, 3, GL_FLOAT, GL_FALSE, kVertexBytes, byteOffset(0));
     glEnableVertexAttribArray(kNormalAttribute);
@@ -46,15 +70,18 @@ void ChunkArena::bindAttributes() {
     glBindBuffer(GL_ARRAY_BUFFER, drawIds_.get());
     glVertexAttribIPointer(kDrawIdAttribute, 1, GL_UNSIGNED_INT, sizeof(std::uint32_t), byteOffset(0));
     glVertexAttribDivisor(kDrawIdAttribute, 1);
-    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indices_.get());
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, page.indices.get());
     glBindBuffer(GL_ARRAY_BUFFER, 0);
 }
+
+GLuint ChunkArena::vertexArray(std::size_t page) const { return hasPage(page) ? pages_[page]->vao.get() : 0; }
 
 void ChunkArena::ensureDrawIds(std::size_t count) {
     if (count <= drawIdCount_) return;
     const std::size_t n = std::max(count, 2 * drawIdCount_);
     std::vector<std::uint32_t> ids(n);
     std::iota(ids.begin(), ids.end(), 0u);
+    // Refilled in place: the pages' vertex arrays name this buffer.
     glBindBuffer(GL_ARRAY_BUFFER, drawIds_.get());
     glBufferData(GL_ARRAY_BUFFER, bytes(n * sizeof(std::uint32_t)), ids.data(), GL_STATIC_DRAW);
     glBindBuffer(GL_ARRAY_BUFFER, 0);
@@ -69,8 +96,12 @@ const ArenaSlot* ChunkArena::slot(ChunkId id) const {
 void ChunkArena::remove(ChunkId id) {
     auto found = slots_.find(id);
     if (found == slots_.end()) return;
-    vertexSpace_.release(found->second.firstVertex, found->second.vertexCount);
-    indexSpace_.release(found->second.firstIndex, found->second.indexCount);
+    const ArenaSlot& s = found->second;
+    Page& page = *pages_[s.page];
+    page.vertexSpace.release(s.firstVertex, s.vertexCount);
+    page.indexSpace.release(s.firstIndex, s.indexCount);
+    // A page other than the first goes when its last chunk does.
+    if (--page.chunks == 0 && s.page > 0) pages_[s.page].reset();
     slots_.erase(found);
 }
 
@@ -80,21 +111,36 @@ std::size_t ChunkArena::place(ChunkId id, const poly::Mesh& mesh) {
     const std::size_t indexCount = mesh.indices.size();
     if (vertexCount == 0 || indexCount == 0) return 0;
 
-    std::optional<std::size_t> v = vertexSpace_.allocate(vertexCount);
-    std::optional<std::size_t> i = v ? indexSpace_.allocate(indexCount) : std::nullopt;
-    if (!v || !i) {
-        if (v) vertexSpace_.release(*v, vertexCount);
-        // Packed, the live ranges leave the free space in one piece at the
-        // end; double the buffers when even that is short.
-        auto fit = [](const RangeAllocator& space, std::size_t need) {
-            std::size_t capacity = std::max<std::size_t>(space.capacity(), 1);
-            while (capacity - space.used() < need) capacity *= 2;
-            return capacity;
-        };
-        relocate(fit(vertexSpace_, vertexCount), fit(indexSpace_, indexCount));
-        v = vertexSpace_.allocate(vertexCount);
-        i = indexSpace_.allocate(indexCount);
+    // The first page that holds both ranges, else a new one.
+    ArenaSlot slot{0, 0, vertexCount, 0, indexCount};
+    auto fits = [&](std::size_t p) {
+        if (!hasPage(p)) return false;
+        Page& page = *pages_[p];
+        const std::optional<std::size_t> v = page.vertexSpace.allocate(vertexCount);
+        if (!v) return false;
+        const std::optional<std::size_t> i = page.indexSpace.allocate(indexCount);
+        if (!i) {
+            page.vertexSpace.release(*v, vertexCount);
+            return false;
+        }
+        slot.page = p;
+        slot.firstVertex = *v;
+        slot.firstIndex = *i;
+        return true;
+    };
+    bool placed = false;
+    for (std::size_t p = 0; p < pages_.size() && !placed; ++p) placed = fits(p);
+    if (!placed) {
+        std::size_t largest = firstVertices_;
+        for (const auto& page : pages_)
+            if (page) largest = std::max(largest, page->vertexSpace.capacity());
+        const std::size_t vertices = std::max(vertexCount, std::min(2 * largest, kMaxPageVertices));
+        // Indices in the first page's proportion to its vertices.
+        const std::size_t indices = std::max(indexCount, vertices * firstIndices_ / std::max<std::size_t>(firstVertices_, 1));
+        if (!fits(makePage(vertices, indices))) throw std::logic_error("chunk arena: a new page too small for its mesh");
     }
+    Page& page = *pages_[slot.page];
+    ++page.chunks;
 
     std::vector<float> interleaved(vertexCount * 6, 0.0f);
     const bool normals = mesh.normals.size() == mesh.positions.size();
@@ -102,61 +148,31 @@ std::size_t ChunkArena::place(ChunkId id, const poly::Mesh& mesh) {
         std::copy_n(&mesh.positions[3 * k], 3, &interleaved[6 * k]);
         if (normals) std::copy_n(&mesh.normals[3 * k], 3, &interleaved[6 * k + 3]);
     }
-    glBindBuffer(GL_ARRAY_BUFFER, vertices_.get());
-    glBufferSubData(GL_ARRAY_BUFFER, bytes(*v * kVertexBytes), bytes(vertexCount * kVertexBytes), interleaved.data());
+    glBindBuffer(GL_ARRAY_BUFFER, page.vertices.get());
+    glBufferSubData(GL_ARRAY_BUFFER, bytes(slot.firstVertex * kVertexBytes), bytes(vertexCount * kVertexBytes),
+                    interleaved.data());
     glBindBuffer(GL_ARRAY_BUFFER, 0);
     // The element buffer is the vertex array's: bind that, not the buffer alone.
-    glBindVertexArray(vao_.get());
-    glBufferSubData(GL_ELEMENT_ARRAY_BUFFER, bytes(*i * kIndexBytes), bytes(indexCount * kIndexBytes),
+    glBindVertexArray(page.vao.get());
+    glBufferSubData(GL_ELEMENT_ARRAY_BUFFER, bytes(slot.firstIndex * kIndexBytes), bytes(indexCount * kIndexBytes),
                     mesh.indices.data());
     glBindVertexArray(0);
-    slots_[id] = ArenaSlot{*v, vertexCount, *i, indexCount};
+    slots_[id] = slot;
     return vertexCount * kVertexBytes + indexCount * kIndexBytes;
 }
 
-void ChunkArena::relocate(std::size_t vertexCapacity, std::size_t indexCapacity) {
-    gl::Buffer newVertices = makeBuffer(GL_COPY_WRITE_BUFFER, vertexCapacity * kVertexBytes);
-    gl::Buffer newIndices = makeBuffer(GL_COPY_WRITE_BUFFER, indexCapacity * kIndexBytes);
-    // In the order the ranges lie now, so neighbours stay neighbours.
-    std::vector<ArenaSlot*> live;
-    live.reserve(slots_.size());
-    for (auto& [id, s] : slots_) live.push_back(&s);
-    std::sort(live.begin(), live.end(), [](const ArenaSlot* a, const ArenaSlot* b) { return a->firstVertex < b->firstVertex; });
-
-    RangeAllocator vertexSpace(vertexCapacity), indexSpace(indexCapacity);
-    auto copy = [](GLuint from, GLuint to, std::size_t src, std::size_t dst, std::size_t size) {
-        glBindBuffer(GL_COPY_READ_BUFFER, from);
-        glBindBuffer(GL_COPY_WRITE_BUFFER, to);
-        glCopyBufferSubData(GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER, bytes(src), bytes(dst), bytes(size));
-    };
-    for (ArenaSlot* s : live) {
-        const std::size_t v = *vertexSpace.allocate(s->vertexCount);
-        const std::size_t i = *indexSpace.allocate(s->indexCount);
-        copy(vertices_.get(), newVertices.get(), s->firstVertex * kVertexBytes, v * kVertexBytes,
-             s->vertexCount * kVertexBytes);
-        copy(indices_.get(), newIndices.get(), s->firstIndex * kIndexBytes, i * kIndexBytes,
-             s->indexCount * kIndexBytes);
-        s->firstVertex = v;
-        s->firstIndex = i;
-    }
-    glBindBuffer(GL_COPY_READ_BUFFER, 0);
-    glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
-    vertices_ = std::move(newVertices);
-    indices_ = std::move(newIndices);
-    vertexSpace_ = vertexSpace;
-    indexSpace_ = indexSpace;
-    glBindVertexArray(vao_.get());
-    bindAttributes();
-    glBindVertexArray(0);
-    ++moves_;
-}
-
 std::size_t ChunkArena::capacityBytes() const {
-    return vertexSpace_.capacity() * kVertexBytes + indexSpace_.capacity() * kIndexBytes;
+    std::size_t n = 0;
+    for (const auto& page : pages_)
+        if (page) n += page->vertexSpace.capacity() * kVertexBytes + page->indexSpace.capacity() * kIndexBytes;
+    return n;
 }
 
 std::size_t ChunkArena::usedBytes() const {
-    return vertexSpace_.used() * kVertexBytes + indexSpace_.used() * kIndexBytes;
+    std::size_t n = 0;
+    for (const auto& page : pages_)
+        if (page) n += page->vertexSpace.used() * kVertexBytes + page->indexSpace.used() * kIndexBytes;
+    return n;
 }
 
 }  // namespace hg::garden

@@ -1,21 +1,25 @@
-// Every chunk mesh of the garden in two large GPU buffers: one of vertices
-// (position and normal, interleaved) and one of indices, each sub-allocated
-// by a RangeAllocator, under one vertex array. Drawing many chunks then
-// needs no buffer or vertex-array switch between them, which is what lets
-// a whole view go out as one multi-draw (chunk_batch.h; docs/rendering.md,
-// "Batched drawing").
+// Every chunk mesh of the garden in a few large GPU buffers: pages, each
+// one buffer of vertices (position and normal, interleaved) and one of
+// indices, sub-allocated by RangeAllocators, under its own vertex array.
+// Drawing many chunks then needs a buffer switch only between pages, which
+// is what lets a whole view go out as one multi-draw a page (chunk_batch.h;
+// docs/rendering.md, "Batched drawing").
 //
-// When a mesh does not fit, the arena moves every live range into new
-// buffers, packed in order and as large as needed (twice the old size when
-// full): a copy from buffer to buffer on the GPU, no round trip through
-// memory, which also undoes fragmentation. Indices stay relative to their
-// chunk's first vertex (drawn with a base vertex), so a move rewrites no
-// index. Needs its GL context current in every call, the destructor too.
+// When a mesh fits no page, a new page is made (twice the largest live
+// one, up to kMaxPageVertices, and never short of the mesh): nothing
+// already placed moves. An arena that moved every live range into larger
+// buffers instead held the frame that outgrew it for tens of milliseconds
+// (a copy call per chunk, and a stall on buffers the GPU still read); a
+// page left empty is let go. Indices stay relative to their chunk's first
+// vertex (drawn with a base vertex). Needs its GL context current in every
+// call, the destructor too.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <unordered_map>
+#include <vector>
 
 #include "garden/render/gl_objects.h"
 #include "garden/render/range_allocator.h"
@@ -27,6 +31,7 @@ using ChunkId = std::uint64_t;
 
 // Where a chunk's mesh lies in the arena, in vertices and indices.
 struct ArenaSlot {
+    std::size_t page = 0;  // whose buffers (ChunkArena::vertexArray(page))
     std::size_t firstVertex = 0;
     std::size_t vertexCount = 0;
     std::size_t firstIndex = 0;
@@ -35,11 +40,14 @@ struct ArenaSlot {
 
 class ChunkArena {
 public:
-    // Attribute locations of the vertex array: position, normal, draw id.
+    // Attribute locations of the vertex arrays: position, normal, draw id.
     static constexpr GLuint kPositionAttribute = 0;
     static constexpr GLuint kNormalAttribute = 1;
     static constexpr GLuint kDrawIdAttribute = 2;
+    // The largest page made for meshes that fit it: 48 MiB of vertices.
+    static constexpr std::size_t kMaxPageVertices = std::size_t{1} << 21;
 
+    // The first page's size, in vertices and indices.
     explicit ChunkArena(std::size_t vertices = std::size_t{1} << 16, std::size_t indices = std::size_t{3} << 16);
     ~ChunkArena();
     ChunkArena(const ChunkArena&) = delete;
@@ -53,29 +61,30 @@ public:
     // Nothing for an id the arena does not hold (or holds empty).
     const ArenaSlot* slot(ChunkId id) const;
 
-    // The vertex array over both buffers; attribute kDrawIdAttribute reads
-    // a buffer holding 0, 1, 2, ... one per instance (see ensureDrawIds).
-    GLuint vertexArray() const { return vao_.get(); }
+    // Page slots (a page let go leaves its slot empty, for the next one).
+    std::size_t pages() const { return pages_.size(); }
+    bool hasPage(std::size_t page) const { return page < pages_.size() && pages_[page] != nullptr; }
+    // The vertex array over a page's buffers; attribute kDrawIdAttribute
+    // reads a buffer holding 0, 1, 2, ... one per instance (ensureDrawIds).
+    GLuint vertexArray(std::size_t page) const;
     // At least `count` entries in the draw-id buffer.
     void ensureDrawIds(std::size_t count);
 
     std::size_t capacityBytes() const;
     std::size_t usedBytes() const;
-    std::size_t moves() const { return moves_; }  // relocations so far (growth or compaction)
+    std::size_t pagesMade() const { return pagesMade_; }  // pages made so far, the first included
 
 private:
-    void relocate(std::size_t vertexCapacity, std::size_t indexCapacity);
-    void bindAttributes();
+    struct Page;
+    std::size_t makePage(std::size_t vertices, std::size_t indices);
+    void bindAttributes(const Page& page);
 
-    gl::VertexArray vao_;
-    gl::Buffer vertices_;
-    gl::Buffer indices_;
+    std::vector<std::unique_ptr<Page>> pages_;  // null: let go
     gl::Buffer drawIds_;
     std::size_t drawIdCount_ = 0;
-    RangeAllocator vertexSpace_;
-    RangeAllocator indexSpace_;
+    std::size_t firstVertices_, firstIndices_;  // the first page's size
     std::unordered_map<ChunkId, ArenaSlot> slots_;
-    std::size_t moves_ = 0;
+    std::size_t pagesMade_ = 0;
 };
 
 }  // namespace hg::garden

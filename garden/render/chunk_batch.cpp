@@ -29,6 +29,7 @@ ChunkBatch::~ChunkBatch() = default;
 void ChunkBatch::clear() {
     commands_.clear();
     recordOf_.clear();
+    pageOf_.clear();
     records_.clear();
 }
 
@@ -46,41 +47,33 @@ void ChunkBatch::add(const ArenaSlot& slot, std::size_t record) {
     c.instanceCount = 1;
     c.firstIndex = static_cast<GLuint>(slot.firstIndex);
     c.baseVertex = static_cast<GLint>(slot.firstVertex);
-    c.baseInstance = 0;  // set per group in send()
+    c.baseInstance = 0;  // set as its page of its group is drawn
     commands_.push_back(c);
     recordOf_.push_back(record);
+    pageOf_.push_back(slot.page);
 }
 
-void ChunkBatch::send(std::size_t first, std::size_t count, std::size_t recordFirst, std::size_t recordCount,
-                      bool commands) {
+void ChunkBatch::sendRecords(std::size_t recordFirst, std::size_t recordCount) {
     constexpr std::size_t kFloats = 4 * kDrawRecordTexels;
     // Orphan and refill: the previous view's draws may still be reading.
     glBindBuffer(GL_TEXTURE_BUFFER, recordBuffer_.get());
     glBufferData(GL_TEXTURE_BUFFER, static_cast<GLsizeiptr>(recordCount * kFloats * sizeof(float)),
                  records_.data() + recordFirst * kFloats, GL_STREAM_DRAW);
     glBindBuffer(GL_TEXTURE_BUFFER, 0);
-    // A command's base instance is its record's index within the group:
-    // the identity draw-id buffer hands that to the shaders.
-    for (std::size_t k = 0; k < count; ++k)
-        commands_[first + k].baseInstance = static_cast<GLuint>(recordOf_[first + k] - recordFirst);
-    // GL 3.3 has no indirect buffer binding at all.
-    if (commands) {
-        glBindBuffer(GL_DRAW_INDIRECT_BUFFER, commandBuffer_.get());
-        glBufferData(GL_DRAW_INDIRECT_BUFFER, static_cast<GLsizeiptr>(count * sizeof(Command)),
-                     commands_.data() + first, GL_STREAM_DRAW);
-        glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
-    }
+}
+
+void ChunkBatch::bindPage(const ChunkArena& arena, std::size_t page, bool multiDraw) {
+    glBindVertexArray(arena.vertexArray(page));
+    if (multiDraw)
+        glEnableVertexAttribArray(ChunkArena::kDrawIdAttribute);
+    else
+        glDisableVertexAttribArray(ChunkArena::kDrawIdAttribute);
 }
 
 std::size_t ChunkBatch::draw(ChunkArena& arena, bool multiDraw) {
     if (commands_.empty()) return 0;
     std::size_t calls = 0;
     arena.ensureDrawIds(std::min(maxRecords_, records()));
-    glBindVertexArray(arena.vertexArray());
-    if (multiDraw)
-        glEnableVertexAttribArray(ChunkArena::kDrawIdAttribute);
-    else
-        glDisableVertexAttribArray(ChunkArena::kDrawIdAttribute);
     glActiveTexture(GL_TEXTURE0 + kDrawRecordUnit);
     glBindTexture(GL_TEXTURE_BUFFER, recordTexture_.get());
     glActiveTexture(GL_TEXTURE0);
@@ -90,16 +83,33 @@ std::size_t ChunkBatch::draw(ChunkArena& arena, bool multiDraw) {
         const std::size_t recordFirst = recordOf_[first];
         std::size_t end = first;
         while (end < commands_.size() && recordOf_[end] - recordFirst < maxRecords_) ++end;
-        const std::size_t count = end - first;
-        const std::size_t recordCount = recordOf_[end - 1] - recordFirst + 1;
-        send(first, count, recordFirst, recordCount, multiDraw);
+        sendRecords(recordFirst, recordOf_[end - 1] - recordFirst + 1);
         if (multiDraw) {
-            glBindBuffer(GL_DRAW_INDIRECT_BUFFER, commandBuffer_.get());
-            glMultiDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT, nullptr, static_cast<GLsizei>(count), 0);
-            glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
-            ++calls;
+            // One call a page: a command's base instance is its record's
+            // index within the group, which the identity draw-id buffer
+            // hands to the shaders.
+            for (std::size_t page = 0; page < arena.pages(); ++page) {
+                pageCommands_.clear();
+                for (std::size_t k = first; k < end; ++k) {
+                    if (pageOf_[k] != page) continue;
+                    Command c = commands_[k];
+                    c.baseInstance = static_cast<GLuint>(recordOf_[k] - recordFirst);
+                    pageCommands_.push_back(c);
+                }
+                if (pageCommands_.empty()) continue;
+                bindPage(arena, page, true);
+                glBindBuffer(GL_DRAW_INDIRECT_BUFFER, commandBuffer_.get());
+                glBufferData(GL_DRAW_INDIRECT_BUFFER, static_cast<GLsizeiptr>(pageCommands_.size() * sizeof(Command)),
+                             pageCommands_.data(), GL_STREAM_DRAW);
+                glMultiDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT, nullptr,
+                                            static_cast<GLsizei>(pageCommands_.size()), 0);
+                glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
+                ++calls;
+            }
         } else {
+            std::size_t bound = arena.pages();  // none yet
             for (std::size_t k = first; k < end; ++k) {
+                if (pageOf_[k] != bound) bindPage(arena, bound = pageOf_[k], false);
                 const Command& c = commands_[k];
                 // The array is disabled: every vertex reads this constant.
                 glVertexAttribI1ui(ChunkArena::kDrawIdAttribute, static_cast<GLuint>(recordOf_[k] - recordFirst));

@@ -1,11 +1,11 @@
 // One view's chunk draws as a batch: records of transform and material in
 // a texture buffer (one per placement: every chunk of a sculpture shares
 // its sculpture's), and per chunk a command naming its range in the chunk
-// arena and its record. Drawn with one glMultiDrawElementsIndirect where
-// GL 4.3 (or ARB_multi_draw_indirect with ARB_base_instance) is present,
-// each command's base instance selecting its record; else, on GL 3.3, one
-// glDrawElementsBaseVertex per chunk with the record's index as a constant
-// attribute. Both paths use the same programs and records, so they give the
+// arena and its record. Drawn with one glMultiDrawElementsIndirect per
+// arena page where GL 4.3 (or ARB_multi_draw_indirect with
+// ARB_base_instance) is present, each command's base instance selecting
+// its record; else, on GL 3.3, one glDrawElementsBaseVertex per chunk with
+// the record's index as a constant attribute. Both paths use the same programs and records, so they give the
 // same pixels (docs/rendering.md, "Batched drawing").
 //
 // Programs that draw a batch declare HG_DRAW_RECORD_GLSL (shaders.h) and
@@ -66,13 +66,16 @@ private:
         GLint baseVertex;
         GLuint baseInstance;
     };
-    // Sends the records [recordFirst, recordFirst + recordCount) and, for a
-    // multi-draw, the commands [first, first + count) with base instances
-    // counted from recordFirst.
-    void send(std::size_t first, std::size_t count, std::size_t recordFirst, std::size_t recordCount, bool commands);
+    // Sends the records [recordFirst, recordFirst + recordCount).
+    void sendRecords(std::size_t recordFirst, std::size_t recordCount);
+    // Binds `page`'s vertex array, the draw-id attribute an array for a
+    // multi-draw and a constant otherwise (vertex-array state).
+    static void bindPage(const ChunkArena& arena, std::size_t page, bool multiDraw);
 
     std::vector<Command> commands_;
     std::vector<std::size_t> recordOf_;  // per command
+    std::vector<std::size_t> pageOf_;    // per command: its arena page
+    std::vector<Command> pageCommands_;  // one page's commands of a group, as sent
     std::vector<float> records_;         // kDrawRecordTexels * 4 floats per record
     gl::Buffer recordBuffer_;
     gl::Texture recordTexture_;

@@ -641,11 +641,11 @@ void Renderer::drawEdges() {
     glEnable(GL_DEPTH_TEST);
     glEnable(GL_CULL_FACE);  // back faces' edges stay hidden
     glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
-    glBindVertexArray(arena_->vertexArray());
     for (const SceneDraw& d : sceneDraws_) {
         if (d.ground || d.castOnly || d.material.edges == 0) continue;
         const ArenaSlot* slot = arena_->slot(d.id);
         if (slot == nullptr) continue;
+        glBindVertexArray(arena_->vertexArray(slot->page));
         setMat4(flat_.model, d.model);
         glDrawElementsBaseVertex(GL_TRIANGLES, static_cast<GLsizei>(slot->indexCount), GL_UNSIGNED_INT,
                                  byteOffset(slot->firstIndex * sizeof(std::uint32_t)),

@@ -1,12 +1,13 @@
 // Batched drawing: every chunk in one arena, a view's chunks in one
 // multi-draw. The multi-draw and the one-call-a-chunk fallback give the
-// same pixels; the arena keeps every chunk's bytes through growth,
-// relocation and reuse (read back from the GPU).
+// same pixels; the arena keeps every chunk's bytes, where it was placed,
+// through growth into new pages and reuse (read back from the GPU).
 #include <gtest/gtest.h>
 
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <cstring>
+#include <set>
 #include <vector>
 
 #include "garden/render/chunk_arena.h"
@@ -134,21 +135,36 @@ TEST_F(BatchedDrawing, OnlyChunksWithinTheShadowDistanceCastAndTheRestStillDraw)
     EXPECT_LT(shaded, lawn - 30) << "its shadow shows only when it may cast";
 }
 
-TEST_F(BatchedDrawing, ChunksSurviveTheArenaGrowingAndMoving) {
+TEST_F(BatchedDrawing, ChunksSurviveTheArenaGrowing) {
     // Enough chunks to outgrow the first buffers several times, with drops
     // and new versions between: the picture must equal that of a renderer
-    // that only ever held the final meshes.
+    // that only ever held the final meshes, which span pages.
     const std::size_t startCapacity = renderer_->arena().capacityBytes();
+    uploadShapes();
     for (int round = 0; round < 3; ++round)
         for (ChunkId id = 10; id < 60; ++id) {
             renderer_->upload(id, static_cast<std::uint64_t>(round + 1),
                               uvSphereMesh(0.2f + 0.01f * float(id % 7), 40 + round * 8, 20 + round * 4));
             if (id % 3 == 0) renderer_->drop(id - 1);
         }
-    EXPECT_GT(renderer_->arena().moves(), 0u) << "the arena had to grow";
+    EXPECT_GT(renderer_->arena().pagesMade(), 1u) << "the arena had to grow";
     EXPECT_GT(renderer_->arena().capacityBytes(), startCapacity);
-    uploadShapes();
+    // Meshes of shape 3's size until one no longer fits the shapes' page:
+    // shape 3 placed again then goes to another page.
+    const poly::Mesh three = uvSphereMesh(0.4f, 32, 16);
+    const std::size_t first = renderer_->arena().slot(1)->page;
+    renderer_->drop(3);  // its own range goes to the fillers
+    ChunkId filler = 1000;
+    while (renderer_->arena().slot(filler - 1) == nullptr || renderer_->arena().slot(filler - 1)->page == first)
+        renderer_->upload(filler++, 1, three);
+    renderer_->upload(3, 2, three);
+    for (ChunkId id = 1000; id < filler; ++id) renderer_->drop(id);
+    std::set<std::size_t> pages;
+    for (ChunkId id = 1; id <= 4; ++id) pages.insert(renderer_->arena().slot(id)->page);
     const std::vector<std::uint8_t> churned = renderScene(true, everything());
+    EXPECT_EQ(lastStats_.drawCalls, pages.size() + 1) << "one multi-draw a page, and the ground";
+    EXPECT_EQ(renderScene(false, everything()), churned) << "a call a chunk, page by page";
+    EXPECT_GT(pages.size(), 1u) << "the scene spans pages";
 
     renderer_ = std::make_unique<Renderer>();
     uploadShapes();
@@ -156,25 +172,34 @@ TEST_F(BatchedDrawing, ChunksSurviveTheArenaGrowingAndMoving) {
     EXPECT_EQ(churned, fresh);
 }
 
-TEST_F(BatchedDrawing, TheArenaKeepsEveryChunksBytesThroughRelocation) {
-    ChunkArena arena(256, 512);  // small: placing a few meshes moves it
+// A small arena outgrows its first page at once: later meshes go to new
+// pages, and no chunk placed ever moves (an arena that moved them all held
+// the frame that outgrew it); a page whose chunks are all gone is let go.
+TEST_F(BatchedDrawing, TheArenaKeepsEveryChunkWhereItWasPlacedAcrossPages) {
+    ChunkArena arena(256, 512);
     std::vector<poly::Mesh> meshes;
     for (int k = 0; k < 12; ++k) meshes.push_back(uvSphereMesh(0.1f * float(k + 1), 8 + k, 4 + k / 2));
-    for (std::size_t k = 0; k < meshes.size(); ++k) arena.place(k, meshes[k]);
+    std::vector<ArenaSlot> placed;
+    for (std::size_t k = 0; k < meshes.size(); ++k) {
+        arena.place(k, meshes[k]);
+        placed.push_back(*arena.slot(k));
+        for (std::size_t j = 0; j < k; ++j) {
+            const ArenaSlot* s = arena.slot(j);
+            ASSERT_EQ(s->page, placed[j].page) << "chunk " << j << " moved as chunk " << k << " came";
+            ASSERT_EQ(s->firstVertex, placed[j].firstVertex) << "chunk " << j;
+            ASSERT_EQ(s->firstIndex, placed[j].firstIndex) << "chunk " << j;
+        }
+    }
+    EXPECT_GT(arena.pagesMade(), 2u);
     arena.remove(3);
     arena.remove(7);
     meshes[5] = uvSphereMesh(2.0f, 30, 15);
     arena.place(5, meshes[5]);
-    EXPECT_GT(arena.moves(), 1u);
     EXPECT_EQ(arena.slot(3), nullptr);
     EXPECT_EQ(arena.slot(7), nullptr);
+    EXPECT_GE(arena.capacityBytes(), arena.usedBytes());
 
-    // Read both buffers back through the vertex array's bindings.
-    glBindVertexArray(arena.vertexArray());
-    GLint vertexBuffer = 0, indexBuffer = 0;
-    glGetVertexAttribiv(ChunkArena::kPositionAttribute, GL_VERTEX_ATTRIB_ARRAY_BUFFER_BINDING, &vertexBuffer);
-    glGetIntegerv(GL_ELEMENT_ARRAY_BUFFER_BINDING, &indexBuffer);
-    glBindVertexArray(0);
+    // Read each chunk back through its page's vertex array's bindings.
     for (std::size_t k = 0; k < meshes.size(); ++k) {
         if (k == 3 || k == 7) continue;
         const ArenaSlot* s = arena.slot(k);
@@ -182,6 +207,11 @@ TEST_F(BatchedDrawing, TheArenaKeepsEveryChunksBytesThroughRelocation) {
         const poly::Mesh& m = meshes[k];
         ASSERT_EQ(s->vertexCount, m.vertexCount());
         ASSERT_EQ(s->indexCount, m.indices.size());
+        glBindVertexArray(arena.vertexArray(s->page));
+        GLint vertexBuffer = 0, indexBuffer = 0;
+        glGetVertexAttribiv(ChunkArena::kPositionAttribute, GL_VERTEX_ATTRIB_ARRAY_BUFFER_BINDING, &vertexBuffer);
+        glGetIntegerv(GL_ELEMENT_ARRAY_BUFFER_BINDING, &indexBuffer);
+        glBindVertexArray(0);
         std::vector<float> v(6 * s->vertexCount);
         glBindBuffer(GL_ARRAY_BUFFER, static_cast<GLuint>(vertexBuffer));
         glGetBufferSubData(GL_ARRAY_BUFFER, static_cast<GLintptr>(s->firstVertex * 6 * sizeof(float)),
@@ -198,6 +228,15 @@ TEST_F(BatchedDrawing, TheArenaKeepsEveryChunksBytesThroughRelocation) {
             }
         EXPECT_EQ(i, m.indices) << "chunk " << k;
     }
+
+    // Every chunk of a later page gone: the page goes with them.
+    const std::size_t page = arena.slot(11)->page;
+    ASSERT_GT(page, 0u);
+    const std::size_t before = arena.capacityBytes();
+    for (std::size_t k = 0; k < meshes.size(); ++k)
+        if (arena.slot(k) && arena.slot(k)->page == page) arena.remove(k);
+    EXPECT_FALSE(arena.hasPage(page));
+    EXPECT_LT(arena.capacityBytes(), before);
     EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
 }
 
