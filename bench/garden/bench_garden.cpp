@@ -726,8 +726,9 @@ ReplayScript scaleWalk(const Options& o, int count, double spacing) {
 // Frames from the start pose until the session is idle (nothing left to
 // sample, mesh or upload), at most 90 a second: the garden settling as a
 // display would pace it. The number of frames, or 0 when it did not settle
-// within --max-frames.
-std::size_t settle(const Options& o, Scene& scene, const ReplayScript& walk) {
+// within --max-frames. With `frameMs`, each frame's time (what a visitor
+// feels while the garden loads).
+std::size_t settle(const Options& o, Scene& scene, const ReplayScript& walk, std::vector<double>* frameMs = nullptr) {
     ReplayScript start = baseScript(o);
     start.steps.assign(walk.steps.begin(), walk.steps.begin() + 1);
     ReplayResult r = runReplay(start, *scene.session, scene.recorder.get(), ReplayOptions{});
@@ -736,6 +737,7 @@ std::size_t settle(const Options& o, Scene& scene, const ReplayScript& walk) {
     for (; !scene.session->idle() && frames < static_cast<std::size_t>(o.maxFrames); ++frames) {
         const auto f0 = Clock::now();
         scene.session->frame(FrameInput{}, *scene.recorder);
+        if (frameMs) frameMs->push_back(std::chrono::duration<double, std::milli>(Clock::now() - f0).count());
         std::this_thread::sleep_until(f0 + std::chrono::microseconds(11111));
     }
     scene.recorder->clear();
@@ -779,14 +781,14 @@ void scaleTable(const Options& o, nlohmann::json& json) {
     auto head = [&] {
         if (headed) return;
         headed = true;
-        std::printf("| sculptures | level error (px) | chunks | first frame (s) | loading at first frame | settled (s) | %sinput | lod | remesh | %stotal | "
+        std::printf("| sculptures | level error (px) | chunks | first frame (s) | loading at first frame | settled (s) | frame while settling | %sinput | lod | remesh | %stotal | "
                     "frames over 11.1 ms | chunks tested by LOD (mean) | triangles shown (mean) | %snew mesh KiB per frame (max) | "
                     "peak memory (MiB) | held after the walk: grids / levels / meshes / morph sources (MiB), grids on disk |\n",
                     gl ? "draw | " : "", gl ? "upload | render | GPU ms | " : "",
                     gl ? "chunks drawn (mean) | impostors drawn (mean) | sculptures hidden (mean) | triangles drawn (mean) | "
                          "draw calls (mean) | "
                        : "");
-        std::printf("|---:|---:|---:|---:|---:|---:|%s---|---|---|%s---|---:|---:|---:|%s---:|---:|---|\n", gl ? "---|" : "",
+        std::printf("|---:|---:|---:|---:|---:|---:|---|%s---|---|---|%s---|---:|---:|---:|%s---:|---:|---|\n", gl ? "---|" : "",
                     gl ? "---|---|---|" : "", gl ? "---:|---:|---:|---:|---:|" : "");
     };
     for (int n : o.scaleCounts)
@@ -833,7 +835,8 @@ void scaleTable(const Options& o, nlohmann::json& json) {
         ReplayResult r = runReplay(first, *scene.session, scene.recorder.get(), ReplayOptions{});
         const double firstFrame = std::chrono::duration<double>(Clock::now() - t0).count();
         const std::size_t loadingAtFirst = r.stats.empty() ? 0 : r.stats.back().sculpturesLoading;
-        const std::size_t settleFrames = r.ok() ? settle(o, scene, walk) : 0;
+        std::vector<double> settlingMs;
+        const std::size_t settleFrames = r.ok() ? settle(o, scene, walk, &settlingMs) : 0;
         const double settled = std::chrono::duration<double>(Clock::now() - t0).count();
         if (settleFrames == 0) {
             std::fprintf(stderr, "%s: %s\n", name.c_str(), r.ok() ? "not settled within --max-frames" : r.error.c_str());
@@ -917,8 +920,9 @@ void scaleTable(const Options& o, nlohmann::json& json) {
             char errorCell[32];
             std::snprintf(errorCell, sizeof errorCell, "%.2f", levelError);
             const std::string levelErrorCell = levelError > 0.0 ? errorCell : "none (voxel size)";
-            std::printf("| %d | %s | %zu | %.2f | %zu | %.1f (%zu frames) | %s%s | %s | %s | %s%s | %zu of %zu | %.0f | %.0f | %s%.0f | %.0f | %s |\n",
-                        n, levelErrorCell.c_str(), chunks, firstFrame, loadingAtFirst, settled, settleFrames, drawColumns.c_str(),
+            std::printf("| %d | %s | %zu | %.2f | %zu | %.1f (%zu frames) | %s | %s%s | %s | %s | %s%s | %zu of %zu | %.0f | %.0f | %s%.0f | %.0f | %s |\n",
+                        n, levelErrorCell.c_str(), chunks, firstFrame, loadingAtFirst, settled, settleFrames,
+                        spreadCell(spread(settlingMs)).c_str(), drawColumns.c_str(),
                         spreadCell(stage(Stage::Input)).c_str(), spreadCell(stage(Stage::Lod)).c_str(),
                         spreadCell(stage(Stage::Remesh)).c_str(), glColumns.c_str(), spreadCell(spread(totals)).c_str(),
                         over, run.frames.size(), spread(visited).mean, spread(shown).mean, countColumns.c_str(),
@@ -933,6 +937,7 @@ void scaleTable(const Options& o, nlohmann::json& json) {
                                      {"progressive", o.scaleProgressive}, {"loading_at_first_frame", loadingAtFirst},
                                      {"upload_bytes_per_frame", o.uploadBytes}, {"mesh_bytes_shown_max", bytesMax},
                                      {"settle_frames", settleFrames}, {"walk_frames", run.frames.size()},
+                                     {"settling_frame_ms", spreadJson(spread(settlingMs))},
                                      {"offscreen", gl}, {"draw", modes[m].draw}, {"quality", gl ? o.quality : ""},
                                      {"impostor_distance", modes[m].cards},
                                      {"impostors_drawn", spreadJson(spread(cards))},
