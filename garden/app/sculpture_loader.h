@@ -8,10 +8,10 @@
 // same file, body, a[], box, resolution and band) are sampled once: the
 // grid is kept while a copy still waits, and each copy gets a deep copy
 // of it, bit for bit what its own sampling would give (and a copy of its
-// meshing). The worker keeps at most kAhead finished grids that the frame has not taken (a copy is made
-// in milliseconds: without the limit a garden of copies would pile up its
-// grids here, outside the memory budget's reach), except while wait()
-// wants them all. With a MeshingShape the worker also builds each grid's
+// meshing). The worker keeps at most kAhead finished grids that the frame
+// has not taken (a copy is made in milliseconds: without the limit a
+// garden of copies would pile up its grids here, outside the memory
+// budget's reach), except while wait() wants them all. With a MeshingShape the worker also builds each grid's
 // coarse levels, chunks and level errors (sculpture_meshing.h), so the
 // frame that takes it only attaches them.
 #pragma once

@@ -47,7 +47,7 @@ std::size_t ChunkLayout::index(const ChunkKey& k) const {
 
 std::vector<std::size_t> ChunkLayout::faceNeighbours(std::size_t i) const {
     std::vector<std::size_t> out;
-    forEachFaceNeighbour(i, [&out](std::size_t n) { out.push_back(n); });
+    forEachFaceNeighbour(i, [&out](std::size_t n, int) { out.push_back(n); });
     return out;
 }
 

@@ -30,17 +30,18 @@ public:
     bool contains(const ChunkKey& k) const;
     // The six face neighbours that exist, as indices.
     std::vector<std::size_t> faceNeighbours(std::size_t index) const;
-    // f(neighbour index) for each of them, in the same order (no allocation).
+    // f(neighbour index, face) for each of them, in the same order, the
+    // face numbered -x, +x, -y, +y, -z, +z from 0 (no allocation).
     template <class F>
     void forEachFaceNeighbour(std::size_t index, F&& f) const {
         const std::size_t nx = static_cast<std::size_t>(n_[0]), ny = static_cast<std::size_t>(n_[1]);
         const std::size_t x = index % nx, y = index / nx % ny, z = index / (nx * ny);
-        if (x > 0) f(index - 1);
-        if (x + 1 < nx) f(index + 1);
-        if (y > 0) f(index - nx);
-        if (y + 1 < ny) f(index + nx);
-        if (z > 0) f(index - nx * ny);
-        if (z + 1 < static_cast<std::size_t>(n_[2])) f(index + nx * ny);
+        if (x > 0) f(index - 1, 0);
+        if (x + 1 < nx) f(index + 1, 1);
+        if (y > 0) f(index - nx, 2);
+        if (y + 1 < ny) f(index + nx, 3);
+        if (z > 0) f(index - nx * ny, 4);
+        if (z + 1 < static_cast<std::size_t>(n_[2])) f(index + nx * ny, 5);
     }
     // The chunk's voxels (index space) and its extent in the model frame.
     voxel::IndexBox voxels(std::size_t index) const;

@@ -15,31 +15,19 @@ namespace hg::poly {
 std::vector<ChunkLod> chunkLods(const ChunkLayout& layout, const std::vector<int>& levels) {
     if (levels.size() != layout.count()) throw std::invalid_argument("one level per chunk expected");
     std::vector<ChunkLod> out(levels.size());
-    // Walked in the layout's order with strides, not a key and six lookups
-    // a chunk: the LOD stage asks this for every sculpture that takes new levels.
-    const std::array<int, 3>& n = layout.dims();
-    const std::size_t nx = static_cast<std::size_t>(n[0]), ny = static_cast<std::size_t>(n[1]),
-                      nz = static_cast<std::size_t>(n[2]);
-    const std::size_t stride[3] = {1, nx, nx * ny};
-    std::size_t i = 0;
-    for (std::size_t z = 0; z < nz; ++z)
-        for (std::size_t y = 0; y < ny; ++y)
-            for (std::size_t x = 0; x < nx; ++x, ++i) {
-                out[i].level = levels[i];
-                const std::size_t at[3] = {x, y, z}, size[3] = {nx, ny, nz};
-                for (int f = 0; f < kChunkFaces; ++f) {  // -x, +x, -y, +y, -z, +z
-                    const int a = f / 2;
-                    const bool up = f % 2 != 0;
-                    if (up ? at[a] + 1 >= size[a] : at[a] == 0) continue;
-                    const std::size_t j = up ? i + stride[a] : i - stride[a];
-                    const int ln = levels[j];
-                    if (std::abs(ln - levels[i]) > 1)
-                        throw std::invalid_argument("chunks " + std::to_string(i) + " and " + std::to_string(j) +
-                                                    " are face neighbours " + std::to_string(std::abs(ln - levels[i])) +
-                                                    " levels apart (at most 1)");
-                    if (ln == levels[i] - 1) out[i].transitionFaces = static_cast<std::uint8_t>(out[i].transitionFaces | (1 << f));
-                }
-            }
+    // The layout's own neighbour walk (no key and six lookups a chunk):
+    // the LOD stage asks this for every sculpture that takes new levels.
+    for (std::size_t i = 0; i < levels.size(); ++i) {
+        out[i].level = levels[i];
+        layout.forEachFaceNeighbour(i, [&](std::size_t j, int f) {
+            const int ln = levels[j];
+            if (std::abs(ln - levels[i]) > 1)
+                throw std::invalid_argument("chunks " + std::to_string(i) + " and " + std::to_string(j) +
+                                            " are face neighbours " + std::to_string(std::abs(ln - levels[i])) +
+                                            " levels apart (at most 1)");
+            if (ln == levels[i] - 1) out[i].transitionFaces = static_cast<std::uint8_t>(out[i].transitionFaces | (1 << f));
+        });
+    }
     return out;
 }
 
