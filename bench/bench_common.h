@@ -6,7 +6,9 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <cmath>
 #include <string>
+#include <vector>
 
 namespace hg::bench {
 
@@ -42,6 +44,37 @@ double bestOf(int repeat, F f) {
         best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
     }
     return best;
+}
+
+// The value at fraction p of v's sorted values (nearest rank).
+inline double percentile(std::vector<double> v, double p) {
+    if (v.empty()) return 0.0;
+    std::sort(v.begin(), v.end());
+    const double n = static_cast<double>(v.size());
+    return v[std::min(v.size() - 1, static_cast<std::size_t>(std::max(1.0, std::ceil(p * n))) - 1)];
+}
+
+// Per-frame times as the frame-budget tables give them.
+struct Spread {
+    double mean = 0.0, p95 = 0.0, p99 = 0.0, max = 0.0;
+};
+inline Spread spread(const std::vector<double>& v) {
+    Spread s;
+    if (v.empty()) return s;
+    for (double x : v) {
+        s.mean += x;
+        s.max = std::max(s.max, x);
+    }
+    s.mean /= static_cast<double>(v.size());
+    s.p95 = percentile(v, 0.95);
+    s.p99 = percentile(v, 0.99);
+    return s;
+}
+// "mean / p95 / p99 / max".
+inline std::string spreadCell(const Spread& s) {
+    char b[80];
+    std::snprintf(b, sizeof b, "%.2f / %.2f / %.2f / %.1f", s.mean, s.p95, s.p99, s.max);
+    return b;
 }
 
 }  // namespace hg::bench

@@ -92,6 +92,9 @@ namespace {
 
 using namespace hg;
 using namespace hg::garden;
+using bench::Spread;
+using bench::spread;
+using bench::spreadCell;
 using Clock = std::chrono::steady_clock;
 
 constexpr std::uint64_t kUnlimited = std::uint64_t{1} << 40;
@@ -119,6 +122,9 @@ struct Options {
     // Scale rows: SessionSettings::levelErrorPixels, a garden each (0: levels by voxel size alone).
     std::vector<double> levelErrors{SessionSettings{}.levelErrorPixels};
     std::string quality = "high";
+    // Offscreen: GardenView::setArenaCompactBytes (0: the arena never
+    // compacted; none: the view's default).
+    std::optional<std::size_t> arenaCompactBytes;
 };
 
 template <class T>
@@ -155,6 +161,7 @@ bool parseOptions(int argc, char** argv, Options& o) {
         else if (a == "--scale-resolution" && hasValue) o.scaleResolution = std::max(16, std::atoi(argv[++i]));
         else if (a == "--scale-frames" && hasValue) o.scaleFrames = std::max(10, std::atoi(argv[++i]));
         else if (a == "--upload-bytes" && hasValue) o.uploadBytes = std::strtoull(argv[++i], nullptr, 10);
+        else if (a == "--arena-compact-bytes" && hasValue) o.arenaCompactBytes = std::strtoull(argv[++i], nullptr, 10);
         else if (a == "--memory-budget" && hasValue) o.memoryBudgetMiB = std::strtoull(argv[++i], nullptr, 10);
         else if (a == "--impostor-distance" && hasValue) o.impostorDistances = parseList<double>(argv[++i]);
         else if (a == "--level-error" && hasValue) o.levelErrors = parseList<double>(argv[++i]);
@@ -195,7 +202,8 @@ bool parseOptions(int argc, char** argv, Options& o) {
                      "       [--samples N,N,...] [--resolutions R,R] [--scale N,N,...] [--scale-resolution R]\n"
                      "       [--scale-frames N] [--scale-load start|progressive] [--upload-bytes N]\n"
                      "       [--draw multi|per-chunk|both] [--quality low|medium|high] [--memory-budget MIB]\n"
-                     "       [--impostor-distance M,M,...] [--hidden on|off|both] [--level-error P,P,...]\n");
+                     "       [--impostor-distance M,M,...] [--hidden on|off|both] [--level-error P,P,...]\n"
+                     "       [--arena-compact-bytes N]\n");
         return false;
     }
     return true;
@@ -684,28 +692,7 @@ std::uint64_t peakResidentBytes() {
 }
 void resetPeakResident() { std::ofstream("/proc/self/clear_refs") << "5"; }
 
-double percentile(std::vector<double> v, double p) {
-    if (v.empty()) return 0.0;
-    std::sort(v.begin(), v.end());
-    const double n = static_cast<double>(v.size());
-    return v[std::min(v.size() - 1, static_cast<std::size_t>(std::max(1.0, std::ceil(p * n))) - 1)];
-}
 
-struct Spread {
-    double mean = 0.0, p95 = 0.0, p99 = 0.0, max = 0.0;
-};
-Spread spread(const std::vector<double>& v) {
-    Spread s;
-    if (v.empty()) return s;
-    for (double x : v) {
-        s.mean += x;
-        s.max = std::max(s.max, x);
-    }
-    s.mean /= static_cast<double>(v.size());
-    s.p95 = percentile(v, 0.95);
-    s.p99 = percentile(v, 0.99);
-    return s;
-}
 nlohmann::json spreadJson(const Spread& s) { return {{"mean", s.mean}, {"p95", s.p95}, {"p99", s.p99}, {"max", s.max}}; }
 
 // The walk: down the aisle between the middle columns, from the start
@@ -744,11 +731,6 @@ std::size_t settle(const Options& o, Scene& scene, const ReplayScript& walk, std
     return scene.session->idle() ? frames : 0;
 }
 
-std::string spreadCell(const Spread& s) {
-    char b[80];
-    std::snprintf(b, sizeof b, "%.2f / %.2f / %.2f / %.1f", s.mean, s.p95, s.p99, s.max);
-    return b;
-}
 
 // The scale garden of `n` copies for row `name`; none (and a message) when it cannot be read.
 std::optional<GardenLoad> scaleLoad(const Options& o, const std::string& name, int n, double spacing) {
@@ -783,13 +765,14 @@ void scaleTable(const Options& o, nlohmann::json& json) {
         headed = true;
         std::printf("| sculptures | level error (px) | chunks | first frame (s) | loading at first frame | settled (s) | frame while settling | %sinput | lod | remesh | %stotal | "
                     "frames over 11.1 ms | chunks tested by LOD (mean) | triangles shown (mean) | %snew mesh KiB per frame (max) | "
-                    "peak memory (MiB) | held after the walk: grids / levels / meshes / morph sources (MiB), grids on disk |\n",
+                    "peak memory (MiB) | held after the walk: grids / levels / meshes / morph sources (MiB), grids on disk |%s\n",
                     gl ? "draw | " : "", gl ? "upload | render | GPU ms | " : "",
                     gl ? "chunks drawn (mean) | impostors drawn (mean) | sculptures hidden (mean) | triangles drawn (mean) | "
                          "draw calls (mean) | "
-                       : "");
-        std::printf("|---:|---:|---:|---:|---:|---:|---|%s---|---|---|%s---|---:|---:|---:|%s---:|---:|---|\n", gl ? "---|" : "",
-                    gl ? "---|---|---|" : "", gl ? "---:|---:|---:|---:|---:|" : "");
+                       : "",
+                    gl ? " GPU arena after the walk: held / used (MiB), pages (made), moved (MiB) |" : "");
+        std::printf("|---:|---:|---:|---:|---:|---:|---|%s---|---|---|%s---|---:|---:|---:|%s---:|---:|---|%s\n", gl ? "---|" : "",
+                    gl ? "---|---|---|" : "", gl ? "---:|---:|---:|---:|---:|" : "", gl ? "---|" : "");
     };
     for (int n : o.scaleCounts)
     for (double levelError : o.levelErrors) {
@@ -818,6 +801,7 @@ void scaleTable(const Options& o, nlohmann::json& json) {
                 return;
             }
             scene.offscreen->setQuality(qualityOf(*parseQualityPreset(o.quality)));
+            if (o.arenaCompactBytes) scene.offscreen->setArenaCompactBytes(*o.arenaCompactBytes);
             static bool named = false;  // the card, once: GPU figures mean nothing without it
             if (!named) std::printf("GL: %s\n\n", GlWindow::glVersionString().c_str());
             std::fflush(stdout);
@@ -899,7 +883,20 @@ void scaleTable(const Options& o, nlohmann::json& json) {
             char heldCell[128];
             std::snprintf(heldCell, sizeof heldCell, "%.0f / %.0f / %.0f / %.0f, %zu", mib(held.grids), mib(held.levels),
                           mib(held.meshes), mib(held.morphSources), held.pagedOut);
-            std::string drawColumns, glColumns, countColumns;
+            std::string drawColumns, glColumns, countColumns, arenaColumn;
+            nlohmann::json arenaJson;
+#ifdef HG_BENCH_OFFSCREEN
+            if (gl) {
+                const OffscreenGarden::ArenaUse a = scene.offscreen->arenaUse();
+                char b[128];
+                std::snprintf(b, sizeof b, " %.0f / %.0f, %zu (%zu), %.0f |", mib(a.capacityBytes), mib(a.usedBytes), a.pages,
+                              a.pagesMade, mib(a.bytesMoved));
+                arenaColumn = b;
+                arenaJson = {{"capacity_bytes", a.capacityBytes}, {"used_bytes", a.usedBytes}, {"pages", a.pages},
+                             {"pages_made", a.pagesMade}, {"bytes_moved", a.bytesMoved},
+                             {"compact_bytes_per_frame", a.compactBytesPerFrame}};
+            }
+#endif
             if (gl) {
                 char mode[64];
                 const char* culling = modes[m].hidden ? "hidden left out" : "all drawn";
@@ -920,13 +917,13 @@ void scaleTable(const Options& o, nlohmann::json& json) {
             char errorCell[32];
             std::snprintf(errorCell, sizeof errorCell, "%.2f", levelError);
             const std::string levelErrorCell = levelError > 0.0 ? errorCell : "none (voxel size)";
-            std::printf("| %d | %s | %zu | %.2f | %zu | %.1f (%zu frames) | %s | %s%s | %s | %s | %s%s | %zu of %zu | %.0f | %.0f | %s%.0f | %.0f | %s |\n",
+            std::printf("| %d | %s | %zu | %.2f | %zu | %.1f (%zu frames) | %s | %s%s | %s | %s | %s%s | %zu of %zu | %.0f | %.0f | %s%.0f | %.0f | %s |%s\n",
                         n, levelErrorCell.c_str(), chunks, firstFrame, loadingAtFirst, settled, settleFrames,
                         spreadCell(spread(settlingMs)).c_str(), drawColumns.c_str(),
                         spreadCell(stage(Stage::Input)).c_str(), spreadCell(stage(Stage::Lod)).c_str(),
                         spreadCell(stage(Stage::Remesh)).c_str(), glColumns.c_str(), spreadCell(spread(totals)).c_str(),
                         over, run.frames.size(), spread(visited).mean, spread(shown).mean, countColumns.c_str(),
-                        static_cast<double>(bytesMax) / 1024.0, peakMiB, heldCell);
+                        static_cast<double>(bytesMax) / 1024.0, peakMiB, heldCell, arenaColumn.c_str());
             std::fflush(stdout);
             nlohmann::json stages = nlohmann::json::object();
             for (int k = 0; k < kStageCount; ++k)
@@ -951,7 +948,8 @@ void scaleTable(const Options& o, nlohmann::json& json) {
                                      {"frames_over_budget", over}, {"lod_chunks_visited", spreadJson(spread(visited))},
                                      {"triangles_shown", spreadJson(spread(shown))}, {"peak_resident_bytes", peakResidentBytes()},
                                      {"held_bytes", {{"grids", held.grids}, {"levels", held.levels}, {"meshes", held.meshes},
-                                                     {"edit_bases", held.editBases}, {"morph_sources", held.morphSources}}}});
+                                                     {"edit_bases", held.editBases}, {"morph_sources", held.morphSources}}},
+                                     {"gpu_arena", arenaJson}});
         }
     }
     std::printf("\n");

@@ -71,6 +71,14 @@ std::size_t OffscreenGarden::impostorsBaked() const {
     return atlas ? atlas->bakes() : 0;
 }
 
+void OffscreenGarden::setArenaCompactBytes(std::size_t bytes) { impl_->view.setArenaCompactBytes(bytes); }
+
+OffscreenGarden::ArenaUse OffscreenGarden::arenaUse() const {
+    const ChunkArena& a = impl_->renderer.arena();
+    return {a.capacityBytes(), a.usedBytes(), a.livePages(), a.pagesMade(), a.bytesMoved(),
+            impl_->view.arenaCompactBytes()};
+}
+
 bool OffscreenGarden::setMultiDraw(bool on) { return impl_->renderer.setMultiDraw(on) == on; }
 void OffscreenGarden::setOcclusionCulling(bool on) { impl_->renderer.setOcclusionCulling(on); }
 

@@ -49,6 +49,14 @@ public:
     // impostor, and impostors baked so far (benches).
     std::size_t impostorsWanted() const;
     std::size_t impostorsBaked() const;
+    // Bytes of chunk meshes the arena may move a frame (0: never compacted;
+    // GardenView::setArenaCompactBytes), and what the arena holds now.
+    void setArenaCompactBytes(std::size_t bytes);
+    struct ArenaUse {
+        std::size_t capacityBytes = 0, usedBytes = 0, pages = 0, pagesMade = 0, bytesMoved = 0;
+        std::size_t compactBytesPerFrame = 0;
+    };
+    ArenaUse arenaUse() const;
 
 private:
     struct Impl;

@@ -13,6 +13,12 @@
 // page left empty is let go. Indices stay relative to their chunk's first
 // vertex (drawn with a base vertex). Needs its GL context current in every
 // call, the destructor too.
+//
+// Pages made while a garden arrives stay, part empty, as the visitor's
+// walk moves chunks between levels. compact(), called a little each frame,
+// empties the sparsest such page into the others, GPU to GPU, within a
+// byte budget (docs/rendering.md, "The arena": defragmented in the
+// background).
 #pragma once
 
 #include <cstddef>
@@ -47,8 +53,12 @@ public:
     // The largest page made for meshes that fit it: 48 MiB of vertices.
     static constexpr std::size_t kMaxPageVertices = std::size_t{1} << 21;
 
-    // The first page's size, in vertices and indices.
-    explicit ChunkArena(std::size_t vertices = std::size_t{1} << 16, std::size_t indices = std::size_t{3} << 16);
+    // The first page's size, in vertices and indices; later pages keep its
+    // proportion. Six indices a vertex: a closed triangle mesh has about two
+    // triangles a vertex, and the garden's chunk meshes measured 5.4 (at
+    // three, the index buffers filled with the vertex buffers under half
+    // used, and a sparse page had nowhere to go).
+    explicit ChunkArena(std::size_t vertices = std::size_t{1} << 16, std::size_t indices = std::size_t{6} << 16);
     ~ChunkArena();
     ChunkArena(const ChunkArena&) = delete;
     ChunkArena& operator=(const ChunkArena&) = delete;
@@ -70,14 +80,39 @@ public:
     // At least `count` entries in the draw-id buffer.
     void ensureDrawIds(std::size_t count);
 
+    // Background defragmentation. Moves chunks out of the sparsest page
+    // other than the first that is less than kCompactBelow full and whose
+    // chunks fit half the other pages' free space, into the fullest pages that
+    // hold them (glCopyBufferSubData: the bytes never leave the GPU), until
+    // `byteBudget` bytes are moved (at least one chunk when the budget is
+    // not 0). The page goes when emptied; new meshes go elsewhere while it
+    // empties. Returns the bytes moved: 0 at once, without a look at the
+    // pages, while nothing was placed or removed since the last call found
+    // nothing to do. Call between views, not while a batch is built: slots
+    // change.
+    std::size_t compact(std::size_t byteBudget);
+    static constexpr double kCompactBelow = 0.5;
+
     std::size_t capacityBytes() const;
     std::size_t usedBytes() const;
+    std::size_t livePages() const;
     std::size_t pagesMade() const { return pagesMade_; }  // pages made so far, the first included
+    std::size_t bytesMoved() const { return bytesMoved_; }  // by compact(), so far
+    std::size_t chunksMoved() const { return chunksMoved_; }
 
 private:
     struct Page;
+    static constexpr std::size_t kNoPage = static_cast<std::size_t>(-1);
     std::size_t makePage(std::size_t vertices, std::size_t indices);
     void bindAttributes(const Page& page);
+    // Takes `count` vertices and `indices` indices from page `p`: where they lie.
+    bool allocateIn(std::size_t p, std::size_t vertices, std::size_t indices, ArenaSlot& slot);
+    // Gives a slot's ranges back; a page other than the first goes with its last chunk.
+    void release(const ArenaSlot& slot);
+    // The page compact() should empty, and its chunks, largest first; false when none.
+    bool chooseEvacuee();
+    // Moves chunk `id` out of its page into another; false when none holds it.
+    bool move(ChunkId id, const std::vector<std::size_t>& into);
 
     std::vector<std::unique_ptr<Page>> pages_;  // null: let go
     gl::Buffer drawIds_;
@@ -85,6 +120,13 @@ private:
     std::size_t firstVertices_, firstIndices_;  // the first page's size
     std::unordered_map<ChunkId, ArenaSlot> slots_;
     std::size_t pagesMade_ = 0;
+    // Background defragmentation: the page being emptied and what is left
+    // to move out of it; place()/remove() calls so far, and their count
+    // when compact() last found nothing to do.
+    std::size_t evacuating_ = kNoPage;
+    std::vector<ChunkId> evacuees_;
+    std::size_t changes_ = 0, settledAt_ = kNoPage;
+    std::size_t bytesMoved_ = 0, chunksMoved_ = 0;
 };
 
 }  // namespace hg::garden

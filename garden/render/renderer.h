@@ -174,6 +174,10 @@ public:
     std::size_t chunkCount() const { return chunks_.size(); }
     std::size_t residentBytes() const { return residentBytes_; }
     const ChunkArena& arena() const { return *arena_; }
+    // Background defragmentation of the chunk buffers: at most about
+    // `byteBudget` bytes moved on the GPU (ChunkArena::compact). Call
+    // between frames; the bytes moved.
+    std::size_t compactArena(std::size_t byteBudget) { return arena_->compact(byteBudget); }
 
     // --- batching ------------------------------------------------------------
     // Chunks go out as one multi-draw per pass where the context can

@@ -116,6 +116,8 @@ ViewUpload GardenView::upload(const GardenSession& session, double allowanceMs) 
         spent = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count() >= allowanceMs;
     }
     if (!spent) bakeImpostors(session, start, allowanceMs);
+    if (std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count() < allowanceMs)
+        renderer_.compactArena(arenaCompactBytes_);
     return done;
 }
 

@@ -30,7 +30,9 @@ public:
     // next frame. The bytes uploaded, and the sculptures that wait. Then
     // bakes the impostors the last render wanted (nearest first, at most
     // kBakesPerFrame, within the allowance), from sculptures whose meshes
-    // are all meshed and uploaded.
+    // are all meshed and uploaded. With time still left, moves up to
+    // arenaCompactBytes() of chunk meshes out of a sparse page of the
+    // renderer's arena (Renderer::compactArena: defragmented in the background).
     ViewUpload upload(const GardenSession& session, double allowanceMs);
 
     // Draws into the bound framebuffer of `viewport` pixels; chunks outside
@@ -69,6 +71,13 @@ public:
     // Impostors baked per upload at most (each renders views^2 frames of
     // one sculpture's coarse meshes).
     static constexpr int kBakesPerFrame = 2;
+    // Bytes of chunk meshes the arena may move a frame (0: never compacted).
+    // 2 MiB: a tenth of a millisecond's copy on a GPU, about a millisecond on
+    // the software renderer; a 48 MiB page left a tenth full empties in a
+    // few frames.
+    static constexpr std::size_t kDefaultArenaCompactBytes = std::size_t{2} << 20;
+    void setArenaCompactBytes(std::size_t bytes) { arenaCompactBytes_ = bytes; }
+    std::size_t arenaCompactBytes() const { return arenaCompactBytes_; }
 
 private:
     // What a sculpture's chunks are drawn with: its material, sized for its
@@ -87,6 +96,7 @@ private:
     Renderer& renderer_;
     ViewLook look_;
     float impostorDistance_ = kDefaultImpostorDistance;
+    std::size_t arenaCompactBytes_ = kDefaultArenaCompactBytes;
     int only_ = -1;
     // Per sculpture, the queue's shownGeneration() + 1 last uploaded (0:
     // never): a sculpture whose queue showed nothing new is not looked at.

@@ -68,6 +68,35 @@ RenderQuality everything() {
     return q;
 }
 
+// Reads chunk `id` back through its page's vertex array's bindings: the
+// bytes must be `m`'s.
+void expectHeld(const ChunkArena& arena, ChunkId id, const poly::Mesh& m) {
+    const ArenaSlot* s = arena.slot(id);
+    ASSERT_NE(s, nullptr) << id;
+    ASSERT_EQ(s->vertexCount, m.vertexCount());
+    ASSERT_EQ(s->indexCount, m.indices.size());
+    glBindVertexArray(arena.vertexArray(s->page));
+    GLint vertexBuffer = 0, indexBuffer = 0;
+    glGetVertexAttribiv(ChunkArena::kPositionAttribute, GL_VERTEX_ATTRIB_ARRAY_BUFFER_BINDING, &vertexBuffer);
+    glGetIntegerv(GL_ELEMENT_ARRAY_BUFFER_BINDING, &indexBuffer);
+    glBindVertexArray(0);
+    std::vector<float> v(6 * s->vertexCount);
+    glBindBuffer(GL_ARRAY_BUFFER, static_cast<GLuint>(vertexBuffer));
+    glGetBufferSubData(GL_ARRAY_BUFFER, static_cast<GLintptr>(s->firstVertex * 6 * sizeof(float)),
+                       static_cast<GLsizeiptr>(v.size() * sizeof(float)), v.data());
+    std::vector<std::uint32_t> i(s->indexCount);
+    glBindBuffer(GL_ARRAY_BUFFER, static_cast<GLuint>(indexBuffer));
+    glGetBufferSubData(GL_ARRAY_BUFFER, static_cast<GLintptr>(s->firstIndex * sizeof(std::uint32_t)),
+                       static_cast<GLsizeiptr>(i.size() * sizeof(std::uint32_t)), i.data());
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+    for (std::size_t n = 0; n < s->vertexCount; ++n)
+        for (int c = 0; c < 3; ++c) {
+            ASSERT_EQ(v[6 * n + c], m.positions[3 * n + c]) << "chunk " << id << " vertex " << n;
+            ASSERT_EQ(v[6 * n + 3 + c], m.normals[3 * n + c]) << "chunk " << id << " vertex " << n;
+        }
+    EXPECT_EQ(i, m.indices) << "chunk " << id;
+}
+
 TEST_F(BatchedDrawing, MultiDrawAndOneCallPerChunkGiveTheSamePixels) {
     if (!multiDrawAvailable()) GTEST_FAIL() << "llvmpipe offers GL 4.5: multi-draw must be there";
     uploadShapes();
@@ -142,7 +171,7 @@ TEST_F(BatchedDrawing, ChunksSurviveTheArenaGrowing) {
     const std::size_t startCapacity = renderer_->arena().capacityBytes();
     uploadShapes();
     for (int round = 0; round < 3; ++round)
-        for (ChunkId id = 10; id < 60; ++id) {
+        for (ChunkId id = 10; id < 110; ++id) {
             renderer_->upload(id, static_cast<std::uint64_t>(round + 1),
                               uvSphereMesh(0.2f + 0.01f * float(id % 7), 40 + round * 8, 20 + round * 4));
             if (id % 3 == 0) renderer_->drop(id - 1);
@@ -165,6 +194,21 @@ TEST_F(BatchedDrawing, ChunksSurviveTheArenaGrowing) {
     EXPECT_EQ(lastStats_.drawCalls, pages.size() + 1) << "one multi-draw a page, and the ground";
     EXPECT_EQ(renderScene(false, everything()), churned) << "a call a chunk, page by page";
     EXPECT_GT(pages.size(), 1u) << "the scene spans pages";
+
+    // The churn's chunks gone (the scene never drew them), the first page
+    // has room: compacted in the background between frames, the scene's
+    // chunks move back to it, and the pixels do not change.
+    for (ChunkId id = 10; id < 110; ++id) renderer_->drop(id);
+    EXPECT_EQ(renderScene(true, everything()), churned);
+    const std::size_t livePages = renderer_->arena().livePages();
+    while (renderer_->compactArena(64 << 10) > 0) {
+        EXPECT_EQ(renderScene(true, everything()), churned) << "mid-way through compaction";
+    }
+    EXPECT_GT(renderer_->arena().chunksMoved(), 0u);
+    EXPECT_LT(renderer_->arena().livePages(), livePages);
+    EXPECT_EQ(renderScene(true, everything()), churned);
+    EXPECT_EQ(lastStats_.drawCalls, 2u) << "the scene on one page again";
+    EXPECT_EQ(renderScene(false, everything()), churned);
 
     renderer_ = std::make_unique<Renderer>();
     uploadShapes();
@@ -199,35 +243,8 @@ TEST_F(BatchedDrawing, TheArenaKeepsEveryChunkWhereItWasPlacedAcrossPages) {
     EXPECT_EQ(arena.slot(7), nullptr);
     EXPECT_GE(arena.capacityBytes(), arena.usedBytes());
 
-    // Read each chunk back through its page's vertex array's bindings.
-    for (std::size_t k = 0; k < meshes.size(); ++k) {
-        if (k == 3 || k == 7) continue;
-        const ArenaSlot* s = arena.slot(k);
-        ASSERT_NE(s, nullptr) << k;
-        const poly::Mesh& m = meshes[k];
-        ASSERT_EQ(s->vertexCount, m.vertexCount());
-        ASSERT_EQ(s->indexCount, m.indices.size());
-        glBindVertexArray(arena.vertexArray(s->page));
-        GLint vertexBuffer = 0, indexBuffer = 0;
-        glGetVertexAttribiv(ChunkArena::kPositionAttribute, GL_VERTEX_ATTRIB_ARRAY_BUFFER_BINDING, &vertexBuffer);
-        glGetIntegerv(GL_ELEMENT_ARRAY_BUFFER_BINDING, &indexBuffer);
-        glBindVertexArray(0);
-        std::vector<float> v(6 * s->vertexCount);
-        glBindBuffer(GL_ARRAY_BUFFER, static_cast<GLuint>(vertexBuffer));
-        glGetBufferSubData(GL_ARRAY_BUFFER, static_cast<GLintptr>(s->firstVertex * 6 * sizeof(float)),
-                           static_cast<GLsizeiptr>(v.size() * sizeof(float)), v.data());
-        std::vector<std::uint32_t> i(s->indexCount);
-        glBindBuffer(GL_ARRAY_BUFFER, static_cast<GLuint>(indexBuffer));
-        glGetBufferSubData(GL_ARRAY_BUFFER, static_cast<GLintptr>(s->firstIndex * sizeof(std::uint32_t)),
-                           static_cast<GLsizeiptr>(i.size() * sizeof(std::uint32_t)), i.data());
-        glBindBuffer(GL_ARRAY_BUFFER, 0);
-        for (std::size_t n = 0; n < s->vertexCount; ++n)
-            for (int c = 0; c < 3; ++c) {
-                ASSERT_EQ(v[6 * n + c], m.positions[3 * n + c]) << "chunk " << k << " vertex " << n;
-                ASSERT_EQ(v[6 * n + 3 + c], m.normals[3 * n + c]) << "chunk " << k << " vertex " << n;
-            }
-        EXPECT_EQ(i, m.indices) << "chunk " << k;
-    }
+    for (std::size_t k = 0; k < meshes.size(); ++k)
+        if (k != 3 && k != 7) expectHeld(arena, k, meshes[k]);
 
     // Every chunk of a later page gone: the page goes with them.
     const std::size_t page = arena.slot(11)->page;
@@ -238,6 +255,74 @@ TEST_F(BatchedDrawing, TheArenaKeepsEveryChunkWhereItWasPlacedAcrossPages) {
     EXPECT_FALSE(arena.hasPage(page));
     EXPECT_LT(arena.capacityBytes(), before);
     EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+}
+
+// Pages made while the garden arrived, left part empty as chunks went:
+// compact() empties the sparsest into the others, a budget at a time, GPU
+// to GPU, and lets it go; every chunk keeps its bytes; pages more than half
+// full, and the first, are left alone; nothing more to do costs nothing.
+TEST_F(BatchedDrawing, CompactingEmptiesSparsePagesIntoTheOthersAndKeepsEveryChunk) {
+    ChunkArena arena(512, 1024);
+    std::vector<poly::Mesh> meshes;
+    for (int k = 0; k < 60; ++k) meshes.push_back(uvSphereMesh(0.05f * float(k % 9 + 1), 10 + k % 5, 5 + k % 3));
+    for (std::size_t k = 0; k < meshes.size(); ++k) arena.place(k, meshes[k]);
+    const std::size_t made = arena.pagesMade();
+    ASSERT_GE(made, 3u) << "meshes enough for several pages";
+    EXPECT_EQ(arena.compact(1 << 20), 0u) << "every page is full: nothing to move";
+
+    // Most chunks of the later pages go, as a visitor's walk takes them to other levels.
+    std::set<ChunkId> kept;
+    for (std::size_t k = 0; k < meshes.size(); ++k)
+        if (arena.slot(k)->page == 0 || k % 6 == 0) kept.insert(k);
+        else arena.remove(k);
+    std::set<std::size_t> pagesBefore;
+    for (ChunkId k : kept) pagesBefore.insert(arena.slot(k)->page);
+    ASSERT_GT(pagesBefore.size(), 1u);
+    const std::size_t livePages = arena.livePages();
+    const std::size_t capacity = arena.capacityBytes(), used = arena.usedBytes();
+
+    // A budget smaller than any chunk: one chunk a call.
+    std::size_t calls = 0, moved = 0;
+    while (std::size_t bytes = arena.compact(1)) {
+        EXPECT_EQ(arena.chunksMoved(), ++calls) << "one chunk a call on a budget of a byte";
+        moved += bytes;
+        ASSERT_LT(calls, 1000u);
+    }
+    EXPECT_GT(calls, 0u);
+    EXPECT_EQ(moved, arena.bytesMoved());
+    EXPECT_LT(arena.livePages(), livePages) << "a sparse page emptied and let go";
+    EXPECT_LT(arena.capacityBytes(), capacity);
+    EXPECT_EQ(arena.usedBytes(), used) << "the same chunks, elsewhere";
+    for (ChunkId k : kept) expectHeld(arena, k, meshes[k]);
+    EXPECT_TRUE(arena.hasPage(0));
+    // What is left is either more than half full or has nowhere to go.
+    EXPECT_EQ(arena.compact(1 << 20), 0u);
+    EXPECT_EQ(arena.compact(1 << 20), 0u);
+
+    // New meshes still come and go around what was moved.
+    for (std::size_t k = 100; k < 130; ++k) arena.place(k, meshes[k % meshes.size()]);
+    for (ChunkId k : kept) expectHeld(arena, k, meshes[k]);
+    for (std::size_t k = 100; k < 130; ++k) expectHeld(arena, k, meshes[k % meshes.size()]);
+    EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+}
+
+// A budget of 0 never moves anything; a big budget moves several chunks in one call.
+TEST_F(BatchedDrawing, CompactingKeepsToItsBudget) {
+    ChunkArena arena(512, 1024);
+    std::vector<poly::Mesh> meshes;
+    for (int k = 0; k < 60; ++k) meshes.push_back(uvSphereMesh(0.05f * float(k % 9 + 1), 10 + k % 5, 5 + k % 3));
+    for (std::size_t k = 0; k < meshes.size(); ++k) arena.place(k, meshes[k]);
+    for (std::size_t k = 0; k < meshes.size(); ++k)
+        if (arena.slot(k)->page != 0 && k % 6 != 0) arena.remove(k);
+    EXPECT_EQ(arena.compact(0), 0u);
+    EXPECT_EQ(arena.chunksMoved(), 0u);
+    const std::size_t budget = 3 * (meshes[0].vertexCount() * 24 + meshes[0].indices.size() * 4);
+    const std::size_t bytes = arena.compact(budget);
+    EXPECT_GT(arena.chunksMoved(), 1u);
+    // The budget is passed by the last chunk moved at most.
+    std::size_t largest = 0;
+    for (const poly::Mesh& m : meshes) largest = std::max(largest, m.vertexCount() * 24 + m.indices.size() * 4);
+    EXPECT_LT(bytes, budget + largest);
 }
 
 }  // namespace

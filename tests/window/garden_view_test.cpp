@@ -9,6 +9,7 @@
 #include "../garden/session_garden.h"
 #include "../render/gl_fixture.h"
 #include "garden/app/garden_session.h"
+#include "garden/render/shapes.h"
 #include "garden/window/garden_view.h"
 
 namespace hg::garden {
@@ -145,6 +146,64 @@ TEST_F(GardenViewTest, ASculptureRebuiltInANewFrameShowsItsNewMeshesOnly) {
         if (!t.queue->mesh(c)) continue;
         EXPECT_TRUE(renderer_->has(GardenView::chunkId(0, c), t.queue->version(c))) << c;
     }
+}
+
+// The garden's chunks placed in a later page while other meshes filled the
+// first, and those meshes then gone: the view's upload stage empties the
+// sparse page into the first a budget at a time (defragmented in the
+// background), and the garden looks the same. With a budget of 0 nothing moves.
+TEST_F(GardenViewTest, TheUploadStageEmptiesASparsePageAndTheGardenLooksTheSame) {
+    SessionSettings settings;
+    settings.chunkSize = 16;
+    settings.maxLevel = 1;
+    settings.viewportHeight = kHeight;
+    settings.fovY = glm::radians(double(kFovY));
+    GardenSession session(loadGarden(test::writeSmallGarden(scratch_)), settings);
+    session.navigator().setMode(NavigationMode::Fly);
+    session.navigator().setPose({2.0f, 0.5f, 4.1547f}, 0.0f, 0.0f);
+    for (int f = 0; f < 500 && !session.idle(); ++f) session.frame(FrameInput(Hands{}, 1.0 / 90.0));
+    ASSERT_TRUE(session.idle());
+
+    // Meshes under ids no garden uses fill the first page.
+    const ChunkArena& arena = renderer_->arena();
+    const poly::Mesh filler = uvSphereMesh(0.1f, 40, 20);
+    ChunkId id = ChunkId{0xFFFFFFF0u} << 32;
+    std::vector<ChunkId> fillers;
+    while (fillers.empty() || arena.slot(fillers.back())->page == 0) {
+        fillers.push_back(id++);
+        renderer_->upload(fillers.back(), 1, filler);
+    }
+    renderer_->drop(fillers.back());
+    fillers.pop_back();
+    GardenView view(*renderer_);
+    view.setArenaCompactBytes(0);
+    auto picture = [&] {
+        view.upload(session, 1e9);
+        target_->bind();
+        view.render(session, {kWidth, kHeight}, glm::radians(kFovY));
+        const RenderStats stats = renderer_->endFrame();
+        read();
+        return std::make_pair(color_, stats.drawCalls);
+    };
+    const auto [before, callsBefore] = picture();
+    std::size_t later = 0;
+    for (std::size_t c = 0; c < session.sculptures()[0].queue->count(); ++c)
+        if (const ArenaSlot* s = arena.slot(GardenView::chunkId(0, c))) later += s->page > 0 ? 1 : 0;
+    ASSERT_GT(later, 0u) << "the garden's chunks went to a later page";
+
+    for (ChunkId f : fillers) renderer_->drop(f);
+    const std::size_t pages = arena.livePages();
+    ASSERT_GT(pages, 1u);
+    picture();
+    EXPECT_EQ(arena.chunksMoved(), 0u) << "a budget of 0 moves nothing";
+
+    view.setArenaCompactBytes(64 << 10);
+    for (int f = 0; f < 200 && arena.livePages() == pages; ++f) EXPECT_EQ(picture().first, before) << "frame " << f;
+    EXPECT_GT(arena.chunksMoved(), 0u);
+    EXPECT_LT(arena.livePages(), pages) << "the sparse page emptied and let go";
+    const auto [after, callsAfter] = picture();
+    EXPECT_EQ(after, before);
+    EXPECT_LE(callsAfter, callsBefore);
 }
 
 }  // namespace
