@@ -365,7 +365,8 @@ private:
         if (desktopButton_ && ImGui::Button("Desktop (F9)")) desktopAsked_ = true;
         ImGui::End();
         garden::drawStatsPanel(session_.scheduler().history(), false,
-                               [this]() -> const garden::MemoryReport& { return memoryWatch_.read(session_); });
+                               [this]() -> const garden::MemoryReport& { return memoryWatch_.read(session_); },
+                               &renderer_.arena());
         overlay_->render();
     }
 

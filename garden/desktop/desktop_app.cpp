@@ -360,7 +360,7 @@ int runDesktopOn(GardenSession& session, GardenWindow& gardenWindow, const Deskt
         ImGui::End();
         drawToolPanel(session);
         drawStatsPanel(session.scheduler().history(), pressed.stats,
-                       [&]() -> const MemoryReport& { return memoryWatch.read(session); });
+                       [&]() -> const MemoryReport& { return memoryWatch.read(session); }, &renderer.arena());
         drawHistoryPanel(session, showHistory);
         drawHelpPanel(showHelp, {0.5f * static_cast<float>(fb.x), static_cast<float>(fb.y)});
         if (drawFirstRunPanel(firstRun)) firstRunDismissed();

@@ -14,6 +14,7 @@
 namespace hg::garden {
 
 class GardenSession;
+class ChunkArena;
 struct KeyRow;
 
 // A window with the last frame's time per stage against the budget, the
@@ -22,8 +23,10 @@ struct KeyRow;
 // Folded to its title at first; `toggle` unfolds it, or folds it again (F3).
 // `memory` (may be empty): what the session holds, shown below the counters;
 // called only while the panel is unfolded (a report walks every grid).
+// `gpuMeshes` (may be null): the renderer's chunk arena, whose buffers'
+// size and use are shown beside it.
 void drawStatsPanel(const FrameHistory& history, bool toggle = false,
-                    const std::function<const MemoryReport&()>& memory = {});
+                    const std::function<const MemoryReport&()>& memory = {}, const ChunkArena* gpuMeshes = nullptr);
 constexpr const char* kStatsPanelTitle = "Frame stats (F3)";
 
 // The tool panel: the tool in hand and its parameters (the session's

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "garden/render/chunk_arena.h"
 #include "garden/render/panels.h"
 
 namespace hg::garden {
@@ -49,7 +50,8 @@ void frameGraph(const FrameHistory& history, double budgetMs) {
 
 }  // namespace
 
-void drawStatsPanel(const FrameHistory& history, bool toggle, const std::function<const MemoryReport&()>& memory) {
+void drawStatsPanel(const FrameHistory& history, bool toggle, const std::function<const MemoryReport&()>& memory,
+                    const ChunkArena* gpuMeshes) {
     // Always fitted to its contents: they change from "no frames yet" to the
     // full panel, and a size fitted once would clip them.
     // Folded at first: numbers for whoever looks for them, not a new user's view.
@@ -124,6 +126,14 @@ void drawStatsPanel(const FrameHistory& history, bool toggle, const std::functio
         else
             ImGui::TextUnformatted("no memory budget: every grid in memory");
         if (!held.pagingProblem.empty()) ImGui::TextWrapped("%s", held.pagingProblem.c_str());
+    }
+    if (gpuMeshes) {
+        // The chunk meshes on the GPU: their buffers, and how much of them
+        // is used (pages emptied in the background: docs/rendering.md).
+        auto mib = [](std::size_t b) { return static_cast<double>(b) / (1024.0 * 1024.0); };
+        const std::size_t pages = gpuMeshes->livePages();
+        ImGui::Text("GPU meshes: %.0f MiB in %zu buffer pair%s, %.0f MiB used", mib(gpuMeshes->capacityBytes()), pages,
+                    pages == 1 ? "" : "s", mib(gpuMeshes->usedBytes()));
     }
     frameGraph(history, last->budgetMs);
     ImGui::End();

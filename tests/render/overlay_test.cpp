@@ -258,5 +258,35 @@ TEST_F(GlTest, OverlayDrawsOverTheSceneWithoutGlErrors) {
     EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
 }
 
+// The stats panel, given the renderer's chunk arena, adds its line: what the
+// GPU's mesh buffers hold and use.
+TEST_F(GlTest, StatsPanelShowsTheGpuMeshBuffers) {
+    renderer_->upload(1, 1, uvSphereMesh(1.0f, 48, 24));
+    Overlay overlay(*window_, false);
+    const FrameHistory history = sampleHistory(200);
+    auto vertices = [&](const ChunkArena* arena) {
+        int count = 0;
+        for (int f = 0; f < 3; ++f) {
+            overlay.newFrame();
+            ImGui::SetNextWindowPos(ImVec2(0, 0), ImGuiCond_Always);
+            drawStatsPanel(history, false, {}, arena);
+            ImGui::SetWindowCollapsed(kStatsPanelTitle, false);  // it starts folded
+            target_->bind();
+            overlay.render();
+            count = ImGui::GetDrawData()->TotalVtxCount;
+        }
+        return count;
+    };
+    // Small text, so the whole panel fits the 256-pixel window (ImGui draws
+    // no line below its edge).
+    ImGui::GetIO().FontGlobalScale = 0.25f;
+    const int without = vertices(nullptr);
+    const int with = vertices(&renderer_->arena());
+    ImGui::GetIO().FontGlobalScale = 1.0f;
+    EXPECT_GT(with, without + 100) << "a line of text more";
+    EXPECT_GT(renderer_->arena().usedBytes(), 0u);
+    EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+}
+
 }  // namespace
 }  // namespace hg::garden::test
