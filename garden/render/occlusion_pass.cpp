@@ -139,7 +139,8 @@ OcclusionPass::OcclusionPass()
     glUniform1i(b.uniform("uOcclusion"), 1);
 }
 
-GLuint OcclusionPass::render(const SceneTargets& scene, const glm::mat4& projection, const RenderQuality& quality) {
+OcclusionImage OcclusionPass::render(const SceneTargets& scene, const glm::mat4& projection,
+                                     const RenderQuality& quality) {
     const int scale = quality.aoHalfResolution ? 2 : 1;
     const glm::ivec2 full = scene.size();
     const glm::ivec2 size = glm::max((full + scale - 1) / scale, glm::ivec2(1));
@@ -190,7 +191,7 @@ GLuint OcclusionPass::render(const SceneTargets& scene, const glm::mat4& project
     glBindVertexArray(0);
     glEnable(GL_DEPTH_TEST);
     glEnable(GL_CULL_FACE);
-    return raw_.texture.get();
+    return OcclusionImage{raw_.texture.get(), scale, pyramid_.texture()};
 }
 
 }  // namespace hg::garden

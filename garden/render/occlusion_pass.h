@@ -16,14 +16,20 @@
 
 namespace hg::garden {
 
+// What the composite needs to read the occlusion at the scene's pixels.
+struct OcclusionImage {
+    GLuint texture = 0;  // R8, 1 where open, towards 0 in hollows; 0: none
+    int scale = 1;       // scene pixels per occlusion texel along each axis (2: half resolution)
+    GLuint viewZ = 0;    // the scene's view z (ViewDepthPyramid, level 0 at full size)
+};
+
 class OcclusionPass {
 public:
     OcclusionPass();  // throws GlError naming a shader that fails
 
-    // The occlusion of the scene seen through `projection`: an R8 texture,
-    // 1 where open, towards 0 in hollows. Changes framebuffer bindings and
-    // the viewport.
-    GLuint render(const SceneTargets& scene, const glm::mat4& projection, const RenderQuality& quality);
+    // The occlusion of the scene seen through `projection`. Changes
+    // framebuffer bindings and the viewport.
+    OcclusionImage render(const SceneTargets& scene, const glm::mat4& projection, const RenderQuality& quality);
 
 private:
     ShaderProgram occlusion_;

@@ -7,10 +7,15 @@
 namespace hg::garden {
 namespace {
 
+// A unit no other pass of the renderer binds (chunk_batch.h, impostor_atlas.h).
+constexpr GLint kViewZUnit = 7;
+
 const char* const kCompositeFragment = "#version 330 core\n" HG_SRGB_GLSL R"(
 uniform sampler2DMS uColor;
 uniform sampler2DMS uDepth;
 uniform sampler2D uOcclusion;
+uniform sampler2D uViewZ;       // the scene's view z at full size (the occlusion's pyramid, level 0)
+uniform int uOcclusionScale;    // scene pixels per occlusion texel (1 or 2)
 uniform int uSamples;
 uniform float uExposure;
 uniform bool uUseOcclusion;
@@ -43,9 +48,37 @@ vec3 resolved(ivec2 p, float open) {
     }
     return sum / float(uSamples);
 }
+// The occlusion at scene pixel p. At half resolution: the four texels
+// around, each weighted bilinearly and by how near the depth it was
+// computed at (level 0 at its own scene pixel) is to p's, with the blur's
+// depth falloff; where none is near (a sliver thinner than a texel), the
+// one nearest in depth.
+float openAt(ivec2 p) {
+    if (!uUseOcclusion) return 1.0;
+    if (uOcclusionScale == 1) return texelFetch(uOcclusion, p, 0).r;
+    float z = texelFetch(uViewZ, p, 0).r;
+    vec2 t = (vec2(p) + 0.5) / float(uOcclusionScale) - 0.5;
+    ivec2 lo = ivec2(floor(t)), last = textureSize(uOcclusion, 0) - 1;
+    vec2 f = t - vec2(lo);
+    float sum = 0.0, weights = 0.0, nearest = 1e30, nearestOpen = 1.0;
+    for (int k = 0; k < 4; ++k) {
+        ivec2 o = ivec2(k & 1, k >> 1);
+        ivec2 q = clamp(lo + o, ivec2(0), last);
+        float dz = abs(texelFetch(uViewZ, q * uOcclusionScale, 0).r - z);
+        float open = texelFetch(uOcclusion, q, 0).r;
+        vec2 b = mix(1.0 - f, f, vec2(o));
+        float w = b.x * b.y * exp(-dz / (0.02 * abs(z) + 1e-3));
+        sum += w * open;
+        weights += w;
+        if (dz < nearest) {
+            nearest = dz;
+            nearestOpen = open;
+        }
+    }
+    return weights > 1e-4 ? sum / weights : nearestOpen;
+}
 vec3 resolvedAt(ivec2 p) {
-    float open = uUseOcclusion ? texture(uOcclusion, (vec2(p) + 0.5) / uSize).r : 1.0;
-    return resolved(p, open);
+    return resolved(p, openAt(p));
 }
 void main() {
     vec2 s = gl_FragCoord.xy * uToScene;
@@ -77,20 +110,23 @@ PostProcess::PostProcess()
     glUniform1i(program_.uniform("uColor"), 0);
     glUniform1i(program_.uniform("uDepth"), 1);
     glUniform1i(program_.uniform("uOcclusion"), 2);
+    glUniform1i(program_.uniform("uViewZ"), kViewZUnit);
     samples_ = program_.uniform("uSamples");
     exposure_ = program_.uniform("uExposure");
     useOcclusion_ = program_.uniform("uUseOcclusion");
     size_ = program_.uniform("uSize");
     toScene_ = program_.uniform("uToScene");
     smooth_ = program_.uniform("uSmooth");
+    occlusionScale_ = program_.uniform("uOcclusionScale");
 }
 
-void PostProcess::composite(const SceneTargets& scene, GLuint occlusion, float exposure, glm::ivec2 output,
-                            bool smooth) {
+void PostProcess::composite(const SceneTargets& scene, const OcclusionImage& occlusion, float exposure,
+                            glm::ivec2 output, bool smooth) {
     program_.use();
     glUniform1i(samples_, scene.samples());
     glUniform1f(exposure_, exposure);
-    glUniform1i(useOcclusion_, occlusion != 0 ? 1 : 0);
+    glUniform1i(useOcclusion_, occlusion.texture != 0 ? 1 : 0);
+    glUniform1i(occlusionScale_, occlusion.viewZ != 0 ? std::max(occlusion.scale, 1) : 1);
     glUniform2f(size_, static_cast<float>(scene.size().x), static_cast<float>(scene.size().y));
     glUniform1i(smooth_, smooth && scene.size() != output ? 1 : 0);
     glUniform2f(toScene_, static_cast<float>(scene.size().x) / static_cast<float>(std::max(output.x, 1)),
@@ -100,7 +136,9 @@ void PostProcess::composite(const SceneTargets& scene, GLuint occlusion, float e
     glActiveTexture(GL_TEXTURE1);
     glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, scene.depthTexture());
     glActiveTexture(GL_TEXTURE2);
-    glBindTexture(GL_TEXTURE_2D, occlusion);
+    glBindTexture(GL_TEXTURE_2D, occlusion.texture);
+    glActiveTexture(GL_TEXTURE0 + kViewZUnit);
+    glBindTexture(GL_TEXTURE_2D, occlusion.viewZ);
     glActiveTexture(GL_TEXTURE0);
 
     // Every pixel is written, colour and depth, whatever was there.
@@ -114,6 +152,9 @@ void PostProcess::composite(const SceneTargets& scene, GLuint occlusion, float e
     glBindVertexArray(0);
     glDepthFunc(GL_LESS);
     glEnable(GL_CULL_FACE);
+    glActiveTexture(GL_TEXTURE0 + kViewZUnit);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glActiveTexture(GL_TEXTURE0);
 }
 
 }  // namespace hg::garden

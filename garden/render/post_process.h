@@ -10,6 +10,7 @@
 #include <glm/vec2.hpp>
 
 #include "garden/render/gl_objects.h"
+#include "garden/render/occlusion_pass.h"
 #include "garden/render/render_targets.h"
 #include "garden/render/shader_program.h"
 
@@ -20,17 +21,23 @@ public:
     PostProcess();  // throws GlError naming a shader that fails
 
     // Draws into the bound framebuffer, whose viewport the caller has set
-    // to the scene's size. `occlusion`: an R8 texture (1 = open), or 0.
+    // to the scene's size. `occlusion`: the occlusion pass's image (its
+    // texture 0: none). At half resolution each scene pixel takes the four
+    // occlusion texels around it weighted by distance and by how near their
+    // depth is to its own (a joint bilateral upsample), so a hollow's
+    // darkness does not bleed over a silhouette onto what lies behind it.
     // `output`: the pixels of the bound framebuffer's view, which the scene
     // (drawn at the render scale) is stretched over, bilinearly between
     // resolved scene pixels (lines and panels, drawn afterwards at the
     // output's size, stay sharp); `smooth` false: the nearest scene pixel.
-    void composite(const SceneTargets& scene, GLuint occlusion, float exposure, glm::ivec2 output, bool smooth);
+    void composite(const SceneTargets& scene, const OcclusionImage& occlusion, float exposure, glm::ivec2 output,
+                   bool smooth);
 
 private:
     ShaderProgram program_;
     gl::VertexArray empty_;  // the fullscreen triangle comes from gl_VertexID
     GLint samples_ = -1, exposure_ = -1, useOcclusion_ = -1, size_ = -1, toScene_ = -1, smooth_ = -1;
+    GLint occlusionScale_ = -1;
 };
 
 }  // namespace hg::garden

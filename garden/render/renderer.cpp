@@ -601,7 +601,7 @@ void Renderer::finishView() {
     gatherChunks(lo, hi);
     const bool shadowed = renderShadows(lo, hi);
     renderScene(shadowed);
-    GLuint occlusion = 0;
+    OcclusionImage occlusion;
     if (quality_.ambientOcclusion) {
         timers_->begin(GpuPass::Occlusion);
         occlusion = occlusion_->render(*targets_, view_.projection, quality_);
