@@ -112,11 +112,16 @@ int main(int argc, char** argv) {
     q.ambientOcclusion = true;
     q.aoSamples = 16;
     rows.push_back({"+ AO 16, full", q});
-    q.aoSamples = 8;
     q.aoHalfResolution = true;
+    rows.push_back({"+ AO 16, half", q});
+    q.aoSamples = 8;
     rows.push_back({"+ AO 8, half", q});
     rows.push_back({"medium", qualityOf(QualityPreset::Medium)});
     rows.push_back({"high", qualityOf(QualityPreset::High)});
+    // High as it was until 28 November: the peer for the change.
+    q = qualityOf(QualityPreset::High);
+    q.aoHalfResolution = false;
+    rows.push_back({"high, AO full (before 28 Nov)", q});
     // The automatic mode's last rungs: fewer scene pixels, stretched
     // bilinearly by the composite (four resolves per output pixel).
     q = low();

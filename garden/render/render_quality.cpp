@@ -19,6 +19,7 @@ RenderQuality qualityOf(QualityPreset preset) {
             break;
         case QualityPreset::High:
             q.aoSamples = 16;
+            q.aoHalfResolution = true;
             break;
     }
     return q;
