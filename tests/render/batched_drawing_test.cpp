@@ -261,20 +261,31 @@ TEST_F(BatchedDrawing, TheArenaKeepsEveryChunkWhereItWasPlacedAcrossPages) {
 // compact() empties the sparsest into the others, a budget at a time, GPU
 // to GPU, and lets it go; every chunk keeps its bytes; pages more than half
 // full, and the first, are left alone; nothing more to do costs nothing.
-TEST_F(BatchedDrawing, CompactingEmptiesSparsePagesIntoTheOthersAndKeepsEveryChunk) {
-    ChunkArena arena(512, 1024);
+// Sixty small meshes over several pages of a small arena.
+std::vector<poly::Mesh> fillPages(ChunkArena& arena) {
     std::vector<poly::Mesh> meshes;
     for (int k = 0; k < 60; ++k) meshes.push_back(uvSphereMesh(0.05f * float(k % 9 + 1), 10 + k % 5, 5 + k % 3));
     for (std::size_t k = 0; k < meshes.size(); ++k) arena.place(k, meshes[k]);
-    const std::size_t made = arena.pagesMade();
-    ASSERT_GE(made, 3u) << "meshes enough for several pages";
-    EXPECT_EQ(arena.compact(1 << 20), 0u) << "every page is full: nothing to move";
+    return meshes;
+}
 
-    // Most chunks of the later pages go, as a visitor's walk takes them to other levels.
+// Most chunks of the later pages go, as a visitor's walk takes them to
+// other levels; the ids kept.
+std::set<ChunkId> thinLaterPages(ChunkArena& arena, std::size_t count) {
     std::set<ChunkId> kept;
-    for (std::size_t k = 0; k < meshes.size(); ++k)
+    for (std::size_t k = 0; k < count; ++k)
         if (arena.slot(k)->page == 0 || k % 6 == 0) kept.insert(k);
         else arena.remove(k);
+    return kept;
+}
+
+TEST_F(BatchedDrawing, CompactingEmptiesSparsePagesIntoTheOthersAndKeepsEveryChunk) {
+    ChunkArena arena(512, 1024);
+    const std::vector<poly::Mesh> meshes = fillPages(arena);
+    ASSERT_GE(arena.pagesMade(), 3u) << "meshes enough for several pages";
+    EXPECT_EQ(arena.compact(1 << 20), 0u) << "every page is full: nothing to move";
+
+    const std::set<ChunkId> kept = thinLaterPages(arena, meshes.size());
     std::set<std::size_t> pagesBefore;
     for (ChunkId k : kept) pagesBefore.insert(arena.slot(k)->page);
     ASSERT_GT(pagesBefore.size(), 1u);
@@ -309,11 +320,8 @@ TEST_F(BatchedDrawing, CompactingEmptiesSparsePagesIntoTheOthersAndKeepsEveryChu
 // A budget of 0 never moves anything; a big budget moves several chunks in one call.
 TEST_F(BatchedDrawing, CompactingKeepsToItsBudget) {
     ChunkArena arena(512, 1024);
-    std::vector<poly::Mesh> meshes;
-    for (int k = 0; k < 60; ++k) meshes.push_back(uvSphereMesh(0.05f * float(k % 9 + 1), 10 + k % 5, 5 + k % 3));
-    for (std::size_t k = 0; k < meshes.size(); ++k) arena.place(k, meshes[k]);
-    for (std::size_t k = 0; k < meshes.size(); ++k)
-        if (arena.slot(k)->page != 0 && k % 6 != 0) arena.remove(k);
+    const std::vector<poly::Mesh> meshes = fillPages(arena);
+    thinLaterPages(arena, meshes.size());
     EXPECT_EQ(arena.compact(0), 0u);
     EXPECT_EQ(arena.chunksMoved(), 0u);
     const std::size_t budget = 3 * (meshes[0].vertexCount() * 24 + meshes[0].indices.size() * 4);

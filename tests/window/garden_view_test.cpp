@@ -5,6 +5,7 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 
 #include "../garden/session_garden.h"
 #include "../render/gl_fixture.h"
@@ -27,24 +28,29 @@ protected:
         std::filesystem::remove_all(scratch_);
         test::GlTest::TearDown();
     }
+    // The small garden, flown 3 m in front of ball c (radius 0.6, centre
+    // (2, 0.5, 1.1547)) looking along -z, and settled.
+    std::unique_ptr<GardenSession> settledSmallGarden() {
+        SessionSettings settings;
+        settings.chunkSize = 16;
+        settings.maxLevel = 1;
+        settings.viewportHeight = kHeight;
+        settings.fovY = glm::radians(double(kFovY));
+        auto session = std::make_unique<GardenSession>(loadGarden(test::writeSmallGarden(scratch_)), settings);
+        session->navigator().setMode(NavigationMode::Fly);
+        session->navigator().setPose({2.0f, 0.5f, 4.1547f}, 0.0f, 0.0f);
+        for (int f = 0; f < 500 && !session->idle(); ++f) session->frame(FrameInput(Hands{}, 1.0 / 90.0));
+        EXPECT_TRUE(session->idle());
+        return session;
+    }
     std::filesystem::path scratch_;
 };
 
 TEST_F(GardenViewTest, TheSettledGardenShowsItsSculpturesAtTheirDepth) {
-    SessionSettings settings;
-    settings.chunkSize = 16;
-    settings.maxLevel = 1;
-    settings.viewportHeight = kHeight;
-    settings.fovY = glm::radians(double(kFovY));
-    GardenSession session(loadGarden(test::writeSmallGarden(scratch_)), settings);
-    // Fly 3 m in front of ball c (radius 0.6, centre (2, 0.5, 1.1547)),
-    // looking along -z: ball a shows small to the left, the rest is out of view.
-    session.navigator().setMode(NavigationMode::Fly);
-    session.navigator().setPose({2.0f, 0.5f, 4.1547f}, 0.0f, 0.0f);
-    for (int f = 0; f < 500 && !session.idle(); ++f) {
-        session.frame(FrameInput(Hands{}, 1.0 / 90.0));
-    }
-    ASSERT_TRUE(session.idle());
+    // Ball c ahead; ball a shows small to the left, the rest is out of view.
+    const std::unique_ptr<GardenSession> settled = settledSmallGarden();
+    ASSERT_TRUE(settled->idle());
+    GardenSession& session = *settled;
 
     GardenView view(*renderer_);
     const ViewUpload first = view.upload(session, 1e9);
@@ -153,16 +159,9 @@ TEST_F(GardenViewTest, ASculptureRebuiltInANewFrameShowsItsNewMeshesOnly) {
 // sparse page into the first a budget at a time (defragmented in the
 // background), and the garden looks the same. With a budget of 0 nothing moves.
 TEST_F(GardenViewTest, TheUploadStageEmptiesASparsePageAndTheGardenLooksTheSame) {
-    SessionSettings settings;
-    settings.chunkSize = 16;
-    settings.maxLevel = 1;
-    settings.viewportHeight = kHeight;
-    settings.fovY = glm::radians(double(kFovY));
-    GardenSession session(loadGarden(test::writeSmallGarden(scratch_)), settings);
-    session.navigator().setMode(NavigationMode::Fly);
-    session.navigator().setPose({2.0f, 0.5f, 4.1547f}, 0.0f, 0.0f);
-    for (int f = 0; f < 500 && !session.idle(); ++f) session.frame(FrameInput(Hands{}, 1.0 / 90.0));
-    ASSERT_TRUE(session.idle());
+    const std::unique_ptr<GardenSession> settled = settledSmallGarden();
+    ASSERT_TRUE(settled->idle());
+    GardenSession& session = *settled;
 
     // Meshes under ids no garden uses fill the first page.
     const ChunkArena& arena = renderer_->arena();
