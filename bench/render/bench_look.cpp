@@ -64,6 +64,9 @@ struct Row {
     std::string name;
     RenderQuality quality;
     Look look = Look::Plain;
+    // The shadow map kept while nothing it shows changes (Renderer::
+    // setShadowReuse): off in every row but one, which measure the pass.
+    bool keepShadows = false;
 };
 
 RenderQuality low() { return qualityOf(QualityPreset::Low); }
@@ -122,6 +125,8 @@ int main(int argc, char** argv) {
     q = qualityOf(QualityPreset::High);
     q.aoHalfResolution = false;
     rows.push_back({"high, AO full (before 28 Nov)", q});
+    // A still garden (or the headset's second eye): the map drawn once, kept.
+    rows.push_back({"high, shadow map kept", qualityOf(QualityPreset::High), Look::Plain, true});
     // The automatic mode's last rungs: fewer scene pixels, stretched
     // bilinearly by the composite (four resolves per output pixel).
     q = low();
@@ -153,6 +158,7 @@ int main(int argc, char** argv) {
     for (const Row& row : rows) {
         if (!args.matches(row.name) && row.name != "low (all off)") continue;
         renderer.setQuality(row.quality);
+        renderer.setShadowReuse(row.keepShadows);
         RenderStats stats;
         auto frame = [&] {
             target.bind();

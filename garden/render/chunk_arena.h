@@ -99,6 +99,10 @@ public:
     std::size_t pagesMade() const { return pagesMade_; }  // pages made so far, the first included
     std::size_t bytesMoved() const { return bytesMoved_; }  // by compact(), so far
     std::size_t chunksMoved() const { return chunksMoved_; }
+    // Changes with every place, remove and move: equal generations hold
+    // the same bytes in the same places (a pass drawn from the arena can
+    // be kept while it stays).
+    std::size_t generation() const { return changes_ + chunksMoved_; }
 
 private:
     struct Page;

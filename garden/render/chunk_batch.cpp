@@ -1,6 +1,7 @@
 #include "garden/render/chunk_batch.h"
 
 #include <algorithm>
+#include <cstring>
 #include <stdexcept>
 
 namespace hg::garden {
@@ -51,6 +52,26 @@ void ChunkBatch::add(const ArenaSlot& slot, std::size_t record) {
     commands_.push_back(c);
     recordOf_.push_back(record);
     pageOf_.push_back(slot.page);
+}
+
+bool ChunkBatch::drawsTheSameAs(const ChunkBatch& other) const {
+    if (commands_.size() != other.commands_.size() || records_.size() != other.records_.size() ||
+        recordOf_ != other.recordOf_ || pageOf_ != other.pageOf_)
+        return false;
+    for (std::size_t i = 0; i < commands_.size(); ++i) {
+        const Command& a = commands_[i];
+        const Command& b = other.commands_[i];
+        if (a.count != b.count || a.firstIndex != b.firstIndex || a.baseVertex != b.baseVertex) return false;
+    }
+    // Bit for bit: a record is what the shaders read.
+    return records_.empty() || std::memcmp(records_.data(), other.records_.data(), records_.size() * sizeof(float)) == 0;
+}
+
+void ChunkBatch::copyDrawsOf(const ChunkBatch& other) {
+    commands_ = other.commands_;
+    recordOf_ = other.recordOf_;
+    pageOf_ = other.pageOf_;
+    records_ = other.records_;
 }
 
 void ChunkBatch::sendRecords(std::size_t recordFirst, std::size_t recordCount) {

@@ -58,6 +58,13 @@ public:
     // path. Returns the GL draw calls made.
     std::size_t draw(ChunkArena& arena, bool multiDraw);
 
+    // Whether `other` holds exactly this batch's draws: the same ranges of
+    // the same pages with the same records (what a pass drawn from either
+    // would show, given the same arena contents).
+    bool drawsTheSameAs(const ChunkBatch& other) const;
+    // This batch's draws made `other`'s (no GL call: a copy to compare later).
+    void copyDrawsOf(const ChunkBatch& other);
+
 private:
     struct Command {  // GL's DrawElementsIndirectCommand
         GLuint count;

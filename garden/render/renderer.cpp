@@ -8,6 +8,7 @@
 #include <glm/matrix.hpp>
 
 #include <algorithm>
+#include <cstring>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -524,6 +525,18 @@ void Renderer::gatherChunks(glm::vec3& lo, glm::vec3& hi) {
 bool Renderer::renderShadows(const glm::vec3& lo, const glm::vec3& hi) {
     // The ground only receives: the casters are the view's chunks.
     if (!quality_.shadows || view_.lights.empty() || (shadowBatch_->empty() && !cardsCast_)) return false;
+    ShadowInputs inputs{lo, hi, view_.lights.front().direction, quality_.shadowMapSize, arena_->generation(),
+                        atlas_ ? atlas_->bakes() : 0};
+    const auto sameCards = [&] {
+        return cardDraws_.size() == shadowHeldCards_.size() &&
+               (cardDraws_.empty() || std::memcmp(cardDraws_.data(), shadowHeldCards_.data(),
+                                                  cardDraws_.size() * sizeof(ImpostorCard)) == 0);
+    };
+    if (shadowReuse_ && shadowHolds_ && *shadowHolds_ == inputs && shadowBatch_->drawsTheSameAs(*shadowHeldCasters_) &&
+        sameCards()) {
+        stats_.shadowMapsReused += 1;
+        return true;
+    }
     timers_->begin(GpuPass::Shadow);
     stats_.shadowDrawCalls += shadow_->render(*shadowBatch_, *arena_, multiDraw_, lo, hi,
                                               view_.lights.front().direction, quality_.shadowMapSize);
@@ -534,6 +547,11 @@ bool Renderer::renderShadows(const glm::vec3& lo, const glm::vec3& hi) {
         glEnable(GL_CULL_FACE);
     }
     timers_->end();
+    stats_.shadowMapsDrawn += 1;
+    if (!shadowHeldCasters_) shadowHeldCasters_ = std::make_unique<ChunkBatch>();
+    shadowHeldCasters_->copyDrawsOf(*shadowBatch_);
+    shadowHeldCards_ = cardDraws_;
+    shadowHolds_ = inputs;
     return true;
 }
 

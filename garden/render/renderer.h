@@ -30,6 +30,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <unordered_map>
 #include <vector>
 
@@ -126,6 +127,8 @@ struct RenderStats {
     std::size_t chunksDrawn = 0;      // chunk draws asked for (drawChunk calls that drew)
     std::size_t drawCalls = 0;        // GL draw calls for the scene, lines and sphere: one per batch of chunks
     std::size_t shadowDrawCalls = 0;  // GL draw calls of the casters into the shadow map
+    std::size_t shadowMapsDrawn = 0;   // views whose shadow map was drawn
+    std::size_t shadowMapsReused = 0;  // views that kept the map drawn before (nothing it shows changed)
     std::size_t bytesUploaded = 0;
     std::size_t impostorsDrawn = 0;   // cards drawn in place of far sculptures' chunks
     std::size_t impostorsBaked = 0;   // impostors rendered into the atlas since the last endFrame
@@ -205,6 +208,16 @@ public:
     // Frames per side and pixels per frame of the atlas made on first use
     // (a test's smaller atlas); no effect once it is made.
     void setImpostorSettings(const ImpostorSettings& settings) { impostorSettings_ = settings; }
+
+    // --- the shadow map -------------------------------------------------------------
+    // On by default: a view whose shadow map would be drawn from the same
+    // casters (the same chunks, placements and arena contents, the same
+    // cards and atlas) over the same box from the same sun at the same
+    // size keeps the map drawn before instead: the headset's second eye,
+    // and every frame of a still garden. Off: drawn every view (benches
+    // that measure the pass).
+    void setShadowReuse(bool on) { shadowReuse_ = on; }
+    bool shadowReuse() const { return shadowReuse_; }
 
     // --- hidden sculptures (visibility_queries.h) --------------------------------
     // On by default. Off forgets every result; wasHidden is then always false.
@@ -360,6 +373,22 @@ private:
     ShadowUniforms cardShadow_{};
     std::vector<ImpostorCard> cardDraws_;
     bool cardsCast_ = false;  // a card is within the shadow's reach in the open view
+    // What the shadow map holds now (setShadowReuse): the casters' box, the
+    // sun, the map's size, the arena's and the atlas's generations, and
+    // the chunks and cards drawn into it.
+    struct ShadowInputs {
+        glm::vec3 lo{0.0f}, hi{0.0f}, toLight{0.0f};
+        int size = 0;
+        std::size_t arena = 0, bakes = 0;
+        bool operator==(const ShadowInputs& o) const {
+            return lo == o.lo && hi == o.hi && toLight == o.toLight && size == o.size && arena == o.arena &&
+                   bakes == o.bakes;
+        }
+    };
+    bool shadowReuse_ = true;
+    std::optional<ShadowInputs> shadowHolds_;
+    std::unique_ptr<ChunkBatch> shadowHeldCasters_;
+    std::vector<ImpostorCard> shadowHeldCards_;
     bool multiDraw_ = false;
 
     View view_;

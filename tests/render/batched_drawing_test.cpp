@@ -24,6 +24,8 @@ protected:
     // squashed, one without normals), on the ground, lit by the sun.
     std::vector<std::uint8_t> renderScene(bool multiDraw, const RenderQuality& quality) {
         EXPECT_EQ(renderer_->setMultiDraw(multiDraw), multiDraw);
+        // Each path draws its own shadow map (not the one the other path left).
+        renderer_->setShadowReuse(false);
         renderer_->setQuality(quality);
         target_->bind();
         renderer_->beginFrame(makeView({0.0f, 4.0f, 9.0f}, {0.0f, 0.5f, 0.0f}));

@@ -205,6 +205,77 @@ TEST_F(LookTest, TheSunCastsASoftShadowOnTheGroundAndNoneOnLitFaces) {
     EXPECT_GE(between, 2) << "PCF gives the shadow a graded edge";
 }
 
+// The shadow map is drawn again only when something it shows changes: the
+// same garden from the same sun keeps it (a still frame, the headset's
+// second eye), and a kept map gives the very pixels a drawn one does. A
+// moved sculpture, a chunk's new mesh or the map's size draw it again.
+TEST_F(LookTest, TheShadowMapIsKeptWhileNothingItShowsChanges) {
+    renderer_->upload(1, 1, uvSphereMesh(1.0f, 48, 24));
+    const glm::vec3 sun(0.3f, 1.0f, 0.2f);
+    RenderQuality quality;
+    quality.ambientOcclusion = false;
+    renderer_->setQuality(quality);
+    // One frame of one view or more (eyes a little apart); its stats.
+    auto frame = [&](const glm::vec3& centre, std::initializer_list<float> eyes = {0.0f}) {
+        for (float dx : eyes) {
+            target_->bind();
+            renderer_->beginFrame(makeView({dx, 4, 7}, {dx, 0.5f, 0}, sun));
+            renderer_->drawGround(GroundStyle{});
+            renderer_->drawChunk(1, at(centre, 0.5f), kRed);
+            renderer_->finishView();
+        }
+        const RenderStats stats = renderer_->endFrame();
+        read();
+        return stats;
+    };
+    const glm::vec3 here(0, 1.2f, 0), there(0.6f, 1.2f, 0);
+
+    RenderStats s = frame(here);
+    EXPECT_EQ(s.shadowMapsDrawn, 1u);
+    const std::vector<std::uint8_t> first = color_;
+    s = frame(here);
+    EXPECT_EQ(s.shadowMapsDrawn, 0u);
+    EXPECT_EQ(s.shadowMapsReused, 1u) << "nothing changed: the map is kept";
+    EXPECT_EQ(color_, first) << "and gives the same picture";
+
+    s = frame(there);
+    EXPECT_EQ(s.shadowMapsDrawn, 1u) << "the sculpture moved";
+    const std::vector<std::uint8_t> moved = color_;
+    EXPECT_NE(moved, first);
+    renderer_->setShadowReuse(false);
+    s = frame(there);
+    EXPECT_EQ(s.shadowMapsDrawn, 1u) << "reuse off: drawn every view";
+    EXPECT_EQ(color_, moved) << "a kept map and a drawn one give the same pixels";
+    renderer_->setShadowReuse(true);
+
+    // Two eyes a few centimetres apart see the same casters: one map.
+    s = frame(there, {-0.032f, 0.032f});
+    EXPECT_EQ(s.shadowMapsDrawn + s.shadowMapsReused, 2u);
+    EXPECT_EQ(s.shadowMapsReused, 2u) << "both eyes keep the map of the frame before";
+
+    // A new mesh for the chunk (a carve, a new level) of the same size and
+    // box, in the same place of the arena: the same draws, other bytes.
+    // Drawn again, and its shadow is the new mesh's.
+    poly::Mesh flattened = uvSphereMesh(1.0f, 48, 24);
+    for (std::size_t i = 1; i < flattened.positions.size(); i += 3)
+        if (std::abs(flattened.positions[i]) < 0.99f) flattened.positions[i] *= 0.3f;
+    const std::size_t firstVertex = renderer_->arena().slot(1)->firstVertex;
+    renderer_->upload(1, 2, flattened);
+    ASSERT_EQ(renderer_->arena().slot(1)->firstVertex, firstVertex);
+    s = frame(there);
+    EXPECT_EQ(s.shadowMapsDrawn, 1u) << "the chunk's mesh changed";
+    const std::vector<std::uint8_t> bigger = color_;
+    renderer_->setShadowReuse(false);
+    frame(there);
+    EXPECT_EQ(color_, bigger);
+    renderer_->setShadowReuse(true);
+
+    quality.shadowMapSize = 1024;
+    renderer_->setQuality(quality);
+    EXPECT_EQ(frame(there).shadowMapsDrawn, 1u) << "another size";
+    EXPECT_EQ(frame(there).shadowMapsReused, 1u);
+}
+
 TEST_F(LookTest, ALitFlatFaceHasNoShadowAcne) {
     const poly::Mesh block = slottedBlock();
     ASSERT_FALSE(block.empty());
@@ -489,6 +560,7 @@ TEST(RenderQualityTest, PresetsSwitchTheEffectsAndParseByName) {
 }
 
 TEST_F(LookTest, EachPassReportsItsGpuTime) {
+    renderer_->setShadowReuse(false);  // the same view each frame: the map drawn each time, and timed
     renderer_->upload(1, 1, uvSphereMesh(1.0f, 48, 24));
     const View view = makeView({0, 2, 5}, {0, 0.5f, 0});
     RenderStats stats;
