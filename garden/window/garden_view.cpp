@@ -10,6 +10,7 @@
 
 #include "garden/render/frustum_test.h"
 #include "garden/window/impostor_identity.h"
+#include "garden/window/path_mesh.h"
 #include "garden/window/view_lights.h"
 #include "garden/render/material_look.h"
 #include "garden/scene/to_glm.h"
@@ -34,31 +35,6 @@ std::vector<glm::vec3> cubeEdges(const glm::mat4& place, float scaleToMetre) {
             }
         }
     return p;
-}
-
-// A path as a flat ribbon just above the ground: one quad per segment
-// (quads overlap at the joints, in one plane and one colour).
-poly::Mesh pathMesh(const PathSpec& path, double groundHeight) {
-    poly::Mesh m;
-    const float y = static_cast<float>(groundHeight) + 0.01f, h = static_cast<float>(path.width) * 0.5f;
-    const std::size_t n = path.points.size(), segments = path.closed ? n : n - 1;
-    for (std::size_t i = 0; i < segments; ++i) {
-        const glm::vec2 a(static_cast<float>(path.points[i][0]), static_cast<float>(path.points[i][1]));
-        const glm::vec2 b(static_cast<float>(path.points[(i + 1) % n][0]), static_cast<float>(path.points[(i + 1) % n][1]));
-        if (glm::length(b - a) < 1e-6f) continue;
-        const glm::vec2 d = glm::normalize(b - a), side(-d.y, d.x);
-        // Extended by half the width at both ends, so joints close.
-        const glm::vec2 a0 = a - d * h, b0 = b + d * h;
-        const glm::vec2 corners[4] = {a0 - side * h, a0 + side * h, b0 + side * h, b0 - side * h};
-        const auto base = static_cast<std::uint32_t>(m.vertexCount());
-        for (const glm::vec2& c : corners) {
-            m.positions.insert(m.positions.end(), {c.x, y, c.y});
-            m.normals.insert(m.normals.end(), {0.0f, 1.0f, 0.0f});
-        }
-        // Counter-clockwise seen from above (+y).
-        m.indices.insert(m.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
-    }
-    return m;
 }
 
 // The world box around a model box placed by `model`.
