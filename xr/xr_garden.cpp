@@ -311,7 +311,8 @@ private:
             }
             if (overlay_) drawPanels();
             const garden::RenderStats rs = renderer_.endFrame();
-            drawn = {rs.trianglesDrawn, rs.chunksDrawn, rs.drawCalls, rs.gpuMs(), rs.impostorsDrawn, rs.sculpturesHidden};
+            drawn = {rs.trianglesDrawn, rs.chunksDrawn, rs.drawCalls, rs.gpuMs(), rs.impostorsDrawn, rs.sculpturesHidden,
+                     rs.shadowMapsDrawn, rs.shadowMapsKept};
             ++info_.framesRendered;
         }
         headset_.endFrame(f, render, kNearZ, kFarZ);

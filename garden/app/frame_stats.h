@@ -37,6 +37,8 @@ struct FrameStats {
     std::size_t drawCalls = 0;                  // GL draw calls (chunks go out batched)
     std::size_t impostorsDrawn = 0;             // far sculptures drawn as impostor cards
     std::size_t sculpturesHidden = 0;           // left out as hidden behind nearer ones
+    std::size_t shadowMapsDrawn = 0;            // views whose shadow map was drawn (0 headless)
+    std::size_t shadowMapsKept = 0;             // views that kept the one drawn before (Renderer::setShadowReuse)
     // GPU milliseconds of the latest frame the GPU finished (timer queries,
     // read without waiting: a frame or a few behind); -1 where unknown.
     double gpuMs = -1.0;

@@ -432,6 +432,8 @@ void GardenSession::uploadAndRender(ViewSink& views) {
     stats().gpuMs = drawn.gpuMs;
     stats().impostorsDrawn = drawn.impostorsDrawn;
     stats().sculpturesHidden = drawn.sculpturesHidden;
+    stats().shadowMapsDrawn = drawn.shadowMapsDrawn;
+    stats().shadowMapsKept = drawn.shadowMapsKept;
 }
 
 void GardenSession::input(const Hands& hands, double dt) {

@@ -26,6 +26,8 @@ struct ViewDraw {
     double gpuMs = -1.0;        // the GPU's time for the latest frame it finished; -1 unknown
     std::size_t impostorsDrawn = 0;  // far sculptures drawn as cards (impostors) instead of chunks
     std::size_t sculpturesHidden = 0;  // left out as hidden behind nearer ones (occlusion queries)
+    std::size_t shadowMapsDrawn = 0;   // views whose shadow map was drawn
+    std::size_t shadowMapsKept = 0;    // views that kept the map drawn before (nothing it shows changed)
 };
 
 class ViewSink {

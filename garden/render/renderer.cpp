@@ -534,7 +534,7 @@ bool Renderer::renderShadows(const glm::vec3& lo, const glm::vec3& hi) {
     };
     if (shadowReuse_ && shadowHolds_ && *shadowHolds_ == inputs && shadowBatch_->drawsTheSameAs(*shadowHeldCasters_) &&
         sameCards()) {
-        stats_.shadowMapsReused += 1;
+        stats_.shadowMapsKept += 1;
         return true;
     }
     timers_->begin(GpuPass::Shadow);

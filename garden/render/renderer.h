@@ -128,7 +128,7 @@ struct RenderStats {
     std::size_t drawCalls = 0;        // GL draw calls for the scene, lines and sphere: one per batch of chunks
     std::size_t shadowDrawCalls = 0;  // GL draw calls of the casters into the shadow map
     std::size_t shadowMapsDrawn = 0;   // views whose shadow map was drawn
-    std::size_t shadowMapsReused = 0;  // views that kept the map drawn before (nothing it shows changed)
+    std::size_t shadowMapsKept = 0;  // views that kept the map drawn before (nothing it shows changed)
     std::size_t bytesUploaded = 0;
     std::size_t impostorsDrawn = 0;   // cards drawn in place of far sculptures' chunks
     std::size_t impostorsBaked = 0;   // impostors rendered into the atlas since the last endFrame

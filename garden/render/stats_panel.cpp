@@ -106,6 +106,8 @@ void drawStatsPanel(const FrameHistory& history, bool toggle, const std::functio
         counterRow("draw calls", last->drawCalls);
         counterRow("impostors drawn", last->impostorsDrawn);
         counterRow("sculptures hidden", last->sculpturesHidden);
+        counterRow("shadow maps drawn", last->shadowMapsDrawn);
+        counterRow("shadow maps kept", last->shadowMapsKept);
         ImGui::EndTable();
     }
     if (memory) {

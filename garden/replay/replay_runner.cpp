@@ -260,6 +260,7 @@ std::string statsJson(const ReplayScript& script, const ReplayResult& result) {
                           {"triangles_drawn", f.trianglesDrawn},
                           {"chunks_drawn", f.chunksDrawn}, {"draw_calls", f.drawCalls},
                           {"impostors_drawn", f.impostorsDrawn}, {"sculptures_hidden", f.sculpturesHidden},
+                          {"shadow_maps_drawn", f.shadowMapsDrawn}, {"shadow_maps_kept", f.shadowMapsKept},
                           {"gpu_ms", f.gpuMs}});
     }
     const double n = std::max<double>(1.0, static_cast<double>(result.stats.size()));

@@ -64,6 +64,17 @@ TEST_F(ReplayCli, OffscreenWritesScreenshotsAndStats) {
     std::size_t chunks = 0;
     for (const auto& f : j["frames"]) chunks = std::max<std::size_t>(chunks, f["chunks_drawn"].get<std::size_t>());
     EXPECT_GT(chunks, 0u);
+    // One view a frame: its shadow map drawn, or kept from the frame before
+    // once nothing it shows changes (the garden settled, standing still).
+    std::size_t mapsDrawn = 0, mapsKept = 0;
+    for (const auto& f : j["frames"]) {
+        const auto d = f["shadow_maps_drawn"].get<std::size_t>(), k = f["shadow_maps_kept"].get<std::size_t>();
+        EXPECT_LE(d + k, 1u);
+        mapsDrawn += d;
+        mapsKept += k;
+    }
+    EXPECT_GT(mapsDrawn, 0u);
+    EXPECT_GT(mapsKept, 0u) << "the settled garden keeps its shadow map";
 }
 
 // --impostor-distance: sculptures farther than it from the eye are drawn

@@ -235,7 +235,7 @@ TEST_F(LookTest, TheShadowMapIsKeptWhileNothingItShowsChanges) {
     const std::vector<std::uint8_t> first = color_;
     s = frame(here);
     EXPECT_EQ(s.shadowMapsDrawn, 0u);
-    EXPECT_EQ(s.shadowMapsReused, 1u) << "nothing changed: the map is kept";
+    EXPECT_EQ(s.shadowMapsKept, 1u) << "nothing changed: the map is kept";
     EXPECT_EQ(color_, first) << "and gives the same picture";
 
     s = frame(there);
@@ -250,8 +250,8 @@ TEST_F(LookTest, TheShadowMapIsKeptWhileNothingItShowsChanges) {
 
     // Two eyes a few centimetres apart see the same casters: one map.
     s = frame(there, {-0.032f, 0.032f});
-    EXPECT_EQ(s.shadowMapsDrawn + s.shadowMapsReused, 2u);
-    EXPECT_EQ(s.shadowMapsReused, 2u) << "both eyes keep the map of the frame before";
+    EXPECT_EQ(s.shadowMapsDrawn + s.shadowMapsKept, 2u);
+    EXPECT_EQ(s.shadowMapsKept, 2u) << "both eyes keep the map of the frame before";
 
     // A new mesh for the chunk (a carve, a new level) of the same size and
     // box, in the same place of the arena: the same draws, other bytes.
@@ -273,7 +273,7 @@ TEST_F(LookTest, TheShadowMapIsKeptWhileNothingItShowsChanges) {
     quality.shadowMapSize = 1024;
     renderer_->setQuality(quality);
     EXPECT_EQ(frame(there).shadowMapsDrawn, 1u) << "another size";
-    EXPECT_EQ(frame(there).shadowMapsReused, 1u);
+    EXPECT_EQ(frame(there).shadowMapsKept, 1u);
 }
 
 TEST_F(LookTest, ALitFlatFaceHasNoShadowAcne) {
