@@ -310,9 +310,7 @@ private:
                 headset_.releaseEye(eye);
             }
             if (overlay_) drawPanels();
-            const garden::RenderStats rs = renderer_.endFrame();
-            drawn = {rs.trianglesDrawn, rs.chunksDrawn, rs.drawCalls, rs.gpuMs(), rs.impostorsDrawn, rs.sculpturesHidden,
-                     rs.shadowMapsDrawn, rs.shadowMapsKept};
+            drawn = garden::viewDrawOf(renderer_.endFrame());
             ++info_.framesRendered;
         }
         headset_.endFrame(f, render, kNearZ, kFarZ);

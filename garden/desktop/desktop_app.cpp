@@ -374,8 +374,7 @@ int runDesktopOn(GardenSession& session, GardenWindow& gardenWindow, const Deskt
         drawNotice(notice, fb);
         drawSaveBanner(session, {0.5f * (static_cast<float>(fb.x) - bannerWidth), 10.0f}, bannerWidth);
         overlay.render();
-        return ViewDraw{r.trianglesDrawn, r.chunksDrawn, r.drawCalls, r.gpuMs(), r.impostorsDrawn, r.sculpturesHidden,
-            r.shadowMapsDrawn, r.shadowMapsKept};
+        return viewDrawOf(r);
     });
     // The mouse's buttons and moves come as events (pointer_events.h); this
     // is where they left it at the end of the last frame.

@@ -53,8 +53,7 @@ ViewDraw OffscreenGarden::render(GardenSession& session) {
     // The CPU cost of drawing includes waiting for llvmpipe here: a software
     // GPU; on hardware this is where the driver would queue the frame.
     OffscreenTarget::finish();
-    return {r.trianglesDrawn, r.chunksDrawn, r.drawCalls, r.gpuMs(), r.impostorsDrawn, r.sculpturesHidden,
-            r.shadowMapsDrawn, r.shadowMapsKept};
+    return viewDrawOf(r);
 }
 
 void OffscreenGarden::setQuality(const RenderQuality& quality) { impl_->renderer.setQuality(quality); }

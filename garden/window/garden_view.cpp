@@ -50,6 +50,11 @@ void worldBox(const glm::mat4& model, const glm::vec3& lo, const glm::vec3& hi, 
 
 }  // namespace
 
+ViewDraw viewDrawOf(const RenderStats& r) {
+    return ViewDraw{r.trianglesDrawn,  r.chunksDrawn,      r.drawCalls,       r.gpuMs(),
+                    r.impostorsDrawn,  r.sculpturesHidden, r.shadowMapsDrawn, r.shadowMapsKept};
+}
+
 ViewUpload GardenView::upload(const GardenSession& session, double allowanceMs) {
     const auto start = std::chrono::steady_clock::now();
     ViewUpload done;

@@ -20,6 +20,10 @@
 
 namespace hg::garden {
 
+// What a frame's views drew, for the frame's stats (garden/app/view_sink.h),
+// from the renderer's endFrame: the desktop, the headset and offscreen alike.
+ViewDraw viewDrawOf(const RenderStats& r);
+
 class GardenView {
 public:
     explicit GardenView(Renderer& renderer) : renderer_(renderer) {}
