@@ -75,6 +75,7 @@
 #include <nlohmann/json.hpp>
 
 #include "../bench_common.h"
+#include "../bench_json.h"
 
 #include "garden/app/garden_session.h"
 #include "garden/app/memory_report.h"
@@ -95,6 +96,7 @@ using namespace hg::garden;
 using bench::Spread;
 using bench::spread;
 using bench::spreadCell;
+using bench::spreadJson;
 using Clock = std::chrono::steady_clock;
 
 constexpr std::uint64_t kUnlimited = std::uint64_t{1} << 40;
@@ -693,7 +695,6 @@ std::uint64_t peakResidentBytes() {
 void resetPeakResident() { std::ofstream("/proc/self/clear_refs") << "5"; }
 
 
-nlohmann::json spreadJson(const Spread& s) { return {{"mean", s.mean}, {"p95", s.p95}, {"p99", s.p99}, {"max", s.max}}; }
 
 // The walk: down the aisle between the middle columns, from the start
 // (two rows before the grid) at 1.5 m/s, turning the head 35 degrees left

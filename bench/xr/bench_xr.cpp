@@ -28,6 +28,7 @@
 #include <nlohmann/json.hpp>
 
 #include "../bench_common.h"
+#include "../bench_json.h"
 
 #include "garden/app/frame_stats.h"
 #include "garden/app/garden_session.h"
@@ -135,19 +136,18 @@ nlohmann::json spreadRow(const char* phase, const std::vector<garden::FrameStats
         over += s.totalMs > s.budgetMs || s.gpuMs > s.budgetMs;
         for (std::size_t k = 0; k < stage.size(); ++k) stage[k].push_back(s.stageMs[k]);
     }
-    auto json = [](const bench::Spread& v) { return nlohmann::json{{"mean", v.mean}, {"p95", v.p95}, {"p99", v.p99}, {"max", v.max}}; };
     std::printf("| %s | %d | %.1f |", phase, last - first + 1, stats[static_cast<std::size_t>(first)].budgetMs);
     nlohmann::json row = {{"phase", phase}, {"frames", last - first + 1}, {"over_budget", over},
                           {"budget_ms", stats[static_cast<std::size_t>(first)].budgetMs}};
     for (std::size_t k = 0; k < stage.size(); ++k) {
         const bench::Spread v = bench::spread(stage[k]);
         std::printf(" %s |", bench::spreadCell(v).c_str());
-        row["stages_ms"][garden::stageName(static_cast<garden::Stage>(k))] = json(v);
+        row["stages_ms"][garden::stageName(static_cast<garden::Stage>(k))] = bench::spreadJson(v);
     }
     std::printf(" %s | %s | %d |\n", bench::spreadCell(bench::spread(total)).c_str(),
                 gpu.empty() ? "-" : bench::spreadCell(bench::spread(gpu)).c_str(), over);
-    row["total_ms"] = json(bench::spread(total));
-    row["gpu_ms"] = json(bench::spread(gpu));
+    row["total_ms"] = bench::spreadJson(bench::spread(total));
+    row["gpu_ms"] = bench::spreadJson(bench::spread(gpu));
     return row;
 }
 
