@@ -16,6 +16,8 @@ const void* byteOffset(std::size_t bytes) { return reinterpret_cast<const void*>
 
 GLsizeiptr bytes(std::size_t n) { return static_cast<GLsizeiptr>(n); }
 
+std::size_t slotBytes(const ArenaSlot& s) { return s.vertexCount * kVertexBytes + s.indexCount * kIndexBytes; }
+
 gl::Buffer makeBuffer(GLenum target, std::size_t size) {
     gl::Buffer b = gl::Buffer::create();
     glBindBuffer(target, b.get());
@@ -173,7 +175,7 @@ std::size_t ChunkArena::place(ChunkId id, const poly::Mesh& mesh) {
                     mesh.indices.data());
     glBindVertexArray(0);
     slots_[id] = slot;
-    return vertexCount * kVertexBytes + indexCount * kIndexBytes;
+    return slotBytes(slot);
 }
 
 // --- background defragmentation ---------------------------------------------------
@@ -184,8 +186,6 @@ double fill(const RangeAllocator& space) {
     return space.capacity() == 0 ? 1.0 : static_cast<double>(space.used()) / static_cast<double>(space.capacity());
 }
 
-std::size_t slotBytes(const ArenaSlot& s) { return s.vertexCount * kVertexBytes + s.indexCount * kIndexBytes; }
-
 void copyBytes(GLuint from, std::size_t fromByte, GLuint to, std::size_t toByte, std::size_t count) {
     glBindBuffer(GL_COPY_READ_BUFFER, from);
     glBindBuffer(GL_COPY_WRITE_BUFFER, to);
@@ -195,16 +195,16 @@ void copyBytes(GLuint from, std::size_t fromByte, GLuint to, std::size_t toByte,
 
 }  // namespace
 
+double ChunkArena::fullness(std::size_t p) const {
+    return std::max(fill(pages_[p]->vertexSpace), fill(pages_[p]->indexSpace));
+}
+
 bool ChunkArena::chooseEvacuee() {
-    // How full a page is: the fuller of its two buffers.
-    auto fullness = [&](std::size_t p) {
-        return std::max(fill(pages_[p]->vertexSpace), fill(pages_[p]->indexSpace));
-    };
     std::size_t freeVertices = 0, freeIndices = 0;
     for (const auto& page : pages_)
         if (page) {
-            freeVertices += page->vertexSpace.capacity() - page->vertexSpace.used();
-            freeIndices += page->indexSpace.capacity() - page->indexSpace.used();
+            freeVertices += page->vertexSpace.unused();
+            freeIndices += page->indexSpace.unused();
         }
     std::size_t best = kNoPage;
     for (std::size_t p = 1; p < pages_.size(); ++p) {
@@ -214,8 +214,8 @@ bool ChunkArena::chooseEvacuee() {
         // room for what comes next, or a page would be made again at once
         // (and half is a need, not a promise: free space can be in pieces
         // too small; move() finds out).
-        const std::size_t otherVertices = freeVertices - (page.vertexSpace.capacity() - page.vertexSpace.used());
-        const std::size_t otherIndices = freeIndices - (page.indexSpace.capacity() - page.indexSpace.used());
+        const std::size_t otherVertices = freeVertices - page.vertexSpace.unused();
+        const std::size_t otherIndices = freeIndices - page.indexSpace.unused();
         if (2 * page.vertexSpace.used() > otherVertices || 2 * page.indexSpace.used() > otherIndices) continue;
         if (best == kNoPage || fullness(p) < fullness(best)) best = p;
     }
@@ -263,9 +263,7 @@ std::size_t ChunkArena::compact(std::size_t byteBudget) {
     std::vector<std::size_t> into;
     for (std::size_t p = 0; p < pages_.size(); ++p)
         if (hasPage(p) && p != evacuating_) into.push_back(p);
-    std::stable_sort(into.begin(), into.end(), [&](std::size_t a, std::size_t b) {
-        return fill(pages_[a]->vertexSpace) > fill(pages_[b]->vertexSpace);
-    });
+    std::stable_sort(into.begin(), into.end(), [&](std::size_t a, std::size_t b) { return fullness(a) > fullness(b); });
     std::size_t moved = 0;
     while (evacuating_ != kNoPage && !evacuees_.empty() && moved < byteBudget) {
         const ChunkId id = evacuees_.back();

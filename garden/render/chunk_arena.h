@@ -109,10 +109,13 @@ private:
     static constexpr std::size_t kNoPage = static_cast<std::size_t>(-1);
     std::size_t makePage(std::size_t vertices, std::size_t indices);
     void bindAttributes(const Page& page);
-    // Takes `count` vertices and `indices` indices from page `p`: where they lie.
+    // Takes `vertices` vertices and `indices` indices from page `p` into
+    // `slot`; false (and nothing taken) when the page lacks either.
     bool allocateIn(std::size_t p, std::size_t vertices, std::size_t indices, ArenaSlot& slot);
     // Gives a slot's ranges back; a page other than the first goes with its last chunk.
     void release(const ArenaSlot& slot);
+    // How full page `p` is: the fuller of its two buffers.
+    double fullness(std::size_t p) const;
     // The page compact() should empty, and its chunks, largest first; false when none.
     bool chooseEvacuee();
     // Moves chunk `id` out of its page into another; false when none holds it.

@@ -28,6 +28,7 @@ public:
 
     std::size_t capacity() const { return capacity_; }
     std::size_t used() const { return used_; }
+    std::size_t unused() const { return capacity_ - used_; }  // free, in however many pieces
     std::size_t largestFree() const;
     std::size_t freeRanges() const { return free_.size(); }
 

@@ -37,6 +37,11 @@ std::vector<glm::vec3> cubeEdges(const glm::mat4& place, float scaleToMetre) {
     return p;
 }
 
+// Milliseconds since `start`: the upload stage keeps to its allowance.
+double msSince(const std::chrono::steady_clock::time_point& start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
 // The world box around a model box placed by `model`.
 void worldBox(const glm::mat4& model, const glm::vec3& lo, const glm::vec3& hi, glm::vec3& worldLo, glm::vec3& worldHi) {
     worldLo = glm::vec3(1e30f);
@@ -94,10 +99,10 @@ ViewUpload GardenView::upload(const GardenSession& session, double allowanceMs) 
             u.meshLo = glm::min(u.meshLo, lo);
             u.meshHi = glm::max(u.meshHi, hi);
         }
-        spent = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count() >= allowanceMs;
+        spent = msSince(start) >= allowanceMs;
     }
     if (!spent) bakeImpostors(session, start, allowanceMs);
-    if (std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count() < allowanceMs)
+    if (msSince(start) < allowanceMs)
         renderer_.compactArena(arenaCompactBytes_);
     return done;
 }
@@ -166,7 +171,7 @@ void GardenView::bakeImpostors(const GardenSession& session, const std::chrono::
     std::vector<ChunkId> ids;
     for (std::size_t s : wanted) {
         if (baked >= kBakesPerFrame ||
-            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count() >= allowanceMs)
+            msSince(start) >= allowanceMs)
             break;
         const Sculpture& st = session.sculptures()[s];
         // From the meshes on show, whole: every chunk meshed at its level and uploaded.
