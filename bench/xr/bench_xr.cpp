@@ -59,6 +59,16 @@ constexpr const char* kScript = R"({"garden": "%GARDEN%", "steps": [
 
 const Phase kPhases[] = {{"carving", 2, 91}, {"navigation", 100, 279}, {"morph", 280, 459}};
 
+// Writes `text` to `path`; false, and a message naming the file, when it cannot.
+bool writeText(const std::string& path, const std::string& text) {
+    std::ofstream out(path, std::ios::binary);
+    out << text;
+    out.close();
+    if (out) return true;
+    std::fprintf(stderr, "bench_xr: cannot write %s\n", path.c_str());
+    return false;
+}
+
 struct ScaleOptions {
     int count = 0;  // 0: the default garden's carve, walk and morph
     int resolution = 64;
@@ -119,8 +129,7 @@ std::string writeScaleGarden(const std::filesystem::path& dir, const ScaleOption
     g["start"]["position"][0] = x;
     g["start"]["look_at"][0] = x;
     const std::filesystem::path out = dir / ("scale" + std::to_string(o.count) + ".json");
-    std::ofstream(out) << g.dump(1);
-    return out.string();
+    return writeText(out.string(), g.dump(1)) ? out.string() : std::string();
 }
 
 // The frames of `stats` from `first` to `last` (inclusive): a row of mean /
@@ -153,6 +162,7 @@ nlohmann::json spreadRow(const char* phase, const std::vector<garden::FrameStats
 
 int runScale(const ScaleOptions& o, const bench::BenchArgs& args, const std::filesystem::path& dir) {
     const std::string gardenPath = writeScaleGarden(dir, o);
+    if (gardenPath.empty()) return 1;
     const nlohmann::json script = {
         {"garden", gardenPath},
         {"steps",
@@ -160,7 +170,7 @@ int runScale(const ScaleOptions& o, const bench::BenchArgs& args, const std::fil
           {{"frames", o.walkFrames},
            {"navigation", {{"aim", {{"position", {-0.2, 1.0, -0.3}}}}, {"thumbstick", {0, 1}}}}}}}};
     const std::string scriptPath = (dir / "bench_xr_scale.json").string();
-    std::ofstream(scriptPath) << script.dump(1);
+    if (!writeText(scriptPath, script.dump(1))) return 1;
     ::setenv("HG_MOCK_XR_SCRIPT", scriptPath.c_str(), 1);
     if (!o.view.empty()) ::setenv("HG_MOCK_XR_VIEW_SIZE", o.view.c_str(), 1);
 
@@ -192,10 +202,11 @@ int runScale(const ScaleOptions& o, const bench::BenchArgs& args, const std::fil
     if (static_cast<int>(frames.size()) > settled)
         rows.push_back(spreadRow("walk", frames, settled, static_cast<int>(frames.size()) - 1));
     if (!args.jsonPath.empty())
-        std::ofstream(args.jsonPath) << nlohmann::json{{"sculptures", o.count}, {"resolution", o.resolution},
+        return writeText(args.jsonPath, nlohmann::json{{"sculptures", o.count}, {"resolution", o.resolution},
                                                        {"view", o.view}, {"quality", o.quality}, {"rows", rows}}
-                                            .dump(2)
-                                     << "\n";
+                                                .dump(2) + "\n")
+                   ? 0
+                   : 1;
     return 0;
 }
 
@@ -219,7 +230,7 @@ int main(int argc, char** argv) {
     std::string script = kScript;
     script.replace(script.find("%GARDEN%"), 8, std::string(HG_SOURCE_DIR) + "/content/gardens/default.json");
     const std::string scriptPath = (dir / "bench_xr.json").string();
-    std::ofstream(scriptPath) << script;
+    if (!writeText(scriptPath, script)) return 1;
     ::setenv("HG_MOCK_XR_SCRIPT", scriptPath.c_str(), 1);
 
     std::vector<garden::FrameStats> frames;
@@ -264,6 +275,6 @@ int main(int argc, char** argv) {
         std::printf(" %d |\n", over);
         rows.push_back(row);
     }
-    if (!args.jsonPath.empty()) std::ofstream(args.jsonPath) << rows.dump(2) << "\n";
+    if (!args.jsonPath.empty() && !writeText(args.jsonPath, rows.dump(2) + "\n")) return 1;
     return 0;
 }
