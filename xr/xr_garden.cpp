@@ -46,7 +46,7 @@ namespace hg::xr {
 
 namespace {
 
-constexpr float kNearZ = 0.05f, kFarZ = 500.0f;
+constexpr float kNearZ = 0.05f, kFarZ = garden::GardenView::kFarPlane;
 // The tool hand's ray into the air, stage metres (the world's at scale 1).
 constexpr float kToolRayLength = 1.5f;
 constexpr int kMirrorWidth = 640, kMirrorHeight = 640;

@@ -139,7 +139,8 @@ void main() {
     float metallic = vLook.w;
     // As the mesh program: a metal's highlight takes its colour.
     specular = mix(specular, base * (0.6 + specular), metallic);
-    fragColor = shade(base * (1.0 - 0.6 * metallic), normalize(mat3(vModel) * n), world.xyz, specular, vLook.z);
+    fragColor = aerial(shade(base * (1.0 - 0.6 * metallic), normalize(mat3(vModel) * n), world.xyz, specular, vLook.z),
+                       world.xyz);
     // Last, so the derivatives above saw every pixel of the quad.
     if (covered < 0.5) discard;
 }

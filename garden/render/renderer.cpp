@@ -133,7 +133,8 @@ Renderer::Renderer()
     glUniform1i(m.uniform("uDrawRecords"), kDrawRecordUnit);
     const ShaderProgram& g = groundProgram_;
     ground_ = {g.uniform("uViewProjection"), g.uniform("uGroundColor"), g.uniform("uLineColor"),
-               g.uniform("uSpacing"),        g.uniform("uLineWidth"),   g.uniform("uMajorEvery")};
+               g.uniform("uSpacing"),        g.uniform("uLineWidth"),   g.uniform("uMajorEvery"),
+               g.uniform("uGardenHalfExtent"), g.uniform("uGridReach"), g.uniform("uStripeWidth")};
     const ShaderProgram& f = flatProgram_;
     flat_ = {f.uniform("uModel"), f.uniform("uView"), f.uniform("uProjection"), f.uniform("uColor")};
     f.use();
@@ -178,7 +179,8 @@ Renderer::~Renderer() = default;
 Renderer::LitUniforms Renderer::litUniforms(const ShaderProgram& p) {
     return LitUniforms{p.uniform("uEye"),         p.uniform("uAmbient"),       p.uniform("uLightCount"),
                        p.uniform("uLightDir"),    p.uniform("uLightColor"),    p.uniform("uPointCount"),
-                       p.uniform("uPointPosition"), p.uniform("uPointColor"), p.uniform("uPointRange")};
+                       p.uniform("uPointPosition"), p.uniform("uPointColor"), p.uniform("uPointRange"),
+                       p.uniform("uHaze"),        p.uniform("uHazeDistance")};
 }
 
 Renderer::ShadowUniforms Renderer::shadowUniforms(const ShaderProgram& p) {
@@ -373,6 +375,8 @@ void Renderer::setLighting(const LitUniforms& u, const ShadowUniforms& s, bool s
     glUniform3fv(u.pointPosition, kMaxPointLights, glm::value_ptr(positions[0]));
     glUniform3fv(u.pointColor, kMaxPointLights, glm::value_ptr(pointColors[0]));
     glUniform1fv(u.pointRange, kMaxPointLights, ranges);
+    glUniform3fv(u.haze, 1, glm::value_ptr(srgbToLinear(glm::vec3(view_.clearColor))));
+    glUniform1f(u.hazeDistance, std::max(view_.hazeDistance, 0.0f));
 
     glUniform1i(s.enabled, shadowed ? 1 : 0);
     if (shadowed) {
@@ -690,6 +694,9 @@ void Renderer::drawGroundNow(const GroundStyle& ground) {
     glUniform1f(ground_.spacing, ground.spacing > 0.0f ? ground.spacing : 1.0f);
     glUniform1f(ground_.lineWidth, ground.lineWidth);
     glUniform1i(ground_.majorEvery, ground.majorEvery);
+    glUniform2fv(ground_.gardenHalfExtent, 1, glm::value_ptr(ground.gardenHalfExtent));
+    glUniform1f(ground_.gridReach, ground.gridReach);
+    glUniform1f(ground_.stripeWidth, ground.stripeWidth);
     // Pushed back by its own depth slope: lines lying on the ground (the
     // morph triangle) and sculpture bases win against it even at grazing
     // angles, where a pixel spans centimetres of depth.

@@ -109,6 +109,9 @@ struct View {
     std::vector<DirectionalLight> lights;              // at most kMaxLights
     std::vector<PointLight> pointLights;               // at most kMaxPointLights
     glm::vec3 ambient{0.2f, 0.2f, 0.2f};               // linear
+    // Aerial perspective: at this distance the horizon's colour covers 63%
+    // of what lies there, 98% at twice it; 0 for none (docs/rendering.md, "Haze").
+    float hazeDistance = 0.0f;
 };
 
 struct GroundStyle {
@@ -118,6 +121,9 @@ struct GroundStyle {
     int majorEvery = 10;                       // a wider line every N lines (0: none)
     float lineWidth = 1.5f;                    // pixels
     float halfExtent = 100.0f;                 // the plane spans [-h, h] in x and z, at y = 0
+    glm::vec2 gardenHalfExtent{0.0f};  // grid and stripes within |x| <= g.x, |z| <= g.y; a meadow beyond (0: the whole plane)
+    float gridReach = 0.0f;         // the grid shows whole within this many metres of the eye, gone by twice (0: everywhere)
+    float stripeWidth = 0.0f;       // metres a mown stripe (0: none)
 };
 
 enum class LineMode { Segments, Strip, Loop };
@@ -280,7 +286,8 @@ private:
         glm::vec3 lo{0.0f}, hi{0.0f};  // model-space bounds, for fitting the shadow map
     };
     struct LitUniforms {
-        GLint eye, ambient, lightCount, lightDir, lightColor, pointCount, pointPosition, pointColor, pointRange;
+        GLint eye, ambient, lightCount, lightDir, lightColor, pointCount, pointPosition, pointColor, pointRange, haze,
+            hazeDistance;
     };
     struct ShadowUniforms {
         GLint enabled, matrix, offset, texel;
@@ -330,7 +337,8 @@ private:
         GLint viewProjection, bump;
     } mesh_{};
     struct {
-        GLint viewProjection, groundColor, lineColor, spacing, lineWidth, majorEvery;
+        GLint viewProjection, groundColor, lineColor, spacing, lineWidth, majorEvery, gardenHalfExtent, gridReach,
+            stripeWidth;
     } ground_{};
     struct {
         GLint model, view, projection, color;

@@ -71,6 +71,21 @@ namespace hg::garden::shaders {
     "    float a = dot(ambient, w), d = dot(direct, w);\n"                            \
     "    /* occlusion dims the ambient light, and a third of the direct: form reads */\n" \
     "    return vec4(ambient + direct, (a + kDirectOcclusion * d) / max(a + d, 1e-5));\n" \
+    "}\n"                                                                             \
+    "/* Aerial perspective: the sky's horizon colour over what lies far off, */\n"   \
+    "/* so the lawn meets the sky without an edge and depth reads in a big */\n"    \
+    "/* garden (docs/rendering.md, \"Haze\"). The haze is not occluded: */\n"        \
+    "/* alpha keeps the fraction of the hazed colour occlusion may dim. */\n"       \
+    "uniform vec3 uHaze;\n"                                                          \
+    "uniform float uHazeDistance;\n"                                                 \
+    "vec4 aerial(vec4 lit, vec3 p) {\n"                                              \
+    "    if (uHazeDistance <= 0.0) return lit;\n"                                    \
+    "    float r = length(p - uEye) / uHazeDistance;\n"                               \
+    "    float f = 1.0 - exp(-r * r);\n"                                             \
+    "    vec3 c = mix(lit.rgb, uHaze, f);\n"                                         \
+    "    vec3 w = vec3(0.2126, 0.7152, 0.0722);\n"                                   \
+    "    float dimmable = lit.a * (1.0 - f) * dot(lit.rgb, w);\n"                   \
+    "    return vec4(c, clamp(dimmable / max(dot(c, w), 1e-5), 0.0, 1.0));\n"       \
     "}\n"
 
 const char* const kMeshVertex = "#version 330 core\n" HG_DRAW_RECORD_GLSL R"(
@@ -244,7 +259,7 @@ void main() {
     // A metal's highlight is its own colour and strong; its diffuse light
     // fades (Blinn-Phong's stand-in for a metal's missing diffuse term).
     specular = mix(specular, base * (0.6 + specular), metallic);
-    fragColor = shade(base * (1.0 - 0.6 * metallic), n, vWorld, specular, shininess);
+    fragColor = aerial(shade(base * (1.0 - 0.6 * metallic), n, vWorld, specular, shininess), vWorld);
 }
 )";
 
@@ -265,6 +280,9 @@ uniform vec3 uLineColor;
 uniform float uSpacing;
 uniform float uLineWidth;   // pixels
 uniform int uMajorEvery;
+uniform vec2 uGardenHalfExtent;   // the mown garden: |x|, |z| within it; 0: all of it
+uniform float uGridReach;         // metres from the eye the grid shows whole; 0: everywhere
+uniform float uStripeWidth;       // metres a mown stripe; 0: none
 out vec4 fragColor;
 // Value noise in world space: the lawn looks the same from anywhere.
 float hash(vec2 p) {
@@ -293,15 +311,43 @@ float grid(vec2 coord, float width) {
     float line = 1.0 - smoothstep(0.5 * width - 0.5, 0.5 * width + 0.5, min(d.x, d.y));
     return line * (1.0 - smoothstep(0.15, 0.35, max(w.x, w.y)));
 }
+// Mown stripes: alternate bands of constant x whose blades lean towards +z
+// and -z, so a band is lighter seen along its lean and darker against it,
+// and the stripes swap as the visitor turns. -1..1, anti-aliased at the
+// band edges, gone where a band shrinks to a pixel or two.
+float mownStripe(vec2 p) {
+    if (uStripeWidth <= 0.0) return 0.0;
+    float t = p.x / uStripeWidth;
+    float ft = max(fwidth(t), 1e-6);
+    float triangle = abs(fract(0.5 * t) - 0.5) * 4.0 - 1.0;  // +-1 at band centres
+    float band = clamp(triangle / max(2.0 * ft, 0.04), -1.0, 1.0);
+    vec3 toEye = uEye - vWorld;
+    float along = toEye.z / max(length(toEye), 1e-4);
+    return band * along * (1.0 - smoothstep(0.25, 0.5, ft));
+}
 void main() {
+    // 1 inside the garden's mown lawn, 0 in the meadow beyond, over a few
+    // centimetres (a pixel or more).
+    float garden = 1.0;
+    if (uGardenHalfExtent.x > 0.0 && uGardenHalfExtent.y > 0.0) {
+        vec2 inside = uGardenHalfExtent - abs(vWorld.xz);
+        float edge = max(max(fwidth(vWorld.x), fwidth(vWorld.z)), 0.05);
+        garden = smoothstep(-edge, edge, min(inside.x, inside.y));
+    }
     vec2 coord = vWorld.xz / uSpacing;
     float line = grid(coord, uLineWidth);
     if (uMajorEvery > 1) line = max(line, grid(coord / float(uMajorEvery), 2.0 * uLineWidth));
+    // The grid is for scale near the visitor, not a pattern to the horizon.
+    if (uGridReach > 0.0) line *= 1.0 - smoothstep(uGridReach, 2.0 * uGridReach, length(vWorld - uEye));
+    line *= garden;
     float n = lawn(vWorld.xz);
     // Lighter, yellower where the grass is dry; darker and greener where lush.
     vec3 grass = toLinear(uGroundColor) * (0.7 + 0.6 * n) * mix(vec3(1.0), vec3(1.12, 1.06, 0.78), smoothstep(0.55, 0.8, n));
+    // The meadow beyond the garden is longer grass: darker, a little dry.
+    vec3 meadow = grass * vec3(0.82, 0.84, 0.72);
+    grass = mix(meadow, grass * (1.0 + 0.1 * mownStripe(vWorld.xz)), garden);
     vec3 base = mix(grass, toLinear(uLineColor), line);
-    fragColor = shade(base, vec3(0.0, 1.0, 0.0), vWorld, vec3(0.0), 1.0);
+    fragColor = aerial(shade(base, vec3(0.0, 1.0, 0.0), vWorld, vec3(0.0), 1.0), vWorld);
 }
 )";
 

@@ -190,7 +190,7 @@ void GardenView::bakeImpostors(const GardenSession& session, const std::chrono::
 
 void GardenView::render(const GardenSession& session, glm::ivec2 viewport, float fovY) {
     render(session, viewport, session.navigator().view(),
-           glm::perspective(fovY, static_cast<float>(viewport.x) / static_cast<float>(std::max(viewport.y, 1)), 0.05f, 500.0f),
+           glm::perspective(fovY, static_cast<float>(viewport.x) / static_cast<float>(std::max(viewport.y, 1)), 0.05f, kFarPlane),
            session.navigator().eye());
 }
 
@@ -203,12 +203,19 @@ void GardenView::render(const GardenSession& session, glm::ivec2 viewport, const
     v.eye = eye;
     v.viewport = viewport;
     addGardenLights(g, v);
+    v.hazeDistance = kHazeDistance;
     renderer_.beginFrame(v);
 
+    // The garden's lawn, mown in stripes, with a survey grid near the
+    // visitor for scale; a meadow beyond it to the far plane, where the
+    // haze meets the sky (docs/rendering.md, "The ground and the haze").
     GroundStyle ground;
     ground.color = glm::vec3(g.ground.material.color[0], g.ground.material.color[1], g.ground.material.color[2]);
-    ground.lineColor = ground.color * 0.8f;  // a faint survey grid over the lawn, for scale
-    ground.halfExtent = static_cast<float>(std::max(g.ground.size[0], g.ground.size[1]) * 0.5);
+    ground.lineColor = ground.color * 0.8f;
+    ground.gardenHalfExtent = 0.5f * glm::vec2(static_cast<float>(g.ground.size[0]), static_cast<float>(g.ground.size[1]));
+    ground.halfExtent = std::max(kFarPlane, std::max(ground.gardenHalfExtent.x, ground.gardenHalfExtent.y));
+    ground.gridReach = kGridReach;
+    ground.stripeWidth = kStripeWidth;
     renderer_.drawGround(ground);
 
     for (std::size_t p = 0; p < g.paths.size(); ++p)

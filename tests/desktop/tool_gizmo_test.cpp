@@ -119,7 +119,11 @@ protected:
         settings.maxLevel = 1;
         settings.viewportHeight = kHeight;
         settings.fovY = glm::radians(double(kFovY));
-        session_ = std::make_unique<GardenSession>(loadGarden(test::writeSmallGarden(scratch_)), settings);
+        // A grey lawn: the tool's green is the only green in the picture
+        // (a green lawn's lighter stripes come near the test's threshold).
+        const nlohmann::json greyLawn = {{"materials", {{"grey", {{"color", {0.5, 0.5, 0.5}}}}}},
+                                         {"ground", {{"material", "grey"}}}};
+        session_ = std::make_unique<GardenSession>(loadGarden(test::writeSmallGarden(scratch_, greyLawn)), settings);
         // 3 m in front of ball c (radius 0.6, centre (2, 0.5, 1.1547)), looking along -z.
         session_->navigator().setMode(NavigationMode::Fly);
         session_->navigator().setPose({2.0f, 0.5f, 4.1547f}, 0.0f, 0.0f);

@@ -1,0 +1,184 @@
+// The garden's ground and air (docs/rendering.md, "The ground and the
+// haze"), read back as pixels: the survey grid near the eye only, mown
+// stripes that swap with the view, a meadow beyond the garden, and haze
+// that takes what is far to the horizon's colour.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "garden/render/shapes.h"
+#include "gl_fixture.h"
+
+namespace hg::garden::test {
+namespace {
+
+class GroundTest : public GlTest {
+protected:
+    void SetUp() override {
+        GlTest::SetUp();
+        if (!renderer_) return;
+        renderer_->setQuality(plainQuality());
+    }
+    void drawGround(const View& view, const GroundStyle& ground) {
+        target_->bind();
+        renderer_->beginFrame(view);
+        renderer_->drawGround(ground);
+        renderer_->endFrame();
+        read();
+    }
+    // Where the ray through pixel (x, y) meets the ground (y = 0); false
+    // above the horizon.
+    bool groundHit(const View& v, int x, int y, glm::vec3& hit) const {
+        const glm::vec3 d = rayDirection(v, x, y);
+        if (d.y >= -1e-4f) return false;
+        hit = v.eye + (-v.eye.y / d.y) * d;
+        return true;
+    }
+};
+
+// Mean brightness of pixels on a grid line of constant x and of pixels in
+// the middle of cells, among ground pixels between lo and hi metres away.
+struct LineContrast {
+    double line = 0, cell = 0;
+    int lines = 0, cells = 0;
+};
+
+TEST_F(GroundTest, TheGridShowsNearTheEyeAndNotBeyondItsReach) {
+    const View view = makeView({0.37f, 1.6f, 0.0f}, {0.37f, 0.0f, -7.0f});
+    GroundStyle ground;
+    ground.color = {0.7f, 0.7f, 0.7f};
+    ground.lineColor = {0.1f, 0.1f, 0.1f};
+    ground.majorEvery = 0;
+    auto contrast = [&](float lo, float hi) {
+        LineContrast c;
+        for (int y = 0; y < kHeight; ++y)
+            for (int x = 0; x < kWidth - 1; ++x) {
+                glm::vec3 hit, next;
+                if (!groundHit(view, x, y, hit) || !groundHit(view, x + 1, y, next)) continue;
+                const float distance = glm::distance(hit, view.eye);
+                if (distance < lo || distance > hi) continue;
+                const float footprint = std::fabs(next.x - hit.x);
+                const float dx = std::fabs(hit.x - std::round(hit.x));
+                const float dz = std::fabs(hit.z - std::round(hit.z));
+                if (dx < 0.2f * footprint && dz > 0.2f) {
+                    c.line += pixel(x, y).sum();
+                    ++c.lines;
+                } else if (dx > 0.3f && dz > 0.3f) {
+                    c.cell += pixel(x, y).sum();
+                    ++c.cells;
+                }
+            }
+        return c;
+    };
+
+    drawGround(view, ground);  // no reach: lines everywhere
+    const LineContrast nearAll = contrast(1.6f, 3.0f), farAll = contrast(9.0f, 14.0f);
+    ground.gridReach = 4.0f;
+    drawGround(view, ground);
+    const LineContrast nearReach = contrast(1.6f, 3.0f), farReach = contrast(9.0f, 14.0f);
+
+    for (const LineContrast* c : {&nearAll, &farAll, &nearReach, &farReach}) {
+        ASSERT_GT(c->lines, 10);
+        ASSERT_GT(c->cells, 200);
+    }
+    auto ratio = [](const LineContrast& c) { return (c.line / c.lines) / (c.cell / c.cells); };
+    EXPECT_LT(ratio(farAll), 0.8) << "without a reach the far lines show";
+    EXPECT_LT(ratio(nearReach), 0.6) << "within reach the lines show";
+    EXPECT_NEAR(ratio(farReach), 1.0, 0.03) << "beyond twice the reach the lawn has no lines";
+    EXPECT_NEAR(ratio(nearReach), ratio(nearAll), 0.02) << "the reach leaves near lines as they were";
+}
+
+TEST_F(GroundTest, MownStripesSwapWithTheViewAndTheMeadowBeyondIsUnmown) {
+    GroundStyle ground;
+    ground.lineWidth = 0.0f;
+    ground.stripeWidth = 1.0f;
+    ground.gardenHalfExtent = {3.0f, 3.0f};
+    // Per side of the lawn: the brightness of even bands (round(x) even)
+    // less that of odd bands, and the mean brightness.
+    struct Bands {
+        double even = 0, odd = 0, all = 0;
+        int evens = 0, odds = 0, count = 0;
+        double difference() const { return even / evens - odd / odds; }
+        double mean() const { return all / count; }
+    };
+    auto look = [&](const glm::vec3& eye, Bands& garden, Bands& meadow) {
+        const View view = makeView(eye, {0.0f, 0.0f, 0.0f});
+        drawGround(view, ground);
+        for (int y = 0; y < kHeight; ++y)
+            for (int x = 0; x < kWidth; ++x) {
+                glm::vec3 hit;
+                if (!groundHit(view, x, y, hit)) continue;
+                const float edge = std::max(std::fabs(hit.x), std::fabs(hit.z));
+                if (edge > 2.8f && edge < 3.2f) continue;  // the garden's edge
+                // Bands are centred on whole metres of x; their edges left out.
+                if (std::fabs(hit.x - std::round(hit.x)) > 0.3f) continue;
+                Bands& b = edge < 3.0f ? garden : meadow;
+                const bool even = (static_cast<long>(std::lround(hit.x)) % 2 + 2) % 2 == 0;
+                (even ? b.even : b.odd) += pixel(x, y).sum();
+                ++(even ? b.evens : b.odds);
+                b.all += pixel(x, y).sum();
+                ++b.count;
+            }
+    };
+    Bands gardenFront, meadowFront, gardenBack, meadowBack;
+    look({0.0f, 2.5f, 7.0f}, gardenFront, meadowFront);
+    look({0.0f, 2.5f, -7.0f}, gardenBack, meadowBack);
+    for (const Bands* b : {&gardenFront, &meadowFront, &gardenBack, &meadowBack}) {
+        ASSERT_GT(b->evens, 300);
+        ASSERT_GT(b->odds, 300);
+    }
+    // The lawn's own patches are the same from either side: what changes
+    // between the views is the stripes' sheen.
+    const double swap = gardenFront.difference() - gardenBack.difference();
+    EXPECT_GT(std::fabs(swap), 0.08 * gardenFront.mean()) << "the garden's stripes swap light and dark";
+    const double meadowSwap = meadowFront.difference() - meadowBack.difference();
+    EXPECT_LT(std::fabs(meadowSwap), 0.25 * std::fabs(swap)) << "the meadow is not mown";
+    EXPECT_LT(meadowFront.mean(), 0.93 * gardenFront.mean()) << "the meadow's longer grass is darker";
+    EXPECT_LT(meadowBack.mean(), 0.93 * gardenBack.mean());
+}
+
+TEST_F(GroundTest, HazeTakesFarSurfacesToTheHorizonColourAndLeavesNearOnesAlone) {
+    renderer_->upload(1, 1, uvSphereMesh(1.0f, 48, 24));
+    const RenderMaterial red{{0.9f, 0.1f, 0.1f}, 0.0f, 16.0f};
+    GroundStyle ground;
+    ground.lineWidth = 0.0f;
+    ground.halfExtent = kFar;
+    auto draw = [&](float haze) {
+        View view = makeView({0.0f, 1.7f, 0.0f}, {0.0f, 1.7f, -10.0f});
+        view.hazeDistance = haze;
+        target_->bind();
+        renderer_->beginFrame(view);
+        renderer_->drawGround(ground);
+        renderer_->drawChunk(1, glm::translate(glm::mat4(1.0f), glm::vec3(-1.5f, 1.7f, -8.0f)), red);
+        renderer_->drawChunk(1, glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(20.0f, 1.7f, -150.0f)), glm::vec3(12.0f)),
+                             red);
+        renderer_->endFrame();
+        read();
+        return view;
+    };
+    const View view = draw(0.0f);
+    const glm::ivec2 nearPx = worldToPixel(view, {-1.5f, 1.7f, -8.0f});
+    const glm::ivec2 farPx = worldToPixel(view, {20.0f, 1.7f, -150.0f});
+    // The horizon is the middle row: ground 5 rows below it lies about
+    // 95 m away (inside the far plane), sky 2 rows above; at the left
+    // edge, clear of the near sphere.
+    const int horizonRow = kHeight / 2;
+    const Rgba nearClear = pixel(nearPx.x, nearPx.y), farClear = pixel(farPx.x, farPx.y);
+    const Rgba groundClear = pixel(6, horizonRow + 5), skyClear = pixel(6, horizonRow - 2);
+    ASSERT_TRUE(reddish(nearClear));
+    ASSERT_TRUE(reddish(farClear));
+    EXPECT_GT(std::abs(groundClear.b - skyClear.b), 60) << "without haze the lawn ends against the sky";
+
+    draw(40.0f);
+    const Rgba nearHazy = pixel(nearPx.x, nearPx.y), farHazy = pixel(farPx.x, farPx.y);
+    const Rgba groundHazy = pixel(6, horizonRow + 5), skyHazy = pixel(6, horizonRow - 2);
+    EXPECT_NEAR(nearHazy.r, nearClear.r, 12) << "8 m away: hardly any haze";
+    EXPECT_NEAR(nearHazy.g, nearClear.g, 12);
+    EXPECT_FALSE(reddish(farHazy)) << "150 m away: the haze covers it";
+    EXPECT_NEAR(farHazy.b, skyHazy.b, 8) << "in the horizon's colour";
+    EXPECT_NEAR(groundHazy.b, skyHazy.b, 8) << "the lawn meets the sky without an edge";
+    EXPECT_NEAR(groundHazy.g, skyHazy.g, 8);
+}
+
+}  // namespace
+}  // namespace hg::garden::test
