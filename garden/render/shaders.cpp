@@ -303,6 +303,16 @@ float lawn(vec2 p) {
     n += 0.15 * mix(noise(p / 0.035 + 3.0), 0.5, smoothstep(0.01, 0.03, w));
     return n;
 }
+// Blades seen close: centimetre tufts and the shade between them, -1..1,
+// streaked along z, the way the mower laid them (the stripes' lean); 0
+// where they shrink below a pixel, so nothing shimmers.
+float blades(vec2 p) {
+    float w = max(fwidth(p.x), fwidth(p.y));
+    float seen = 1.0 - smoothstep(0.004, 0.012, w);
+    if (seen <= 0.0) return 0.0;
+    float b = 0.6 * noise(p / vec2(0.008, 0.035)) + 0.4 * noise(p / vec2(0.004, 0.015) + 5.0);
+    return seen * (2.0 * b - 1.0);
+}
 // 1 on a line of the grid with the given spacing, 0 between, anti-aliased
 // over a pixel; fades out where cells shrink to a few pixels (no moire).
 float grid(vec2 coord, float width) {
@@ -343,6 +353,9 @@ void main() {
     float n = lawn(vWorld.xz);
     // Lighter, yellower where the grass is dry; darker and greener where lush.
     vec3 grass = toLinear(uGroundColor) * (0.7 + 0.6 * n) * mix(vec3(1.0), vec3(1.12, 1.06, 0.78), smoothstep(0.55, 0.8, n));
+    // Close by: lit blade tips a little yellower, the shade between them deeper.
+    float blade = blades(vWorld.xz);
+    grass *= (1.0 + 0.35 * blade) * mix(vec3(1.0), vec3(1.08, 1.04, 0.8), max(blade, 0.0));
     // The meadow beyond the garden is longer grass: darker, a little dry.
     vec3 meadow = grass * vec3(0.82, 0.84, 0.72);
     grass = mix(meadow, grass * (1.0 + 0.1 * mownStripe(vWorld.xz)), garden);

@@ -211,7 +211,7 @@ void GardenView::render(const GardenSession& session, glm::ivec2 viewport, const
     // haze meets the sky (docs/rendering.md, "The ground and the haze").
     GroundStyle ground;
     ground.color = glm::vec3(g.ground.material.color[0], g.ground.material.color[1], g.ground.material.color[2]);
-    ground.lineColor = ground.color * 0.8f;
+    ground.lineColor = ground.color * 0.88f;  // faint: scale, not a tiled floor
     ground.gardenHalfExtent = 0.5f * glm::vec2(static_cast<float>(g.ground.size[0]), static_cast<float>(g.ground.size[1]));
     ground.halfExtent = std::max(kFarPlane, std::max(ground.gardenHalfExtent.x, ground.gardenHalfExtent.y));
     ground.gridReach = kGridReach;
@@ -219,7 +219,7 @@ void GardenView::render(const GardenSession& session, glm::ivec2 viewport, const
     renderer_.drawGround(ground);
 
     for (std::size_t p = 0; p < g.paths.size(); ++p)
-        renderer_.drawChunk(pathId(p), glm::mat4(1.0f), renderMaterial(g.paths[p].material));
+        renderer_.drawChunk(pathId(p), glm::mat4(1.0f), renderMaterial(g.paths[p].material, kPathDetailScale));
     if (renderer_.occlusionCulling()) forgetHiddenBehindChanges(session);
     const auto& sculptures = session.sculptures();
     for (std::size_t s = 0; s < sculptures.size(); ++s) {

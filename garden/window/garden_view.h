@@ -76,6 +76,10 @@ public:
     static constexpr float kGridReach = 6.0f;
     // Metres a mown stripe of the garden's lawn.
     static constexpr float kStripeWidth = 1.5f;
+    // A path's material detail is sized in metres of the path (its mesh is
+    // in world units): a tenth puts stone's grains at about a centimetre,
+    // gravel underfoot, where a sculpture's detail is sized to its model.
+    static constexpr float kPathDetailScale = 0.1f;
 
     // Metres from the eye to a sculpture's bounding sphere beyond which it
     // is drawn as its impostor card (0: never; --impostor-distance).
