@@ -4,6 +4,7 @@
 #include "garden/app/garden_session.h"
 #include "garden/window/garden_view.h"
 #include "garden/window/garden_window.h"
+#include "garden/render/garden_ground.h"
 #include "garden/render/gl_context.h"
 #include "garden/render/image_target.h"
 #include "garden/render/offscreen_target.h"
@@ -46,7 +47,7 @@ namespace hg::xr {
 
 namespace {
 
-constexpr float kNearZ = 0.05f, kFarZ = garden::GardenView::kFarPlane;
+constexpr float kNearZ = 0.05f, kFarZ = garden::kGardenFarPlane;
 // The tool hand's ray into the air, stage metres (the world's at scale 1).
 constexpr float kToolRayLength = 1.5f;
 constexpr int kMirrorWidth = 640, kMirrorHeight = 640;

@@ -23,6 +23,7 @@
 #include "../bench_common.h"
 #include "frep/eval/model.h"
 #include "frep/language/parser.h"
+#include "garden/render/garden_ground.h"
 #include "garden/render/gl_context.h"
 #include "garden/render/material_look.h"
 #include "garden/scene/materials.h"
@@ -67,6 +68,9 @@ struct Row {
     // The shadow map kept while nothing it shows changes (Renderer::
     // setShadowReuse): off in every row but one, which measure the pass.
     bool keepShadows = false;
+    // The garden's ground and air (gardenGround: stripes, blades, the grid
+    // near the eye, the meadow, haze) instead of the plain grid.
+    bool gardenLawn = false;
 };
 
 RenderQuality low() { return qualityOf(QualityPreset::Low); }
@@ -101,6 +105,7 @@ int main(int argc, char** argv) {
     view.ambient = glm::vec3(0.2f);
     GroundStyle ground;
     ground.halfExtent = 20.0f;
+    const GroundStyle lawn = gardenGround({0.16f, 0.30f, 0.10f}, {40.0f, 40.0f});  // the default garden's
     const RenderMaterial stone{{0.76f, 0.62f, 0.44f}, 0.1f, 8.0f};
 
     std::vector<Row> rows;
@@ -140,6 +145,10 @@ int main(int argc, char** argv) {
     rows.push_back({"high + materials", qualityOf(QualityPreset::High), Look::Materials});
     rows.push_back({"high + clay view", qualityOf(QualityPreset::High), Look::Clay});
     rows.push_back({"high + wireframe", qualityOf(QualityPreset::High), Look::Wireframe});
+    // What the garden's lawn and haze cost over the plain ground: the peers
+    // are "low (all off)" and "high".
+    rows.push_back({"low + the garden's lawn and haze", low(), Look::Plain, false, true});
+    rows.push_back({"high + the garden's lawn and haze", qualityOf(QualityPreset::High), Look::Plain, false, true});
     // The built-ins but plain, in turn over the blocks; the pattern a tenth
     // of a block (1.2 m tall), as the garden view sets it.
     std::vector<RenderMaterial> kinds;
@@ -162,8 +171,10 @@ int main(int argc, char** argv) {
         RenderStats stats;
         auto frame = [&] {
             target.bind();
-            renderer.beginFrame(view);
-            renderer.drawGround(ground);
+            View v = view;
+            v.hazeDistance = row.gardenLawn ? kGardenHazeDistance : 0.0f;
+            renderer.beginFrame(v);
+            renderer.drawGround(row.gardenLawn ? lawn : ground);
             for (int i = 0; i < 9; ++i) {
                 const glm::vec3 at(float(i % 3 - 1) * 2.2f, 0.6f, float(i / 3 - 1) * 2.2f);
                 const RenderMaterial m = row.look == Look::Materials   ? kinds[std::size_t(i) % kinds.size()]

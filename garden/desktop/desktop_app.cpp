@@ -28,6 +28,7 @@
 #include "garden/desktop/session_panel.h"
 #include "garden/desktop/view_framing.h"
 #include "garden/hands/desktop_hands.h"
+#include "garden/render/garden_ground.h"
 #include "garden/render/gl_context.h"
 #include "garden/render/key_table.h"
 #include "garden/render/overlay.h"
@@ -453,7 +454,7 @@ int runDesktopOn(GardenSession& session, GardenWindow& gardenWindow, const Deskt
             in.turn = held(KeyCommand::Turn);
             in.viewport = glm::vec2(fb);
             const glm::mat4 projection = glm::perspective(
-                fovY, static_cast<float>(fb.x) / static_cast<float>(std::max(fb.y, 1)), 0.05f, GardenView::kFarPlane);
+                fovY, static_cast<float>(fb.x) / static_cast<float>(std::max(fb.y, 1)), 0.05f, kGardenFarPlane);
             hands = desktopHands(in, pressed, session, projection, dt, carry);
             // The tool where the mouse points, unless it points at a panel.
             aim = mouse ? std::optional<Pose>(hands.tool.aim) : std::nullopt;

@@ -9,8 +9,8 @@
 
 #include "garden/app/garden_session.h"
 #include "garden/desktop/offscreen_garden.h"
+#include "garden/render/garden_ground.h"
 #include "garden/scene/to_glm.h"
-#include "garden/window/garden_view.h"
 
 namespace hg::garden {
 
@@ -66,7 +66,7 @@ TurntableCamera turntableCamera(const ShownBound& bound, const TurntableOptions&
     // Near enough for a camera close to a small sculpture, far enough for
     // depth precision; the far plane takes in the garden behind it.
     const float nearPlane = std::clamp(0.02f * distance, 0.005f, 0.05f);
-    c.projection = glm::perspective(fovY, aspect, nearPlane, std::max(GardenView::kFarPlane, 4.0f * distance));
+    c.projection = glm::perspective(fovY, aspect, nearPlane, std::max(kGardenFarPlane, 4.0f * distance));
     return c;
 }
 

@@ -9,6 +9,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "garden/render/frustum_test.h"
+#include "garden/render/garden_ground.h"
 #include "garden/window/impostor_identity.h"
 #include "garden/window/path_mesh.h"
 #include "garden/window/view_lights.h"
@@ -190,7 +191,7 @@ void GardenView::bakeImpostors(const GardenSession& session, const std::chrono::
 
 void GardenView::render(const GardenSession& session, glm::ivec2 viewport, float fovY) {
     render(session, viewport, session.navigator().view(),
-           glm::perspective(fovY, static_cast<float>(viewport.x) / static_cast<float>(std::max(viewport.y, 1)), 0.05f, kFarPlane),
+           glm::perspective(fovY, static_cast<float>(viewport.x) / static_cast<float>(std::max(viewport.y, 1)), 0.05f, kGardenFarPlane),
            session.navigator().eye());
 }
 
@@ -203,19 +204,14 @@ void GardenView::render(const GardenSession& session, glm::ivec2 viewport, const
     v.eye = eye;
     v.viewport = viewport;
     addGardenLights(g, v);
-    v.hazeDistance = kHazeDistance;
+    v.hazeDistance = kGardenHazeDistance;
     renderer_.beginFrame(v);
 
-    // The garden's lawn, mown in stripes, with a survey grid near the
-    // visitor for scale; a meadow beyond it to the far plane, where the
-    // haze meets the sky (docs/rendering.md, "The ground and the haze").
-    GroundStyle ground;
-    ground.color = glm::vec3(g.ground.material.color[0], g.ground.material.color[1], g.ground.material.color[2]);
-    ground.lineColor = ground.color * 0.88f;  // faint: scale, not a tiled floor
-    ground.gardenHalfExtent = 0.5f * glm::vec2(static_cast<float>(g.ground.size[0]), static_cast<float>(g.ground.size[1]));
-    ground.halfExtent = std::max(kFarPlane, std::max(ground.gardenHalfExtent.x, ground.gardenHalfExtent.y));
-    ground.gridReach = kGridReach;
-    ground.stripeWidth = kStripeWidth;
+    // The garden's lawn, mown in stripes, a meadow beyond it to the far
+    // plane, where the haze meets the sky (garden/render/garden_ground.h).
+    const GroundStyle ground =
+        gardenGround(glm::vec3(g.ground.material.color[0], g.ground.material.color[1], g.ground.material.color[2]),
+                     glm::vec2(static_cast<float>(g.ground.size[0]), static_cast<float>(g.ground.size[1])));
     renderer_.drawGround(ground);
 
     for (std::size_t p = 0; p < g.paths.size(); ++p)

@@ -65,17 +65,6 @@ public:
     // paths: a turntable shows one sculpture, with nothing passing in front.
     void showOnly(int index) { only_ = index; }
 
-    // The far plane of every garden view (desktop, headset, offscreen): the
-    // meadow reaches it, and the haze has covered it there.
-    static constexpr float kFarPlane = 500.0f;
-    // Aerial perspective: 63% haze at this distance, 99% at the far plane;
-    // under 1% within 20 m, about 19% at 100 m.
-    static constexpr float kHazeDistance = 220.0f;
-    // The survey grid shows whole within this many metres of the eye (gone
-    // by twice): scale by one's feet, not a tiled floor to the horizon.
-    static constexpr float kGridReach = 6.0f;
-    // Metres a mown stripe of the garden's lawn.
-    static constexpr float kStripeWidth = 1.5f;
     // A path's material detail is sized in metres of the path (its mesh is
     // in world units): a tenth puts stone's grains at about a centimetre,
     // gravel underfoot, where a sculpture's detail is sized to its model.

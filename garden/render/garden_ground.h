@@ -1,0 +1,30 @@
+// The garden's ground and air as every garden view draws them (desktop,
+// headset, offscreen, turntable): a mown lawn with a survey grid near the
+// eye, a meadow beyond it to the far plane, and haze where the meadow meets
+// the sky. docs/rendering.md, "The ground and the haze".
+#pragma once
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include "garden/render/renderer.h"
+
+namespace hg::garden {
+
+// The far plane of every garden view: the meadow reaches it, and the haze
+// has covered it there.
+constexpr float kGardenFarPlane = 500.0f;
+// Aerial perspective (View::hazeDistance): 63% haze at this distance, 99%
+// at the far plane; under 1% within 20 m, about 19% at 100 m.
+constexpr float kGardenHazeDistance = 220.0f;
+// The survey grid shows whole within this many metres of the eye (gone by
+// twice): scale by one's feet, not a tiled floor to the horizon.
+constexpr float kGardenGridReach = 6.0f;
+// Metres a mown stripe of the garden's lawn.
+constexpr float kGardenStripeWidth = 1.5f;
+
+// The ground of a garden whose lawn has this colour (sRGB) and spans
+// gardenSize metres along x and z about the origin.
+GroundStyle gardenGround(const glm::vec3& lawnColor, const glm::vec2& gardenSize);
+
+}  // namespace hg::garden
