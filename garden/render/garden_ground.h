@@ -20,6 +20,8 @@ constexpr float kGardenHazeDistance = 220.0f;
 // The survey grid shows whole within this many metres of the eye (gone by
 // twice): scale by one's feet, not a tiled floor to the horizon.
 constexpr float kGardenGridReach = 6.0f;
+// The garden's sky: scattered fair-weather clouds (View::clouds).
+constexpr float kGardenClouds = 0.55f;
 // Metres a mown stripe of the garden's lawn.
 constexpr float kGardenStripeWidth = 1.5f;
 

@@ -112,6 +112,8 @@ struct View {
     // Aerial perspective: at this distance the horizon's colour covers 63%
     // of what lies there, 98% at twice it; 0 for none (docs/rendering.md, "Haze").
     float hazeDistance = 0.0f;
+    // Clouds in the sky: 0 a clear sky (a bare View's), 1 about half covered.
+    float clouds = 0.0f;
 };
 
 struct GroundStyle {

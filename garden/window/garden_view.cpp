@@ -205,6 +205,7 @@ void GardenView::render(const GardenSession& session, glm::ivec2 viewport, const
     v.viewport = viewport;
     addGardenLights(g, v);
     v.hazeDistance = kGardenHazeDistance;
+    v.clouds = kGardenClouds;
     renderer_.beginFrame(v);
 
     // The garden's lawn, mown in stripes, a meadow beyond it to the far

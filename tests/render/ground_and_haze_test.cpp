@@ -1,10 +1,13 @@
 // The garden's ground and air (docs/rendering.md, "The ground and the
 // haze"), read back as pixels: the survey grid near the eye only, mown
-// stripes that swap with the view, a meadow beyond the garden, and haze
-// that takes what is far to the horizon's colour.
+// stripes that swap with the view, a meadow beyond the garden, blades
+// close by, haze that takes what is far to the horizon's colour, and
+// clouds in part of the sky.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <vector>
 
 #include "garden/render/shapes.h"
 #include "gl_fixture.h"
@@ -205,6 +208,42 @@ TEST_F(GroundTest, HazeTakesFarSurfacesToTheHorizonColourAndLeavesNearOnesAlone)
     EXPECT_NEAR(farHazy.b, skyHazy.b, 8) << "in the horizon's colour";
     EXPECT_NEAR(groundHazy.b, skyHazy.b, 8) << "the lawn meets the sky without an edge";
     EXPECT_NEAR(groundHazy.g, skyHazy.g, 8);
+}
+
+// Clouds cover part of the sky above the horizon, whiter than the clear
+// sky there, and nothing below it; a clear sky (a bare View's) has none.
+TEST_F(GroundTest, CloudsCoverPartOfTheSkyAndNothingBelowTheHorizon) {
+    auto sky = [&](float clouds) {
+        View view = makeView({0.0f, 1.7f, 0.0f}, {0.0f, 5.0f, -10.0f});
+        view.clouds = clouds;
+        target_->bind();
+        renderer_->beginFrame(view);
+        renderer_->endFrame();
+        read();
+        return view;
+    };
+    const View view = sky(0.0f);
+    const std::vector<std::uint8_t> clear = color_;
+    sky(0.55f);
+    int above = 0, clouded = 0, belowChanged = 0, below = 0;
+    for (int y = 0; y < kHeight; ++y)
+        for (int x = 0; x < kWidth; ++x) {
+            const std::size_t i = (static_cast<std::size_t>(y) * kWidth + static_cast<std::size_t>(x)) * 4;
+            const Rgba p = pixel(x, y);
+            if (rayDirection(view, x, y).y > 0.0f) {
+                ++above;
+                // A cloud: brighter than the clear sky there, and nearly grey.
+                clouded += (p.sum() > int(clear[i]) + int(clear[i + 1]) + int(clear[i + 2]) + 60 && p.b - p.r < 40) ? 1 : 0;
+            } else {
+                ++below;
+                belowChanged += (p.r != clear[i] || p.g != clear[i + 1] || p.b != clear[i + 2]) ? 1 : 0;
+            }
+        }
+    ASSERT_GT(above, 10000);
+    ASSERT_GT(below, 1000);
+    EXPECT_GT(clouded, above / 25) << "clouds over part of the sky (8.6 % are this white here)";
+    EXPECT_LT(clouded, above * 8 / 10) << "and blue between them";
+    EXPECT_EQ(belowChanged, 0) << "no cloud below the horizon";
 }
 
 }  // namespace
