@@ -2,8 +2,8 @@
 // horizon to a deeper blue overhead, and the sun (the first directional
 // light) as a disc with a glow, in linear HDR so the tone mapper rolls it to
 // white; fair-weather clouds where View::clouds asks for them
-// (docs/rendering.md, "Sky and ground"). Drawn after the opaque scene at the far plane, so only uncovered
-// pixels are shaded.
+// (docs/rendering.md, "Sky and ground"). Drawn after the opaque scene at
+// the far plane, so only uncovered pixels are shaded.
 #pragma once
 
 #include "garden/render/gl_objects.h"
