@@ -14,6 +14,7 @@
 
 #include "../garden/session_garden.h"
 #include "garden/hands/hand_state.h"
+#include "garden/render/renderer.h"
 #include "xr/hand_panel.h"
 #include "xr/xr_garden.h"
 
@@ -73,5 +74,25 @@ inline std::string pressPanel(const glm::vec3& hand, const glm::vec2& uv) {
 }
 
 const glm::vec3 kPanelHand(-0.2f, 1.0f, -0.4f);
+
+// The clear sky in row y of an eye's RGBA image (w pixels wide): the row's
+// darkest pixel (clouds are brighter) is blue and no brighter than the sRGB
+// clear colour the renderer gives the horizon; the sky deepens overhead,
+// and a second sRGB encoding in the swapchain would brighten it past that.
+inline void expectClearSkyInRow(const unsigned char* px, int w, int y) {
+    const unsigned char* darkest = nullptr;
+    int darkestSum = 1 << 30;
+    for (int x = 0; x < w; ++x) {
+        const unsigned char* p = px + (static_cast<std::size_t>(y) * w + x) * 4;
+        if (p[0] + p[1] + p[2] < darkestSum) {
+            darkestSum = p[0] + p[1] + p[2];
+            darkest = p;
+        }
+    }
+    ASSERT_NE(darkest, nullptr);
+    const garden::View sky;
+    for (int c = 0; c < 3; ++c) EXPECT_LE(darkest[c], sky.clearColor[c] * 255.0f + 1.0f) << "row " << y << ", channel " << c;
+    EXPECT_GT(darkest[2], darkest[0] + 30) << "row " << y << ": blue sky";
+}
 
 }  // namespace hg::xr::test
