@@ -110,7 +110,8 @@ struct View {
     std::vector<PointLight> pointLights;               // at most kMaxPointLights
     glm::vec3 ambient{0.2f, 0.2f, 0.2f};               // linear
     // Aerial perspective: at this distance the horizon's colour covers 63%
-    // of what lies there, 98% at twice it; 0 for none (docs/rendering.md, "Haze").
+    // of what lies there, 98% at twice it; 0 for none (docs/rendering.md,
+    // "The ground and the haze").
     float hazeDistance = 0.0f;
     // Clouds in the sky: 0 a clear sky (a bare View's), 1 about half covered.
     float clouds = 0.0f;

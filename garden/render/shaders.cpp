@@ -273,7 +273,7 @@ void main() {
 }
 )";
 
-const char* const kGroundFragment = "#version 330 core\n" HG_LIGHTING_GLSL R"(
+const char* const kGroundFragment = "#version 330 core\n" HG_LIGHTING_GLSL HG_VALUE_NOISE_2D_GLSL R"(
 in vec3 vWorld;
 uniform vec3 uGroundColor;
 uniform vec3 uLineColor;
@@ -284,17 +284,7 @@ uniform vec2 uGardenHalfExtent;   // the mown garden: |x|, |z| within it; 0: all
 uniform float uGridReach;         // metres from the eye the grid shows whole; 0: everywhere
 uniform float uStripeWidth;       // metres a mown stripe; 0: none
 out vec4 fragColor;
-// Value noise in world space: the lawn looks the same from anywhere.
-float hash(vec2 p) {
-    p = fract(p * vec2(123.34, 456.21));
-    p += dot(p, p + 45.32);
-    return fract(p.x * p.y);
-}
-float noise(vec2 p) {
-    vec2 i = floor(p), f = fract(p);
-    vec2 u = f * f * (3.0 - 2.0 * f);
-    return mix(mix(hash(i), hash(i + vec2(1.0, 0.0)), u.x), mix(hash(i + vec2(0.0, 1.0)), hash(i + 1.0), u.x), u.y);
-}
+// Value noise (above) in world space: the lawn looks the same from anywhere.
 // Lawn: patches a few metres and under a metre across, and tufts of a few
 // centimetres that fade to their mean where they shrink below a pixel.
 float lawn(vec2 p) {

@@ -16,6 +16,21 @@
     "    return mix(c * 12.92, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(0.0031308, c));\n" \
     "}\n"
 
+// Value noise in the plane (hash after Dave Hoskins): 0..1, smooth, one
+// lattice cell a unit; the lawn's and the clouds' patterns.
+#define HG_VALUE_NOISE_2D_GLSL                                                        \
+    "float hash(vec2 p) {\n"                                                          \
+    "    p = fract(p * vec2(123.34, 456.21));\n"                                      \
+    "    p += dot(p, p + 45.32);\n"                                                   \
+    "    return fract(p.x * p.y);\n"                                                  \
+    "}\n"                                                                             \
+    "float noise(vec2 p) {\n"                                                         \
+    "    vec2 i = floor(p), f = fract(p);\n"                                          \
+    "    vec2 u = f * f * (3.0 - 2.0 * f);\n"                                         \
+    "    return mix(mix(hash(i), hash(i + vec2(1.0, 0.0)), u.x),\n"                   \
+    "               mix(hash(i + vec2(0.0, 1.0)), hash(i + 1.0), u.x), u.y);\n"       \
+    "}\n"
+
 // A batched chunk draw's record (chunk_batch.h): its model matrix, normal
 // matrix and material, kDrawRecordTexels texels from texture unit
 // kDrawRecordUnit. Texel 7 holds the sRGB base colour and the specular

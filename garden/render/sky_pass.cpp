@@ -21,7 +21,7 @@ void main() {
 }
 )";
 
-const char* const kSkyFragment = "#version 330 core\n" HG_SRGB_GLSL R"(
+const char* const kSkyFragment = "#version 330 core\n" HG_SRGB_GLSL HG_VALUE_NOISE_2D_GLSL R"(
 in vec2 vNdc;
 uniform mat4 uInverseViewProjection;
 uniform vec3 uHorizon;  // sRGB
@@ -30,16 +30,6 @@ uniform vec3 uSunDirection;
 uniform vec3 uSunColor;  // linear
 uniform float uClouds;   // 0: a clear sky; 1: clouds over about half of it
 out vec4 fragColor;
-float hash(vec2 p) {
-    p = fract(p * vec2(123.34, 456.21));
-    p += dot(p, p + 45.32);
-    return fract(p.x * p.y);
-}
-float noise(vec2 p) {
-    vec2 i = floor(p), f = fract(p);
-    vec2 u = f * f * (3.0 - 2.0 * f);
-    return mix(mix(hash(i), hash(i + vec2(1.0, 0.0)), u.x), mix(hash(i + vec2(0.0, 1.0)), hash(i + 1.0), u.x), u.y);
-}
 // Five octaves, about 0..1 with mean 0.5; each octave turned so the
 // lattice does not line up.
 float fbm(vec2 p) {
