@@ -47,7 +47,7 @@ namespace hg::xr {
 
 namespace {
 
-constexpr float kNearZ = 0.05f, kFarZ = garden::kGardenFarPlane;
+constexpr float kNearZ = garden::kGardenNearPlane, kFarZ = garden::kGardenFarPlane;
 // The tool hand's ray into the air, stage metres (the world's at scale 1).
 constexpr float kToolRayLength = 1.5f;
 constexpr int kMirrorWidth = 640, kMirrorHeight = 640;

@@ -453,8 +453,7 @@ int runDesktopOn(GardenSession& session, GardenWindow& gardenWindow, const Deskt
             in.wheel = mouse ? events.wheel : 0.0f;
             in.turn = held(KeyCommand::Turn);
             in.viewport = glm::vec2(fb);
-            const glm::mat4 projection = glm::perspective(
-                fovY, static_cast<float>(fb.x) / static_cast<float>(std::max(fb.y, 1)), 0.05f, kGardenFarPlane);
+            const glm::mat4 projection = gardenProjection(fovY, fb);
             hands = desktopHands(in, pressed, session, projection, dt, carry);
             // The tool where the mouse points, unless it points at a panel.
             aim = mouse ? std::optional<Pose>(hands.tool.aim) : std::nullopt;

@@ -2,7 +2,14 @@
 
 #include <algorithm>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 namespace hg::garden {
+
+glm::mat4 gardenProjection(float fovY, glm::ivec2 size) {
+    return glm::perspective(fovY, static_cast<float>(size.x) / static_cast<float>(std::max(size.y, 1)), kGardenNearPlane,
+                            kGardenFarPlane);
+}
 
 GroundStyle gardenGround(const glm::vec3& lawnColor, const glm::vec2& gardenSize) {
     GroundStyle ground;

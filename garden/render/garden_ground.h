@@ -4,6 +4,7 @@
 // the sky. docs/rendering.md, "The ground and the haze".
 #pragma once
 
+#include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
@@ -11,9 +12,13 @@
 
 namespace hg::garden {
 
-// The far plane of every garden view: the meadow reaches it, and the haze
-// has covered it there.
+// The near and far planes of every garden view: 5 cm keeps a sculpture held
+// close in the headset; the meadow reaches the far plane, and the haze has
+// covered it there.
+constexpr float kGardenNearPlane = 0.05f;
 constexpr float kGardenFarPlane = 500.0f;
+// A garden view's projection for a viewport of `size` pixels.
+glm::mat4 gardenProjection(float fovY, glm::ivec2 size);
 // Aerial perspective (View::hazeDistance): 63% haze at this distance, 99%
 // at the far plane; under 1% within 20 m, about 19% at 100 m.
 constexpr float kGardenHazeDistance = 220.0f;

@@ -74,8 +74,9 @@ namespace hg::garden::shaders {
     "}\n"                                                                             \
     "/* Aerial perspective: the sky's horizon colour over what lies far off, */\n"   \
     "/* so the lawn meets the sky without an edge and depth reads in a big */\n"    \
-    "/* garden (docs/rendering.md, \"Haze\"). The haze is not occluded: */\n"        \
-    "/* alpha keeps the fraction of the hazed colour occlusion may dim. */\n"       \
+    "/* garden (docs/rendering.md, \"The ground and the haze\"). The haze is */\n" \
+    "/* not occluded: alpha keeps the share of the hazed colour occlusion */\n"   \
+    "/* may dim. */\n"                                                             \
     "uniform vec3 uHaze;\n"                                                          \
     "uniform float uHazeDistance;\n"                                                 \
     "vec4 aerial(vec4 lit, vec3 p) {\n"                                              \

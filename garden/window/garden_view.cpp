@@ -191,7 +191,7 @@ void GardenView::bakeImpostors(const GardenSession& session, const std::chrono::
 
 void GardenView::render(const GardenSession& session, glm::ivec2 viewport, float fovY) {
     render(session, viewport, session.navigator().view(),
-           glm::perspective(fovY, static_cast<float>(viewport.x) / static_cast<float>(std::max(viewport.y, 1)), 0.05f, kGardenFarPlane),
+           gardenProjection(fovY, viewport),
            session.navigator().eye());
 }
 
