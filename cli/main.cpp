@@ -138,8 +138,10 @@ int main(int argc, char** argv) {
     replay->add_option("--remesh-chunks", replayOpts.remeshChunks, "Chunks remeshed per frame (default 16; 0: time budget)");
     replay->add_option("--res", replayOpts.resolution, "Every sculpture and the morph at this resolution");
     replay->add_flag("--no-lod", replayOpts.noLod, "Every chunk at full detail");
-    replay->add_option("--quality", replayOpts.quality, "Offscreen: low, medium or high (default; docs/rendering.md)")
-        ->check(CLI::IsMember({"low", "medium", "high"}));
+    replay->add_option("--quality", replayOpts.quality,
+                       "Offscreen: low, medium, high (default) or auto (as the desktop: stepped by the GPU's time against "
+                       "the script's budget_ms; docs/rendering.md)")
+        ->check(CLI::IsMember({"low", "medium", "high", "auto"}));
     replay->add_option("--impostor-distance", replayOpts.impostorDistance,
                        "Offscreen: far sculptures as impostor cards beyond this many metres (default 30; 0: never)")
         ->check(CLI::NonNegativeNumber);

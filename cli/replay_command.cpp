@@ -73,7 +73,10 @@ int runReplay(const ReplayCommandOptions& options) {
             std::cerr << "error: " << why << "\n";
             return 1;
         }
-        offscreen->setQuality(qualityOf(parseQualityPreset(options.quality).value_or(QualityPreset::High)));
+        if (options.quality == "auto")
+            offscreen->setAutoQuality(script.budgetMs);
+        else
+            offscreen->setQuality(qualityOf(parseQualityPreset(options.quality).value_or(QualityPreset::High)));
         offscreen->setImpostorDistance(options.impostorDistance);
     }
     ReplayOptions ro;
@@ -92,6 +95,7 @@ int runReplay(const ReplayCommandOptions& options) {
     if (!std::filesystem::exists(ro.screenshotDir)) std::filesystem::create_directories(ro.screenshotDir);
     ReplayResult result = hg::garden::runReplay(script, session, offscreen.get(), ro);
     for (const std::string& n : result.notes) std::cerr << "note: " << n << "\n";
+    if (offscreen && options.quality == "auto") std::cerr << "note: --quality auto: " << offscreen->autoQualitySummary() << "\n";
     if (!options.statsPath.empty()) {
         const std::string json = statsJson(script, result);
         const std::string why = io::writeFileAtomically(options.statsPath, json, io::WriteSite::Stats);

@@ -15,6 +15,15 @@ enum class Stage : int { Input = 0, Lod, Morph, Remesh, Upload, Render, Count };
 constexpr int kStageCount = static_cast<int>(Stage::Count);
 const char* stageName(Stage s);
 
+// The GPU's milliseconds for each render pass of a frame (docs/rendering.md,
+// "GPU time"); -1 where a pass did not run or is not measured yet.
+struct GpuPassMs {
+    double shadow = -1.0;
+    double scene = -1.0;
+    double occlusion = -1.0;  // ambient occlusion
+    double post = -1.0;       // the composite, lines and panels
+};
+
 struct FrameStats {
     std::uint64_t frame = 0;
     double budgetMs = 11.1;
@@ -42,6 +51,7 @@ struct FrameStats {
     // GPU milliseconds of the latest frame the GPU finished (timer queries,
     // read without waiting: a frame or a few behind); -1 where unknown.
     double gpuMs = -1.0;
+    GpuPassMs gpuPassMs;  // gpuMs pass by pass
 };
 
 // The last N frames, for the frame-time graph.

@@ -430,6 +430,7 @@ void GardenSession::uploadAndRender(ViewSink& views) {
     stats().chunksDrawn = drawn.chunksDrawn;
     stats().drawCalls = drawn.drawCalls;
     stats().gpuMs = drawn.gpuMs;
+    stats().gpuPassMs = drawn.gpuPassMs;
     stats().impostorsDrawn = drawn.impostorsDrawn;
     stats().sculpturesHidden = drawn.sculpturesHidden;
     stats().shadowMapsDrawn = drawn.shadowMapsDrawn;

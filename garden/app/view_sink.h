@@ -8,6 +8,8 @@
 
 #include <cstddef>
 
+#include "garden/app/frame_stats.h"
+
 namespace hg::garden {
 
 class GardenSession;
@@ -24,6 +26,7 @@ struct ViewDraw {
     std::size_t chunksDrawn = 0;
     std::size_t drawCalls = 0;  // GL calls: one per batch of chunks where multi-draw is on
     double gpuMs = -1.0;        // the GPU's time for the latest frame it finished; -1 unknown
+    GpuPassMs gpuPassMs;        // the same, pass by pass
     std::size_t impostorsDrawn = 0;  // far sculptures drawn as cards (impostors) instead of chunks
     std::size_t sculpturesHidden = 0;  // left out as hidden behind nearer ones (occlusion queries)
     std::size_t shadowMapsDrawn = 0;   // views whose shadow map was drawn

@@ -405,7 +405,9 @@ int runDesktopOn(GardenSession& session, GardenWindow& gardenWindow, const Deskt
         const double dt = std::min(0.1, std::chrono::duration<double>(now - last).count());
         last = now;
         fb = window.framebufferSize();
-        session.settings().viewportHeight = std::max(fb.y, 1);
+        // Levels for the pixels the scene is drawn at (the automatic
+        // quality's render scale), not the window's.
+        session.settings().viewportHeight = scenePixels(std::max(fb.y, 1), renderer.quality());
 
         // The window's keys and mouse become this frame's hands; what they
         // ask of the garden directly (reset the view, the detail sphere) are

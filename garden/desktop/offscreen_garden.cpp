@@ -1,7 +1,10 @@
 #include "garden/desktop/offscreen_garden.h"
 
+#include <cstdio>
+
 #include "garden/window/garden_view.h"
 #include "garden/render/gl_context.h"
+#include "garden/render/quality_governor.h"
 #include "garden/render/offscreen_target.h"
 #include "garden/render/screenshot.h"
 
@@ -13,6 +16,8 @@ struct OffscreenGarden::Impl {
     Renderer renderer;
     GardenView view{renderer};
     std::optional<Camera> camera;
+    std::optional<QualityGovernor> governor;  // replay --quality auto
+    int qualityChanges = 0;
 
     Impl(int width, int height)
         : window([] {
@@ -53,10 +58,38 @@ ViewDraw OffscreenGarden::render(GardenSession& session) {
     // The CPU cost of drawing includes waiting for llvmpipe here: a software
     // GPU; on hardware this is where the driver would queue the frame.
     OffscreenTarget::finish();
+    if (auto& g = impl_->governor) {
+        if (const auto q = g->observe(r.gpuMs())) {
+            impl_->renderer.setQuality(*q);
+            ++impl_->qualityChanges;
+        }
+        // From the next frame on, as the desktop does each frame.
+        session.settings().viewportHeight = scenePixels(impl_->target.height(), impl_->renderer.quality());
+    }
     return viewDrawOf(r);
 }
 
 void OffscreenGarden::setQuality(const RenderQuality& quality) { impl_->renderer.setQuality(quality); }
+
+void OffscreenGarden::setAutoQuality(double budgetMs) {
+    impl_->governor.emplace(rendererPreset(GlWindow::glVersionString()), budgetMs);
+    impl_->qualityChanges = 0;
+    impl_->renderer.setQuality(impl_->governor->quality());
+}
+
+std::string OffscreenGarden::autoQualitySummary() const {
+    const auto& g = impl_->governor;
+    if (!g) return "off";
+    const RenderQuality& q = g->quality();
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  "%d change%s against %.1f ms; ended on rung %zu of %zu (MSAA %dx, shadows %s, occlusion %s, render "
+                  "scale %.2f)",
+                  impl_->qualityChanges, impl_->qualityChanges == 1 ? "" : "s", g->budgetMs(), g->step() + 1,
+                  g->steps(), q.msaaSamples, q.shadows ? "on" : "off", q.ambientOcclusion ? "on" : "off",
+                  static_cast<double>(q.renderScale));
+    return text;
+}
 
 void OffscreenGarden::setCamera(const std::optional<Camera>& camera) { impl_->camera = camera; }
 

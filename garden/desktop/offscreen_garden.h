@@ -26,6 +26,12 @@ public:
     std::string screenshot(const std::string& path) override;
     // What the renderer spends on the picture (replay --quality).
     void setQuality(const RenderQuality& quality);
+    // `replay --quality auto`: as the desktop, the renderer's preset stepped
+    // down and up by the GPU's time against `budgetMs` (QualityGovernor),
+    // and the levels of detail chosen for the scene's pixels at its render
+    // scale. What it did, in words, for the replay's notes.
+    void setAutoQuality(double budgetMs);
+    std::string autoQualitySummary() const;
     // Chunks in one multi-draw (the default where GL 4.3 is there) or a call
     // each; false when multi-draw was asked for and is missing.
     bool setMultiDraw(bool on);

@@ -1,6 +1,9 @@
 #include "garden/render/post_process.h"
 
 #include <algorithm>
+#include <string>
+#include <tuple>
+#include <utility>
 
 #include "garden/render/shaders.h"
 
@@ -10,16 +13,16 @@ namespace {
 // A unit no other pass of the renderer binds (chunk_batch.h, impostor_atlas.h).
 constexpr GLint kViewZUnit = 7;
 
+// Compiled per configuration (PostProcess::variant): HG_SAMPLES, the scene's
+// samples a pixel; HG_OCCLUSION, 0 none, 1 at the scene's size, 2 coarser;
+// HG_SMOOTH, 1 where the scene is stretched bilinearly over the output.
 const char* const kCompositeFragment = "#version 330 core\n" HG_SRGB_GLSL R"(
 uniform sampler2DMS uColor;
 uniform sampler2DMS uDepth;
 uniform sampler2D uOcclusion;
 uniform sampler2D uViewZ;       // the scene's view z at full size (the occlusion's pyramid, level 0)
-uniform int uOcclusionScale;    // scene pixels per occlusion texel (1 or 2)
-uniform int uSamples;
+uniform int uOcclusionScale;    // scene pixels per occlusion texel (2 or more)
 uniform float uExposure;
-uniform bool uUseOcclusion;
-uniform bool uSmooth;   // the scene is stretched over more pixels than it has
 uniform vec2 uSize;     // the scene's pixels
 uniform vec2 uToScene;  // output pixel to scene pixel (the render scale)
 out vec4 fragColor;
@@ -41,12 +44,12 @@ vec3 toneMap(vec3 color) {
 // where it is ambient light, tone mapped, then averaged.
 vec3 resolved(ivec2 p, float open) {
     vec3 sum = vec3(0.0);
-    for (int i = 0; i < uSamples; ++i) {
+    for (int i = 0; i < HG_SAMPLES; ++i) {
         vec4 c = texelFetch(uColor, p, i);
         // alpha: the share of this sample's light that occlusion dims.
         sum += toneMap(max(c.rgb, vec3(0.0)) * mix(1.0, open, c.a) * uExposure);
     }
-    return sum / float(uSamples);
+    return sum / float(HG_SAMPLES);
 }
 // The occlusion at scene pixel p. At half resolution: the four texels
 // around, each weighted bilinearly and by how near the depth it was
@@ -54,8 +57,11 @@ vec3 resolved(ivec2 p, float open) {
 // depth falloff; where none is near (a sliver thinner than a texel), the
 // one nearest in depth.
 float openAt(ivec2 p) {
-    if (!uUseOcclusion) return 1.0;
-    if (uOcclusionScale == 1) return texelFetch(uOcclusion, p, 0).r;
+#if HG_OCCLUSION == 0
+    return 1.0;
+#elif HG_OCCLUSION == 1
+    return texelFetch(uOcclusion, p, 0).r;
+#else
     float z = texelFetch(uViewZ, p, 0).r;
     vec2 t = (vec2(p) + 0.5) / float(uOcclusionScale) - 0.5;
     ivec2 lo = ivec2(floor(t)), last = textureSize(uOcclusion, 0) - 1;
@@ -76,6 +82,7 @@ float openAt(ivec2 p) {
         }
     }
     return weights > 1e-4 ? sum / weights : nearestOpen;
+#endif
 }
 vec3 resolvedAt(ivec2 p) {
     return resolved(p, openAt(p));
@@ -84,7 +91,7 @@ void main() {
     vec2 s = gl_FragCoord.xy * uToScene;
     ivec2 p = ivec2(s);
     vec3 color;
-    if (uSmooth) {
+#if HG_SMOOTH
         // Stretched (render scale below 1): bilinear between the four scene
         // pixels around, each resolved first, so a hard edge of the scene
         // becomes a ramp instead of a staircase of doubled pixels.
@@ -94,9 +101,9 @@ void main() {
         ivec2 a = clamp(lo, ivec2(0), last), b = clamp(lo + 1, ivec2(0), last);
         color = mix(mix(resolvedAt(a), resolvedAt(ivec2(b.x, a.y)), f.x),
                     mix(resolvedAt(ivec2(a.x, b.y)), resolvedAt(b), f.x), f.y);
-    } else {
-        color = resolvedAt(p);
-    }
+#else
+    color = resolvedAt(p);
+#endif
     fragColor = vec4(toSrgb(color), 1.0);
     gl_FragDepth = texelFetch(uDepth, p, 0).r;
 }
@@ -104,32 +111,44 @@ void main() {
 
 }  // namespace
 
-PostProcess::PostProcess()
-    : program_("composite", shaders::kFullscreenVertex, kCompositeFragment), empty_(gl::VertexArray::create()) {
-    program_.use();
-    glUniform1i(program_.uniform("uColor"), 0);
-    glUniform1i(program_.uniform("uDepth"), 1);
-    glUniform1i(program_.uniform("uOcclusion"), 2);
-    glUniform1i(program_.uniform("uViewZ"), kViewZUnit);
-    samples_ = program_.uniform("uSamples");
-    exposure_ = program_.uniform("uExposure");
-    useOcclusion_ = program_.uniform("uUseOcclusion");
-    size_ = program_.uniform("uSize");
-    toScene_ = program_.uniform("uToScene");
-    smooth_ = program_.uniform("uSmooth");
-    occlusionScale_ = program_.uniform("uOcclusionScale");
+PostProcess::PostProcess() : empty_(gl::VertexArray::create()) {
+    variant(Configuration{});  // the common one now, and a broken shader fails here
+}
+
+PostProcess::~PostProcess() = default;
+
+const PostProcess::Variant& PostProcess::variant(const Configuration& c) {
+    auto found = variants_.find(c);
+    if (found != variants_.end()) return found->second;
+    const std::string defines = "#define HG_SAMPLES " + std::to_string(c.samples) + "\n#define HG_OCCLUSION " +
+                                std::to_string(c.occlusion) + "\n#define HG_SMOOTH " + (c.smooth ? "1" : "0") + "\n";
+    Variant v;
+    v.program = ShaderProgram("composite", shaders::kFullscreenVertex, withDefines(kCompositeFragment, defines).c_str());
+    const ShaderProgram& p = v.program;
+    p.use();
+    glUniform1i(p.uniform("uColor"), 0);
+    glUniform1i(p.uniform("uDepth"), 1);
+    glUniform1i(p.uniform("uOcclusion"), 2);
+    glUniform1i(p.uniform("uViewZ"), kViewZUnit);
+    v.exposure = p.uniform("uExposure");
+    v.size = p.uniform("uSize");
+    v.toScene = p.uniform("uToScene");
+    v.occlusionScale = p.uniform("uOcclusionScale");
+    return variants_.emplace(c, std::move(v)).first->second;
 }
 
 void PostProcess::composite(const SceneTargets& scene, const OcclusionImage& occlusion, float exposure,
                             glm::ivec2 output, bool smooth) {
-    program_.use();
-    glUniform1i(samples_, scene.samples());
-    glUniform1f(exposure_, exposure);
-    glUniform1i(useOcclusion_, occlusion.texture != 0 ? 1 : 0);
-    glUniform1i(occlusionScale_, occlusion.viewZ != 0 ? std::max(occlusion.scale, 1) : 1);
-    glUniform2f(size_, static_cast<float>(scene.size().x), static_cast<float>(scene.size().y));
-    glUniform1i(smooth_, smooth && scene.size() != output ? 1 : 0);
-    glUniform2f(toScene_, static_cast<float>(scene.size().x) / static_cast<float>(std::max(output.x, 1)),
+    Configuration c;
+    c.samples = std::max(scene.samples(), 1);
+    c.occlusion = occlusion.texture == 0 ? 0 : occlusion.viewZ != 0 && occlusion.scale > 1 ? 2 : 1;
+    c.smooth = smooth && scene.size() != output;
+    const Variant& v = variant(c);
+    v.program.use();
+    glUniform1f(v.exposure, exposure);
+    glUniform1i(v.occlusionScale, std::max(occlusion.scale, 1));
+    glUniform2f(v.size, static_cast<float>(scene.size().x), static_cast<float>(scene.size().y));
+    glUniform2f(v.toScene, static_cast<float>(scene.size().x) / static_cast<float>(std::max(output.x, 1)),
                 static_cast<float>(scene.size().y) / static_cast<float>(std::max(output.y, 1)));
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, scene.colorTexture());

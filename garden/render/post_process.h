@@ -9,6 +9,10 @@
 
 #include <glm/vec2.hpp>
 
+#include <cstddef>
+#include <map>
+#include <tuple>
+
 #include "garden/render/gl_objects.h"
 #include "garden/render/occlusion_pass.h"
 #include "garden/render/render_targets.h"
@@ -32,12 +36,29 @@ public:
     // output's size, stay sharp); `smooth` false: the nearest scene pixel.
     void composite(const SceneTargets& scene, const OcclusionImage& occlusion, float exposure, glm::ivec2 output,
                    bool smooth);
+    ~PostProcess();
+
+    // Programs compiled so far, one per configuration met.
+    std::size_t programs() const { return variants_.size(); }
 
 private:
-    ShaderProgram program_;
+    // What a composite's program is compiled for (withDefines).
+    struct Configuration {
+        int samples = 1;
+        int occlusion = 0;  // 0 none, 1 at the scene's size, 2 coarser (the joint bilateral upsample)
+        bool smooth = false;
+        bool operator<(const Configuration& o) const {
+            return std::tie(samples, occlusion, smooth) < std::tie(o.samples, o.occlusion, o.smooth);
+        }
+    };
+    struct Variant {
+        ShaderProgram program;
+        GLint exposure = -1, size = -1, toScene = -1, occlusionScale = -1;
+    };
+    const Variant& variant(const Configuration& c);
+
+    std::map<Configuration, Variant> variants_;
     gl::VertexArray empty_;  // the fullscreen triangle comes from gl_VertexID
-    GLint samples_ = -1, exposure_ = -1, useOcclusion_ = -1, size_ = -1, toScene_ = -1, smooth_ = -1;
-    GLint occlusionScale_ = -1;
 };
 
 }  // namespace hg::garden

@@ -58,18 +58,22 @@ std::optional<RenderQuality> QualityGovernor::observe(double gpuMs) {
     recent_.push_back(gpuMs);
     if (recent_.size() > kUpWindow) recent_.pop_front();
     ++sinceChange_;
-    if (sinceChange_ < kSettle) return std::nullopt;
+    msSinceChange_ += gpuMs;
+    // Settled: enough frames, or fewer that took long enough.
+    const bool slowFrames = sinceChange_ >= kMinFrames && msSinceChange_ >= kJudgeMs;
+    if (sinceChange_ < kSettle && !slowFrames) return std::nullopt;
 
     const auto change = [&](std::size_t to) {
         step_ = to;
         sinceChange_ = 0;
+        msSinceChange_ = 0.0;
         recent_.clear();  // what was measured belongs to the old quality
         return std::optional<RenderQuality>(ladder_[step_]);
     };
-    if (recent_.size() >= kDownWindow && step_ + 1 < ladder_.size()) {
-        const double mean =
-            std::accumulate(recent_.end() - static_cast<std::ptrdiff_t>(kDownWindow), recent_.end(), 0.0) /
-            static_cast<double>(kDownWindow);
+    const std::size_t window = std::min(recent_.size(), kDownWindow);
+    if ((window == kDownWindow || slowFrames) && step_ + 1 < ladder_.size()) {
+        const double mean = std::accumulate(recent_.end() - static_cast<std::ptrdiff_t>(window), recent_.end(), 0.0) /
+                            static_cast<double>(window);
         if (mean > kDownShare * budgetMs_) return change(step_ + 1);
     }
     if (recent_.size() >= kUpWindow && step_ > 0 &&

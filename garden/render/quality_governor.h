@@ -8,7 +8,10 @@
 // at three quarters and at half the window's size (renderScale). Hysteresis keeps it
 // from flickering: down when the recent mean passes 85 % of the budget, up
 // only after a long stretch under half of it, and never two changes close
-// together.
+// together. "Close" is counted in frames and in the GPU's milliseconds: a
+// renderer that takes 150 ms a frame (llvmpipe on two cores) would
+// otherwise sit at a few frames a second for half a minute before reaching
+// the rung it can keep.
 #pragma once
 
 #include <cstddef>
@@ -43,6 +46,13 @@ public:
     static constexpr std::size_t kDownWindow = 30;
     static constexpr std::size_t kUpWindow = 180;
     static constexpr std::size_t kSettle = 60;
+    // Or, stepping down, fewer frames when they add up to this much GPU
+    // time: a second's worth judges a slow renderer as surely as 60 quick
+    // frames judge a fast one. Never fewer than kMinFrames (the timer
+    // queries report a few frames late, so the first ones after a change
+    // may still be the old quality's).
+    static constexpr double kJudgeMs = 1000.0;
+    static constexpr std::size_t kMinFrames = 6;
 
 private:
     std::vector<RenderQuality> ladder_;
@@ -50,6 +60,7 @@ private:
     double budgetMs_;
     std::deque<double> recent_;  // the last kUpWindow measurements
     std::size_t sinceChange_ = 0;
+    double msSinceChange_ = 0.0;  // GPU time measured since the last change
 };
 
 }  // namespace hg::garden

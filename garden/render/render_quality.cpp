@@ -1,5 +1,8 @@
 #include "garden/render/render_quality.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace hg::garden {
 
 RenderQuality qualityOf(QualityPreset preset) {
@@ -23,6 +26,11 @@ RenderQuality qualityOf(QualityPreset preset) {
             break;
     }
     return q;
+}
+
+int scenePixels(int outputPixels, const RenderQuality& q) {
+    const float scale = std::clamp(q.renderScale, 0.25f, 1.0f);
+    return std::max(1, static_cast<int>(std::lround(static_cast<float>(outputPixels) * scale)));
 }
 
 QualityPreset rendererPreset(const std::string& glRenderer) {

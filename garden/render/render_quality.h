@@ -43,4 +43,9 @@ std::optional<QualityPreset> parseQualityPreset(const std::string& name);
 // bench_look), else high.
 QualityPreset rendererPreset(const std::string& glRenderer);
 
+// The scene's pixels along a side of `outputPixels` at q's render scale
+// (clamped to 0.25..1, as the renderer draws it): what the level of detail
+// should resolve, since finer geometry would only be averaged away.
+int scenePixels(int outputPixels, const RenderQuality& q);
+
 }  // namespace hg::garden

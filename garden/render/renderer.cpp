@@ -110,8 +110,7 @@ float RenderStats::gpuMs() const {
 }
 
 Renderer::Renderer()
-    : meshProgram_("mesh", shaders::kMeshVertex, shaders::kMeshFragment),
-      groundProgram_("ground", shaders::kGroundVertex, shaders::kGroundFragment),
+    : groundProgram_("ground", shaders::kGroundVertex, shaders::kGroundFragment),
       flatProgram_("flat", shaders::kFlatVertex, shaders::kFlatFragment),
       targets_(std::make_unique<SceneTargets>()),
       shadow_(std::make_unique<ShadowPass>()),
@@ -120,17 +119,12 @@ Renderer::Renderer()
       post_(std::make_unique<PostProcess>()),
       timers_(std::make_unique<GpuTimers>()),
       arena_(std::make_unique<ChunkArena>()),
-      batch_(std::make_unique<ChunkBatch>()),
       shadowBatch_(std::make_unique<ChunkBatch>()),
       multiDraw_(multiDrawAvailable()) {
-    meshLit_ = litUniforms(meshProgram_);
+    for (auto& batch : batches_) batch = std::make_unique<ChunkBatch>();
+    meshProgram(kSurfacePlain);  // a broken shader fails here, not mid-frame
     groundLit_ = litUniforms(groundProgram_);
-    meshShadow_ = shadowUniforms(meshProgram_);
     groundShadow_ = shadowUniforms(groundProgram_);
-    const ShaderProgram& m = meshProgram_;
-    mesh_ = {m.uniform("uViewProjection"), m.uniform("uBump")};
-    m.use();
-    glUniform1i(m.uniform("uDrawRecords"), kDrawRecordUnit);
     const ShaderProgram& g = groundProgram_;
     ground_ = {g.uniform("uViewProjection"), g.uniform("uGroundColor"), g.uniform("uLineColor"),
                g.uniform("uSpacing"),        g.uniform("uLineWidth"),   g.uniform("uMajorEvery"),
@@ -176,6 +170,40 @@ Renderer::Renderer()
 
 Renderer::~Renderer() = default;
 
+namespace {
+int surfaceKindIndex(int kind) { return std::clamp(kind, 0, kSurfaceKindCount - 1); }
+std::string kindDefine(int kind) { return "#define HG_KIND " + std::to_string(kind) + "\n"; }
+}  // namespace
+
+Renderer::MeshProgram& Renderer::meshProgram(int kind) {
+    std::unique_ptr<MeshProgram>& made = meshPrograms_[static_cast<std::size_t>(surfaceKindIndex(kind))];
+    if (made) return *made;
+    auto m = std::make_unique<MeshProgram>();
+    m->program = ShaderProgram("mesh", shaders::kMeshVertex,
+                               withDefines(shaders::kMeshFragment, kindDefine(surfaceKindIndex(kind))).c_str());
+    m->lit = litUniforms(m->program);
+    m->shadow = shadowUniforms(m->program);
+    m->viewProjection = m->program.uniform("uViewProjection");
+    m->bump = m->program.uniform("uBump");
+    m->program.use();
+    glUniform1i(m->program.uniform("uDrawRecords"), kDrawRecordUnit);
+    made = std::move(m);
+    return *made;
+}
+
+ShaderProgram& Renderer::bakeProgram(int kind) {
+    std::unique_ptr<ShaderProgram>& made = bakePrograms_[static_cast<std::size_t>(surfaceKindIndex(kind))];
+    if (made) return *made;
+    // The mesh program itself, made to write what a frame holds instead of
+    // lighting it: the impostor shows the very colours and relief.
+    const std::string fragment =
+        withDefines(shaders::kMeshFragment, "#define HG_BAKE 1\n" + kindDefine(surfaceKindIndex(kind)));
+    made = std::make_unique<ShaderProgram>("impostor bake", shaders::kMeshVertex, fragment.c_str());
+    made->use();
+    glUniform1i(made->uniform("uDrawRecords"), kDrawRecordUnit);
+    return *made;
+}
+
 Renderer::LitUniforms Renderer::litUniforms(const ShaderProgram& p) {
     return LitUniforms{p.uniform("uEye"),         p.uniform("uAmbient"),       p.uniform("uLightCount"),
                        p.uniform("uLightDir"),    p.uniform("uLightColor"),    p.uniform("uPointCount"),
@@ -196,14 +224,6 @@ void Renderer::ensureImpostors() {
     if (atlas_) return;
     atlas_ = std::make_unique<ImpostorAtlas>(impostorSettings_);
     cards_ = std::make_unique<ImpostorCards>();
-    // The mesh program itself, made to write what a frame holds instead of
-    // lighting it: the impostor shows the very colours and relief.
-    std::string fragment = shaders::kMeshFragment;
-    const std::string version = "#version 330 core\n";
-    fragment.insert(version.size(), "#define HG_BAKE 1\n");
-    bakeProgram_ = std::make_unique<ShaderProgram>("impostor bake", shaders::kMeshVertex, fragment.c_str());
-    bakeProgram_->use();
-    glUniform1i(bakeProgram_->uniform("uDrawRecords"), kDrawRecordUnit);
     bakeBatch_ = std::make_unique<ChunkBatch>();
     cardLit_ = litUniforms(cards_->sceneProgram());
     cardShadow_ = shadowUniforms(cards_->sceneProgram());
@@ -239,9 +259,10 @@ bool Renderer::bakeImpostor(ImpostorKey key, std::uint64_t version, const std::v
     GLint draw = 0, read = 0;
     glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &draw);
     glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &read);
-    bakeProgram_->use();
-    glUniform1f(bakeProgram_->uniform("uBump"), quality_.materialBump ? 1.0f : 0.0f);
-    const bool baked = atlas_->bake(key, version, *bakeBatch_, *arena_, multiDraw_, *bakeProgram_, 0.5f * (lo + hi),
+    ShaderProgram& bake = bakeProgram(material.kind);
+    bake.use();
+    glUniform1f(bake.uniform("uBump"), quality_.materialBump ? 1.0f : 0.0f);
+    const bool baked = atlas_->bake(key, version, *bakeBatch_, *arena_, multiDraw_, bake, 0.5f * (lo + hi),
                                     0.5f * glm::length(hi - lo));
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(draw));
     glBindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(read));
@@ -465,13 +486,14 @@ void Renderer::drawSphere(const glm::vec3& center, float radius, const glm::vec4
 // --- rendering a recorded view ------------------------------------------------
 
 void Renderer::gatherChunks(glm::vec3& lo, glm::vec3& hi) {
-    batch_->clear();
+    for (auto& batch : batches_) batch->clear();
     shadowBatch_->clear();
     lo = glm::vec3(1e30f);
     hi = glm::vec3(-1e30f);
     const float shadowReach = quality_.shadowDistance > 0.0f ? quality_.shadowDistance : 1e30f;
     // Draws of one placement come together (a sculpture's chunks): they
     // share one record, made when the placement or material changes.
+    const auto kindOf = [](const SceneDraw& d) { return static_cast<std::size_t>(surfaceKindIndex(d.material.kind)); };
     const SceneDraw* previous = nullptr;
     bool previousNormals = false;
     DrawRecord current{};
@@ -496,10 +518,10 @@ void Renderer::gatherChunks(glm::vec3& lo, glm::vec3& hi) {
         }
         if (!d.castOnly) {
             if (!recordMade) {
-                record = batch_->addRecord(current);
+                record = batches_[kindOf(d)]->addRecord(current);
                 recordMade = true;
             }
-            batch_->add(*slot, record);
+            batches_[kindOf(d)]->add(*slot, record);
         }
         // A caster when it comes within the shadow's reach of the eye; the
         // map is fitted to the casters' bounding spheres.
@@ -584,18 +606,22 @@ void Renderer::renderScene(bool shadowed) {
     glBindTexture(GL_TEXTURE_2D, shadowed ? shadow_->texture() : 0);
     glActiveTexture(GL_TEXTURE0);
     const glm::mat4 viewProjection = view_.projection * view_.view;
-    meshProgram_.use();
-    setMat4(mesh_.viewProjection, viewProjection);
-    glUniform1f(mesh_.bump, quality_.materialBump ? 1.0f : 0.0f);
-    setLighting(meshLit_, meshShadow_, shadowed);
     groundProgram_.use();
     setMat4(ground_.viewProjection, viewProjection);
     setLighting(groundLit_, groundShadow_, shadowed);
 
     // Sculptures before the ground: they hide much of it, and early depth
     // tests then skip its pixels.
-    meshProgram_.use();
-    stats_.drawCalls += batch_->draw(*arena_, multiDraw_);
+    for (int kind = 0; kind < kSurfaceKindCount; ++kind) {
+        ChunkBatch& batch = *batches_[static_cast<std::size_t>(kind)];
+        if (batch.empty()) continue;
+        MeshProgram& m = meshProgram(kind);
+        m.program.use();
+        setMat4(m.viewProjection, viewProjection);
+        glUniform1f(m.bump, quality_.materialBump ? 1.0f : 0.0f);
+        setLighting(m.lit, m.shadow, shadowed);
+        stats_.drawCalls += batch.draw(*arena_, multiDraw_);
+    }
     if (!cardDraws_.empty()) {
         cards_->sceneProgram().use();
         setLighting(cardLit_, cardShadow_, shadowed);
@@ -614,8 +640,7 @@ void Renderer::finishView() {
     viewOpen_ = false;
     timers_->nextView();
     // The scene at the render scale; the composite scales it to the output.
-    const float scale = std::clamp(quality_.renderScale, 0.25f, 1.0f);
-    const glm::ivec2 sceneSize = glm::max(glm::ivec2(1), glm::ivec2(glm::round(glm::vec2(view_.viewport) * scale)));
+    const glm::ivec2 sceneSize(scenePixels(view_.viewport.x, quality_), scenePixels(view_.viewport.y, quality_));
     targets_->ensure(sceneSize, quality_.msaaSamples);
 
     glm::vec3 lo, hi;

@@ -27,6 +27,7 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -321,7 +322,7 @@ private:
     void ensureImpostors();
     // Frame lighting and the shadow for the bound program whose locations are `u`.
     void setLighting(const LitUniforms& u, const ShadowUniforms& s, bool shadowed) const;
-    // The view's chunk draws into batch_, the casters among them (within
+    // The view's chunk draws into batches_, the casters among them (within
     // the shadow distance) into shadowBatch_ with the world box they span.
     void gatherChunks(glm::vec3& lo, glm::vec3& hi);
     bool renderShadows(const glm::vec3& lo, const glm::vec3& hi);
@@ -331,14 +332,25 @@ private:
     void drawGroundNow(const GroundStyle& ground);
     void drawFlatNow(const FlatDraw& d);
 
-    ShaderProgram meshProgram_;
+    // The mesh program compiled for one surface kind (HG_KIND): a software
+    // rasterizer runs every branch of a shader, so one program for all six
+    // materials made each pixel pay for all six (docs/rendering.md,
+    // "Programs made to measure"). Made when a kind is first drawn.
+    struct MeshProgram {
+        ShaderProgram program;
+        LitUniforms lit{};
+        ShadowUniforms shadow{};
+        GLint viewProjection = -1, bump = -1;
+    };
+    MeshProgram& meshProgram(int kind);
+    // The same, compiled to bake impostors (HG_BAKE).
+    ShaderProgram& bakeProgram(int kind);
+
+    std::array<std::unique_ptr<MeshProgram>, kSurfaceKindCount> meshPrograms_;
     ShaderProgram groundProgram_;
     ShaderProgram flatProgram_;
-    LitUniforms meshLit_{}, groundLit_{};
-    ShadowUniforms meshShadow_{}, groundShadow_{};
-    struct {
-        GLint viewProjection, bump;
-    } mesh_{};
+    LitUniforms groundLit_{};
+    ShadowUniforms groundShadow_{};
     struct {
         GLint viewProjection, groundColor, lineColor, spacing, lineWidth, majorEvery, gardenHalfExtent, gridReach,
             stripeWidth;
@@ -371,14 +383,16 @@ private:
     std::unique_ptr<PostProcess> post_;
     std::unique_ptr<GpuTimers> timers_;
     std::unique_ptr<ChunkArena> arena_;  // every chunk's mesh
-    std::unique_ptr<ChunkBatch> batch_;        // the open view's chunk draws
+    // The open view's chunk draws, a batch per surface kind (each drawn
+    // with its kind's program).
+    std::array<std::unique_ptr<ChunkBatch>, kSurfaceKindCount> batches_;
     std::unique_ptr<ChunkBatch> shadowBatch_;  // those of them that cast the sun's shadow
     // Impostors: the atlas, the cards, the mesh program built to bake, the
     // batch a bake draws, and the view's cards.
     ImpostorSettings impostorSettings_;
     std::unique_ptr<ImpostorAtlas> atlas_;
     std::unique_ptr<ImpostorCards> cards_;
-    std::unique_ptr<ShaderProgram> bakeProgram_;
+    std::array<std::unique_ptr<ShaderProgram>, kSurfaceKindCount> bakePrograms_;
     std::unique_ptr<ChunkBatch> bakeBatch_;
     LitUniforms cardLit_{};
     ShadowUniforms cardShadow_{};

@@ -36,6 +36,13 @@ gl::Shader compile(const std::string& name, GLenum stage, const char* source) {
 
 }  // namespace
 
+std::string withDefines(const char* source, const std::string& defines) {
+    std::string text = source;
+    const std::size_t line = text.find('\n');
+    text.insert(line == std::string::npos ? text.size() : line + 1, defines);
+    return text;
+}
+
 ShaderProgram::ShaderProgram(const std::string& name, const char* vertexSource, const char* fragmentSource) {
     gl::Shader vs = compile(name, GL_VERTEX_SHADER, vertexSource);
     gl::Shader fs = compile(name, GL_FRAGMENT_SHADER, fragmentSource);

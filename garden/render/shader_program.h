@@ -8,6 +8,14 @@
 
 namespace hg::garden {
 
+// `source` with `defines` ("#define NAME VALUE" lines) after its #version
+// line: one program text specialized to a configuration. Software
+// rasterizers (llvmpipe) run both sides of every branch, uniform or not, so
+// a feature switched off by a uniform still costs them its full price;
+// compiled out it costs nothing (docs/rendering.md, "Programs made to
+// measure").
+std::string withDefines(const char* source, const std::string& defines);
+
 class ShaderProgram {
 public:
     ShaderProgram() = default;

@@ -238,9 +238,10 @@ void main() {
     vec3 base = toLinear(surface.rgb);
     vec3 specular = vec3(surface.a);
     float shininess = finish.x, metallic = detail.y;
-    int kind = int(detail.x + 0.5);
-    // The plain material pays nothing for the others' detail. (A draw's
-    // kind is the same over a triangle, so fwidth below stays defined.)
+    // Each kind has its own program (HG_KIND, Renderer::meshProgram): the
+    // branches of the others' detail are compiled out, and the plain
+    // material pays for none.
+    const int kind = HG_KIND;
     if (kind != 0) {
         vec3 q = vModel / detail.z;
         float pixel = max(length(fwidth(q)), 1e-6);

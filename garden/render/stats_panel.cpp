@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <string>
+#include <utility>
 
 #include "garden/render/chunk_arena.h"
 #include "garden/render/panels.h"
@@ -88,9 +90,20 @@ void drawStatsPanel(const FrameHistory& history, bool toggle, const std::functio
     }
     // The GPU's own time (timer queries), beside the CPU's stages: a frame
     // may be cheap to submit and still slow to draw.
-    if (last->gpuMs >= 0.0)
+    if (last->gpuMs >= 0.0) {
         ImGui::Text("GPU %.2f ms", last->gpuMs);
-    else
+        // Pass by pass, those that ran: which effect to switch off.
+        const GpuPassMs& pass = last->gpuPassMs;
+        std::string passes;
+        for (const auto& [name, ms] : {std::pair<const char*, double>{"shadow", pass.shadow}, {"scene", pass.scene},
+                                       {"occlusion", pass.occlusion}, {"post", pass.post}}) {
+            if (ms < 0.0) continue;
+            char text[48];
+            std::snprintf(text, sizeof text, "%s%s %.2f", passes.empty() ? "" : ", ", name, ms);
+            passes += text;
+        }
+        if (!passes.empty()) ImGui::TextDisabled("  %s", passes.c_str());
+    } else
         ImGui::TextUnformatted("GPU time: not measured yet");
 
     if (ImGui::BeginTable("##counters", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp)) {

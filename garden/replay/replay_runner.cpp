@@ -261,7 +261,9 @@ std::string statsJson(const ReplayScript& script, const ReplayResult& result) {
                           {"chunks_drawn", f.chunksDrawn}, {"draw_calls", f.drawCalls},
                           {"impostors_drawn", f.impostorsDrawn}, {"sculptures_hidden", f.sculpturesHidden},
                           {"shadow_maps_drawn", f.shadowMapsDrawn}, {"shadow_maps_kept", f.shadowMapsKept},
-                          {"gpu_ms", f.gpuMs}});
+                          {"gpu_ms", f.gpuMs},
+                          {"gpu_pass_ms", {{"shadow", f.gpuPassMs.shadow}, {"scene", f.gpuPassMs.scene},
+                                           {"occlusion", f.gpuPassMs.occlusion}, {"post", f.gpuPassMs.post}}}});
     }
     const double n = std::max<double>(1.0, static_cast<double>(result.stats.size()));
     // The GPU's time over the frames that have a measurement (none headless,

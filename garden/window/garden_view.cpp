@@ -57,8 +57,10 @@ void worldBox(const glm::mat4& model, const glm::vec3& lo, const glm::vec3& hi, 
 }  // namespace
 
 ViewDraw viewDrawOf(const RenderStats& r) {
-    return ViewDraw{r.trianglesDrawn,  r.chunksDrawn,      r.drawCalls,       r.gpuMs(),
-                    r.impostorsDrawn,  r.sculpturesHidden, r.shadowMapsDrawn, r.shadowMapsKept};
+    ViewDraw d{r.trianglesDrawn,  r.chunksDrawn,      r.drawCalls,       r.gpuMs(),         {},
+               r.impostorsDrawn,  r.sculpturesHidden, r.shadowMapsDrawn, r.shadowMapsKept};
+    d.gpuPassMs = GpuPassMs{r.gpuShadowMs, r.gpuSceneMs, r.gpuOcclusionMs, r.gpuPostMs};
+    return d;
 }
 
 ViewUpload GardenView::upload(const GardenSession& session, double allowanceMs) {

@@ -3,6 +3,8 @@
 // sculpture still plays, and bad scripts and gardens are refused with their
 // JSON path; an {"export": ...} command writes a sculpture as the desktop's
 // Export panel does.
+#include <algorithm>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 
@@ -61,6 +63,18 @@ TEST_F(ReplayCli, OffscreenWritesScreenshotsAndStats) {
     EXPECT_EQ(j["summary"]["gpu_frames"].get<std::size_t>(), measured);
     EXPECT_GT(j["summary"]["mean_gpu_ms"].get<double>(), 0.0);
     EXPECT_GE(j["summary"]["max_gpu_ms"].get<double>(), j["summary"]["mean_gpu_ms"].get<double>());
+    // And pass by pass: the scene and the composite run in every view; the
+    // passes that ran add up to the total.
+    for (const auto& f : j["frames"]) {
+        const double total = f["gpu_ms"].get<double>();
+        if (total <= 0.0) continue;
+        const auto& pass = f["gpu_pass_ms"];
+        EXPECT_GT(pass["scene"].get<double>(), 0.0);
+        EXPECT_GT(pass["post"].get<double>(), 0.0);
+        double sum = 0.0;
+        for (const char* name : {"shadow", "scene", "occlusion", "post"}) sum += std::max(0.0, pass[name].get<double>());
+        EXPECT_NEAR(sum, total, 1e-3 * total + 1e-4);
+    }
     std::size_t chunks = 0;
     for (const auto& f : j["frames"]) chunks = std::max<std::size_t>(chunks, f["chunks_drawn"].get<std::size_t>());
     EXPECT_GT(chunks, 0u);
@@ -75,6 +89,25 @@ TEST_F(ReplayCli, OffscreenWritesScreenshotsAndStats) {
     }
     EXPECT_GT(mapsDrawn, 0u);
     EXPECT_GT(mapsKept, 0u) << "the settled garden keeps its shadow map";
+}
+
+// --quality auto: the desktop's governor against the script's budget. A
+// budget no renderer meets steps it down; one every renderer meets keeps
+// the renderer's preset. The note says what it did.
+TEST_F(ReplayCli, TheAutomaticQualityStepsDownWhenTheBudgetIsNotMet) {
+    if (!displayAvailable()) GTEST_SKIP() << "no X display: run under xvfb-run -a";
+    garden();
+    const auto changes = [&](const std::string& budget) {
+        std::ofstream(dir / "auto.json") << R"({"garden": "garden.json", "viewport": [160, 120], "budget_ms": )" << budget
+                                         << R"(, "steps": [{"until_idle": true, "frames": 3000}, {"frames": 150}]})";
+        auto r = ::hg::test::runHypergarden("replay " + path("auto.json") + " --offscreen 160x120 --quality auto");
+        EXPECT_EQ(r.status, 0) << r.output;
+        const std::size_t at = r.output.find("--quality auto: ");
+        EXPECT_NE(at, std::string::npos) << r.output;
+        return at == std::string::npos ? -1 : std::atoi(r.output.c_str() + at + 16);
+    };
+    EXPECT_GE(changes("0.1"), 1) << "a tenth of a millisecond a frame: step down";
+    EXPECT_EQ(changes("1000"), 0) << "a second a frame: keep the preset";
 }
 
 // --impostor-distance: sculptures farther than it from the eye are drawn

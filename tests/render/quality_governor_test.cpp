@@ -1,8 +1,12 @@
 // --quality auto's governor: it steps down when the GPU's time passes the
 // budget, all the way to low if need be and never past it, climbs back only
-// after a long quiet stretch, ignores frames without a measurement, and
-// does not flicker at the threshold.
+// after a long quiet stretch, ignores frames without a measurement, does
+// not flicker at the threshold, and judges a slow renderer in a second of
+// its frames rather than in a fixed count of them.
 #include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
 
 #include "garden/render/quality_governor.h"
 
@@ -16,6 +20,13 @@ std::size_t framesUntilChange(QualityGovernor& g, double gpuMs, std::size_t limi
     return 0;
 }
 
+// The frames a change waits for at `gpuMs` a frame: kSettle, or fewer that
+// add up to kJudgeMs, never under kMinFrames.
+std::size_t settleFrames(double gpuMs) {
+    const auto forTime = static_cast<std::size_t>(std::ceil(QualityGovernor::kJudgeMs / gpuMs));
+    return std::min(QualityGovernor::kSettle, std::max(QualityGovernor::kMinFrames, forTime));
+}
+
 TEST(QualityGovernor, StepsDownToLowUnderLoadAndNoFurther) {
     QualityGovernor g(QualityPreset::High, 11.1);
     EXPECT_EQ(g.step(), 0u);
@@ -26,7 +37,7 @@ TEST(QualityGovernor, StepsDownToLowUnderLoadAndNoFurther) {
         const RenderQuality before = g.quality();
         const std::size_t frames = framesUntilChange(g, 20.0);
         ASSERT_GT(frames, 0u) << "a frame over budget steps down, at step " << g.step();
-        EXPECT_GE(frames, QualityGovernor::kSettle) << "not before the last change has settled";
+        EXPECT_EQ(frames, settleFrames(20.0)) << "not before the last change has settled";
         const RenderQuality& after = g.quality();
         cost += (after.msaaSamples < before.msaaSamples) + (after.shadowMapSize < before.shadowMapSize) +
                 (!after.shadows && before.shadows) + (!after.ambientOcclusion && before.ambientOcclusion) +
@@ -58,6 +69,17 @@ TEST(QualityGovernor, ClimbsBackOnlyAfterALongQuietStretch) {
     EXPECT_EQ(framesUntilChange(g, 1.0, 2000), 0u) << "the ceiling is the top";
 }
 
+TEST(QualityGovernor, AFastRendererJustOverBudgetWaitsTheFullSettleCount) {
+    // 12 ms frames against 11.1: 60 of them are 720 ms, under kJudgeMs, so
+    // the frame count decides, as it did before time was counted.
+    QualityGovernor g(QualityPreset::High, 11.1);
+    EXPECT_EQ(framesUntilChange(g, 12.0), QualityGovernor::kSettle);
+    EXPECT_EQ(g.step(), 1u);
+    // Slow frames after a change still wait kMinFrames: the timer queries
+    // report a few frames late.
+    EXPECT_EQ(framesUntilChange(g, 5000.0), QualityGovernor::kMinFrames);
+}
+
 TEST(QualityGovernor, UnmeasuredFramesChangeNothingAndTheThresholdDoesNotFlicker) {
     QualityGovernor g(QualityPreset::High, 10.0);
     for (int f = 0; f < 1000; ++f) EXPECT_FALSE(g.observe(-1.0));
@@ -73,14 +95,33 @@ TEST(QualityGovernor, ASoftwareRendererStartsLowAndDrawsFewerPixelsWhenSlow) {
     QualityGovernor g(QualityPreset::Low, 16.7);
     EXPECT_EQ(g.steps(), 3u);
     EXPECT_FLOAT_EQ(g.quality().renderScale, 1.0f);
-    ASSERT_GT(framesUntilChange(g, 400.0), 0u);
+    // 400 ms frames: judged after kMinFrames of them (2.4 s), not after
+    // kSettle (24 s at two and a half frames a second).
+    EXPECT_EQ(framesUntilChange(g, 400.0), QualityGovernor::kMinFrames);
     EXPECT_FLOAT_EQ(g.quality().renderScale, 0.75f);
-    ASSERT_GT(framesUntilChange(g, 400.0), 0u);
+    EXPECT_EQ(framesUntilChange(g, 150.0), settleFrames(150.0));
+    EXPECT_EQ(settleFrames(150.0), 7u) << "a second of 150 ms frames";
     EXPECT_FLOAT_EQ(g.quality().renderScale, 0.5f);
     EXPECT_FALSE(g.quality().shadows);
     EXPECT_EQ(framesUntilChange(g, 400.0, 500), 0u);
     ASSERT_GT(framesUntilChange(g, 1.0), 0u);
     EXPECT_FLOAT_EQ(g.quality().renderScale, 0.75f);
+}
+
+// The scene's pixels at a render scale, as the renderer draws them and the
+// level of detail is chosen for them.
+TEST(RenderQuality, TheSceneHasTheRenderScalesShareOfThePixels) {
+    RenderQuality q;
+    EXPECT_EQ(scenePixels(720, q), 720);
+    q.renderScale = 0.5f;
+    EXPECT_EQ(scenePixels(720, q), 360);
+    q.renderScale = 0.75f;
+    EXPECT_EQ(scenePixels(1081, q), 811) << "rounded";
+    q.renderScale = 0.1f;
+    EXPECT_EQ(scenePixels(720, q), 180) << "never under a quarter";
+    q.renderScale = 3.0f;
+    EXPECT_EQ(scenePixels(720, q), 720) << "never over the output";
+    EXPECT_EQ(scenePixels(1, q), 1);
 }
 
 }  // namespace

@@ -43,12 +43,13 @@ TEST_F(XrGarden, AutomaticQualityStepsDownByBothEyesGpuTimeAgainstTheDisplayPeri
     double mean = 0.0;
     for (double ms : measured) mean += ms / static_cast<double>(measured.size());
     // Two 512 x 512 eyes at the high preset on llvmpipe take tens of
-    // milliseconds, far over the budget: one step down, the occlusion at
-    // half resolution first. A GPU well inside it keeps the preset.
+    // milliseconds, far over the budget: a step down at least, the
+    // occlusion at half resolution with 8 samples first (then, as each
+    // second of slow frames passes, the next rungs). A GPU well inside it
+    // keeps the preset.
     if (mean > budget) {
-        EXPECT_EQ(info.qualityChanges, 1) << "both eyes took " << mean << " ms a frame";
-        EXPECT_TRUE(info.quality.aoHalfResolution);
-        EXPECT_EQ(info.quality.aoSamples, 8);
+        EXPECT_GE(info.qualityChanges, 1) << "both eyes took " << mean << " ms a frame";
+        EXPECT_TRUE(!info.quality.ambientOcclusion || (info.quality.aoHalfResolution && info.quality.aoSamples == 8));
     } else if (mean < 0.5 * budget) {
         EXPECT_EQ(info.qualityChanges, 0) << "both eyes took " << mean << " ms a frame";
         EXPECT_EQ(info.quality.aoSamples, garden::qualityOf(garden::QualityPreset::High).aoSamples);
