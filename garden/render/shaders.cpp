@@ -233,7 +233,7 @@ void main() {
     // (it faces the viewer, and culling leaves only front faces).
     vec4 surface = drawRecord(vDraw, 7);  // sRGB base colour, specular
     vec4 finish = drawRecord(vDraw, 8);   // shininess, has normals, cavity
-    vec4 detail = drawRecord(vDraw, 9);   // SurfaceKind, metallic, detail scale
+    vec4 detail = drawRecord(vDraw, 9);   // SurfaceKind (this program is its kind's: HG_KIND), metallic, detail scale
     vec3 n = finish.y > 0.5 ? normalize(vNormal) : normalize(cross(dFdx(vWorld), dFdy(vWorld)));
     vec3 base = toLinear(surface.rgb);
     vec3 specular = vec3(surface.a);
