@@ -4,12 +4,13 @@
 // so anti-aliased edges between a bright sky and a dark sculpture keep
 // their coverage; the average is encoded to sRGB. The scene's depth goes
 // along (sample 0), so lines and panels drawn afterwards are depth tested
-// against the sculptures. docs/rendering.md explains the order.
+// against the sculptures. docs/rendering.md explains the order. One program
+// per configuration (samples, occlusion, stretch), compiled when first met
+// (docs/rendering.md, "Programs made to measure").
 #pragma once
 
 #include <glm/vec2.hpp>
 
-#include <cstddef>
 #include <map>
 #include <tuple>
 
@@ -37,9 +38,6 @@ public:
     void composite(const SceneTargets& scene, const OcclusionImage& occlusion, float exposure, glm::ivec2 output,
                    bool smooth);
     ~PostProcess();
-
-    // Programs compiled so far, one per configuration met.
-    std::size_t programs() const { return variants_.size(); }
 
 private:
     // What a composite's program is compiled for (withDefines).
