@@ -270,7 +270,7 @@ private:
         if (governor_)
             if (const auto q = governor_->observe(stats.gpuMs)) {
                 renderer_.setQuality(*q);
-                ++info_.qualityChanges;
+                info_.qualityChanges = static_cast<int>(governor_->changes());
             }
         if (focused && options_.onFrame) options_.onFrame(stats, scriptFrame_ - 1);
         ++info_.framesSubmitted;

@@ -17,7 +17,6 @@ struct OffscreenGarden::Impl {
     GardenView view{renderer};
     std::optional<Camera> camera;
     std::optional<QualityGovernor> governor;  // replay --quality auto
-    int qualityChanges = 0;
 
     Impl(int width, int height)
         : window([] {
@@ -59,10 +58,7 @@ ViewDraw OffscreenGarden::render(GardenSession& session) {
     // GPU; on hardware this is where the driver would queue the frame.
     OffscreenTarget::finish();
     if (auto& g = impl_->governor) {
-        if (const auto q = g->observe(r.gpuMs())) {
-            impl_->renderer.setQuality(*q);
-            ++impl_->qualityChanges;
-        }
+        if (const auto q = g->observe(r.gpuMs())) impl_->renderer.setQuality(*q);
         // From the next frame on, as the desktop does each frame.
         session.settings().viewportHeight = scenePixels(impl_->target.height(), impl_->renderer.quality());
     }
@@ -73,7 +69,6 @@ void OffscreenGarden::setQuality(const RenderQuality& quality) { impl_->renderer
 
 void OffscreenGarden::setAutoQuality(double budgetMs) {
     impl_->governor.emplace(rendererPreset(GlWindow::glVersionString()), budgetMs);
-    impl_->qualityChanges = 0;
     impl_->renderer.setQuality(impl_->governor->quality());
 }
 
@@ -83,9 +78,9 @@ std::string OffscreenGarden::autoQualitySummary() const {
     const RenderQuality& q = g->quality();
     char text[200];
     std::snprintf(text, sizeof text,
-                  "%d change%s against %.1f ms; ended on rung %zu of %zu (MSAA %dx, shadows %s, occlusion %s, render "
+                  "%zu change%s against %.1f ms; ended on rung %zu of %zu (MSAA %dx, shadows %s, occlusion %s, render "
                   "scale %.2f)",
-                  impl_->qualityChanges, impl_->qualityChanges == 1 ? "" : "s", g->budgetMs(), g->step() + 1,
+                  g->changes(), g->changes() == 1 ? "" : "s", g->budgetMs(), g->step() + 1,
                   g->steps(), q.msaaSamples, q.shadows ? "on" : "off", q.ambientOcclusion ? "on" : "off",
                   static_cast<double>(q.renderScale));
     return text;

@@ -65,6 +65,7 @@ std::optional<RenderQuality> QualityGovernor::observe(double gpuMs) {
 
     const auto change = [&](std::size_t to) {
         step_ = to;
+        ++changes_;
         sinceChange_ = 0;
         msSinceChange_ = 0.0;
         recent_.clear();  // what was measured belongs to the old quality

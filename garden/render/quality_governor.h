@@ -36,6 +36,7 @@ public:
     const RenderQuality& quality() const { return ladder_[step_]; }
     std::size_t step() const { return step_; }          // 0: the ceiling
     std::size_t steps() const { return ladder_.size(); }
+    std::size_t changes() const { return changes_; }  // steps taken, down or up, so far
     double budgetMs() const { return budgetMs_; }
     // The display's period changed (a headset's refresh rate): later frames
     // are judged against the new one.
@@ -61,6 +62,7 @@ private:
     std::deque<double> recent_;  // the last kUpWindow measurements
     std::size_t sinceChange_ = 0;
     double msSinceChange_ = 0.0;  // GPU time measured since the last change
+    std::size_t changes_ = 0;
 };
 
 }  // namespace hg::garden

@@ -172,35 +172,38 @@ Renderer::~Renderer() = default;
 
 namespace {
 int surfaceKindIndex(int kind) { return std::clamp(kind, 0, kSurfaceKindCount - 1); }
-std::string kindDefine(int kind) { return "#define HG_KIND " + std::to_string(kind) + "\n"; }
+
+// The mesh program compiled for surface `kind` (HG_KIND), with `defines`
+// besides, reading the batches' draw records.
+ShaderProgram meshProgramFor(const char* name, int kind, const std::string& defines) {
+    ShaderProgram p(name, shaders::kMeshVertex,
+                    withDefines(shaders::kMeshFragment, defines + "#define HG_KIND " + std::to_string(kind) + "\n")
+                        .c_str());
+    p.use();
+    glUniform1i(p.uniform("uDrawRecords"), kDrawRecordUnit);
+    return p;
+}
 }  // namespace
 
 Renderer::MeshProgram& Renderer::meshProgram(int kind) {
     std::unique_ptr<MeshProgram>& made = meshPrograms_[static_cast<std::size_t>(surfaceKindIndex(kind))];
     if (made) return *made;
     auto m = std::make_unique<MeshProgram>();
-    m->program = ShaderProgram("mesh", shaders::kMeshVertex,
-                               withDefines(shaders::kMeshFragment, kindDefine(surfaceKindIndex(kind))).c_str());
+    m->program = meshProgramFor("mesh", surfaceKindIndex(kind), "");
     m->lit = litUniforms(m->program);
     m->shadow = shadowUniforms(m->program);
     m->viewProjection = m->program.uniform("uViewProjection");
     m->bump = m->program.uniform("uBump");
-    m->program.use();
-    glUniform1i(m->program.uniform("uDrawRecords"), kDrawRecordUnit);
     made = std::move(m);
     return *made;
 }
 
 ShaderProgram& Renderer::bakeProgram(int kind) {
     std::unique_ptr<ShaderProgram>& made = bakePrograms_[static_cast<std::size_t>(surfaceKindIndex(kind))];
-    if (made) return *made;
     // The mesh program itself, made to write what a frame holds instead of
     // lighting it: the impostor shows the very colours and relief.
-    const std::string fragment =
-        withDefines(shaders::kMeshFragment, "#define HG_BAKE 1\n" + kindDefine(surfaceKindIndex(kind)));
-    made = std::make_unique<ShaderProgram>("impostor bake", shaders::kMeshVertex, fragment.c_str());
-    made->use();
-    glUniform1i(made->uniform("uDrawRecords"), kDrawRecordUnit);
+    if (!made)
+        made = std::make_unique<ShaderProgram>(meshProgramFor("impostor bake", surfaceKindIndex(kind), "#define HG_BAKE 1\n"));
     return *made;
 }
 

@@ -78,6 +78,7 @@ TEST(QualityGovernor, AFastRendererJustOverBudgetWaitsTheFullSettleCount) {
     // Slow frames after a change still wait kMinFrames: the timer queries
     // report a few frames late.
     EXPECT_EQ(framesUntilChange(g, 5000.0), QualityGovernor::kMinFrames);
+    EXPECT_EQ(g.changes(), 2u);
 }
 
 TEST(QualityGovernor, UnmeasuredFramesChangeNothingAndTheThresholdDoesNotFlicker) {
