@@ -209,9 +209,9 @@ private:
         const double budgetMs = hz > 0.0f ? 1000.0 / static_cast<double>(hz) : minPeriodMs_;
         if (budgetMs > 0.0) session_.scheduler().setBudgetMs(budgetMs);
         if (options_.autoQuality && budgetMs > 0.0) steerQuality(budgetMs);
-        // Levels for the eye's pixels at the render scale, as on the desktop.
+        // Levels for the eye's pixels at the render and detail scales, as on the desktop.
         if (headset_.eyeSize()[1] > 0)
-            session_.settings().viewportHeight = garden::scenePixels(headset_.eyeSize()[1], renderer_.quality());
+            session_.settings().viewportHeight = garden::detailPixels(headset_.eyeSize()[1], renderer_.quality());
         const bool focused = headset_.focused();
         const double dt = periodMs > 0.0 ? periodMs / 1000.0 : 1.0 / 90.0;
         garden::FrameInput input;

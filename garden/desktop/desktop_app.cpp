@@ -406,8 +406,8 @@ int runDesktopOn(GardenSession& session, GardenWindow& gardenWindow, const Deskt
         last = now;
         fb = window.framebufferSize();
         // Levels for the pixels the scene is drawn at (the automatic
-        // quality's render scale), not the window's.
-        session.settings().viewportHeight = scenePixels(std::max(fb.y, 1), renderer.quality());
+        // quality's render and detail scales), not the window's.
+        session.settings().viewportHeight = detailPixels(std::max(fb.y, 1), renderer.quality());
 
         // The window's keys and mouse become this frame's hands; what they
         // ask of the garden directly (reset the view, the detail sphere) are

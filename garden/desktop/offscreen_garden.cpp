@@ -60,7 +60,7 @@ ViewDraw OffscreenGarden::render(GardenSession& session) {
     if (auto& g = impl_->governor) {
         if (const auto q = g->observe(r.gpuMs())) impl_->renderer.setQuality(*q);
         // From the next frame on, as the desktop does each frame.
-        session.settings().viewportHeight = scenePixels(impl_->target.height(), impl_->renderer.quality());
+        session.settings().viewportHeight = detailPixels(impl_->target.height(), impl_->renderer.quality());
     }
     return viewDrawOf(r);
 }
@@ -76,13 +76,13 @@ std::string OffscreenGarden::autoQualitySummary() const {
     const auto& g = impl_->governor;
     if (!g) return "off";
     const RenderQuality& q = g->quality();
-    char text[200];
+    char text[240];
     std::snprintf(text, sizeof text,
                   "%zu change%s against %.1f ms; ended on rung %zu of %zu (MSAA %dx, shadows %s, occlusion %s, render "
-                  "scale %.2f)",
+                  "scale %.2f, detail scale %.2f)",
                   g->changes(), g->changes() == 1 ? "" : "s", g->budgetMs(), g->step() + 1,
                   g->steps(), q.msaaSamples, q.shadows ? "on" : "off", q.ambientOcclusion ? "on" : "off",
-                  static_cast<double>(q.renderScale));
+                  static_cast<double>(q.renderScale), static_cast<double>(q.detailScale));
     return text;
 }
 

@@ -17,13 +17,17 @@ std::vector<RenderQuality> ladderFrom(QualityPreset top) {
     RenderQuality q = qualityOf(top);
     ladder.push_back(q);
     // Last, whatever the top: fewer pixels (the scene drawn smaller and
-    // stretched), which is what keeps a software renderer interactive.
+    // stretched), then coarser meshes for them, which is what keeps a
+    // software renderer interactive (docs/benchmarks.md, "The software
+    // renderer's frame").
     const auto smaller = [&ladder] {
+        RenderQuality low = qualityOf(QualityPreset::Low);
         for (float scale : {0.75f, 0.5f}) {
-            RenderQuality low = qualityOf(QualityPreset::Low);
             low.renderScale = scale;
             ladder.push_back(low);
         }
+        low.detailScale = 0.5f;
+        ladder.push_back(low);
         return ladder;
     };
     if (top == QualityPreset::Low) return smaller();

@@ -5,7 +5,8 @@
 // the CPU's frame time. Steps are cheapest-first in picture lost: occlusion
 // at half resolution with fewer samples, a smaller shadow map, the medium
 // preset, no occlusion, no shadows, no multisampling, then the scene drawn
-// at three quarters and at half the window's size (renderScale). Hysteresis keeps it
+// at three quarters and at half the window's size (renderScale), and last
+// coarser meshes for that half (detailScale). Hysteresis keeps it
 // from flickering: down when the recent mean passes 85 % of the budget, up
 // only after a long stretch under half of it, and never two changes close
 // together. "Close" is counted in frames and in the GPU's milliseconds: a

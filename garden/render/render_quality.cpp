@@ -13,6 +13,7 @@ RenderQuality qualityOf(QualityPreset preset) {
             q.shadows = false;
             q.ambientOcclusion = false;
             q.materialBump = false;
+            q.skyMapSize = 512;
             break;
         case QualityPreset::Medium:
             q.msaaSamples = 2;
@@ -31,6 +32,11 @@ RenderQuality qualityOf(QualityPreset preset) {
 int scenePixels(int outputPixels, const RenderQuality& q) {
     const float scale = std::clamp(q.renderScale, 0.25f, 1.0f);
     return std::max(1, static_cast<int>(std::lround(static_cast<float>(outputPixels) * scale)));
+}
+
+int detailPixels(int outputPixels, const RenderQuality& q) {
+    const float scale = std::clamp(q.detailScale, 0.25f, 1.0f);
+    return std::max(1, static_cast<int>(std::lround(static_cast<float>(scenePixels(outputPixels, q)) * scale)));
 }
 
 QualityPreset rendererPreset(const std::string& glRenderer) {

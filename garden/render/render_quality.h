@@ -20,6 +20,13 @@ struct RenderQuality {
     float renderScale = 1.0f;        // the scene drawn at this share of the window's width and height (0.25..1)
     bool smoothUpscale = true;       // below scale 1, stretched bilinearly (false: nearest scene pixel)
     bool materialBump = true;        // the materials' detail as relief too (the shading normal perturbed)
+    int skyMapSize = 1024;           // texels on a side of each face of the sky's cube map (sky_pass.h)
+    // The level of detail chooses meshes for this share of the scene's
+    // pixels (0.25..1; below 1: coarser meshes, fewer and larger
+    // triangles). Only the automatic mode's last rung lowers it: a software
+    // renderer pays for each triangle and for the partly covered pixel
+    // blocks around it, whatever their size (docs/rendering.md, "Quality").
+    float detailScale = 1.0f;
 };
 
 }  // namespace hg::garden
@@ -47,5 +54,9 @@ QualityPreset rendererPreset(const std::string& glRenderer);
 // (clamped to 0.25..1, as the renderer draws it): what the level of detail
 // should resolve, since finer geometry would only be averaged away.
 int scenePixels(int outputPixels, const RenderQuality& q);
+// The pixels along that side the level of detail chooses meshes for: the
+// scene's at q's detail scale (clamped to 0.25..1). What the desktop, the
+// headset and the offscreen replay give the session as its viewport.
+int detailPixels(int outputPixels, const RenderQuality& q);
 
 }  // namespace hg::garden

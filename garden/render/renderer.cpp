@@ -584,6 +584,10 @@ bool Renderer::renderShadows(const glm::vec3& lo, const glm::vec3& hi) {
     return true;
 }
 
+void Renderer::setSkyBaked(bool on) { sky_->setBaked(on); }
+
+bool Renderer::skyBaked() const { return sky_->baked(); }
+
 void Renderer::renderScene(bool shadowed) {
     timers_->begin(GpuPass::Scene);
     glBindFramebuffer(GL_FRAMEBUFFER, targets_->framebuffer());
@@ -632,7 +636,9 @@ void Renderer::renderScene(bool shadowed) {
     }
     for (const SceneDraw& d : sceneDraws_)
         if (d.ground) drawGroundNow(d.groundStyle);
-    sky_->draw(view_);
+    const std::size_t skyBakes = sky_->bakes();
+    sky_->draw(view_, quality_.skyMapSize);
+    stats_.skyBakes += sky_->bakes() - skyBakes;
     // Every box against the finished depth (sky included: it writes none).
     if (visibility_) stats_.visibilityTests += visibility_->issue(viewProjection);
     timers_->end();

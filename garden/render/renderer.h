@@ -144,6 +144,7 @@ struct RenderStats {
     std::size_t impostorsBaked = 0;   // impostors rendered into the atlas since the last endFrame
     std::size_t sculpturesHidden = 0;  // left out as hidden behind nearer ones (wasHidden said so)
     std::size_t visibilityTests = 0;   // boxes drawn in occlusion queries (visibility_queries.h)
+    std::size_t skyBakes = 0;          // the sky's cube map baked again (its look changed: sky_pass.h)
     // GPU milliseconds per pass of the latest view the GPU has finished
     // (GL timer queries, read without waiting: a view or a few behind); -1
     // where a pass did not run or no result is in yet.
@@ -228,6 +229,13 @@ public:
     // that measure the pass).
     void setShadowReuse(bool on) { shadowReuse_ = on; }
     bool shadowReuse() const { return shadowReuse_; }
+
+    // --- the sky (sky_pass.h) -------------------------------------------------------
+    // On by default: the sky's gradient and clouds baked into a cube map
+    // while its look holds. Off: evaluated at every sky pixel (the peer of
+    // tests and benches); the pixels differ only by the map's filtering.
+    void setSkyBaked(bool on);
+    bool skyBaked() const;
 
     // --- hidden sculptures (visibility_queries.h) --------------------------------
     // On by default. Off forgets every result; wasHidden is then always false.

@@ -2,9 +2,11 @@
 // haze"), read back as pixels: the survey grid near the eye only, mown
 // stripes that swap with the view, a meadow beyond the garden, blades
 // close by, haze that takes what is far to the horizon's colour, and
-// clouds in part of the sky.
+// clouds in part of the sky, baked into a cube map that shows what each
+// pixel would.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -244,6 +246,81 @@ TEST_F(GroundTest, CloudsCoverPartOfTheSkyAndNothingBelowTheHorizon) {
     EXPECT_GT(clouded, above / 25) << "clouds over part of the sky (8.6 % are this white here)";
     EXPECT_LT(clouded, above * 8 / 10) << "and blue between them";
     EXPECT_EQ(belowChanged, 0) << "no cloud below the horizon";
+}
+
+// The sky's gradient and clouds come from a cube map baked while the sky's
+// look holds (sky_pass.h): it shows what the sky evaluated at each pixel
+// shows, up to the map's filtering, the sun's disc included; it is baked
+// once for frames that keep the look and again when the look changes.
+TEST_F(GroundTest, TheBakedSkyShowsWhatEachPixelWouldAndIsBakedOnlyWhenItsLookChanges) {
+    const glm::vec3 toSun = glm::normalize(glm::vec3(0.3f, 0.35f, -0.8f));
+    const glm::vec3 eye(0.0f, 1.7f, 0.0f);
+    // The sun in the upper part of the picture, clouds around it.
+    View view = makeView(eye, eye + 10.0f * glm::normalize(toSun - glm::vec3(0.0f, 0.25f, 0.0f)), toSun);
+    view.clouds = 0.55f;
+    RenderQuality quality = plainQuality();
+    auto sky = [&](bool baked) {
+        renderer_->setQuality(quality);
+        renderer_->setSkyBaked(baked);
+        target_->bind();
+        renderer_->beginFrame(view);
+        const RenderStats stats = renderer_->endFrame();
+        read();
+        return stats.skyBakes;
+    };
+    EXPECT_EQ(sky(false), 0u) << "evaluated per pixel: nothing baked";
+    const std::vector<std::uint8_t> direct = color_;
+    // Each baked pixel within the colours the per-pixel sky has around it
+    // (its 3 x 3 neighbours, give or take 6 levels): the map resamples the
+    // sky, so its pixel may be any blend of its neighbours', but a face
+    // turned the wrong way or a seam would put a colour there that is not.
+    // A few are not at any size: where the clouds' pattern is finer than a
+    // pixel (towards the horizon) the per-pixel sky catches specks between
+    // the map's texels.
+    const auto at = [&](const std::vector<std::uint8_t>& image, int x, int y, int c) {
+        x = std::clamp(x, 0, kWidth - 1);
+        y = std::clamp(y, 0, kHeight - 1);
+        return int(image[(static_cast<std::size_t>(y) * kWidth + static_cast<std::size_t>(x)) * 4 + c]);
+    };
+    for (const int faceSize : {1024, 512}) {
+        SCOPED_TRACE(faceSize);
+        quality.skyMapSize = faceSize;
+        EXPECT_EQ(sky(true), 1u) << "the first baked frame at this size bakes";
+        double difference = 0.0;
+        int outside = 0, sun = 0;
+        for (int y = 0; y < kHeight; ++y)
+            for (int x = 0; x < kWidth; ++x) {
+                bool within = true;
+                for (int c = 0; c < 3; ++c) {
+                    int lo = 255, hi = 0;
+                    for (int dy = -1; dy <= 1; ++dy)
+                        for (int dx = -1; dx <= 1; ++dx) {
+                            lo = std::min(lo, at(direct, x + dx, y + dy, c));
+                            hi = std::max(hi, at(direct, x + dx, y + dy, c));
+                        }
+                    const int v = at(color_, x, y, c);
+                    within = within && v >= lo - 6 && v <= hi + 6;
+                    difference += std::abs(v - at(direct, x, y, c));
+                }
+                outside += within ? 0 : 1;
+                sun += (glm::dot(rayDirection(view, x, y), toSun) > 0.99996f && pixel(x, y).sum() > 3 * 250) ? 1 : 0;
+            }
+        const int pixels = kWidth * kHeight;
+        // Measured: 1.25 and 2.65 levels on average; 100 and 130 outside.
+        EXPECT_LT(difference / pixels, faceSize >= 1024 ? 2.0 : 4.0) << "levels (r + g + b) a pixel on average";
+        EXPECT_LT(outside, pixels / 400) << "pixels unlike any of the per-pixel sky's around them";
+        EXPECT_GT(sun, 0) << "the sun's disc, white, where it stands";
+    }
+
+    EXPECT_EQ(sky(true), 0u) << "the same look: the map is kept";
+    EXPECT_EQ(sky(true), 0u);
+    view.clouds = 0.3f;
+    EXPECT_EQ(sky(true), 1u) << "fewer clouds: baked again";
+    view.lights.front().direction = glm::vec3(-0.5f, 0.6f, -0.4f);
+    EXPECT_EQ(sky(true), 1u) << "the sun moved: baked again";
+    view.clearColor = glm::vec4(0.7f, 0.6f, 0.5f, 1.0f);
+    EXPECT_EQ(sky(true), 1u) << "another horizon: baked again";
+    EXPECT_EQ(sky(true), 0u);
 }
 
 }  // namespace

@@ -42,7 +42,7 @@ TEST(QualityGovernor, StepsDownToLowUnderLoadAndNoFurther) {
         cost += (after.msaaSamples < before.msaaSamples) + (after.shadowMapSize < before.shadowMapSize) +
                 (!after.shadows && before.shadows) + (!after.ambientOcclusion && before.ambientOcclusion) +
                 (after.aoSamples < before.aoSamples) + (after.aoHalfResolution && !before.aoHalfResolution) +
-                (after.renderScale < before.renderScale);
+                (after.renderScale < before.renderScale) + (after.detailScale < before.detailScale);
     }
     EXPECT_GE(cost, static_cast<int>(g.steps()) - 1);
     const RenderQuality low = qualityOf(QualityPreset::Low);
@@ -50,7 +50,8 @@ TEST(QualityGovernor, StepsDownToLowUnderLoadAndNoFurther) {
     EXPECT_FALSE(g.quality().shadows);
     EXPECT_FALSE(g.quality().ambientOcclusion);
     EXPECT_FLOAT_EQ(g.quality().renderScale, 0.5f) << "then fewer pixels";
-    EXPECT_EQ(framesUntilChange(g, 50.0, 1000), 0u) << "low at half size is the floor";
+    EXPECT_FLOAT_EQ(g.quality().detailScale, 0.5f) << "then coarser meshes for them";
+    EXPECT_EQ(framesUntilChange(g, 50.0, 1000), 0u) << "low at half size with coarser meshes is the floor";
 }
 
 TEST(QualityGovernor, ClimbsBackOnlyAfterALongQuietStretch) {
@@ -94,7 +95,7 @@ TEST(QualityGovernor, UnmeasuredFramesChangeNothingAndTheThresholdDoesNotFlicker
 
 TEST(QualityGovernor, ASoftwareRendererStartsLowAndDrawsFewerPixelsWhenSlow) {
     QualityGovernor g(QualityPreset::Low, 16.7);
-    EXPECT_EQ(g.steps(), 3u);
+    EXPECT_EQ(g.steps(), 4u);
     EXPECT_FLOAT_EQ(g.quality().renderScale, 1.0f);
     // 400 ms frames: judged after kMinFrames of them (2.4 s), not after
     // kSettle (24 s at two and a half frames a second).
@@ -103,8 +104,14 @@ TEST(QualityGovernor, ASoftwareRendererStartsLowAndDrawsFewerPixelsWhenSlow) {
     EXPECT_EQ(framesUntilChange(g, 150.0), settleFrames(150.0));
     EXPECT_EQ(settleFrames(150.0), 7u) << "a second of 150 ms frames";
     EXPECT_FLOAT_EQ(g.quality().renderScale, 0.5f);
+    EXPECT_FLOAT_EQ(g.quality().detailScale, 1.0f) << "the meshes still for every scene pixel";
     EXPECT_FALSE(g.quality().shadows);
+    EXPECT_EQ(framesUntilChange(g, 150.0), settleFrames(150.0));
+    EXPECT_FLOAT_EQ(g.quality().renderScale, 0.5f);
+    EXPECT_FLOAT_EQ(g.quality().detailScale, 0.5f) << "last, coarser meshes";
     EXPECT_EQ(framesUntilChange(g, 400.0, 500), 0u);
+    ASSERT_GT(framesUntilChange(g, 1.0), 0u);
+    EXPECT_FLOAT_EQ(g.quality().detailScale, 1.0f);
     ASSERT_GT(framesUntilChange(g, 1.0), 0u);
     EXPECT_FLOAT_EQ(g.quality().renderScale, 0.75f);
 }
@@ -123,6 +130,22 @@ TEST(RenderQuality, TheSceneHasTheRenderScalesShareOfThePixels) {
     q.renderScale = 3.0f;
     EXPECT_EQ(scenePixels(720, q), 720) << "never over the output";
     EXPECT_EQ(scenePixels(1, q), 1);
+}
+
+// The level of detail's pixels: the scene's at the detail scale.
+TEST(RenderQuality, TheLevelOfDetailCountsTheDetailScalesShareOfTheScenesPixels) {
+    RenderQuality q;
+    EXPECT_EQ(detailPixels(720, q), 720);
+    q.renderScale = 0.5f;
+    EXPECT_EQ(detailPixels(720, q), 360) << "the scene's pixels";
+    q.detailScale = 0.5f;
+    EXPECT_EQ(detailPixels(720, q), 180);
+    EXPECT_EQ(detailPixels(721, q), 181) << "rounded";
+    q.detailScale = 0.01f;
+    EXPECT_EQ(detailPixels(720, q), 90) << "never under a quarter of the scene's";
+    q.detailScale = 2.0f;
+    EXPECT_EQ(detailPixels(720, q), 360) << "never over the scene's";
+    EXPECT_EQ(detailPixels(1, q), 1);
 }
 
 }  // namespace
