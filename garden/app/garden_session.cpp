@@ -30,8 +30,8 @@ namespace {
 constexpr int kLevelRefreshFrames = 45;
 // A sculpture whose chunks take different levels is selected chunk by
 // chunk again only once the eye has moved this fraction of its distance
-// to the sculpture (or its errors, the detail sphere or its grid's
-// residence changed): levels change at distances, so a level is at most
+// to the sculpture (or its errors, the detail sphere, its grid's residence
+// or the camera's pixels changed): levels change at distances, so a level is at most
 // this fraction late, and a walk past hundreds of such sculptures costs a
 // test per sculpture a frame, not one per chunk.
 constexpr double kReselectMove = 0.01;
@@ -531,6 +531,8 @@ void GardenSession::selectLevels() {
         LevelsChosen& chosen = s.levelsChosen;
         LevelsChosen now{true, eye, s.errors ? s.errors->version() : 0, {0.0, 0.0, 0.0, -1.0}, finest, false};
         if (lod.detail) now.detail = {lod.detail->center[0], lod.detail->center[1], lod.detail->center[2], lod.detail->radius};
+        now.view = {static_cast<double>(cam.viewportHeight), cam.fovY, lod.pixelError, lod.errorPixels,
+                    static_cast<double>(lod.maxLevel)};
         if (!uniform && chosen.sameInputs(now) &&
             glm::distance(glm::dvec3(eye[0], eye[1], eye[2]), glm::dvec3(chosen.eye[0], chosen.eye[1], chosen.eye[2])) <=
                 kReselectMove * need.distance / s.scale()) {  // gridNeed's distanceToBound

@@ -60,8 +60,13 @@ struct LevelsChosen {
     std::array<double, 4> detail{};  // the detail sphere's centre (model frame) and radius; radius < 0: none
     int finest = 0;                // its grid on disk keeps level 1 or coarser
     bool anyFull = false;          // some chunk took level 0
+    // The camera's viewport height and field of view, and the LOD's pixel
+    // error, measured-error pixels and coarsest level: the automatic
+    // quality changes the viewport (the render and detail scales) while
+    // the visitor may stand still.
+    std::array<double, 5> view{};
     bool sameInputs(const LevelsChosen& o) const {
-        return valid && o.valid && errors == o.errors && finest == o.finest && detail == o.detail;
+        return valid && o.valid && errors == o.errors && finest == o.finest && detail == o.detail && view == o.view;
     }
 };
 

@@ -1,6 +1,7 @@
 #include "garden/render/post_process.h"
 
 #include <algorithm>
+#include <array>
 #include <string>
 #include <utility>
 
@@ -9,12 +10,16 @@
 namespace hg::garden {
 namespace {
 
-// A unit no other pass of the renderer binds (chunk_batch.h, impostor_atlas.h).
+// Units no other pass of the renderer binds (chunk_batch.h, impostor_atlas.h,
+// sky_pass.cpp).
 constexpr GLint kViewZUnit = 7;
+constexpr GLint kResolvedUnit = 9;
 
 // Compiled per configuration (PostProcess::variant): HG_SAMPLES, the scene's
 // samples a pixel; HG_OCCLUSION, 0 none, 1 at the scene's size, 2 coarser;
-// HG_SMOOTH, 1 where the scene is stretched bilinearly over the output.
+// HG_RESOLVE, 1 for the first of two passes where the scene is stretched
+// over the output: each scene pixel resolved once, at the scene's size, into
+// a texture that kStretchFragment then samples bilinearly.
 const char* const kCompositeFragment = "#version 330 core\n" HG_SRGB_GLSL R"(
 uniform sampler2DMS uColor;
 uniform sampler2DMS uDepth;
@@ -22,7 +27,6 @@ uniform sampler2D uOcclusion;
 uniform sampler2D uViewZ;       // the scene's view z at full size (the occlusion's pyramid, level 0)
 uniform int uOcclusionScale;    // scene pixels per occlusion texel (2 or more)
 uniform float uExposure;
-uniform vec2 uSize;     // the scene's pixels
 uniform vec2 uToScene;  // output pixel to scene pixel (the render scale)
 out vec4 fragColor;
 // Khronos PBR Neutral's highlight roll-off without its toe: colours below
@@ -87,30 +91,47 @@ vec3 resolvedAt(ivec2 p) {
     return resolved(p, openAt(p));
 }
 void main() {
-    vec2 s = gl_FragCoord.xy * uToScene;
-    ivec2 p = ivec2(s);
-    vec3 color;
-#if HG_SMOOTH
-        // Stretched (render scale below 1): bilinear between the four scene
-        // pixels around, each resolved first, so a hard edge of the scene
-        // becomes a ramp instead of a staircase of doubled pixels.
-        vec2 t = s - 0.5;
-        ivec2 lo = ivec2(floor(t)), last = ivec2(uSize) - 1;
-        vec2 f = t - vec2(lo);
-        ivec2 a = clamp(lo, ivec2(0), last), b = clamp(lo + 1, ivec2(0), last);
-        color = mix(mix(resolvedAt(a), resolvedAt(ivec2(b.x, a.y)), f.x),
-                    mix(resolvedAt(ivec2(a.x, b.y)), resolvedAt(b), f.x), f.y);
+#if HG_RESOLVE
+    fragColor = vec4(resolvedAt(ivec2(gl_FragCoord.xy)), 1.0);  // linear, tone mapped
 #else
-    color = resolvedAt(p);
-#endif
-    fragColor = vec4(toSrgb(color), 1.0);
+    ivec2 p = ivec2(gl_FragCoord.xy * uToScene);
+    fragColor = vec4(toSrgb(resolvedAt(p)), 1.0);
     gl_FragDepth = texelFetch(uDepth, p, 0).r;
+#endif
+}
+)";
+
+// The second pass of a stretch (render scale below 1): bilinear between
+// the four resolved scene pixels around (the texture's own filtering), so a
+// hard edge of the scene becomes a ramp instead of a staircase of doubled
+// pixels. Resolving first costs a quarter of the output's pixels at half
+// scale, where resolving the four neighbours of every output pixel cost a
+// software renderer about as much as the rest of the composite.
+const char* const kStretchFragment = "#version 330 core\n" HG_SRGB_GLSL R"(
+uniform sampler2D uResolved;
+uniform sampler2DMS uDepth;
+uniform vec2 uSize;     // the scene's pixels
+uniform vec2 uToScene;  // output pixel to scene pixel (the render scale)
+out vec4 fragColor;
+void main() {
+    vec2 s = gl_FragCoord.xy * uToScene;
+    fragColor = vec4(toSrgb(texture(uResolved, s / uSize).rgb), 1.0);
+    gl_FragDepth = texelFetch(uDepth, ivec2(s), 0).r;
 }
 )";
 
 }  // namespace
 
-PostProcess::PostProcess() : empty_(gl::VertexArray::create()) {
+PostProcess::PostProcess()
+    : stretch_("composite (stretch)", shaders::kFullscreenVertex, kStretchFragment),
+      resolved_(gl::Texture::create()),
+      resolvedTarget_(gl::Framebuffer::create()),
+      empty_(gl::VertexArray::create()) {
+    stretch_.use();
+    glUniform1i(stretch_.uniform("uResolved"), kResolvedUnit);
+    glUniform1i(stretch_.uniform("uDepth"), 1);
+    stretchSize_ = stretch_.uniform("uSize");
+    stretchToScene_ = stretch_.uniform("uToScene");
     variant(Configuration{});  // the common one now, and a broken shader fails here
 }
 
@@ -120,7 +141,7 @@ const PostProcess::Variant& PostProcess::variant(const Configuration& c) {
     auto found = variants_.find(c);
     if (found != variants_.end()) return found->second;
     const std::string defines = "#define HG_SAMPLES " + std::to_string(c.samples) + "\n#define HG_OCCLUSION " +
-                                std::to_string(c.occlusion) + "\n#define HG_SMOOTH " + (c.smooth ? "1" : "0") + "\n";
+                                std::to_string(c.occlusion) + "\n#define HG_RESOLVE " + (c.resolve ? "1" : "0") + "\n";
     Variant v;
     v.program = ShaderProgram("composite", shaders::kFullscreenVertex, withDefines(kCompositeFragment, defines).c_str());
     const ShaderProgram& p = v.program;
@@ -130,10 +151,29 @@ const PostProcess::Variant& PostProcess::variant(const Configuration& c) {
     glUniform1i(p.uniform("uOcclusion"), 2);
     glUniform1i(p.uniform("uViewZ"), kViewZUnit);
     v.exposure = p.uniform("uExposure");
-    v.size = p.uniform("uSize");
     v.toScene = p.uniform("uToScene");
     v.occlusionScale = p.uniform("uOcclusionScale");
     return variants_.emplace(c, std::move(v)).first->second;
+}
+
+void PostProcess::ensureResolved(glm::ivec2 size) {
+    if (size == resolvedSize_) return;
+    glActiveTexture(GL_TEXTURE0 + kResolvedUnit);
+    glBindTexture(GL_TEXTURE_2D, resolved_.get());
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA16F, size.x, size.y, 0, GL_RGBA, GL_FLOAT, nullptr);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glActiveTexture(GL_TEXTURE0);
+    GLint framebuffer = 0;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
+    glBindFramebuffer(GL_FRAMEBUFFER, resolvedTarget_.get());
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, resolved_.get(), 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(framebuffer));
+    resolvedSize_ = size;
 }
 
 void PostProcess::composite(const SceneTargets& scene, const OcclusionImage& occlusion, float exposure,
@@ -141,14 +181,14 @@ void PostProcess::composite(const SceneTargets& scene, const OcclusionImage& occ
     Configuration c;
     c.samples = std::max(scene.samples(), 1);
     c.occlusion = occlusion.texture == 0 ? 0 : occlusion.viewZ != 0 && occlusion.scale > 1 ? 2 : 1;
-    c.smooth = smooth && scene.size() != output;
+    c.resolve = smooth && scene.size() != output;
+    const glm::vec2 toScene(static_cast<float>(scene.size().x) / static_cast<float>(std::max(output.x, 1)),
+                            static_cast<float>(scene.size().y) / static_cast<float>(std::max(output.y, 1)));
     const Variant& v = variant(c);
     v.program.use();
     glUniform1f(v.exposure, exposure);
     glUniform1i(v.occlusionScale, std::max(occlusion.scale, 1));
-    glUniform2f(v.size, static_cast<float>(scene.size().x), static_cast<float>(scene.size().y));
-    glUniform2f(v.toScene, static_cast<float>(scene.size().x) / static_cast<float>(std::max(output.x, 1)),
-                static_cast<float>(scene.size().y) / static_cast<float>(std::max(output.y, 1)));
+    glUniform2f(v.toScene, toScene.x, toScene.y);
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, scene.colorTexture());
     glActiveTexture(GL_TEXTURE1);
@@ -159,17 +199,39 @@ void PostProcess::composite(const SceneTargets& scene, const OcclusionImage& occ
     glBindTexture(GL_TEXTURE_2D, occlusion.viewZ);
     glActiveTexture(GL_TEXTURE0);
 
-    // Every pixel is written, colour and depth, whatever was there.
     glDisable(GL_BLEND);
     glDisable(GL_CULL_FACE);
+    glBindVertexArray(empty_.get());
+    if (c.resolve) {
+        // First each scene pixel once, into the resolved texture.
+        GLint framebuffer = 0;
+        std::array<GLint, 4> viewport{};
+        glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
+        glGetIntegerv(GL_VIEWPORT, viewport.data());
+        ensureResolved(scene.size());
+        glBindFramebuffer(GL_FRAMEBUFFER, resolvedTarget_.get());
+        glViewport(0, 0, scene.size().x, scene.size().y);
+        glDisable(GL_DEPTH_TEST);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(framebuffer));
+        glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
+        stretch_.use();
+        glUniform2f(stretchSize_, static_cast<float>(scene.size().x), static_cast<float>(scene.size().y));
+        glUniform2f(stretchToScene_, toScene.x, toScene.y);
+        glActiveTexture(GL_TEXTURE0 + kResolvedUnit);
+        glBindTexture(GL_TEXTURE_2D, resolved_.get());
+        glActiveTexture(GL_TEXTURE0);
+    }
+    // Every output pixel is written, colour and depth, whatever was there.
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_ALWAYS);
     glDepthMask(GL_TRUE);
-    glBindVertexArray(empty_.get());
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glBindVertexArray(0);
     glDepthFunc(GL_LESS);
     glEnable(GL_CULL_FACE);
+    glActiveTexture(GL_TEXTURE0 + kResolvedUnit);
+    glBindTexture(GL_TEXTURE_2D, 0);
     glActiveTexture(GL_TEXTURE0 + kViewZUnit);
     glBindTexture(GL_TEXTURE_2D, 0);
     glActiveTexture(GL_TEXTURE0);

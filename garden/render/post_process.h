@@ -5,8 +5,10 @@
 // their coverage; the average is encoded to sRGB. The scene's depth goes
 // along (sample 0), so lines and panels drawn afterwards are depth tested
 // against the sculptures. docs/rendering.md explains the order. One program
-// per configuration (samples, occlusion, stretch), compiled when first met
-// (docs/rendering.md, "Programs made to measure").
+// per configuration (samples, occlusion, and whether it resolves for a
+// stretch), compiled when first met (docs/rendering.md, "Programs made to
+// measure"); a scene drawn smaller than the output is resolved at its own
+// size first, then stretched bilinearly by a second, small program.
 #pragma once
 
 #include <glm/vec2.hpp>
@@ -44,18 +46,24 @@ private:
     struct Configuration {
         int samples = 1;
         int occlusion = 0;  // 0 none, 1 at the scene's size, 2 coarser (the joint bilateral upsample)
-        bool smooth = false;
+        bool resolve = false;  // into the resolved texture, for the stretch (else: straight to the output)
         bool operator<(const Configuration& o) const {
-            return std::tie(samples, occlusion, smooth) < std::tie(o.samples, o.occlusion, o.smooth);
+            return std::tie(samples, occlusion, resolve) < std::tie(o.samples, o.occlusion, o.resolve);
         }
     };
     struct Variant {
         ShaderProgram program;
-        GLint exposure = -1, size = -1, toScene = -1, occlusionScale = -1;
+        GLint exposure = -1, toScene = -1, occlusionScale = -1;
     };
     const Variant& variant(const Configuration& c);
+    void ensureResolved(glm::ivec2 size);
 
     std::map<Configuration, Variant> variants_;
+    ShaderProgram stretch_;  // the resolved scene, bilinearly over the output
+    GLint stretchSize_ = -1, stretchToScene_ = -1;
+    gl::Texture resolved_;   // RGBA16F at the scene's size: linear, tone mapped, averaged
+    gl::Framebuffer resolvedTarget_;
+    glm::ivec2 resolvedSize_{0};
     gl::VertexArray empty_;  // the fullscreen triangle comes from gl_VertexID
 };
 

@@ -72,16 +72,34 @@ TEST(ScaleGarden, ABrokenTemplateIsRefusedWithItsName) {
 }
 
 // Settled at several poses inside and outside the grid, every sculpture
-// shows the per-chunk selection's levels chunk for chunk (with its measured errors).
+// shows the per-chunk selection's levels chunk for chunk (with its measured
+// errors); and again, standing still, once the viewport's pixels change (the
+// automatic quality's render and detail scales do that).
 TEST(ScaleGarden, SessionLevelsEqualThePerChunkSelection) {
     GardenLoad load = scaleGarden(12, 48);
     ASSERT_TRUE(load.ok()) << load.error;
     GardenSession session(std::move(load), scaleSettings());
     const SessionSettings& st = session.settings();
     std::size_t uniform = 0, mixed = 0;
-    for (const glm::vec3 eye : {glm::vec3(0.0f, 1.7f, 6.0f), glm::vec3(1.5f, 1.2f, -3.0f), glm::vec3(-4.0f, 1.0f, -0.8f),
-                                glm::vec3(30.0f, 2.0f, 40.0f)}) {
-        session.navigator().setPose(eye, 0.0f, 0.0f);
+    const std::vector<glm::vec3> poses{glm::vec3(0.0f, 1.7f, 6.0f), glm::vec3(1.5f, 1.2f, -3.0f),
+                                       glm::vec3(-4.0f, 1.0f, -0.8f), glm::vec3(30.0f, 2.0f, 40.0f)};
+    std::size_t coarser = 0;  // chunks shown coarser once the viewport shrank
+    for (std::size_t pose = 0; pose <= poses.size(); ++pose) {
+        std::vector<std::vector<int>> before;
+        if (pose < poses.size()) {
+            session.navigator().setPose(poses[pose], 0.0f, 0.0f);
+        } else {
+            // Back at the first pose, settled, then the same eye with two thirds of the
+            // pixels (half would take these sculptures to one level each, which is
+            // chosen every frame anyway).
+            session.navigator().setPose(poses[0], 0.0f, 0.0f);
+            settle(session);
+            for (const Sculpture& s : session.sculptures()) {
+                before.emplace_back();
+                for (std::size_t c = 0; c < s.queue->count(); ++c) before.back().push_back(s.queue->shownLod(c).level);
+            }
+            session.settings().viewportHeight = session.settings().viewportHeight * 2 / 3;
+        }
         settle(session);
         const glm::vec3 at = session.navigator().eye();  // walking keeps the eye above the ground
         for (const Sculpture& s : session.sculptures()) {
@@ -99,14 +117,16 @@ TEST(ScaleGarden, SessionLevelsEqualThePerChunkSelection) {
             const std::vector<int> flat = poly::selectLevelsPerChunk(*s.layout, cam, lod, s.errors.get());
             std::set<int> levels;
             for (std::size_t c = 0; c < flat.size(); ++c) {
-                ASSERT_EQ(s.queue->shownLod(c).level, flat[c]) << s.name << ", chunk " << c;
+                ASSERT_EQ(s.queue->shownLod(c).level, flat[c]) << s.name << ", chunk " << c << ", pose " << pose;
                 levels.insert(flat[c]);
+                if (!before.empty()) coarser += flat[c] > before[static_cast<std::size_t>(&s - &session.sculptures()[0])][c];
             }
             (levels.size() == 1 ? uniform : mixed) += 1;
         }
     }
     EXPECT_GT(uniform, 0u);
     EXPECT_GT(mixed, 0u) << "some sculptures straddle a level's distance";
+    EXPECT_GT(coarser, 0u) << "fewer pixels, coarser levels, without a step";
 }
 
 TEST(ScaleGarden, AFarViewerTestsNoChunk) {

@@ -539,6 +539,62 @@ TEST_F(LookTest, ARenderScaleIsStretchedSmoothlyAndLinesStaySharp) {
     EXPECT_GT(edgeStep(), 0.9 * fullStep);
 }
 
+// The stretch is bilinear between the scene's resolved pixels, in linear
+// light: with nearest sampling each scene pixel is the output's 2 x 2
+// block, so the smooth picture can be worked out from the nearest one and
+// compared pixel by pixel (give or take the 8 bits the scene pixels were
+// read back in).
+TEST_F(LookTest, TheStretchIsBilinearBetweenTheScenesPixelsInLinearLight) {
+    renderer_->upload(1, 1, uvSphereMesh(1.0f, 96, 48));
+    const View view = makeView({0, 0, 4}, {0.3f, 0.2f, 0});
+    auto draw = [&](bool smooth) {
+        RenderQuality q = plainQuality();
+        q.renderScale = 0.5f;
+        q.smoothUpscale = smooth;
+        renderer_->setQuality(q);
+        target_->bind();
+        renderer_->beginFrame(view);
+        renderer_->drawGround(GroundStyle{});
+        renderer_->drawChunk(1, glm::mat4(1.0f), kRed);
+        renderer_->endFrame();
+        read();
+        return color_;
+    };
+    const std::vector<std::uint8_t> nearest = draw(false), smooth = draw(true);
+    const int sceneWidth = kWidth / 2, sceneHeight = kHeight / 2;
+    const auto toLinear = [](int v) {
+        const double c = v / 255.0;
+        return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+    };
+    const auto toSrgb = [](double c) {
+        c = std::clamp(c, 0.0, 1.0);
+        return 255.0 * (c <= 0.0031308 ? c * 12.92 : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055);
+    };
+    const auto scene = [&](int i, int j, int c) {
+        i = std::clamp(i, 0, sceneWidth - 1);
+        j = std::clamp(j, 0, sceneHeight - 1);
+        return toLinear(nearest[(static_cast<std::size_t>(2 * j) * kWidth + static_cast<std::size_t>(2 * i)) * 4 + c]);
+    };
+    int worst = 0, ramps = 0;
+    for (int y = 0; y < kHeight; ++y)
+        for (int x = 0; x < kWidth; ++x) {
+            // Output pixel centre in scene pixels, less half a pixel.
+            const double tx = (x + 0.5) * 0.5 - 0.5, ty = (y + 0.5) * 0.5 - 0.5;
+            const int i = static_cast<int>(std::floor(tx)), j = static_cast<int>(std::floor(ty));
+            const double fx = tx - i, fy = ty - j;
+            for (int c = 0; c < 3; ++c) {
+                const double linear = (1 - fy) * ((1 - fx) * scene(i, j, c) + fx * scene(i + 1, j, c)) +
+                                      fy * ((1 - fx) * scene(i, j + 1, c) + fx * scene(i + 1, j + 1, c));
+                const int got = smooth[(static_cast<std::size_t>(y) * kWidth + static_cast<std::size_t>(x)) * 4 + c];
+                worst = std::max(worst, static_cast<int>(std::lround(std::abs(toSrgb(linear) - got))));
+                const int near = nearest[(static_cast<std::size_t>(y) * kWidth + static_cast<std::size_t>(x)) * 4 + c];
+                ramps += c == 0 && std::abs(got - near) > 20 ? 1 : 0;
+            }
+        }
+    EXPECT_LE(worst, 3) << "levels from the bilinear blend of the scene's pixels";
+    EXPECT_GT(ramps, 100) << "the silhouette's pixels differ from the nearest stretch";
+}
+
 TEST(RenderQualityTest, PresetsSwitchTheEffectsAndParseByName) {
     EXPECT_EQ(parseQualityPreset("low"), QualityPreset::Low);
     EXPECT_EQ(parseQualityPreset("medium"), QualityPreset::Medium);
