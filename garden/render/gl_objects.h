@@ -80,4 +80,15 @@ using Query = Handle<QueryTag>;
 using Shader = Handle<ShaderTag>;
 using Program = Handle<ProgramTag>;
 
+// The bound texture of `target` read with linear filtering, clamped at its
+// edges, from level 0 alone (no mipmaps made).
+inline void sampleLinearClamped(GLenum target) {
+    glTexParameteri(target, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(target, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(target, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(target, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glTexParameteri(target, GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);
+    glTexParameteri(target, GL_TEXTURE_MAX_LEVEL, 0);
+}
+
 }  // namespace hg::garden::gl
