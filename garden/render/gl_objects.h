@@ -91,4 +91,29 @@ inline void sampleLinearClamped(GLenum target) {
     glTexParameteri(target, GL_TEXTURE_MAX_LEVEL, 0);
 }
 
+// The framebuffers bound for drawing and reading, and the viewport, as they
+// were when it was made; put back when it goes. A pass that renders into its
+// own target (a bake, a resolve, the UI board) holds one, so the caller's
+// target is whole again whichever way the pass leaves.
+class TargetKept {
+public:
+    TargetKept() {
+        glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &draw_);
+        glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &read_);
+        glGetIntegerv(GL_VIEWPORT, viewport_);
+    }
+    ~TargetKept() {
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(draw_));
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(read_));
+        glViewport(viewport_[0], viewport_[1], viewport_[2], viewport_[3]);
+    }
+    TargetKept(const TargetKept&) = delete;
+    TargetKept& operator=(const TargetKept&) = delete;
+
+private:
+    GLint draw_ = 0;
+    GLint read_ = 0;
+    GLint viewport_[4] = {0, 0, 0, 0};
+};
+
 }  // namespace hg::garden::gl

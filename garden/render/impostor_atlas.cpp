@@ -177,8 +177,7 @@ bool ImpostorAtlas::bake(ImpostorKey key, std::uint64_t version, ChunkBatch& bat
     if (layer < 0) return false;
     const int views = settings_.views, pixels = settings_.framePixels, side = views * pixels;
 
-    GLint viewport[4];
-    glGetIntegerv(GL_VIEWPORT, viewport);
+    const gl::TargetKept kept;
     const GLboolean srgb = glIsEnabled(GL_FRAMEBUFFER_SRGB);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.get());
     glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, albedo_.get(), 0, layer);
@@ -220,8 +219,6 @@ bool ImpostorAtlas::bake(ImpostorKey key, std::uint64_t version, ChunkBatch& bat
         }
     downsample(layer);
 
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
     if (!srgb) glDisable(GL_FRAMEBUFFER_SRGB);
     glEnable(GL_MULTISAMPLE);
 

@@ -1,7 +1,6 @@
 #include "garden/render/post_process.h"
 
 #include <algorithm>
-#include <array>
 #include <string>
 #include <utility>
 
@@ -164,11 +163,9 @@ void PostProcess::ensureResolved(glm::ivec2 size) {
     gl::sampleLinearClamped(GL_TEXTURE_2D);
     glBindTexture(GL_TEXTURE_2D, 0);
     glActiveTexture(GL_TEXTURE0);
-    GLint framebuffer = 0;
-    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
+    const gl::TargetKept kept;
     glBindFramebuffer(GL_FRAMEBUFFER, resolvedTarget_.get());
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, resolved_.get(), 0);
-    glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(framebuffer));
     resolvedSize_ = size;
 }
 
@@ -200,17 +197,14 @@ void PostProcess::composite(const SceneTargets& scene, const OcclusionImage& occ
     glBindVertexArray(empty_.get());
     if (c.resolve) {
         // First each scene pixel once, into the resolved texture.
-        GLint framebuffer = 0;
-        std::array<GLint, 4> viewport{};
-        glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
-        glGetIntegerv(GL_VIEWPORT, viewport.data());
         ensureResolved(scene.size());
-        glBindFramebuffer(GL_FRAMEBUFFER, resolvedTarget_.get());
-        glViewport(0, 0, scene.size().x, scene.size().y);
-        glDisable(GL_DEPTH_TEST);
-        glDrawArrays(GL_TRIANGLES, 0, 3);
-        glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(framebuffer));
-        glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
+        {
+            const gl::TargetKept kept;
+            glBindFramebuffer(GL_FRAMEBUFFER, resolvedTarget_.get());
+            glViewport(0, 0, scene.size().x, scene.size().y);
+            glDisable(GL_DEPTH_TEST);
+            glDrawArrays(GL_TRIANGLES, 0, 3);
+        }
         stretch_.use();
         glUniform2f(stretchSize_, static_cast<float>(scene.size().x), static_cast<float>(scene.size().y));
         glUniform2f(stretchToScene_, toScene.x, toScene.y);

@@ -259,16 +259,11 @@ bool Renderer::bakeImpostor(ImpostorKey key, std::uint64_t version, const std::v
         hi = glm::max(hi, c.hi);
     }
     if (bakeBatch_->empty()) return false;
-    GLint draw = 0, read = 0;
-    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &draw);
-    glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &read);
     ShaderProgram& bake = bakeProgram(material.kind);
     bake.use();
     glUniform1f(bake.uniform("uBump"), quality_.materialBump ? 1.0f : 0.0f);
     const bool baked = atlas_->bake(key, version, *bakeBatch_, *arena_, multiDraw_, bake, 0.5f * (lo + hi),
                                     0.5f * glm::length(hi - lo));
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(draw));
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(read));
     glUseProgram(0);
     if (baked) stats_.impostorsBaked += 1;
     return baked;

@@ -5,7 +5,6 @@
 #include <glm/matrix.hpp>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <string>
 
@@ -153,10 +152,7 @@ void SkyPass::setLook(const Program& p, const Look& look) {
 }
 
 void SkyPass::bake(const Look& look) {
-    GLint framebuffer = 0;
-    std::array<GLint, 4> viewport{};
-    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
-    glGetIntegerv(GL_VIEWPORT, viewport.data());
+    const gl::TargetKept kept;
     const GLboolean depthTest = glIsEnabled(GL_DEPTH_TEST);
     const GLboolean multisample = glIsEnabled(GL_MULTISAMPLE);
 
@@ -186,8 +182,6 @@ void SkyPass::bake(const Look& look) {
     glBindVertexArray(0);
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, 0, 0);
 
-    glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(framebuffer));
-    glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
     if (depthTest) glEnable(GL_DEPTH_TEST);
     if (multisample) glEnable(GL_MULTISAMPLE);
     inCube_ = look;

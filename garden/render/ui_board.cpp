@@ -136,16 +136,14 @@ bool UiBoard::render() {
     const std::uint64_t hash = drawDataHash(*ImGui::GetDrawData());
     if (gl_->drawn == hash) return false;
     gl_->drawn = hash;
-    GLint framebufferBefore = 0, viewportBefore[4] = {0, 0, 0, 0};
-    glGetIntegerv(GL_FRAMEBUFFER_BINDING, &framebufferBefore);
-    glGetIntegerv(GL_VIEWPORT, viewportBefore);
-    glBindFramebuffer(GL_FRAMEBUFFER, gl_->fbo.get());
-    glViewport(0, 0, width_, height_);
-    glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
-    glClear(GL_COLOR_BUFFER_BIT);
-    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-    glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(framebufferBefore));
-    glViewport(viewportBefore[0], viewportBefore[1], viewportBefore[2], viewportBefore[3]);
+    {
+        const gl::TargetKept kept;
+        glBindFramebuffer(GL_FRAMEBUFFER, gl_->fbo.get());
+        glViewport(0, 0, width_, height_);
+        glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+        glClear(GL_COLOR_BUFFER_BIT);
+        ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    }
     glBindTexture(GL_TEXTURE_2D, gl_->texture.get());
     glGenerateMipmap(GL_TEXTURE_2D);
     glBindTexture(GL_TEXTURE_2D, 0);
