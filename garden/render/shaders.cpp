@@ -125,7 +125,10 @@ uniform vec3 uBakeToViewer;
 uniform float uBakeReach;
 #endif
 // Value noise in model space (hash after Dave Hoskins' hash13), and its sum
-// over four octaves, about 0..1 with mean 0.5.
+// over four octaves, about 0..1 with mean 0.5. An octave finer than a pixel
+// (`pixel`: p's change across one) fades to its mean and is not evaluated:
+// far surfaces cost fewer octaves and do not shimmer (docs/rendering.md,
+// "Materials").
 float hash3(vec3 p) {
     p = fract(p * vec3(0.1031, 0.1030, 0.0973));
     p += dot(p, p.yxz + 33.33);
@@ -138,18 +141,20 @@ float noise3(vec3 p) {
     return mix(mix(mix(hash3(i), hash3(i + e.xyy), u.x), mix(hash3(i + e.yxy), hash3(i + e.xxy), u.x), u.y),
                mix(mix(hash3(i + e.yyx), hash3(i + e.xyx), u.x), mix(hash3(i + e.yxx), hash3(i + 1.0), u.x), u.y), u.z);
 }
-float fbm(vec3 p) {
+// 1 while a pattern of `frequency` (per pattern unit) is larger than a
+// pixel, fading to 0 as it shrinks below one: no shimmer far away.
+float resolved(float frequency, float pixel) { return 1.0 - smoothstep(0.3, 0.8, frequency * pixel); }
+float fbm(vec3 p, float pixel) {
     float sum = 0.0, amplitude = 0.5;
     for (int o = 0; o < 4; ++o) {
-        sum += amplitude * noise3(p);
+        float seen = resolved(1.0, pixel);
+        sum += amplitude * (seen > 0.0 ? mix(0.5, noise3(p), seen) : 0.5);
         p = p * 2.03 + vec3(1.7, 9.2, 3.1);
+        pixel *= 2.03;
         amplitude *= 0.5;
     }
     return sum / 0.9375;
 }
-// 1 while a pattern of `frequency` (per pattern unit) is larger than a
-// pixel, fading to 0 as it shrinks below one: no shimmer far away.
-float resolved(float frequency, float pixel) { return 1.0 - smoothstep(0.3, 0.8, frequency * pixel); }
 // The material's colour, highlight and metalness at model point q (in
 // pattern units) with world normal n; `pixel` is q's change across a pixel.
 // `height` (pattern units, out of the surface) is the same detail as
@@ -159,7 +164,7 @@ void surfaceDetail(int kind, vec3 q, vec3 n, float pixel, inout vec3 base, inout
                    inout float shininess, inout float metallic, out float height) {
     height = 0.0;
     if (kind == 1) {  // stone: mottled, dark and light grains
-        float mottle = fbm(q * 0.5);
+        float mottle = fbm(q * 0.5, 0.5 * pixel);
         base *= 0.82 + 0.36 * mottle;
         float grain = noise3(q * 9.0);
         float seen = resolved(9.0, pixel);
@@ -167,15 +172,15 @@ void surfaceDetail(int kind, vec3 q, vec3 n, float pixel, inout vec3 base, inout
         base = mix(base, vec3(0.85), 0.35 * seen * (1.0 - smoothstep(0.18, 0.26, grain)));
         height = 0.15 * mottle + 0.012 * seen * grain;
     } else if (kind == 2) {  // marble: thin dark veins winding through a pale body
-        float t = dot(q, vec3(0.35, 0.22, 0.13)) + 2.2 * fbm(q * 0.35);
+        float t = dot(q, vec3(0.35, 0.22, 0.13)) + 2.2 * fbm(q * 0.35, 0.35 * pixel);
         float vein = pow(1.0 - abs(sin(t * 3.14159)), 10.0);
-        float fine = pow(1.0 - abs(sin((t + 0.6 * fbm(q * 1.3 + 4.0)) * 7.3)), 24.0);
+        float fine = pow(1.0 - abs(sin((t + 0.6 * fbm(q * 1.3 + 4.0, 1.3 * pixel)) * 7.3)), 24.0);
         base = mix(base, base * vec3(0.38, 0.40, 0.44), vein + 0.5 * fine * resolved(3.0, pixel));
-        base *= 0.95 + 0.08 * fbm(q * 0.8 + 11.0);
+        base *= 0.95 + 0.08 * fbm(q * 0.8 + 11.0, 0.8 * pixel);
         height = -0.01 * vein;
     } else if (kind == 3) {  // bronze: metal under a green patina, more on faces turned up
-        float patina = smoothstep(0.6, 0.82, fbm(q * 0.6) + 0.2 * n.y);
-        float hammer = noise3(q * 2.0);
+        float patina = smoothstep(0.6, 0.82, fbm(q * 0.6, 0.6 * pixel) + 0.2 * n.y);
+        float hammer = mix(0.5, noise3(q * 2.0), resolved(2.0, pixel));
         base *= 0.85 + 0.3 * hammer;
         base = mix(base, vec3(0.06, 0.13, 0.1), 0.85 * patina);
         metallic *= 1.0 - patina;
@@ -183,7 +188,7 @@ void surfaceDetail(int kind, vec3 q, vec3 n, float pixel, inout vec3 base, inout
         shininess = mix(shininess, 8.0, patina);
         height = 0.02 * hammer + 0.01 * patina;
     } else if (kind == 4) {  // clay: faint smears of a darker and a lighter body
-        float smear = fbm(q * vec3(0.6, 1.4, 0.6));
+        float smear = fbm(q * vec3(0.6, 1.4, 0.6), 1.4 * pixel);
         base *= 0.9 + 0.2 * smear;
         height = 0.1 * smear;
     } else if (kind == 5) {  // plaster: a faint fine grain

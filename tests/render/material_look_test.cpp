@@ -193,6 +193,34 @@ TEST_F(MaterialLookTest, TheDetailStandsOutAsReliefUnlessSwitchedOff) {
     EXPECT_EQ(color_, without) << "no detail, no relief";
 }
 
+// A pattern finer than a pixel fades to its mean instead of speckling the
+// surface: the same square with the detail a thousandth of its size is one
+// shade, nearly, where the detail at a tenth shows (docs/rendering.md,
+// "Materials").
+TEST_F(MaterialLookTest, DetailFinerThanAPixelFadesToItsMean) {
+    renderer_->upload(1, 1, square());
+    const View view = makeView({0, 0, 2.2f}, {0, 0, 0}, {0, 0, 1});
+    for (const char* name : {"stone", "bronze", "clay"}) {
+        SCOPED_TRACE(name);
+        RenderMaterial m = builtin(name, 0.2f);
+        m.specular = 0.0f;
+        // The peer: the same colour and metal without detail (a metal's
+        // highlight still varies over the face).
+        RenderMaterial plain = m;
+        plain.kind = kSurfacePlain;
+        render(view, glm::mat4(1.0f), plain);
+        const double none = centreVariance(40);
+        render(view, glm::mat4(1.0f), m);
+        const double seen = centreVariance(40);
+        m.detailScale = 0.0002f;
+        render(view, glm::mat4(1.0f), m);
+        const double fine = centreVariance(40);
+        EXPECT_GT(seen, none + 20.0) << "the detail shows where it is larger than a pixel";
+        EXPECT_LT(fine, none + 2.0) << "detail finer than a pixel is averaged, not sampled (seen: " << seen
+                                    << ", no detail: " << none << ")";
+    }
+}
+
 TEST_F(MaterialLookTest, TheClayViewGivesEveryMaterialTheSamePixels) {
     renderer_->upload(1, 1, uvSphereMesh(1.0f, 96, 48));
     const View view = makeView({0, 0, 4}, {0, 0, 0});
