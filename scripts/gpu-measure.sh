@@ -18,9 +18,9 @@ log="$out/steps.txt"
 : > "$log"
 pack=/tmp/hg-gpu
 [ -f .gpu/pack.tar.xz ] || { echo "gpu-measure: .gpu/pack.tar.xz is missing: run scripts/gpu-pack.sh and carry .gpu" | tee -a "$log"; exit 2; }
-rm -rf "$pack" && mkdir -p "$pack" && tar -C "$pack" -xJf .gpu/pack.tar.xz
-# The programs, at the build-tree paths they were built with.
-cp -a "$pack/tree/." "$root/"
+# The programs go to the build-tree paths they were built with.
+rm -rf "$pack" && mkdir -p "$pack" && tar -C "$pack" -xJf .gpu/pack.tar.xz && cp -a "$pack/tree/." "$root/" ||
+  { echo "gpu-measure: could not unpack .gpu/pack.tar.xz into $pack and $root" | tee -a "$log"; exit 2; }
 # Their compiled-in paths (content/, the mock runtime's manifest) name the
 # checkout they were built in: the same path here leads to this one.
 built=$(cat "$pack/source-dir")

@@ -44,18 +44,15 @@ elves+=("$stage/dri/swrast_dri.so" "$stage/tree/$rel/libhg_mock_openxr.so")
 for lib in libGL.so.1 libGLX.so.0 libGLdispatch.so.0 libGLX_mesa.so.0 libglapi.so.0 libEGL.so.1; do
   [ -e "/usr/lib/x86_64-linux-gnu/$lib" ] && cp -L "/usr/lib/x86_64-linux-gnu/$lib" "$stage/lib/"
 done
-for f in "${elves[@]}" "$stage"/lib/*; do
-  ldd "$f" 2>/dev/null | awk '$2 == "=>" && $3 ~ /^\// {print $1, $3}'
-done | sort -u | while read -r name path; do
-  [[ "$name" =~ $system ]] || cp -Ln "$path" "$stage/lib/$name"
-done
-# The libraries' own needs, until nothing new arrives.
+# needs FILE: "name path" for each library FILE loads (path "not" when none
+# is found), the pack's own copies first.
+needs() { LD_LIBRARY_PATH="$stage/lib" ldd "$1" 2>/dev/null | awk '$2 == "=>" {print $1, $3}'; }
+# The programs' needs and the libraries' own, until nothing new arrives.
 while :; do
   before=$(ls "$stage/lib" | wc -l)
-  for f in "$stage"/lib/*; do ldd "$f" 2>/dev/null | awk '$2 == "=>" && $3 ~ /^\// {print $1, $3}'; done |
-    sort -u | while read -r name path; do
-      [[ "$name" =~ $system ]] || [ -e "$stage/lib/$name" ] || cp -L "$path" "$stage/lib/$name"
-    done
+  for f in "${elves[@]}" "$stage"/lib/*; do needs "$f"; done | sort -u | while read -r name path; do
+    [[ "$name" =~ $system ]] || [ -e "$stage/lib/$name" ] || [[ "$path" != /* ]] || cp -L "$path" "$stage/lib/$name"
+  done
   [ "$(ls "$stage/lib" | wc -l)" = "$before" ] && break
 done
 
@@ -76,11 +73,10 @@ for f in "${elves[@]}" "$stage"/lib/*; do
   while read -r name path; do
     [[ "$name" =~ $system ]] && continue
     case "$path" in "$stage"/lib/*) ;; *) echo "gpu-pack: $(basename "$f") needs $name from $path" >&2; bad=1 ;; esac
-  done < <(LD_LIBRARY_PATH="$stage/lib" ldd "$f" 2>/dev/null | awk '$2 == "=>" {print $1, $3}')
+  done < <(needs "$f")
 done
 [ "$bad" = 0 ] || exit 1
 
 mkdir -p "$root/.gpu"
-grep -qx '/.gpu/' "$root/.git/info/exclude" 2>/dev/null || echo '/.gpu/' >> "$root/.git/info/exclude"
 tar -C "$stage" -cf - . | xz -T0 -9e > "$root/.gpu/pack.tar.xz"
 echo "gpu-pack: $root/.gpu/pack.tar.xz, $(du -m "$root/.gpu/pack.tar.xz" | cut -f1) MiB ($(ls "$stage/lib" | wc -l) libraries)"
