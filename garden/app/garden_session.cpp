@@ -435,6 +435,8 @@ void GardenSession::uploadAndRender(ViewSink& views) {
     stats().sculpturesHidden = drawn.sculpturesHidden;
     stats().shadowMapsDrawn = drawn.shadowMapsDrawn;
     stats().shadowMapsKept = drawn.shadowMapsKept;
+    stats().picturesKept = drawn.picturesKept;
+    stats().picturesSharpened = drawn.picturesSharpened;
 }
 
 void GardenSession::input(const Hands& hands, double dt) {

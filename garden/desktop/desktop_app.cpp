@@ -320,9 +320,14 @@ int runDesktopOn(GardenSession& session, GardenWindow& gardenWindow, const Deskt
         const double hz = mode && mode->refreshRate > 0 ? mode->refreshRate : 60.0;
         governor.emplace(rendererPreset(GlWindow::glVersionString()), 1000.0 / hz);
         renderer.setQuality(governor->quality());
+        renderer.setStillQuality(governor->stillQuality());
     } else {
         renderer.setQuality(options.quality);
     }
+    // A still view is composited from the picture held, not drawn again,
+    // and sharpens to the ceiling when the automatic mode is below it
+    // (docs/rendering.md, "A still view").
+    renderer.setPictureReuse(true);
     GardenView& view = gardenWindow.view();
     view.setImpostorDistance(options.impostorDistance);
     WindowEvents& events = gardenWindow.events();
@@ -491,7 +496,10 @@ int runDesktopOn(GardenSession& session, GardenWindow& gardenWindow, const Deskt
         };
         session.frame(input, views);
         if (governor)
-            if (const auto q = governor->observe(session.stats().gpuMs)) renderer.setQuality(*q);
+            if (const auto q = governor->observe(session.stats().gpuMs)) {
+                renderer.setQuality(*q);
+                renderer.setStillQuality(governor->stillQuality());
+            }
         const bool lastFrame = options.frames > 0 && frame + 1 == options.frames;
         if (lastFrame && !options.exitScreenshot.empty()) {
             const std::string why = writeFramebufferPng(options.exitScreenshot, fb.x, fb.y);

@@ -9,6 +9,7 @@ bool GpuTimers::collect(Set& set) {
         glGetQueryObjectiv(set.queries[static_cast<std::size_t>(p)].get(), GL_QUERY_RESULT_AVAILABLE, &ready);
         if (!ready) return false;
     }
+    if (!set.reported) return true;
     for (int p = 0; p < kGpuPasses; ++p) {
         const auto i = static_cast<std::size_t>(p);
         latest_[i] = -1.0f;
@@ -20,7 +21,7 @@ bool GpuTimers::collect(Set& set) {
     return true;
 }
 
-void GpuTimers::nextView() {
+void GpuTimers::nextView(bool reported) {
     // The oldest sets first, so latest_ ends with the newest finished view.
     for (int k = 1; k <= kRing; ++k) {
         Set& s = ring_[static_cast<std::size_t>((current_ + k + kRing) % kRing)];
@@ -30,6 +31,7 @@ void GpuTimers::nextView() {
     Set& set = ring_[static_cast<std::size_t>(current_)];
     set.used.fill(false);
     set.pending = false;  // not collected in time: its results are dropped
+    set.reported = reported;
     if (!set.queries[0])
         for (gl::Query& q : set.queries) q = gl::Query::create();
 }

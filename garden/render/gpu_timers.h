@@ -15,8 +15,9 @@ constexpr int kGpuPasses = 4;
 class GpuTimers {
 public:
     // Before a view's passes: collects a finished older view's results and
-    // takes a fresh set of queries for this one.
-    void nextView();
+    // takes a fresh set of queries for this one. A view not `reported` is
+    // measured but its results are dropped (latest() keeps the view before).
+    void nextView(bool reported = true);
     void begin(GpuPass pass);
     void end();  // the pass begun last
     // Milliseconds per pass of the latest view the GPU has finished; -1
@@ -29,6 +30,7 @@ private:
         std::array<gl::Query, kGpuPasses> queries;
         std::array<bool, kGpuPasses> used{};
         bool pending = false;
+        bool reported = true;
     };
     bool collect(Set& set);
 

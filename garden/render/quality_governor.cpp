@@ -87,4 +87,12 @@ std::optional<RenderQuality> QualityGovernor::observe(double gpuMs) {
     return std::nullopt;
 }
 
+RenderQuality QualityGovernor::stillQuality() const {
+    RenderQuality still = ladder_.front();
+    const RenderQuality& now = quality();
+    still.renderScale = 1.0f;
+    still.detailScale = std::clamp(now.renderScale * now.detailScale, 0.25f, 1.0f);
+    return still;
+}
+
 }  // namespace hg::garden

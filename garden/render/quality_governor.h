@@ -35,6 +35,11 @@ public:
     std::optional<RenderQuality> observe(double gpuMs);
 
     const RenderQuality& quality() const { return ladder_[step_]; }
+    // What a still view may be sharpened to (Renderer::setStillQuality):
+    // the ceiling at the window's full size, with the meshes of the rung in
+    // use (its render scale times its detail scale as the detail scale), so
+    // the level of detail stays where it is when the visitor stops.
+    RenderQuality stillQuality() const;
     std::size_t step() const { return step_; }          // 0: the ceiling
     std::size_t steps() const { return ladder_.size(); }
     std::size_t changes() const { return changes_; }  // steps taken, down or up, so far

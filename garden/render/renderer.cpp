@@ -120,7 +120,8 @@ Renderer::Renderer()
       timers_(std::make_unique<GpuTimers>()),
       arena_(std::make_unique<ChunkArena>()),
       shadowBatch_(std::make_unique<ChunkBatch>()),
-      multiDraw_(multiDrawAvailable()) {
+      multiDraw_(multiDrawAvailable()),
+      still_(std::make_unique<StillPicture>()) {
     for (auto& batch : batches_) batch = std::make_unique<ChunkBatch>();
     meshProgram(kSurfacePlain);  // a broken shader fails here, not mid-frame
     groundLit_ = litUniforms(groundProgram_);
@@ -483,12 +484,12 @@ void Renderer::drawSphere(const glm::vec3& center, float radius, const glm::vec4
 
 // --- rendering a recorded view ------------------------------------------------
 
-void Renderer::gatherChunks(glm::vec3& lo, glm::vec3& hi) {
+void Renderer::gatherChunks(const RenderQuality& q, glm::vec3& lo, glm::vec3& hi) {
     for (auto& batch : batches_) batch->clear();
     shadowBatch_->clear();
     lo = glm::vec3(1e30f);
     hi = glm::vec3(-1e30f);
-    const float shadowReach = quality_.shadowDistance > 0.0f ? quality_.shadowDistance : 1e30f;
+    const float shadowReach = q.shadowDistance > 0.0f ? q.shadowDistance : 1e30f;
     // Draws of one placement come together (a sculpture's chunks): they
     // share one record, made when the placement or material changes.
     const auto kindOf = [](const SceneDraw& d) { return static_cast<std::size_t>(surfaceKindIndex(d.material.kind)); };
@@ -546,10 +547,10 @@ void Renderer::gatherChunks(glm::vec3& lo, glm::vec3& hi) {
     }
 }
 
-bool Renderer::renderShadows(const glm::vec3& lo, const glm::vec3& hi) {
+bool Renderer::renderShadows(const RenderQuality& q, const glm::vec3& lo, const glm::vec3& hi) {
     // The ground only receives: the casters are the view's chunks.
-    if (!quality_.shadows || view_.lights.empty() || (shadowBatch_->empty() && !cardsCast_)) return false;
-    ShadowInputs inputs{lo, hi, view_.lights.front().direction, quality_.shadowMapSize, arena_->generation(),
+    if (!q.shadows || view_.lights.empty() || (shadowBatch_->empty() && !cardsCast_)) return false;
+    ShadowInputs inputs{lo, hi, view_.lights.front().direction, q.shadowMapSize, arena_->generation(),
                         atlas_ ? atlas_->bakes() : 0};
     const auto sameCards = [&] {
         return cardDraws_.size() == shadowHeldCards_.size() &&
@@ -563,7 +564,7 @@ bool Renderer::renderShadows(const glm::vec3& lo, const glm::vec3& hi) {
     }
     timers_->begin(GpuPass::Shadow);
     stats_.shadowDrawCalls += shadow_->render(*shadowBatch_, *arena_, multiDraw_, lo, hi,
-                                              view_.lights.front().direction, quality_.shadowMapSize);
+                                              view_.lights.front().direction, q.shadowMapSize);
     if (!cardDraws_.empty()) {
         glDisable(GL_CULL_FACE);
         stats_.shadowDrawCalls +=
@@ -583,7 +584,7 @@ void Renderer::setSkyBaked(bool on) { sky_->setBaked(on); }
 
 bool Renderer::skyBaked() const { return sky_->baked(); }
 
-void Renderer::renderScene(bool shadowed) {
+void Renderer::renderScene(const RenderQuality& q, bool shadowed) {
     timers_->begin(GpuPass::Scene);
     glBindFramebuffer(GL_FRAMEBUFFER, targets_->framebuffer());
     glViewport(0, 0, targets_->size().x, targets_->size().y);
@@ -620,7 +621,7 @@ void Renderer::renderScene(bool shadowed) {
         MeshProgram& m = meshProgram(kind);
         m.program.use();
         setMat4(m.viewProjection, viewProjection);
-        glUniform1f(m.bump, quality_.materialBump ? 1.0f : 0.0f);
+        glUniform1f(m.bump, q.materialBump ? 1.0f : 0.0f);
         setLighting(m.lit, m.shadow, shadowed);
         stats_.drawCalls += batch.draw(*arena_, multiDraw_);
     }
@@ -632,37 +633,72 @@ void Renderer::renderScene(bool shadowed) {
     for (const SceneDraw& d : sceneDraws_)
         if (d.ground) drawGroundNow(d.groundStyle);
     const std::size_t skyBakes = sky_->bakes();
-    sky_->draw(view_, quality_.skyMapSize);
+    sky_->draw(view_, q.skyMapSize);
     stats_.skyBakes += sky_->bakes() - skyBakes;
     // Every box against the finished depth (sky included: it writes none).
     if (visibility_) stats_.visibilityTests += visibility_->issue(viewProjection);
     timers_->end();
 }
 
-void Renderer::finishView() {
-    if (!viewOpen_) return;
-    viewOpen_ = false;
-    timers_->nextView();
+OcclusionImage Renderer::drawPicture(const RenderQuality& q) {
     // The scene at the render scale; the composite scales it to the output.
-    const glm::ivec2 sceneSize(scenePixels(view_.viewport.x, quality_), scenePixels(view_.viewport.y, quality_));
-    targets_->ensure(sceneSize, quality_.msaaSamples);
+    const glm::ivec2 sceneSize(scenePixels(view_.viewport.x, q), scenePixels(view_.viewport.y, q));
+    targets_->ensure(sceneSize, q.msaaSamples);
 
     glm::vec3 lo, hi;
     if (!cardDraws_.empty()) cards_->send(cardDraws_);
-    gatherChunks(lo, hi);
-    const bool shadowed = renderShadows(lo, hi);
-    renderScene(shadowed);
+    gatherChunks(q, lo, hi);
+    const bool shadowed = renderShadows(q, lo, hi);
+    renderScene(q, shadowed);
     OcclusionImage occlusion;
-    if (quality_.ambientOcclusion) {
+    if (q.ambientOcclusion) {
         timers_->begin(GpuPass::Occlusion);
-        occlusion = occlusion_->render(*targets_, view_.projection, quality_);
+        occlusion = occlusion_->render(*targets_, view_.projection, q);
         timers_->end();
     }
+    return occlusion;
+}
 
-    timers_->begin(GpuPass::Post);
+void Renderer::finishView() {
+    if (!viewOpen_) return;
+    viewOpen_ = false;
+    const PictureStep step =
+        still_->step(pictureReuse_ && holdsThisView(), quality_, stillQuality_, kViewsBeforeSharpening);
+    const bool measured = step == PictureStep::Draw;
+    (measured ? viewsMeasured_ : viewsNotMeasured_) += 1;
+    OcclusionImage occlusion;
+    RenderQuality shown = quality_;
+    if (step == PictureStep::Keep) {
+        // The held picture, and this view's tests of hidden sculptures
+        // against its depth, so their results stay fresh while it holds.
+        stats_.picturesKept += 1;
+        occlusion = still_->occlusion();
+        shown = still_->quality();
+        // What the scene pass would have set (panels drawn since may have changed it).
+        glDisable(GL_SCISSOR_TEST);
+        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+        if (visibility_) {
+            glBindFramebuffer(GL_FRAMEBUFFER, targets_->framebuffer());
+            glViewport(0, 0, targets_->size().x, targets_->size().y);
+            stats_.visibilityTests += visibility_->issue(view_.projection * view_.view);
+        }
+    } else {
+        // A sharpened view's time is not what the automatic quality should
+        // judge the moving one by: measured, then dropped.
+        timers_->nextView(measured);
+        if (step == PictureStep::Sharpen) {
+            shown = *stillQuality_;
+            stats_.picturesSharpened += 1;
+        }
+        occlusion = drawPicture(shown);
+        if (pictureReuse_) still_->drawn(shown, occlusion);
+    }
+
+    if (step != PictureStep::Keep) timers_->begin(GpuPass::Post);
     glBindFramebuffer(GL_FRAMEBUFFER, output_);
     glViewport(0, 0, view_.viewport.x, view_.viewport.y);
-    post_->composite(*targets_, occlusion, quality_.exposure, view_.viewport, quality_.smoothUpscale);
+    post_->composite(*targets_, occlusion, shown.exposure, view_.viewport, shown.smoothUpscale);
     if (!flatDraws_.empty()) {
         flatProgram_.use();
         setMat4(flat_.view, view_.view);
@@ -676,6 +712,56 @@ void Renderer::finishView() {
     if (std::any_of(sceneDraws_.begin(), sceneDraws_.end(), [](const SceneDraw& d) { return d.material.edges != 0; }))
         drawEdges();
     timers_->end();
+    if (pictureReuse_ && step != PictureStep::Keep) holdThisView();
+}
+
+namespace {
+
+bool sameGround(const GroundStyle& a, const GroundStyle& b) {
+    return a.color == b.color && a.lineColor == b.lineColor && a.spacing == b.spacing &&
+           a.majorEvery == b.majorEvery && a.lineWidth == b.lineWidth && a.halfExtent == b.halfExtent &&
+           a.gardenHalfExtent == b.gardenHalfExtent && a.gridReach == b.gridReach && a.stripeWidth == b.stripeWidth;
+}
+
+}  // namespace
+
+bool Renderer::holdsThisView() const {
+    if (!still_->holds() || held_.output != output_ || held_.arena != arena_->generation() ||
+        held_.bakes != (atlas_ ? atlas_->bakes() : 0) || held_.skyBaked != sky_->baked() ||
+        !sameView(held_.view, view_) || held_.draws.size() != sceneDraws_.size() ||
+        held_.cards.size() != cardDraws_.size())
+        return false;
+    if (!cardDraws_.empty() &&
+        std::memcmp(cardDraws_.data(), held_.cards.data(), cardDraws_.size() * sizeof(ImpostorCard)) != 0)
+        return false;
+    for (std::size_t i = 0; i < sceneDraws_.size(); ++i) {
+        const SceneDraw& a = sceneDraws_[i];
+        const SceneDraw& b = held_.draws[i];
+        if (a.ground != b.ground || a.castOnly != b.castOnly || a.id != b.id || a.model != b.model ||
+            !(a.material == b.material) || (a.ground && !sameGround(a.groundStyle, b.groundStyle)))
+            return false;
+    }
+    return true;
+}
+
+void Renderer::holdThisView() {
+    held_.view = view_;
+    held_.output = output_;
+    // Taken, not copied: the open view is finished and beginFrame clears them.
+    std::swap(held_.draws, sceneDraws_);
+    held_.cards = cardDraws_;
+    held_.arena = arena_->generation();
+    held_.bakes = atlas_ ? atlas_->bakes() : 0;
+    held_.skyBaked = sky_->baked();
+}
+
+void Renderer::setPictureReuse(bool on) {
+    pictureReuse_ = on;
+    if (!on) {
+        still_->forget();
+        held_.draws.clear();
+        held_.cards.clear();
+    }
 }
 
 void Renderer::drawEdges() {
@@ -798,6 +884,10 @@ RenderStats Renderer::endFrame() {
     done.gpuSceneMs = ms[static_cast<std::size_t>(GpuPass::Scene)];
     done.gpuOcclusionMs = ms[static_cast<std::size_t>(GpuPass::Occlusion)];
     done.gpuPostMs = ms[static_cast<std::size_t>(GpuPass::Post)];
+    // A frame of held or sharpened views only: no time of the quality set.
+    if (viewsMeasured_ == 0 && viewsNotMeasured_ > 0)
+        done.gpuShadowMs = done.gpuSceneMs = done.gpuOcclusionMs = done.gpuPostMs = -1.0f;
+    viewsMeasured_ = viewsNotMeasured_ = 0;
     stats_ = RenderStats{};
     return done;
 }

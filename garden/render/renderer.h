@@ -41,6 +41,7 @@
 #include "garden/render/impostor_cards.h"
 #include "garden/render/render_quality.h"
 #include "garden/render/shader_program.h"
+#include "garden/render/still_picture.h"
 #include "polygonizer/mesh.h"
 
 namespace hg::garden {
@@ -145,6 +146,8 @@ struct RenderStats {
     std::size_t sculpturesHidden = 0;  // left out as hidden behind nearer ones (wasHidden said so)
     std::size_t visibilityTests = 0;   // boxes drawn in occlusion queries (visibility_queries.h)
     std::size_t skyBakes = 0;          // the sky's cube map baked again (its look changed: sky_pass.h)
+    std::size_t picturesKept = 0;       // views that composited the picture held (nothing in it changed)
+    std::size_t picturesSharpened = 0;  // views drawn again at the still quality (setStillQuality)
     // GPU milliseconds per pass of the latest view the GPU has finished
     // (GL timer queries, read without waiting: a view or a few behind); -1
     // where a pass did not run or no result is in yet.
@@ -255,8 +258,27 @@ public:
     void forgetHiddenBehind(const glm::vec3& worldLo, const glm::vec3& worldHi);
 
     // --- quality -------------------------------------------------------------
+    // What views are drawn at (and what the caller's level of detail follows).
     void setQuality(const RenderQuality& quality) { quality_ = quality; }
     const RenderQuality& quality() const { return quality_; }
+
+    // --- a still view (still_picture.h) -----------------------------------------
+    // Off by default. On: a view whose inputs equal those of the picture
+    // drawn last (the same camera, lights and sky into the same framebuffer,
+    // the same draws of the same meshes and cards) is not drawn again: the
+    // held picture is composited once more and what follows is drawn over
+    // it (RenderStats::picturesKept). Such a view reports no GPU time, so
+    // it does not steer the automatic quality. The desktop's window.
+    void setPictureReuse(bool on);
+    bool pictureReuse() const { return pictureReuse_; }
+    // With reuse on: a view held kViewsBeforeSharpening views in a row,
+    // whose picture was drawn at another quality, is drawn once more at
+    // `still` and then held (RenderStats::picturesSharpened); its GPU time is
+    // not reported either. The automatic mode's quality while the visitor
+    // moves, sharpened when they stop. None: never.
+    void setStillQuality(std::optional<RenderQuality> still) { stillQuality_ = std::move(still); }
+    const std::optional<RenderQuality>& stillQuality() const { return stillQuality_; }
+    static constexpr int kViewsBeforeSharpening = 3;
 
     // --- a frame -------------------------------------------------------------
     // Starts a view into the framebuffer bound now, of view.viewport pixels
@@ -332,9 +354,15 @@ private:
     void setLighting(const LitUniforms& u, const ShadowUniforms& s, bool shadowed) const;
     // The view's chunk draws into batches_, the casters among them (within
     // the shadow distance) into shadowBatch_ with the world box they span.
-    void gatherChunks(glm::vec3& lo, glm::vec3& hi);
-    bool renderShadows(const glm::vec3& lo, const glm::vec3& hi);
-    void renderScene(bool shadowed);
+    void gatherChunks(const RenderQuality& q, glm::vec3& lo, glm::vec3& hi);
+    bool renderShadows(const RenderQuality& q, const glm::vec3& lo, const glm::vec3& hi);
+    void renderScene(const RenderQuality& q, bool shadowed);
+    // The shadow, scene and occlusion passes at `q` into the scene targets.
+    OcclusionImage drawPicture(const RenderQuality& q);
+    // Whether the open view's inputs equal those of the picture held.
+    bool holdsThisView() const;
+    // The open view's inputs as the held picture's (its draws are taken).
+    void holdThisView();
     // The wireframe overlay: the edges of the chunks whose material asks.
     void drawEdges();
     void drawGroundNow(const GroundStyle& ground);
@@ -423,6 +451,20 @@ private:
     std::unique_ptr<ChunkBatch> shadowHeldCasters_;
     std::vector<ImpostorCard> shadowHeldCards_;
     bool multiDraw_ = false;
+
+    // The picture the scene targets hold (setPictureReuse) and what it was drawn from.
+    bool pictureReuse_ = false;
+    std::optional<RenderQuality> stillQuality_;
+    std::unique_ptr<StillPicture> still_;
+    struct {
+        View view;
+        GLuint output = 0;
+        std::vector<SceneDraw> draws;
+        std::vector<ImpostorCard> cards;
+        std::size_t arena = 0, bakes = 0;
+        bool skyBaked = false;
+    } held_;
+    int viewsMeasured_ = 0, viewsNotMeasured_ = 0;  // this frame's: drawn at quality_, or kept or sharpened
 
     View view_;
     bool viewOpen_ = false;

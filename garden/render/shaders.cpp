@@ -89,7 +89,7 @@ namespace hg::garden::shaders {
     "    return vec4(c, clamp(dimmable / max(dot(c, w), 1e-5), 0.0, 1.0));\n"       \
     "}\n"
 
-const char* const kMeshVertex = "#version 330 core\n" HG_DRAW_RECORD_GLSL R"(
+const char* const kMeshVertex = "#version 330 core\n" HG_SRGB_GLSL HG_DRAW_RECORD_GLSL R"(
 layout(location = 0) in vec3 aPosition;
 layout(location = 1) in vec3 aNormal;
 layout(location = 2) in uint aDraw;
@@ -97,22 +97,37 @@ uniform mat4 uViewProjection;
 out vec3 vWorld;
 out vec3 vNormal;
 out vec3 vModel;  // the materials' detail is a function of the model-space position
-flat out int vDraw;
+// The draw's material, the same over the whole draw: read and decoded here,
+// once a vertex, rather than once a pixel (a software renderer pays the
+// texel fetches and the sRGB decode's pow for every fragment).
+flat out vec4 vSurface;  // linear base colour, specular strength
+flat out vec4 vFinish;   // shininess, has normals, cavity
+flat out vec4 vDetail;   // SurfaceKind, metallic, detail scale
+flat out float vModelScale;  // the model matrix's scale: model units to metres
 void main() {
-    vDraw = int(aDraw);
-    vec4 world = drawModel(vDraw) * vec4(aPosition, 1.0);
+    int draw = int(aDraw);
+    mat4 model = drawModel(draw);
+    vec4 world = model * vec4(aPosition, 1.0);
     vWorld = world.xyz;
     vModel = aPosition;
-    vNormal = drawNormalMatrix(vDraw) * aNormal;
+    vNormal = drawNormalMatrix(draw) * aNormal;
+    vec4 surface = drawRecord(draw, 7);  // sRGB base colour, specular
+    vSurface = vec4(toLinear(surface.rgb), surface.a);
+    vFinish = drawRecord(draw, 8);
+    vDetail = drawRecord(draw, 9);
+    vModelScale = length(model[0].xyz);
     gl_Position = uViewProjection * world;
 }
 )";
 
-const char* const kMeshFragment = "#version 330 core\n" HG_LIGHTING_GLSL HG_DRAW_RECORD_GLSL R"(
+const char* const kMeshFragment = "#version 330 core\n" HG_LIGHTING_GLSL R"(
 in vec3 vWorld;
 in vec3 vNormal;
 in vec3 vModel;
-flat in int vDraw;
+flat in vec4 vSurface;
+flat in vec4 vFinish;
+flat in vec4 vDetail;
+flat in float vModelScale;
 uniform float uBump;  // 1: the detail's relief tilts the shading normal (RenderQuality::materialBump)
 layout(location = 0) out vec4 fragColor;
 #ifdef HG_BAKE
@@ -236,12 +251,11 @@ float cavityFactor(vec3 n, float strength) {
 void main() {
     // Without vertex normals, the face normal from screen-space derivatives
     // (it faces the viewer, and culling leaves only front faces).
-    vec4 surface = drawRecord(vDraw, 7);  // sRGB base colour, specular
-    vec4 finish = drawRecord(vDraw, 8);   // shininess, has normals, cavity
-    vec4 detail = drawRecord(vDraw, 9);   // SurfaceKind (this program is its kind's: HG_KIND), metallic, detail scale
+    vec4 finish = vFinish;
+    vec4 detail = vDetail;  // SurfaceKind (this program is its kind's: HG_KIND), metallic, detail scale
     vec3 n = finish.y > 0.5 ? normalize(vNormal) : normalize(cross(dFdx(vWorld), dFdy(vWorld)));
-    vec3 base = toLinear(surface.rgb);
-    vec3 specular = vec3(surface.a);
+    vec3 base = vSurface.rgb;
+    vec3 specular = vec3(vSurface.a);
     float shininess = finish.x, metallic = detail.y;
     // Each kind has its own program (HG_KIND, Renderer::meshProgram): the
     // branches of the others' detail are compiled out, and the plain
@@ -254,7 +268,7 @@ void main() {
         surfaceDetail(kind, q, n, pixel, base, specular, shininess, metallic, height);
         // The relief in world units: pattern units to model units to metres.
         if (uBump > 0.0)
-            n = bumped(n, vWorld, uBump * height * detail.z * length(drawModel(vDraw)[0].xyz));
+            n = bumped(n, vWorld, uBump * height * detail.z * vModelScale);
     }
     // (A draw's cavity is the same over a triangle: derivatives defined.)
     if (finish.z > 0.0) base *= cavityFactor(n, finish.z);

@@ -121,6 +121,8 @@ void drawStatsPanel(const FrameHistory& history, bool toggle, const std::functio
         counterRow("sculptures hidden", last->sculpturesHidden);
         counterRow("shadow maps drawn", last->shadowMapsDrawn);
         counterRow("shadow maps kept", last->shadowMapsKept);
+        counterRow("pictures kept", last->picturesKept);
+        counterRow("pictures sharpened", last->picturesSharpened);
         ImGui::EndTable();
     }
     if (memory) {

@@ -261,6 +261,7 @@ std::string statsJson(const ReplayScript& script, const ReplayResult& result) {
                           {"chunks_drawn", f.chunksDrawn}, {"draw_calls", f.drawCalls},
                           {"impostors_drawn", f.impostorsDrawn}, {"sculptures_hidden", f.sculpturesHidden},
                           {"shadow_maps_drawn", f.shadowMapsDrawn}, {"shadow_maps_kept", f.shadowMapsKept},
+                          {"pictures_kept", f.picturesKept}, {"pictures_sharpened", f.picturesSharpened},
                           {"gpu_ms", f.gpuMs},
                           {"gpu_pass_ms", {{"shadow", f.gpuPassMs.shadow}, {"scene", f.gpuPassMs.scene},
                                            {"occlusion", f.gpuPassMs.occlusion}, {"post", f.gpuPassMs.post}}}});

@@ -60,6 +60,8 @@ ViewDraw viewDrawOf(const RenderStats& r) {
     ViewDraw d{r.trianglesDrawn,  r.chunksDrawn,      r.drawCalls,       r.gpuMs(),         {},
                r.impostorsDrawn,  r.sculpturesHidden, r.shadowMapsDrawn, r.shadowMapsKept};
     d.gpuPassMs = GpuPassMs{r.gpuShadowMs, r.gpuSceneMs, r.gpuOcclusionMs, r.gpuPostMs};
+    d.picturesKept = r.picturesKept;
+    d.picturesSharpened = r.picturesSharpened;
     return d;
 }
 

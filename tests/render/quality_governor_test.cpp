@@ -148,5 +148,28 @@ TEST(RenderQuality, TheLevelOfDetailCountsTheDetailScalesShareOfTheScenesPixels)
     EXPECT_EQ(detailPixels(1, q), 1);
 }
 
+// What a still view sharpens to: the ceiling at the window's full size,
+// with the level of detail of the rung in use (the same pixels for the
+// meshes, so stopping does not remesh the garden).
+TEST(QualityGovernor, AStillViewSharpensToTheCeilingAtFullSizeWithTheMeshesInUse) {
+    for (const QualityPreset ceiling : {QualityPreset::Low, QualityPreset::High}) {
+        QualityGovernor g(ceiling, 11.1);
+        const RenderQuality top = qualityOf(ceiling);
+        while (true) {
+            const RenderQuality still = g.stillQuality();
+            EXPECT_EQ(still.msaaSamples, top.msaaSamples) << "step " << g.step();
+            EXPECT_EQ(still.shadows, top.shadows);
+            EXPECT_EQ(still.ambientOcclusion, top.ambientOcclusion);
+            EXPECT_FLOAT_EQ(still.renderScale, 1.0f);
+            for (const int pixels : {720, 1080, 2208})
+                EXPECT_EQ(detailPixels(pixels, still), detailPixels(pixels, g.quality()))
+                    << "step " << g.step() << ", " << pixels << " pixels";
+            if (g.step() + 1 == g.steps()) break;
+            ASSERT_GT(framesUntilChange(g, 50.0), 0u);
+        }
+        EXPECT_FLOAT_EQ(g.stillQuality().detailScale, 0.25f) << "the last rung: half the pixels, meshes for half of them";
+    }
+}
+
 }  // namespace
 }  // namespace hg::garden::test

@@ -14,6 +14,7 @@
 #include "../render/gl_fixture.h"
 #include "garden/action/action.h"
 #include "garden/app/garden_session.h"
+#include "garden/render/visibility_queries.h"
 #include "garden/window/garden_view.h"
 #include "tests/test_folder.h"
 
@@ -238,6 +239,47 @@ TEST_F(HiddenSculpturesTest, WhatAChangedOccluderHidIsDrawnInTheNextFrame) {
     EXPECT_EQ(picture, color_) << "the frame after the wall moved aside equals drawing everything";
     EXPECT_EQ(stats.sculpturesHidden, 0u);
     EXPECT_GT(redPixels(picture), 1000) << "all three mushrooms in view";
+}
+
+// A still view held (Renderer::setPictureReuse, the desktop's): the boxes
+// are tested against the held picture's depth, so the results stay fresh
+// and the hidden mushrooms stay left out; the view is kept frame after
+// frame instead of being drawn again each time the results grow too old
+// to trust. And the wall moved aside is drawn in the next frame.
+TEST_F(HiddenSculpturesTest, AStillViewHeldKeepsWhatItHidesLeftOut) {
+    GardenSession session(loadGarden((folder_->path / "garden.json").string()), settings());
+    session.navigator().setMode(NavigationMode::Fly);
+    session.navigator().setPose({0.0f, 1.2f, 6.0f}, 0.0f, 0.0f);
+    const auto settle = [&] {
+        for (int f = 0; f < 3000 && !session.idle(); ++f) session.frame(FrameInput(Hands{}, 1.0 / 90.0));
+        ASSERT_TRUE(session.idle());
+    };
+    settle();
+    renderer_->setQuality(test::plainQuality());
+    renderer_->setPictureReuse(true);
+    GardenView view(*renderer_);
+    view.upload(session, 1e9);
+    const glm::vec3 eye(0.0f, 1.2f, 6.0f), at(0.0f, 1.0f, 0.0f);
+    RenderStats stats;
+    for (int f = 0; f < 6; ++f) stats = draw(*renderer_, view, session, eye, at);
+    ASSERT_EQ(stats.sculpturesHidden, 3u);
+    const std::vector<std::uint8_t> held = color_;
+    int kept = 0;
+    for (int f = 0; f < 4 * int(VisibilityQueries::kTrustedFrames); ++f) {
+        stats = draw(*renderer_, view, session, eye, at);
+        EXPECT_EQ(stats.sculpturesHidden, 3u) << "frame " << f;
+        kept += int(stats.picturesKept);
+        EXPECT_EQ(color_, held);
+    }
+    EXPECT_EQ(kept, 4 * int(VisibilityQueries::kTrustedFrames)) << "every still frame kept";
+
+    ASSERT_EQ(session.apply(MoveAction{"wall", Placement{{5.0, 0.0, 0.0}, 0.0, 1.0}}), "");
+    settle();
+    view.upload(session, 1e9);
+    stats = draw(*renderer_, view, session, eye, at);
+    EXPECT_EQ(stats.picturesKept, 0u);
+    EXPECT_EQ(stats.sculpturesHidden, 0u);
+    EXPECT_GT(redPixels(color_), 1000) << "all three mushrooms in view in the next frame";
 }
 
 }  // namespace
