@@ -75,6 +75,19 @@ protected:
         return s;
     }
 
+    // The garden with the eye 6 m in front of the wall, flying.
+    std::unique_ptr<GardenSession> openInFrontOfTheWall() const {
+        auto session = std::make_unique<GardenSession>(loadGarden((folder_->path / "garden.json").string()), settings());
+        session->navigator().setMode(NavigationMode::Fly);
+        session->navigator().setPose({0.0f, 1.2f, 6.0f}, 0.0f, 0.0f);
+        return session;
+    }
+    // Frames until every sculpture is sampled and meshed.
+    static void settle(GardenSession& session) {
+        for (int f = 0; f < 3000 && !session.idle(); ++f) session.frame(FrameInput(Hands{}, 1.0 / 90.0));
+        ASSERT_TRUE(session.idle());
+    }
+
     RenderStats draw(Renderer& renderer, GardenView& view, const GardenSession& session, const glm::vec3& eye,
                      const glm::vec3& at) {
         target_->bind();
@@ -113,11 +126,10 @@ protected:
 // moved would get wrong.) Then one of them is moved out past the wall's
 // end: drawn in the very next frame.
 TEST_F(HiddenSculpturesTest, TheWalkOutFromBehindAWallShowsWhatDrawingEverythingShows) {
-    GardenSession session(loadGarden((folder_->path / "garden.json").string()), settings());
-    session.navigator().setMode(NavigationMode::Fly);
-    session.navigator().setPose({0.0f, 1.2f, 6.0f}, 0.0f, 0.0f);
-    for (int f = 0; f < 3000 && !session.idle(); ++f) session.frame(FrameInput(Hands{}, 1.0 / 90.0));
-    ASSERT_TRUE(session.idle());
+    const std::unique_ptr<GardenSession> opened = openInFrontOfTheWall();
+    GardenSession& session = *opened;
+    settle(session);
+    if (HasFatalFailure()) return;
 
     RenderQuality q = test::plainQuality();
     q.shadows = true;
@@ -193,14 +205,10 @@ TEST_F(HiddenSculpturesTest, TheWalkOutFromBehindAWallShowsWhatDrawingEverything
 // change (the results behind a changed sculpture are forgotten, tests in
 // flight included), not when the results grow too old to trust.
 TEST_F(HiddenSculpturesTest, WhatAChangedOccluderHidIsDrawnInTheNextFrame) {
-    GardenSession session(loadGarden((folder_->path / "garden.json").string()), settings());
-    session.navigator().setMode(NavigationMode::Fly);
-    session.navigator().setPose({0.0f, 1.2f, 6.0f}, 0.0f, 0.0f);
-    const auto settle = [&] {
-        for (int f = 0; f < 3000 && !session.idle(); ++f) session.frame(FrameInput(Hands{}, 1.0 / 90.0));
-        ASSERT_TRUE(session.idle());
-    };
-    settle();
+    const std::unique_ptr<GardenSession> opened = openInFrontOfTheWall();
+    GardenSession& session = *opened;
+    settle(session);
+    if (HasFatalFailure()) return;
     renderer_->setQuality(test::plainQuality());
     GardenView culled(*renderer_);
     Renderer everything;
@@ -224,7 +232,7 @@ TEST_F(HiddenSculpturesTest, WhatAChangedOccluderHidIsDrawnInTheNextFrame) {
     ASSERT_EQ(session.apply(StrokeAction{"wall", StrokeTool::Carve, 0.15, 2.0, {{0.0, 1.15, 0.45}, {0.0, 1.15, -0.45}}, {},
                                          1.0, Falloff::Smooth, {}}),
               "");
-    settle();
+    settle(session);
     stats = show();
     EXPECT_EQ(picture, color_) << "the frame after the carve equals drawing everything";
     EXPECT_GT(redPixels(picture), 100) << "the middle mushroom shows through the hole";
@@ -234,7 +242,7 @@ TEST_F(HiddenSculpturesTest, WhatAChangedOccluderHidIsDrawnInTheNextFrame) {
     EXPECT_EQ(stats.sculpturesHidden, 2u) << "the other two are still behind the wall, and left out again";
 
     ASSERT_EQ(session.apply(MoveAction{"wall", Placement{{5.0, 0.0, 0.0}, 0.0, 1.0}}), "");
-    settle();
+    settle(session);
     stats = show();
     EXPECT_EQ(picture, color_) << "the frame after the wall moved aside equals drawing everything";
     EXPECT_EQ(stats.sculpturesHidden, 0u);
@@ -247,14 +255,10 @@ TEST_F(HiddenSculpturesTest, WhatAChangedOccluderHidIsDrawnInTheNextFrame) {
 // frame instead of being drawn again each time the results grow too old
 // to trust. And the wall moved aside is drawn in the next frame.
 TEST_F(HiddenSculpturesTest, AStillViewHeldKeepsWhatItHidesLeftOut) {
-    GardenSession session(loadGarden((folder_->path / "garden.json").string()), settings());
-    session.navigator().setMode(NavigationMode::Fly);
-    session.navigator().setPose({0.0f, 1.2f, 6.0f}, 0.0f, 0.0f);
-    const auto settle = [&] {
-        for (int f = 0; f < 3000 && !session.idle(); ++f) session.frame(FrameInput(Hands{}, 1.0 / 90.0));
-        ASSERT_TRUE(session.idle());
-    };
-    settle();
+    const std::unique_ptr<GardenSession> opened = openInFrontOfTheWall();
+    GardenSession& session = *opened;
+    settle(session);
+    if (HasFatalFailure()) return;
     renderer_->setQuality(test::plainQuality());
     renderer_->setPictureReuse(true);
     GardenView view(*renderer_);
@@ -274,7 +278,7 @@ TEST_F(HiddenSculpturesTest, AStillViewHeldKeepsWhatItHidesLeftOut) {
     EXPECT_EQ(kept, 4 * int(VisibilityQueries::kTrustedFrames)) << "every still frame kept";
 
     ASSERT_EQ(session.apply(MoveAction{"wall", Placement{{5.0, 0.0, 0.0}, 0.0, 1.0}}), "");
-    settle();
+    settle(session);
     view.upload(session, 1e9);
     stats = draw(*renderer_, view, session, eye, at);
     EXPECT_EQ(stats.picturesKept, 0u);
