@@ -320,7 +320,7 @@ int runDesktopOn(GardenSession& session, GardenWindow& gardenWindow, const Deskt
         const double hz = mode && mode->refreshRate > 0 ? mode->refreshRate : 60.0;
         governor.emplace(rendererPreset(GlWindow::glVersionString()), 1000.0 / hz);
         renderer.setQuality(governor->quality());
-        renderer.setStillQuality(governor->stillQuality());
+        renderer.setStillQualities(governor->stillQualities());
     } else {
         renderer.setQuality(options.quality);
     }
@@ -498,7 +498,7 @@ int runDesktopOn(GardenSession& session, GardenWindow& gardenWindow, const Deskt
         if (governor)
             if (const auto q = governor->observe(session.stats().gpuMs)) {
                 renderer.setQuality(*q);
-                renderer.setStillQuality(governor->stillQuality());
+                renderer.setStillQualities(governor->stillQualities());
             }
         const bool lastFrame = options.frames > 0 && frame + 1 == options.frames;
         if (lastFrame && !options.exitScreenshot.empty()) {

@@ -87,12 +87,18 @@ std::optional<RenderQuality> QualityGovernor::observe(double gpuMs) {
     return std::nullopt;
 }
 
-RenderQuality QualityGovernor::stillQuality() const {
-    RenderQuality still = ladder_.front();
+std::vector<RenderQuality> QualityGovernor::stillQualities() const {
     const RenderQuality& now = quality();
-    still.renderScale = 1.0f;
-    still.detailScale = std::clamp(now.renderScale * now.detailScale, 0.25f, 1.0f);
-    return still;
+    const auto atFullSize = [&](RenderQuality q) {
+        q.renderScale = 1.0f;
+        q.detailScale = std::clamp(now.renderScale * now.detailScale, 0.25f, 1.0f);
+        q.skyMapSize = now.skyMapSize;
+        return q;
+    };
+    std::vector<RenderQuality> stills{atFullSize(ladder_.front())};
+    const RenderQuality high = atFullSize(qualityOf(QualityPreset::High));
+    if (!sameQuality(stills.front(), high)) stills.push_back(high);
+    return stills;
 }
 
 }  // namespace hg::garden

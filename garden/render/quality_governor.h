@@ -35,11 +35,14 @@ public:
     std::optional<RenderQuality> observe(double gpuMs);
 
     const RenderQuality& quality() const { return ladder_[step_]; }
-    // What a still view may be sharpened to (Renderer::setStillQuality):
-    // the ceiling at the window's full size, with the meshes of the rung in
-    // use (its render scale times its detail scale as the detail scale), so
-    // the level of detail stays where it is when the visitor stops.
-    RenderQuality stillQuality() const;
+    // What a still view is sharpened to, in turn (Renderer::setStillQualities):
+    // the ceiling at the window's full size, then, below a high ceiling (a
+    // software renderer), the high preset there too: a view looked at may
+    // take one slow frame for shadows and occlusion. Each keeps the rung's
+    // meshes (its render scale times its detail scale as the detail scale,
+    // so the level of detail stays where it is when the visitor stops) and
+    // its sky map (baking another costs more than the frame).
+    std::vector<RenderQuality> stillQualities() const;
     std::size_t step() const { return step_; }          // 0: the ceiling
     std::size_t steps() const { return ladder_.size(); }
     std::size_t changes() const { return changes_; }  // steps taken, down or up, so far

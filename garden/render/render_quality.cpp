@@ -39,6 +39,14 @@ int detailPixels(int outputPixels, const RenderQuality& q) {
     return std::max(1, static_cast<int>(std::lround(static_cast<float>(scenePixels(outputPixels, q)) * scale)));
 }
 
+bool sameQuality(const RenderQuality& a, const RenderQuality& b) {
+    return a.msaaSamples == b.msaaSamples && a.shadows == b.shadows && a.shadowMapSize == b.shadowMapSize &&
+           a.shadowDistance == b.shadowDistance && a.ambientOcclusion == b.ambientOcclusion &&
+           a.aoSamples == b.aoSamples && a.aoHalfResolution == b.aoHalfResolution && a.aoRadius == b.aoRadius &&
+           a.exposure == b.exposure && a.renderScale == b.renderScale && a.smoothUpscale == b.smoothUpscale &&
+           a.materialBump == b.materialBump && a.skyMapSize == b.skyMapSize && a.detailScale == b.detailScale;
+}
+
 QualityPreset rendererPreset(const std::string& glRenderer) {
     for (const char* software : {"llvmpipe", "softpipe", "swrast", "Software Rasterizer"})
         if (glRenderer.find(software) != std::string::npos) return QualityPreset::Low;

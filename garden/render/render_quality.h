@@ -58,5 +58,7 @@ int scenePixels(int outputPixels, const RenderQuality& q);
 // scene's at q's detail scale (clamped to 0.25..1). What the desktop, the
 // headset and the offscreen replay give the session as its viewport.
 int detailPixels(int outputPixels, const RenderQuality& q);
+// Every setting, compared exactly.
+bool sameQuality(const RenderQuality& a, const RenderQuality& b);
 
 }  // namespace hg::garden

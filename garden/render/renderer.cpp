@@ -15,6 +15,7 @@
 
 #include "garden/render/chunk_batch.h"
 #include "garden/render/gpu_timers.h"
+#include "garden/render/held_output.h"
 #include "garden/render/occlusion_pass.h"
 #include "garden/render/visibility_queries.h"
 #include "garden/render/post_process.h"
@@ -662,13 +663,12 @@ OcclusionImage Renderer::drawPicture(const RenderQuality& q) {
 void Renderer::finishView() {
     if (!viewOpen_) return;
     viewOpen_ = false;
-    const PictureStep step =
-        still_->step(pictureReuse_ && holdsThisView(), quality_, stillQuality_, kViewsBeforeSharpening);
-    const bool measured = step == PictureStep::Draw;
+    const PictureStep step = still_->step(pictureReuse_ && holdsThisView(), quality_, stillQualities_);
+    const bool measured = step.kind == PictureStep::Draw;
     (measured ? viewsMeasured_ : viewsNotMeasured_) += 1;
     OcclusionImage occlusion;
     RenderQuality shown = quality_;
-    if (step == PictureStep::Keep) {
+    if (step.kind == PictureStep::Keep) {
         // The held picture, and this view's tests of hidden sculptures
         // against its depth, so their results stay fresh while it holds.
         stats_.picturesKept += 1;
@@ -687,18 +687,31 @@ void Renderer::finishView() {
         // A sharpened view's time is not what the automatic quality should
         // judge the moving one by: measured, then dropped.
         timers_->nextView(measured);
-        if (step == PictureStep::Sharpen) {
-            shown = *stillQuality_;
+        if (step.kind == PictureStep::Sharpen) {
+            shown = stillQualities_[step.still];
             stats_.picturesSharpened += 1;
         }
         occlusion = drawPicture(shown);
         if (pictureReuse_) still_->drawn(shown, occlusion);
     }
 
-    if (step != PictureStep::Keep) timers_->begin(GpuPass::Post);
+    if (step.kind != PictureStep::Keep) timers_->begin(GpuPass::Post);
     glBindFramebuffer(GL_FRAMEBUFFER, output_);
     glViewport(0, 0, view_.viewport.x, view_.viewport.y);
-    post_->composite(*targets_, occlusion, shown.exposure, view_.viewport, shown.smoothUpscale);
+    if (step.kind == PictureStep::Keep) {
+        // Composited once into the held output, then copied from there.
+        if (!heldOutput_) heldOutput_ = std::make_unique<HeldOutput>();
+        if (!heldOutput_->holds(view_.viewport)) {
+            heldOutput_->bindForWriting(view_.viewport);
+            post_->composite(*targets_, occlusion, shown.exposure, view_.viewport, shown.smoothUpscale);
+            glBindFramebuffer(GL_FRAMEBUFFER, output_);
+            glViewport(0, 0, view_.viewport.x, view_.viewport.y);
+        }
+        heldOutput_->copyOut();
+    } else {
+        if (heldOutput_) heldOutput_->forget();
+        post_->composite(*targets_, occlusion, shown.exposure, view_.viewport, shown.smoothUpscale);
+    }
     if (!flatDraws_.empty()) {
         flatProgram_.use();
         setMat4(flat_.view, view_.view);
@@ -712,7 +725,7 @@ void Renderer::finishView() {
     if (std::any_of(sceneDraws_.begin(), sceneDraws_.end(), [](const SceneDraw& d) { return d.material.edges != 0; }))
         drawEdges();
     timers_->end();
-    if (pictureReuse_ && step != PictureStep::Keep) holdThisView();
+    if (pictureReuse_ && step.kind != PictureStep::Keep) holdThisView();
 }
 
 namespace {

@@ -166,6 +166,7 @@ class ShadowPass;
 class OcclusionPass;
 class SkyPass;
 class VisibilityQueries;
+class HeldOutput;
 
 class Renderer {
 public:
@@ -271,14 +272,13 @@ public:
     // it does not steer the automatic quality. The desktop's window.
     void setPictureReuse(bool on);
     bool pictureReuse() const { return pictureReuse_; }
-    // With reuse on: a view held kViewsBeforeSharpening views in a row,
-    // whose picture was drawn at another quality, is drawn once more at
-    // `still` and then held (RenderStats::picturesSharpened); its GPU time is
-    // not reported either. The automatic mode's quality while the visitor
-    // moves, sharpened when they stop. None: never.
-    void setStillQuality(std::optional<RenderQuality> still) { stillQuality_ = std::move(still); }
-    const std::optional<RenderQuality>& stillQuality() const { return stillQuality_; }
-    static constexpr int kViewsBeforeSharpening = 3;
+    // With reuse on: a view held a few views in a row is drawn once more at
+    // each of `stills` in turn, then held (StillPicture's counts;
+    // RenderStats::picturesSharpened); their GPU time is not reported
+    // either. The automatic mode's quality while the visitor moves,
+    // sharpened when they stop. Empty: never.
+    void setStillQualities(std::vector<RenderQuality> stills) { stillQualities_ = std::move(stills); }
+    const std::vector<RenderQuality>& stillQualities() const { return stillQualities_; }
 
     // --- a frame -------------------------------------------------------------
     // Starts a view into the framebuffer bound now, of view.viewport pixels
@@ -454,8 +454,9 @@ private:
 
     // The picture the scene targets hold (setPictureReuse) and what it was drawn from.
     bool pictureReuse_ = false;
-    std::optional<RenderQuality> stillQuality_;
+    std::vector<RenderQuality> stillQualities_;
     std::unique_ptr<StillPicture> still_;
+    std::unique_ptr<HeldOutput> heldOutput_;  // made at the first view kept
     struct {
         View view;
         GLuint output = 0;

@@ -28,24 +28,19 @@ bool sameView(const View& a, const View& b) {
            a.clouds == b.clouds && sameLights(a.lights, b.lights) && samePoints(a.pointLights, b.pointLights);
 }
 
-bool sameQuality(const RenderQuality& a, const RenderQuality& b) {
-    return a.msaaSamples == b.msaaSamples && a.shadows == b.shadows && a.shadowMapSize == b.shadowMapSize &&
-           a.shadowDistance == b.shadowDistance && a.ambientOcclusion == b.ambientOcclusion &&
-           a.aoSamples == b.aoSamples && a.aoHalfResolution == b.aoHalfResolution && a.aoRadius == b.aoRadius &&
-           a.exposure == b.exposure && a.renderScale == b.renderScale && a.smoothUpscale == b.smoothUpscale &&
-           a.materialBump == b.materialBump && a.skyMapSize == b.skyMapSize && a.detailScale == b.detailScale;
-}
-
-PictureStep StillPicture::step(bool same, const RenderQuality& quality, const std::optional<RenderQuality>& still,
-                               int viewsBeforeSharpening) {
-    if (!same || !held_) return PictureStep::Draw;
+PictureStep StillPicture::step(bool same, const RenderQuality& quality, const std::vector<RenderQuality>& stills) {
+    if (!same || !held_) return {PictureStep::Draw};
     held_->views += 1;
-    const bool atQuality = sameQuality(held_->quality, quality);
-    const bool atStill = still && sameQuality(held_->quality, *still);
-    if (atStill) return PictureStep::Keep;
-    // Held at the quality asked for: kept while it may yet sharpen.
-    if (atQuality) return still && held_->views >= viewsBeforeSharpening ? PictureStep::Sharpen : PictureStep::Keep;
-    return PictureStep::Draw;  // the quality asked for changed: drawn at it
+    // Where the held picture stands: at the quality asked for (-1), at a
+    // still quality (its index, the last that matches), or at neither.
+    int level = sameQuality(held_->quality, quality) ? -1 : -2;
+    for (std::size_t i = 0; i < stills.size(); ++i)
+        if (sameQuality(held_->quality, stills[i])) level = static_cast<int>(i);
+    if (level == -2) return {PictureStep::Draw};  // the quality asked for changed: drawn at it
+    const auto next = static_cast<std::size_t>(level + 1);
+    const int wait = level < 0 ? kViewsBeforeSharpening : kViewsBetweenSharpenings;
+    if (next < stills.size() && held_->views >= wait) return {PictureStep::Sharpen, next};
+    return {PictureStep::Keep};
 }
 
 void StillPicture::drawn(const RenderQuality& quality, const OcclusionImage& occlusion) {

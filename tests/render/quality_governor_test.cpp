@@ -149,25 +149,34 @@ TEST(RenderQuality, TheLevelOfDetailCountsTheDetailScalesShareOfTheScenesPixels)
 }
 
 // What a still view sharpens to: the ceiling at the window's full size,
-// with the level of detail of the rung in use (the same pixels for the
-// meshes, so stopping does not remesh the garden).
-TEST(QualityGovernor, AStillViewSharpensToTheCeilingAtFullSizeWithTheMeshesInUse) {
+// then the high preset there (below a high ceiling), each with the level of
+// detail of the rung in use (the same pixels for the meshes, so stopping
+// does not remesh the garden) and its sky map.
+TEST(QualityGovernor, AStillViewSharpensToTheCeilingAndHighAtFullSizeWithTheMeshesInUse) {
     for (const QualityPreset ceiling : {QualityPreset::Low, QualityPreset::High}) {
         QualityGovernor g(ceiling, 11.1);
-        const RenderQuality top = qualityOf(ceiling);
+        const RenderQuality top = qualityOf(ceiling), high = qualityOf(QualityPreset::High);
         while (true) {
-            const RenderQuality still = g.stillQuality();
-            EXPECT_EQ(still.msaaSamples, top.msaaSamples) << "step " << g.step();
-            EXPECT_EQ(still.shadows, top.shadows);
-            EXPECT_EQ(still.ambientOcclusion, top.ambientOcclusion);
-            EXPECT_FLOAT_EQ(still.renderScale, 1.0f);
-            for (const int pixels : {720, 1080, 2208})
-                EXPECT_EQ(detailPixels(pixels, still), detailPixels(pixels, g.quality()))
-                    << "step " << g.step() << ", " << pixels << " pixels";
+            const std::vector<RenderQuality> stills = g.stillQualities();
+            ASSERT_EQ(stills.size(), ceiling == QualityPreset::High ? 1u : 2u) << "step " << g.step();
+            EXPECT_EQ(stills.front().msaaSamples, top.msaaSamples);
+            EXPECT_EQ(stills.front().shadows, top.shadows);
+            EXPECT_EQ(stills.front().ambientOcclusion, top.ambientOcclusion);
+            EXPECT_EQ(stills.back().msaaSamples, high.msaaSamples);
+            EXPECT_EQ(stills.back().shadows, high.shadows);
+            EXPECT_EQ(stills.back().ambientOcclusion, high.ambientOcclusion);
+            for (const RenderQuality& still : stills) {
+                EXPECT_FLOAT_EQ(still.renderScale, 1.0f);
+                EXPECT_EQ(still.skyMapSize, g.quality().skyMapSize) << "no sky baked again";
+                for (const int pixels : {720, 1080, 2208})
+                    EXPECT_EQ(detailPixels(pixels, still), detailPixels(pixels, g.quality()))
+                        << "step " << g.step() << ", " << pixels << " pixels";
+            }
             if (g.step() + 1 == g.steps()) break;
             ASSERT_GT(framesUntilChange(g, 50.0), 0u);
         }
-        EXPECT_FLOAT_EQ(g.stillQuality().detailScale, 0.25f) << "the last rung: half the pixels, meshes for half of them";
+        EXPECT_FLOAT_EQ(g.stillQualities().front().detailScale, 0.25f)
+            << "the last rung: half the pixels, meshes for half of them";
     }
 }
 

@@ -23,35 +23,45 @@ glm::mat4 at(const glm::vec3& p, float scale = 1.0f) {
 }
 
 // The policy alone: drawn, kept, sharpened once the view has been held
-// long enough, kept at the still quality, drawn again when the quality
-// asked for changes or the view does.
-TEST(StillPicturePolicy, DrawsKeepsSharpensAndDrawsAgain) {
+// long enough, to each still quality in turn, kept at the last; drawn
+// again when the quality asked for changes or the view does.
+TEST(StillPicturePolicy, DrawsKeepsSharpensInTurnAndDrawsAgain) {
     StillPicture still;
     RenderQuality moving;
     moving.renderScale = 0.5f;
     RenderQuality sharp = moving;
     sharp.renderScale = 1.0f;
-    const std::optional<RenderQuality> stillQuality = sharp;
-    EXPECT_EQ(still.step(true, moving, stillQuality, 3), PictureStep::Draw) << "nothing held yet";
+    RenderQuality sharper = sharp;
+    sharper.msaaSamples = 8;
+    const std::vector<RenderQuality> stills{sharp, sharper};
+    const auto kind = [&](bool same, const RenderQuality& q, const std::vector<RenderQuality>& s) {
+        return still.step(same, q, s).kind;
+    };
+    EXPECT_EQ(kind(true, moving, stills), PictureStep::Draw) << "nothing held yet";
     still.drawn(moving, {});
-    EXPECT_EQ(still.step(false, moving, stillQuality, 3), PictureStep::Draw) << "the view changed";
+    EXPECT_EQ(kind(false, moving, stills), PictureStep::Draw) << "the view changed";
     still.drawn(moving, {});
-    EXPECT_EQ(still.step(true, moving, stillQuality, 3), PictureStep::Keep);
-    EXPECT_EQ(still.step(true, moving, stillQuality, 3), PictureStep::Keep);
-    EXPECT_EQ(still.step(true, moving, stillQuality, 3), PictureStep::Sharpen) << "held three views";
+    for (int i = 1; i < StillPicture::kViewsBeforeSharpening; ++i) EXPECT_EQ(kind(true, moving, stills), PictureStep::Keep);
+    PictureStep step = still.step(true, moving, stills);
+    EXPECT_EQ(step.kind, PictureStep::Sharpen) << "held long enough";
+    EXPECT_EQ(step.still, 0u) << "to the first still quality";
     still.drawn(sharp, {});
-    for (int i = 0; i < 5; ++i) EXPECT_EQ(still.step(true, moving, stillQuality, 3), PictureStep::Keep);
-    EXPECT_TRUE(sameQuality(still.quality(), sharp));
+    for (int i = 1; i < StillPicture::kViewsBetweenSharpenings; ++i) EXPECT_EQ(kind(true, moving, stills), PictureStep::Keep);
+    step = still.step(true, moving, stills);
+    EXPECT_EQ(step.kind, PictureStep::Sharpen);
+    EXPECT_EQ(step.still, 1u) << "then to the next";
+    still.drawn(sharper, {});
+    for (int i = 0; i < 40; ++i) EXPECT_EQ(kind(true, moving, stills), PictureStep::Keep) << "the last: held";
+    EXPECT_TRUE(sameQuality(still.quality(), sharper));
+    EXPECT_EQ(kind(false, moving, stills), PictureStep::Draw);
+    still.drawn(moving, {});
+
     RenderQuality other = moving;
     other.msaaSamples = 2;
-    RenderQuality otherSharp = sharp;
-    otherSharp.msaaSamples = 2;
-    EXPECT_EQ(still.step(true, other, otherSharp, 3), PictureStep::Draw) << "held at neither quality asked for";
+    EXPECT_EQ(kind(true, other, {}), PictureStep::Draw) << "held at neither quality asked for";
     still.drawn(other, {});
-    EXPECT_EQ(still.step(true, other, std::nullopt, 3), PictureStep::Keep);
-    for (int i = 0; i < 5; ++i)
-        EXPECT_EQ(still.step(true, other, std::nullopt, 3), PictureStep::Keep) << "no still quality: never sharpened";
-    EXPECT_EQ(still.step(false, other, std::nullopt, 3), PictureStep::Draw);
+    for (int i = 0; i < 40; ++i) EXPECT_EQ(kind(true, other, {}), PictureStep::Keep) << "no still quality: never sharpened";
+    EXPECT_EQ(kind(true, other, {other}), PictureStep::Keep) << "held at the still quality already";
 }
 
 class StillPictureTest : public GlTest {
@@ -163,46 +173,59 @@ TEST_F(StillPictureTest, AStillViewIsCompositedFromThePictureHeldUntilAnythingIn
 }
 
 // The automatic mode's moving quality (half size, no multisampling)
-// sharpens to the still quality (full size, 4x) after a few views held:
-// the pixels of that quality drawn directly, then held; moving again draws
-// at the moving quality at once. The sharpened view's GPU time is not
+// sharpens after a few views held to the first still quality (full size,
+// 4x), then after more to the second (shadows and occlusion too): each
+// time the pixels of that quality drawn directly, then held; moving again
+// draws at the moving quality at once. A sharpened view's GPU time is not
 // reported as the moving quality's.
-TEST_F(StillPictureTest, AStillViewSharpensToTheStillQualityAndMovingDrawsAtTheQualitySet) {
+TEST_F(StillPictureTest, AStillViewSharpensToEachStillQualityInTurnAndMovingDrawsAtTheQualitySet) {
     renderer_->upload(1, 1, uvSphereMesh(1.0f, 48, 24));
     RenderQuality moving = plainQuality();
     moving.renderScale = 0.5f;
     RenderQuality sharp = plainQuality();
     sharp.msaaSamples = 4;
+    RenderQuality sharper = sharp;
+    sharper.shadows = true;
+    sharper.ambientOcclusion = true;
     Scene scene;
     Scene walked = scene;
     walked.eye.z -= 0.5f;
 
     renderer_->setQuality(sharp);
     const std::vector<std::uint8_t> sharpPicture = drawn(scene);
+    renderer_->setQuality(sharper);
+    const std::vector<std::uint8_t> sharperPicture = drawn(scene);
     renderer_->setQuality(moving);
     const std::vector<std::uint8_t> movingPicture = drawn(scene), walkedPicture = drawn(walked);
-    ASSERT_NE(sharpPicture, movingPicture) << "the two qualities differ in pixels";
+    ASSERT_NE(sharpPicture, movingPicture) << "the qualities differ in pixels";
+    ASSERT_NE(sharperPicture, sharpPicture);
 
     renderer_->setPictureReuse(true);
-    renderer_->setStillQuality(sharp);
+    renderer_->setStillQualities({sharp, sharper});
     EXPECT_EQ(frame(scene).picturesKept, 0u);
     EXPECT_EQ(color_, movingPicture);
-    for (int i = 1; i < Renderer::kViewsBeforeSharpening; ++i) {
-        EXPECT_EQ(frame(scene).picturesKept, 1u);
-        EXPECT_EQ(color_, movingPicture) << "held at the moving quality first";
-    }
-    RenderStats s = frame(scene);
-    EXPECT_EQ(s.picturesSharpened, 1u) << "held " << Renderer::kViewsBeforeSharpening << " views: sharpened";
-    EXPECT_EQ(s.picturesKept, 0u);
-    EXPECT_LT(s.gpuMs(), 0.0f) << "not the moving quality's time";
-    EXPECT_EQ(color_, sharpPicture) << "the still quality's pixels";
-    for (int i = 0; i < 6; ++i) {
-        s = frame(scene);
+    // Held `views` views, then sharpened to `picture`.
+    const auto heldThenSharpened = [&](int views, const std::vector<std::uint8_t>& held,
+                                       const std::vector<std::uint8_t>& picture, const char* what) {
+        for (int i = 1; i < views; ++i) {
+            EXPECT_EQ(frame(scene).picturesKept, 1u) << what;
+            EXPECT_EQ(color_, held) << what << ": held first";
+        }
+        const RenderStats s = frame(scene);
+        EXPECT_EQ(s.picturesSharpened, 1u) << what;
+        EXPECT_EQ(s.picturesKept, 0u) << what;
+        EXPECT_LT(s.gpuMs(), 0.0f) << what << ": not the moving quality's time";
+        EXPECT_EQ(color_, picture) << what << ": the still quality's pixels";
+    };
+    heldThenSharpened(StillPicture::kViewsBeforeSharpening, movingPicture, sharpPicture, "the first");
+    heldThenSharpened(StillPicture::kViewsBetweenSharpenings, sharpPicture, sharperPicture, "the second");
+    for (int i = 0; i < 2 * StillPicture::kViewsBetweenSharpenings; ++i) {
+        const RenderStats s = frame(scene);
         EXPECT_EQ(s.picturesKept, 1u);
-        EXPECT_EQ(s.picturesSharpened, 0u) << "sharpened once";
-        EXPECT_EQ(color_, sharpPicture);
+        EXPECT_EQ(s.picturesSharpened, 0u) << "the last still quality: held";
+        EXPECT_EQ(color_, sharperPicture);
     }
-    s = frame(walked);
+    const RenderStats s = frame(walked);
     EXPECT_EQ(s.picturesKept + s.picturesSharpened, 0u);
     EXPECT_EQ(color_, walkedPicture) << "moving: drawn at the quality set";
     EXPECT_TRUE(sameQuality(renderer_->quality(), moving)) << "the quality set is the caller's, untouched";
