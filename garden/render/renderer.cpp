@@ -664,25 +664,15 @@ void Renderer::finishView() {
     if (!viewOpen_) return;
     viewOpen_ = false;
     const PictureStep step = still_->step(pictureReuse_ && holdsThisView(), quality_, stillQualities_);
-    const bool measured = step.kind == PictureStep::Draw;
+    const bool kept = step.kind == PictureStep::Keep, measured = step.kind == PictureStep::Draw;
     (measured ? viewsMeasured_ : viewsNotMeasured_) += 1;
     OcclusionImage occlusion;
     RenderQuality shown = quality_;
-    if (step.kind == PictureStep::Keep) {
-        // The held picture, and this view's tests of hidden sculptures
-        // against its depth, so their results stay fresh while it holds.
+    if (kept) {
         stats_.picturesKept += 1;
         occlusion = still_->occlusion();
         shown = still_->quality();
-        // What the scene pass would have set (panels drawn since may have changed it).
-        glDisable(GL_SCISSOR_TEST);
-        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-        glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
-        if (visibility_) {
-            glBindFramebuffer(GL_FRAMEBUFFER, targets_->framebuffer());
-            glViewport(0, 0, targets_->size().x, targets_->size().y);
-            stats_.visibilityTests += visibility_->issue(view_.projection * view_.view);
-        }
+        testVisibilityOverTheHeldPicture();
     } else {
         // A sharpened view's time is not what the automatic quality should
         // judge the moving one by: measured, then dropped.
@@ -693,25 +683,45 @@ void Renderer::finishView() {
         }
         occlusion = drawPicture(shown);
         if (pictureReuse_) still_->drawn(shown, occlusion);
+        timers_->begin(GpuPass::Post);
     }
+    writeOutput(kept, occlusion, shown);
+    drawOverTheOutput();
+    timers_->end();
+    if (pictureReuse_ && !kept) holdThisView();
+}
 
-    if (step.kind != PictureStep::Keep) timers_->begin(GpuPass::Post);
+void Renderer::testVisibilityOverTheHeldPicture() {
+    // What the scene pass would have set (panels drawn since may have changed it).
+    glDisable(GL_SCISSOR_TEST);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+    if (!visibility_) return;
+    glBindFramebuffer(GL_FRAMEBUFFER, targets_->framebuffer());
+    glViewport(0, 0, targets_->size().x, targets_->size().y);
+    stats_.visibilityTests += visibility_->issue(view_.projection * view_.view);
+}
+
+void Renderer::writeOutput(bool kept, const OcclusionImage& occlusion, const RenderQuality& shown) {
     glBindFramebuffer(GL_FRAMEBUFFER, output_);
     glViewport(0, 0, view_.viewport.x, view_.viewport.y);
-    if (step.kind == PictureStep::Keep) {
-        // Composited once into the held output, then copied from there.
-        if (!heldOutput_) heldOutput_ = std::make_unique<HeldOutput>();
-        if (!heldOutput_->holds(view_.viewport)) {
-            heldOutput_->bindForWriting(view_.viewport);
-            post_->composite(*targets_, occlusion, shown.exposure, view_.viewport, shown.smoothUpscale);
-            glBindFramebuffer(GL_FRAMEBUFFER, output_);
-            glViewport(0, 0, view_.viewport.x, view_.viewport.y);
-        }
-        heldOutput_->copyOut();
-    } else {
+    if (!kept) {
         if (heldOutput_) heldOutput_->forget();
         post_->composite(*targets_, occlusion, shown.exposure, view_.viewport, shown.smoothUpscale);
+        return;
     }
+    // Composited once into the held output, then copied from there.
+    if (!heldOutput_) heldOutput_ = std::make_unique<HeldOutput>();
+    if (!heldOutput_->holds(view_.viewport)) {
+        heldOutput_->bindForWriting(view_.viewport);
+        post_->composite(*targets_, occlusion, shown.exposure, view_.viewport, shown.smoothUpscale);
+        glBindFramebuffer(GL_FRAMEBUFFER, output_);
+        glViewport(0, 0, view_.viewport.x, view_.viewport.y);
+    }
+    heldOutput_->copyOut();
+}
+
+void Renderer::drawOverTheOutput() {
     if (!flatDraws_.empty()) {
         flatProgram_.use();
         setMat4(flat_.view, view_.view);
@@ -724,8 +734,6 @@ void Renderer::finishView() {
     }
     if (std::any_of(sceneDraws_.begin(), sceneDraws_.end(), [](const SceneDraw& d) { return d.material.edges != 0; }))
         drawEdges();
-    timers_->end();
-    if (pictureReuse_ && step.kind != PictureStep::Keep) holdThisView();
 }
 
 namespace {

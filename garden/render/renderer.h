@@ -359,6 +359,13 @@ private:
     void renderScene(const RenderQuality& q, bool shadowed);
     // The shadow, scene and occlusion passes at `q` into the scene targets.
     OcclusionImage drawPicture(const RenderQuality& q);
+    // A kept view: its hidden sculptures' boxes against the held depth.
+    void testVisibilityOverTheHeldPicture();
+    // The picture into the output framebuffer: composited, or for a kept
+    // view copied from the held output (composited there first if need be).
+    void writeOutput(bool kept, const OcclusionImage& occlusion, const RenderQuality& shown);
+    // Lines, the solid sphere and the wireframe over the output.
+    void drawOverTheOutput();
     // Whether the open view's inputs equal those of the picture held.
     bool holdsThisView() const;
     // The open view's inputs as the held picture's (its draws are taken).
