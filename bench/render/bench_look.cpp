@@ -71,6 +71,9 @@ struct Row {
     // The garden's ground and air (gardenGround: stripes, blades, the grid
     // near the eye, the meadow, haze) instead of the plain grid.
     bool gardenLawn = false;
+    // A still view (Renderer::setPictureReuse): after the first frame every
+    // one is kept, the held output copied instead of drawn.
+    bool keepPicture = false;
 };
 
 RenderQuality low() { return qualityOf(QualityPreset::Low); }
@@ -132,6 +135,9 @@ int main(int argc, char** argv) {
     rows.push_back({"high, AO full (before 28 Nov)", q});
     // A still garden (or the headset's second eye): the map drawn once, kept.
     rows.push_back({"high, shadow map kept", qualityOf(QualityPreset::High), Look::Plain, true});
+    // A still view: its picture kept, the peers "low (all off)" and "high".
+    rows.push_back({"low, still view kept", low(), Look::Plain, false, false, true});
+    rows.push_back({"high, still view kept", qualityOf(QualityPreset::High), Look::Plain, false, false, true});
     // The automatic mode's last rungs: fewer scene pixels, stretched
     // bilinearly by the composite (four resolves per output pixel).
     q = low();
@@ -168,6 +174,7 @@ int main(int argc, char** argv) {
         if (!args.matches(row.name) && row.name != "low (all off)") continue;
         renderer.setQuality(row.quality);
         renderer.setShadowReuse(row.keepShadows);
+        renderer.setPictureReuse(row.keepPicture);
         RenderStats stats;
         auto frame = [&] {
             target.bind();
