@@ -48,8 +48,8 @@ struct FrameStats {
     std::size_t sculpturesHidden = 0;           // left out as hidden behind nearer ones
     std::size_t shadowMapsDrawn = 0;            // views whose shadow map was drawn (0 headless)
     std::size_t shadowMapsKept = 0;             // views that kept the one drawn before (Renderer::setShadowReuse)
-    std::size_t picturesKept = 0;               // views composited from the picture held (Renderer::setPictureReuse)
-    std::size_t picturesSharpened = 0;          // still views drawn again at the still quality
+    std::size_t picturesKept = 0;               // views that showed the picture held (Renderer::setPictureReuse)
+    std::size_t picturesSharpened = 0;          // still views drawn again at a still quality
     // GPU milliseconds of the latest frame the GPU finished (timer queries,
     // read without waiting: a frame or a few behind); -1 where unknown.
     double gpuMs = -1.0;

@@ -31,8 +31,8 @@ struct ViewDraw {
     std::size_t sculpturesHidden = 0;  // left out as hidden behind nearer ones (occlusion queries)
     std::size_t shadowMapsDrawn = 0;   // views whose shadow map was drawn
     std::size_t shadowMapsKept = 0;    // views that kept the map drawn before (nothing it shows changed)
-    std::size_t picturesKept = 0;      // views composited from the picture held (a still view)
-    std::size_t picturesSharpened = 0;  // still views drawn again at the still quality
+    std::size_t picturesKept = 0;      // views that showed the picture held (a still view)
+    std::size_t picturesSharpened = 0;  // still views drawn again at a still quality
 };
 
 class ViewSink {

@@ -315,18 +315,22 @@ int runDesktopOn(GardenSession& session, GardenWindow& gardenWindow, const Deskt
     // --quality auto: the renderer's preset as the ceiling, then stepped
     // down and up by the GPU's measured time against the monitor's period.
     std::optional<QualityGovernor> governor;
+    // The rung in use, and what a still view of it sharpens to.
+    const auto useTheGovernorsQuality = [&] {
+        renderer.setQuality(governor->quality());
+        renderer.setStillQualities(governor->stillQualities());
+    };
     if (options.autoQuality) {
         const GLFWvidmode* mode = glfwGetVideoMode(glfwGetPrimaryMonitor());
         const double hz = mode && mode->refreshRate > 0 ? mode->refreshRate : 60.0;
         governor.emplace(rendererPreset(GlWindow::glVersionString()), 1000.0 / hz);
-        renderer.setQuality(governor->quality());
-        renderer.setStillQualities(governor->stillQualities());
+        useTheGovernorsQuality();
     } else {
         renderer.setQuality(options.quality);
     }
-    // A still view is composited from the picture held, not drawn again,
-    // and sharpens to the ceiling when the automatic mode is below it
-    // (docs/rendering.md, "A still view").
+    // A still view shows the picture held, not drawn again, and sharpens
+    // when the automatic mode is below the ceiling (docs/rendering.md, "A
+    // still view").
     renderer.setPictureReuse(true);
     GardenView& view = gardenWindow.view();
     view.setImpostorDistance(options.impostorDistance);
@@ -495,11 +499,7 @@ int runDesktopOn(GardenSession& session, GardenWindow& gardenWindow, const Deskt
             return true;
         };
         session.frame(input, views);
-        if (governor)
-            if (const auto q = governor->observe(session.stats().gpuMs)) {
-                renderer.setQuality(*q);
-                renderer.setStillQualities(governor->stillQualities());
-            }
+        if (governor && governor->observe(session.stats().gpuMs)) useTheGovernorsQuality();
         const bool lastFrame = options.frames > 0 && frame + 1 == options.frames;
         if (lastFrame && !options.exitScreenshot.empty()) {
             const std::string why = writeFramebufferPng(options.exitScreenshot, fb.x, fb.y);

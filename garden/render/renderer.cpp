@@ -92,6 +92,11 @@ DrawRecord drawRecord(const glm::mat4& model, const RenderMaterial& material, bo
     return r;
 }
 
+// The same impostor cards, byte for byte (plain floats).
+bool sameCards(const std::vector<ImpostorCard>& a, const std::vector<ImpostorCard>& b) {
+    return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(ImpostorCard)) == 0);
+}
+
 // The texture unit the lit programs read the shadow map from.
 constexpr GLint kShadowUnit = 3;
 // Metres between the 3 x 3 shadow taps: a penumbra of about 5 cm.
@@ -553,13 +558,8 @@ bool Renderer::renderShadows(const RenderQuality& q, const glm::vec3& lo, const 
     if (!q.shadows || view_.lights.empty() || (shadowBatch_->empty() && !cardsCast_)) return false;
     ShadowInputs inputs{lo, hi, view_.lights.front().direction, q.shadowMapSize, arena_->generation(),
                         atlas_ ? atlas_->bakes() : 0};
-    const auto sameCards = [&] {
-        return cardDraws_.size() == shadowHeldCards_.size() &&
-               (cardDraws_.empty() || std::memcmp(cardDraws_.data(), shadowHeldCards_.data(),
-                                                  cardDraws_.size() * sizeof(ImpostorCard)) == 0);
-    };
     if (shadowReuse_ && shadowHolds_ && *shadowHolds_ == inputs && shadowBatch_->drawsTheSameAs(*shadowHeldCasters_) &&
-        sameCards()) {
+        sameCards(cardDraws_, shadowHeldCards_)) {
         stats_.shadowMapsKept += 1;
         return true;
     }
@@ -672,6 +672,10 @@ void Renderer::finishView() {
         stats_.picturesKept += 1;
         occlusion = still_->occlusion();
         shown = still_->quality();
+        // What the scene pass would have set (panels drawn since may have changed it).
+        glDisable(GL_SCISSOR_TEST);
+        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
         testVisibilityOverTheHeldPicture();
     } else {
         // A sharpened view's time is not what the automatic quality should
@@ -692,10 +696,6 @@ void Renderer::finishView() {
 }
 
 void Renderer::testVisibilityOverTheHeldPicture() {
-    // What the scene pass would have set (panels drawn since may have changed it).
-    glDisable(GL_SCISSOR_TEST);
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
     if (!visibility_) return;
     glBindFramebuffer(GL_FRAMEBUFFER, targets_->framebuffer());
     glViewport(0, 0, targets_->size().x, targets_->size().y);
@@ -738,6 +738,27 @@ void Renderer::drawOverTheOutput() {
 
 namespace {
 
+bool sameLights(const std::vector<DirectionalLight>& a, const std::vector<DirectionalLight>& b) {
+    if (a.size() != b.size()) return false;
+    for (std::size_t i = 0; i < a.size(); ++i)
+        if (a[i].direction != b[i].direction || a[i].color != b[i].color) return false;
+    return true;
+}
+
+bool samePoints(const std::vector<PointLight>& a, const std::vector<PointLight>& b) {
+    if (a.size() != b.size()) return false;
+    for (std::size_t i = 0; i < a.size(); ++i)
+        if (a[i].position != b[i].position || a[i].color != b[i].color || a[i].range != b[i].range) return false;
+    return true;
+}
+
+// The view's lights, camera, viewport and sky, compared exactly.
+bool sameView(const View& a, const View& b) {
+    return a.view == b.view && a.projection == b.projection && a.eye == b.eye && a.viewport == b.viewport &&
+           a.clearColor == b.clearColor && a.ambient == b.ambient && a.hazeDistance == b.hazeDistance &&
+           a.clouds == b.clouds && sameLights(a.lights, b.lights) && samePoints(a.pointLights, b.pointLights);
+}
+
 bool sameGround(const GroundStyle& a, const GroundStyle& b) {
     return a.color == b.color && a.lineColor == b.lineColor && a.spacing == b.spacing &&
            a.majorEvery == b.majorEvery && a.lineWidth == b.lineWidth && a.halfExtent == b.halfExtent &&
@@ -749,11 +770,7 @@ bool sameGround(const GroundStyle& a, const GroundStyle& b) {
 bool Renderer::holdsThisView() const {
     if (!still_->holds() || held_.output != output_ || held_.arena != arena_->generation() ||
         held_.bakes != (atlas_ ? atlas_->bakes() : 0) || held_.skyBaked != sky_->baked() ||
-        !sameView(held_.view, view_) || held_.draws.size() != sceneDraws_.size() ||
-        held_.cards.size() != cardDraws_.size())
-        return false;
-    if (!cardDraws_.empty() &&
-        std::memcmp(cardDraws_.data(), held_.cards.data(), cardDraws_.size() * sizeof(ImpostorCard)) != 0)
+        !sameView(held_.view, view_) || held_.draws.size() != sceneDraws_.size() || !sameCards(cardDraws_, held_.cards))
         return false;
     for (std::size_t i = 0; i < sceneDraws_.size(); ++i) {
         const SceneDraw& a = sceneDraws_[i];

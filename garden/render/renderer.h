@@ -146,8 +146,8 @@ struct RenderStats {
     std::size_t sculpturesHidden = 0;  // left out as hidden behind nearer ones (wasHidden said so)
     std::size_t visibilityTests = 0;   // boxes drawn in occlusion queries (visibility_queries.h)
     std::size_t skyBakes = 0;          // the sky's cube map baked again (its look changed: sky_pass.h)
-    std::size_t picturesKept = 0;       // views that composited the picture held (nothing in it changed)
-    std::size_t picturesSharpened = 0;  // views drawn again at the still quality (setStillQuality)
+    std::size_t picturesKept = 0;       // views that showed the picture held (nothing in it changed)
+    std::size_t picturesSharpened = 0;  // views drawn again at a still quality (setStillQualities)
     // GPU milliseconds per pass of the latest view the GPU has finished
     // (GL timer queries, read without waiting: a view or a few behind); -1
     // where a pass did not run or no result is in yet.
@@ -267,8 +267,8 @@ public:
     // Off by default. On: a view whose inputs equal those of the picture
     // drawn last (the same camera, lights and sky into the same framebuffer,
     // the same draws of the same meshes and cards) is not drawn again: the
-    // held picture is composited once more and what follows is drawn over
-    // it (RenderStats::picturesKept). Such a view reports no GPU time, so
+    // held picture is copied into the output (held_output.h) and what
+    // follows is drawn over it (RenderStats::picturesKept). Such a view reports no GPU time, so
     // it does not steer the automatic quality. The desktop's window.
     void setPictureReuse(bool on);
     bool pictureReuse() const { return pictureReuse_; }

@@ -18,11 +18,6 @@
 
 namespace hg::garden {
 
-struct View;
-
-// The view's lights, camera, viewport and sky, compared exactly.
-bool sameView(const View& a, const View& b);
-
 struct PictureStep {
     enum Kind {
         Draw,     // a new picture, at the renderer's quality
