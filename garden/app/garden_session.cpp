@@ -35,10 +35,6 @@ constexpr int kLevelRefreshFrames = 45;
 // this fraction late, and a walk past hundreds of such sculptures costs a
 // test per sculpture a frame, not one per chunk.
 constexpr double kReselectMove = 0.01;
-// Milliseconds a frame for measuring again the level errors of chunks an
-// edit or a blend changed (poly::ChunkErrors::refresh); until then they
-// take the voxel-size rule's levels.
-constexpr double kErrorRefreshMs = 0.5;
 // A far grid is read back from disk once the viewer is within this factor
 // of the distance where its chunks take level 0, and may go again only
 // beyond the larger one (so a visitor at the edge does not make it come and
@@ -486,15 +482,20 @@ void GardenSession::input(const Hands& hands, double dt) {
 void GardenSession::selectLevels() {
     scheduler_.beginStage(Stage::Lod);
     gridNeeds_.assign(sculptures_.size(), GridNeed{});
-    const double refreshUntil = scheduler_.elapsedMs() + kErrorRefreshMs;
+    const double refreshUntil = scheduler_.elapsedMs() + settings_.errorRefreshMs;
+    bool refreshed = false;
     for (std::size_t index = 0; index < sculptures_.size(); ++index) {
         Sculpture& s = sculptures_[index];
         if (!s.onShow()) continue;
         const std::array<double, 3> eye = toModel(s, navigator_.eye());
         s.queue->setViewer(eye);
+        // At least one batch a frame, whatever the time: idle() waits for
+        // every error, so a frame whose allowance went before reaching the
+        // unknown ones must still make progress.
         if (s.errors && s.errors->unknown() > 0 && s.volume->resident()) {
             const double left = refreshUntil - scheduler_.elapsedMs();
-            if (left > 0.0) s.errors->refresh(eye, left);
+            if (left > 0.0 || !refreshed) s.errors->refresh(eye, std::max(left, 1e-6));  // 0 would mean all
+            refreshed = true;
         }
         poly::Camera cam;
         cam.position = eye;
@@ -727,7 +728,14 @@ bool GardenSession::idle() const {
                                        [](const Sculpture& s) { return s.edits && s.edits->late(); });
     const bool blending =
         std::any_of(sculptures_.begin(), sculptures_.end(), [](const Sculpture& s) { return s.morph && !s.morph->blender->done(); });
-    return !blending && !editsLate && remeshPending() == 0 && sculpturesLoading() == 0;
+    // A level choice put off while the queue was busy, or errors still to be
+    // measured after an edit or a blend (their chunks take the voxel-size
+    // rule's finer levels meanwhile), would leave levels that depend on the
+    // frames' timing.
+    const bool levelsLate = std::any_of(sculptures_.begin(), sculptures_.end(), [](const Sculpture& s) {
+        return s.onShow() && (s.framesSinceLevels > 0 || (s.errors && s.errors->unknown() > 0 && s.volume->resident()));
+    });
+    return !blending && !editsLate && !levelsLate && remeshPending() == 0 && sculpturesLoading() == 0;
 }
 
 void GardenSession::advanceEdits(double milliseconds) {

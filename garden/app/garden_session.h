@@ -93,6 +93,11 @@ struct SessionSettings {
     // coarser level is also taken where its surface strays from level 0's
     // by at most this many pixels on screen (0: the voxel-size rule alone).
     double levelErrorPixels = 0.5;
+    // Milliseconds a frame for measuring again the errors of chunks an edit
+    // or a blend changed (at least one small batch when any wait); until
+    // then they take the voxel-size rule's levels. Tests make it tiny to
+    // play a slow machine.
+    double errorRefreshMs = 0.5;
     double fovY = 1.0471975511965976;  // 60 degrees
     int viewportHeight = 720;
     bool lod = true;                   // false: every chunk at level 0
@@ -438,7 +443,10 @@ public:
     FrameStats& stats() { return scheduler_.stats(); }
 
     // The morph has nothing left to blend, no edit's grid update waits
-    // (spreadEdits), no chunk waits for a mesh and no sculpture is loading.
+    // (spreadEdits), no chunk waits for a mesh, no sculpture is loading, and
+    // every sculpture's levels were chosen in the last frame from errors all
+    // measured: what a settled garden shows then depends on where the viewer
+    // stands and what the grids hold, not on how fast the frames ran.
     bool idle() const;
     // Every edit's grid update that waits (spreadEdits) computed now and
     // shown: what a snapshot of the grids needs.

@@ -3,7 +3,8 @@
 // strokes made while chunks and blend batches are with the workers settle
 // on the grids and meshes of working within the frame (the morph result's
 // grid bit for bit that of the blend from scratch), and the frames keep
-// running while the workers work.
+// running while the workers work; and a slow machine settles on the same
+// levels as a fast one.
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -63,6 +64,40 @@ Shown shownMeshes(const GardenSession& s) {
         }
     }
     return out;
+}
+
+// What a settled garden shows does not depend on how fast the machine is:
+// chunk errors measured one small batch a frame (a slow machine, a
+// sanitizer build) settle on the levels of errors measured half a
+// millisecond a frame. Idle waits for every error and for a level choice
+// the busy queue put off, in the frame and off it.
+TEST_F(BackgroundRemeshSession, ASlowMachineSettlesOnTheSameLevels) {
+    const ReplayScript script = walkMorphAndCarve(dir.string() + "/garden.json");
+    const std::string garden = writeGarden();
+    for (const bool offThread : {false, true}) {
+        std::string levels[2];  // each chunk's level and transition faces
+        for (int slow = 0; slow < 2; ++slow) {
+            SessionSettings settings = test::smallSessionSettings();
+            settings.remeshChunksPerFrame = 0;
+            settings.workOffFrameThread = offThread;
+            if (slow) settings.errorRefreshMs = 1e-6;
+            GardenSession s(loadGarden(garden), settings);
+            PacedSink paced;
+            const ReplayResult r = runReplay(script, s, offThread ? &paced : nullptr, ReplayOptions{});
+            ASSERT_TRUE(r.ok()) << r.error;
+            ASSERT_TRUE(s.idle());
+            for (const Sculpture& sc : s.sculptures()) {
+                if (!sc.onShow()) continue;
+                if (sc.errors) EXPECT_EQ(sc.errors->unknown(), 0u) << sc.name;
+                levels[slow] += "\n" + sc.name + ":";
+                for (std::size_t c = 0; c < sc.queue->count(); ++c) {
+                    const poly::ChunkLod& lod = sc.queue->shownLod(c);
+                    levels[slow] += " " + std::to_string(lod.level) + "/" + std::to_string(lod.transitionFaces);
+                }
+            }
+        }
+        EXPECT_EQ(levels[0], levels[1]) << (offThread ? "off the frame thread" : "in the frame");
+    }
 }
 
 TEST_F(BackgroundRemeshSession, SettlesOnTheSameMeshesAsRemeshingInTheFrame) {
