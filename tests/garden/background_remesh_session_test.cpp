@@ -88,7 +88,9 @@ TEST_F(BackgroundRemeshSession, ASlowMachineSettlesOnTheSameLevels) {
             ASSERT_TRUE(s.idle());
             for (const Sculpture& sc : s.sculptures()) {
                 if (!sc.onShow()) continue;
-                if (sc.errors) EXPECT_EQ(sc.errors->unknown(), 0u) << sc.name;
+                if (sc.errors) {
+                    EXPECT_EQ(sc.errors->unknown(), 0u) << sc.name;
+                }
                 levels[slow] += "\n" + sc.name + ":";
                 for (std::size_t c = 0; c < sc.queue->count(); ++c) {
                     const poly::ChunkLod& lod = sc.queue->shownLod(c);
