@@ -35,6 +35,9 @@ constexpr int kLevelRefreshFrames = 45;
 // this fraction late, and a walk past hundreds of such sculptures costs a
 // test per sculpture a frame, not one per chunk.
 constexpr double kReselectMove = 0.01;
+// Chunk errors an edit or a blend left to be measured again, on a grid in
+// memory (the only kind ChunkErrors::refresh can measure).
+bool errorsWaiting(const Sculpture& s) { return s.errors && s.errors->unknown() > 0 && s.volume->resident(); }
 // A far grid is read back from disk once the viewer is within this factor
 // of the distance where its chunks take level 0, and may go again only
 // beyond the larger one (so a visitor at the edge does not make it come and
@@ -492,7 +495,7 @@ void GardenSession::selectLevels() {
         // At least one batch a frame, whatever the time: idle() waits for
         // every error, so a frame whose allowance went before reaching the
         // unknown ones must still make progress.
-        if (s.errors && s.errors->unknown() > 0 && s.volume->resident()) {
+        if (errorsWaiting(s)) {
             const double left = refreshUntil - scheduler_.elapsedMs();
             if (left > 0.0 || !refreshed) s.errors->refresh(eye, std::max(left, 1e-6));  // 0 would mean all
             refreshed = true;
@@ -733,7 +736,7 @@ bool GardenSession::idle() const {
     // rule's finer levels meanwhile), would leave levels that depend on the
     // frames' timing.
     const bool levelsLate = std::any_of(sculptures_.begin(), sculptures_.end(), [](const Sculpture& s) {
-        return s.onShow() && (s.framesSinceLevels > 0 || (s.errors && s.errors->unknown() > 0 && s.volume->resident()));
+        return s.onShow() && (s.framesSinceLevels > 0 || errorsWaiting(s));
     });
     return !blending && !editsLate && !levelsLate && remeshPending() == 0 && sculpturesLoading() == 0;
 }

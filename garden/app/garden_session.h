@@ -94,9 +94,9 @@ struct SessionSettings {
     // by at most this many pixels on screen (0: the voxel-size rule alone).
     double levelErrorPixels = 0.5;
     // Milliseconds a frame for measuring again the errors of chunks an edit
-    // or a blend changed (at least one small batch when any wait); until
-    // then they take the voxel-size rule's levels. Tests make it tiny to
-    // play a slow machine.
+    // or a blend changed (a frame measures at least one small batch while
+    // any wait); until then they take the voxel-size rule's levels. Tests
+    // make it tiny to play a slow machine.
     double errorRefreshMs = 0.5;
     double fovY = 1.0471975511965976;  // 60 degrees
     int viewportHeight = 720;

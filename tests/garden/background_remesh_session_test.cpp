@@ -48,6 +48,15 @@ ReplayScript walkMorphAndCarve(const std::string& garden) {
       ]})", "walk.json", "");
 }
 
+// The walk's session settings: the scheduler's allowances, in the frame or
+// off it.
+SessionSettings walkSettings(bool offThread) {
+    SessionSettings settings = test::smallSessionSettings();
+    settings.remeshChunksPerFrame = 0;  // the scheduler's allowance
+    settings.workOffFrameThread = offThread;
+    return settings;
+}
+
 struct Shown {
     std::vector<std::vector<float>> positions;
     std::vector<std::vector<std::uint32_t>> indices;
@@ -77,9 +86,7 @@ TEST_F(BackgroundRemeshSession, ASlowMachineSettlesOnTheSameLevels) {
     for (const bool offThread : {false, true}) {
         std::string levels[2];  // each chunk's level and transition faces
         for (int slow = 0; slow < 2; ++slow) {
-            SessionSettings settings = test::smallSessionSettings();
-            settings.remeshChunksPerFrame = 0;
-            settings.workOffFrameThread = offThread;
+            SessionSettings settings = walkSettings(offThread);
             if (slow) settings.errorRefreshMs = 1e-6;
             GardenSession s(loadGarden(garden), settings);
             PacedSink paced;
@@ -108,10 +115,7 @@ TEST_F(BackgroundRemeshSession, SettlesOnTheSameMeshesAsRemeshingInTheFrame) {
     std::size_t framesWhileMeshing = 0;
     std::size_t blendedInFrames = 0;
     for (int offThread = 0; offThread < 2; ++offThread) {
-        SessionSettings settings = test::smallSessionSettings();
-        settings.remeshChunksPerFrame = 0;  // the scheduler's allowance
-        settings.workOffFrameThread = offThread != 0;
-        GardenSession s(loadGarden(writeGarden()), settings);
+        GardenSession s(loadGarden(writeGarden()), walkSettings(offThread != 0));
         PacedSink paced;
         const ReplayResult r = runReplay(script, s, offThread ? &paced : nullptr, ReplayOptions{});
         ASSERT_TRUE(r.ok()) << r.error;
