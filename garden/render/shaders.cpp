@@ -1,5 +1,7 @@
 #include "garden/render/shaders.h"
 
+#include <string>
+
 namespace hg::garden::shaders {
 
 // Shared by the lit programs: the frame's lights, the sun's shadow and the
@@ -89,56 +91,9 @@ namespace hg::garden::shaders {
     "    return vec4(c, clamp(dimmable / max(dot(c, w), 1e-5), 0.0, 1.0));\n"       \
     "}\n"
 
-const char* const kMeshVertex = "#version 330 core\n" HG_SRGB_GLSL HG_DRAW_RECORD_GLSL R"(
-layout(location = 0) in vec3 aPosition;
-layout(location = 1) in vec3 aNormal;
-layout(location = 2) in uint aDraw;
-uniform mat4 uViewProjection;
-out vec3 vWorld;
-out vec3 vNormal;
-out vec3 vModel;  // the materials' detail is a function of the model-space position
-// The draw's material, the same over the whole draw: read and decoded here,
-// once a vertex, rather than once a pixel (a software renderer pays the
-// texel fetches and the sRGB decode's pow for every fragment).
-flat out vec4 vSurface;  // linear base colour, specular strength
-flat out vec4 vFinish;   // shininess, has normals, cavity
-flat out vec4 vDetail;   // SurfaceKind, metallic, detail scale
-flat out float vModelScale;  // the model matrix's scale: model units to metres
-void main() {
-    int draw = int(aDraw);
-    mat4 model = drawModel(draw);
-    vec4 world = model * vec4(aPosition, 1.0);
-    vWorld = world.xyz;
-    vModel = aPosition;
-    vNormal = drawNormalMatrix(draw) * aNormal;
-    vec4 surface = drawRecord(draw, 7);  // sRGB base colour, specular
-    vSurface = vec4(toLinear(surface.rgb), surface.a);
-    vFinish = drawRecord(draw, 8);
-    vDetail = drawRecord(draw, 9);
-    vModelScale = length(model[0].xyz);
-    gl_Position = uViewProjection * world;
-}
-)";
-
-const char* const kMeshFragment = "#version 330 core\n" HG_LIGHTING_GLSL R"(
-in vec3 vWorld;
-in vec3 vNormal;
-in vec3 vModel;
-flat in vec4 vSurface;
-flat in vec4 vFinish;
-flat in vec4 vDetail;
-flat in float vModelScale;
-uniform float uBump;  // 1: the detail's relief tilts the shading normal (RenderQuality::materialBump)
-layout(location = 0) out vec4 fragColor;
-#ifdef HG_BAKE
-// An impostor's view (impostor_atlas.h): the surface's colour before
-// lighting, and its model-space normal and depth along the view, in
-// reaches (the view's half-width) from the centre.
-layout(location = 1) out vec4 bakeNormalDepth;
-uniform vec3 uBakeCentre;
-uniform vec3 uBakeToViewer;
-uniform float uBakeReach;
-#endif
+// The materials' procedural detail (docs/rendering.md, "Materials"): shared by
+// the mesh program and the screen pass that shades sculptures once a pixel.
+const char* const kSurfaceDetailGlsl = R"(
 // Value noise in model space (hash after Dave Hoskins' hash13), and its sum
 // over four octaves, about 0..1 with mean 0.5. An octave finer than a pixel
 // (`pixel`: p's change across one) fades to its mean and is not evaluated:
@@ -220,6 +175,10 @@ void surfaceDetail(int kind, vec3 q, vec3 n, float pixel, inout vec3 base, inout
         height = -0.02 * ring + 0.004 * streak;
     }
 }
+)";
+
+// The surface's form from screen-space derivatives: relief and cavity.
+const char* const kMeshFormGlsl = R"(
 // The shading normal tilted by the gradient of a height field h over the
 // surface (world units), from screen-space derivatives of h and of the
 // position: Mikkelsen's surface gradient ("Bump Mapping Unparametrized
@@ -239,8 +198,8 @@ vec3 bumped(vec3 n, vec3 p, float h) {
 // fully at any distance, as in sculpting programs. A factor on the colour:
 // grooves down to 0.4, ridges up to 1.3 (linear light).
 const float kCavityPixels = 8.0;
-float cavityFactor(vec3 n, float strength) {
-    vec3 dpx = dFdx(vWorld), dpy = dFdy(vWorld);
+float cavityFactor(vec3 n, vec3 p, float strength) {
+    vec3 dpx = dFdx(p), dpy = dFdy(p);
     float px = dot(dpx, dpx), py = dot(dpy, dpy);
     if (px < 1e-20 || py < 1e-20) return 1.0;
     float bend = dot(dFdx(n), dpx) / px + dot(dFdy(n), dpy) / py;  // about 2 / radius
@@ -248,7 +207,66 @@ float cavityFactor(vec3 n, float strength) {
     float c = clamp(0.5 * bend * kCavityPixels * pixel, -1.0, 1.0);
     return 1.0 + strength * (c < 0.0 ? 0.6 * c : 0.3 * c);
 }
+)";
+
+const char* const kMeshVertex = "#version 330 core\n" HG_SRGB_GLSL HG_DRAW_RECORD_GLSL R"(
+layout(location = 0) in vec3 aPosition;
+layout(location = 1) in vec3 aNormal;
+layout(location = 2) in uint aDraw;
+uniform mat4 uViewProjection;
+out vec3 vWorld;
+out vec3 vNormal;
+out vec3 vModel;  // the materials' detail is a function of the model-space position
+// The draw's material, the same over the whole draw: read and decoded here,
+// once a vertex, rather than once a pixel (a software renderer pays the
+// texel fetches and the sRGB decode's pow for every fragment).
+flat out vec4 vSurface;  // linear base colour, specular strength
+flat out vec4 vFinish;   // shininess, has normals, cavity
+flat out vec4 vDetail;   // SurfaceKind, metallic, detail scale
+flat out float vModelScale;  // the model matrix's scale: model units to metres
+#ifdef HG_GBUFFER
+flat out int vDraw;  // the draw's record, for the screen pass that shades it
+#endif
 void main() {
+    int draw = int(aDraw);
+    mat4 model = drawModel(draw);
+    vec4 world = model * vec4(aPosition, 1.0);
+    vWorld = world.xyz;
+    vModel = aPosition;
+    vNormal = drawNormalMatrix(draw) * aNormal;
+    vec4 surface = drawRecord(draw, 7);  // sRGB base colour, specular
+    vSurface = vec4(toLinear(surface.rgb), surface.a);
+    vFinish = drawRecord(draw, 8);
+    vDetail = drawRecord(draw, 9);
+    vModelScale = length(model[0].xyz);
+#ifdef HG_GBUFFER
+    vDraw = draw;
+#endif
+    gl_Position = uViewProjection * world;
+}
+)";
+
+const char* const kMeshFragmentHead = "#version 330 core\n" HG_LIGHTING_GLSL R"(
+in vec3 vWorld;
+in vec3 vNormal;
+in vec3 vModel;
+flat in vec4 vSurface;
+flat in vec4 vFinish;
+flat in vec4 vDetail;
+flat in float vModelScale;
+uniform float uBump;  // 1: the detail's relief tilts the shading normal (RenderQuality::materialBump)
+layout(location = 0) out vec4 fragColor;
+#ifdef HG_BAKE
+// An impostor's view (impostor_atlas.h): the surface's colour before
+// lighting, and its model-space normal and depth along the view, in
+// reaches (the view's half-width) from the centre.
+layout(location = 1) out vec4 bakeNormalDepth;
+uniform vec3 uBakeCentre;
+uniform vec3 uBakeToViewer;
+uniform float uBakeReach;
+#endif
+)";
+const char* const kMeshFragmentMain = R"(void main() {
     // Without vertex normals, the face normal from screen-space derivatives
     // (it faces the viewer, and culling leaves only front faces).
     vec4 finish = vFinish;
@@ -271,7 +289,7 @@ void main() {
             n = bumped(n, vWorld, uBump * height * detail.z * vModelScale);
     }
     // (A draw's cavity is the same over a triangle: derivatives defined.)
-    if (finish.z > 0.0) base *= cavityFactor(n, finish.z);
+    if (finish.z > 0.0) base *= cavityFactor(n, vWorld, finish.z);
 #ifdef HG_BAKE
     fragColor = vec4(base, 1.0);
     bakeNormalDepth = vec4(n, dot(vModel - uBakeCentre, uBakeToViewer) / uBakeReach);
@@ -283,6 +301,126 @@ void main() {
     fragColor = aerial(shade(base * (1.0 - 0.6 * metallic), n, vWorld, specular, shininess), vWorld);
 }
 )";
+
+// Sculptures shaded once a pixel (docs/rendering.md, "Shaded once a
+// pixel"). First their surfaces, unlit, into the G-buffer: the model-space
+// position and the draw's record, and the shading normal (its length the
+// clay view's cavity factor, which needs the triangle's derivatives) with
+// the pattern's change across a pixel. The pass runs this cheap program
+// wherever a rasterizer shades whole blocks around small triangles.
+const char* const kMeshSurfaceHead = "#version 330 core\n" R"(
+in vec3 vWorld;
+in vec3 vNormal;
+in vec3 vModel;
+flat in vec4 vFinish;
+flat in vec4 vDetail;
+flat in int vDraw;
+uniform int uKind;  // the draw's SurfaceKind
+layout(location = 0) out vec4 gModel;   // model position, draw record * 8 + SurfaceKind
+layout(location = 1) out vec4 gNormal;  // world normal times cavity, pattern units a pixel
+)";
+const char* const kMeshSurfaceMain = R"(void main() {
+    vec3 n = vFinish.y > 0.5 ? normalize(vNormal) : normalize(cross(dFdx(vWorld), dFdy(vWorld)));
+    float cavity = vFinish.z > 0.0 ? cavityFactor(n, vWorld, vFinish.z) : 1.0;
+    gModel = vec4(vModel, float(vDraw * 8 + uKind));
+    gNormal = vec4(n * cavity, max(length(fwidth(vModel / vDetail.z)), 1e-6));
+}
+)";
+
+// Then one screen pass a surface kind (HG_KIND), lighting what the G-buffer holds as meshFragment() does without
+// relief: the same colour, to float rounding.
+const char* const kMeshShadeHead = "#version 330 core\n" HG_LIGHTING_GLSL HG_DRAW_RECORD_GLSL R"(
+uniform sampler2DMS uSurfaceModel;
+uniform sampler2DMS uSurfaceNormal;
+layout(location = 0) out vec4 fragColor;
+)";
+const char* const kMeshShadeMain = R"(void main() {
+    ivec2 texel = ivec2(gl_FragCoord.xy);
+    vec4 m = texelFetch(uSurfaceModel, texel, 0);
+    // Another kind's pixel, or none: left at once (a block of pixels none
+    // of which is this kind's costs a texel read).
+    int code = int(m.w);
+    if (m.w < 0.0 || code % 8 != HG_KIND) discard;
+    int draw = code / 8;
+    vec4 g = texelFetch(uSurfaceNormal, texel, 0);
+    vec3 world = (drawModel(draw) * vec4(m.xyz, 1.0)).xyz;
+    float cavity = length(g.xyz);
+    vec3 n = g.xyz / cavity;
+    vec4 surface = drawRecord(draw, 7);  // sRGB base colour, specular
+    vec4 finish = drawRecord(draw, 8);
+    vec4 detail = drawRecord(draw, 9);
+    vec3 base = toLinear(surface.rgb);
+    vec3 specular = vec3(surface.a);
+    float shininess = finish.x, metallic = detail.y;
+    const int kind = HG_KIND;
+    if (kind != 0) {
+        float height;
+        surfaceDetail(kind, m.xyz / detail.z, n, g.w, base, specular, shininess, metallic, height);
+    }
+    if (finish.z > 0.0) base *= cavity;
+    specular = mix(specular, base * (0.6 + specular), metallic);
+    fragColor = aerial(shade(base * (1.0 - 0.6 * metallic), n, world, specular, shininess), world);
+}
+)";
+
+// Which surface kinds each tile of SurfaceBuffer::kTilePixels pixels holds
+// (bit k: SurfaceKind k), from the surfaces' codes: drawn at one fragment a
+// tile with kFullscreenVertex.
+const char* const kSurfaceTileKindsFragment = R"(#version 330 core
+uniform sampler2DMS uSurfaceModel;
+layout(location = 0) out uint kinds;
+const int kTile = HG_TILE_PIXELS;
+void main() {
+    ivec2 last = textureSize(uSurfaceModel) - 1;
+    ivec2 corner = ivec2(gl_FragCoord.xy) * kTile;
+    uint k = 0u;
+    for (int y = 0; y < kTile; ++y)
+        for (int x = 0; x < kTile; ++x) {
+            float code = texelFetch(uSurfaceModel, min(corner + ivec2(x, y), last), 0).w;
+            k |= code >= 0.0 ? 1u << uint(int(code) % 8) : 0u;
+        }
+    kinds = k;
+}
+)";
+
+// The screen pass's geometry: two triangles a tile (gl_VertexID, no
+// vertex buffer), those of tiles without kind HG_KIND collapsed to nothing.
+// A software rasterizer runs a fragment shader over every covered block
+// whatever a discard or a failed depth or stencil test says, so only
+// coverage keeps a kind's light from the rest of the view.
+const char* const kSurfaceTileVertex = R"(#version 330 core
+uniform usampler2D uTileKinds;
+uniform vec2 uScenePixels;
+const int kTile = HG_TILE_PIXELS;
+void main() {
+    int tile = gl_VertexID / 6, corner = gl_VertexID % 6;
+    ivec2 tiles = textureSize(uTileKinds, 0);
+    ivec2 t = ivec2(tile % tiles.x, tile / tiles.x);
+    uint kinds = texelFetch(uTileKinds, t, 0).r;
+    if ((kinds & (1u << uint(HG_KIND))) == 0u) {
+        gl_Position = vec4(2.0, 2.0, 2.0, 1.0);  // every corner outside the view: no triangle
+        return;
+    }
+    // Corners (0,0) (1,0) (1,1) and (0,0) (1,1) (0,1).
+    ivec2 c = ivec2(corner == 1 || corner == 2 || corner == 4 ? 1 : 0, corner == 2 || corner == 4 || corner == 5 ? 1 : 0);
+    gl_Position = vec4(vec2((t + c) * kTile) / uScenePixels * 2.0 - 1.0, 0.0, 1.0);
+}
+)";
+
+const char* meshFragment() {
+    static const std::string source = std::string(kMeshFragmentHead) + kSurfaceDetailGlsl + kMeshFormGlsl + kMeshFragmentMain;
+    return source.c_str();
+}
+
+const char* meshSurfaceFragment() {
+    static const std::string source = std::string(kMeshSurfaceHead) + kMeshFormGlsl + kMeshSurfaceMain;
+    return source.c_str();
+}
+
+const char* meshShadeFragment() {
+    static const std::string source = std::string(kMeshShadeHead) + kSurfaceDetailGlsl + kMeshShadeMain;
+    return source.c_str();
+}
 
 const char* const kGroundVertex = R"(#version 330 core
 layout(location = 0) in vec3 aPosition;
