@@ -65,8 +65,9 @@ protected:
 };
 
 // Every built-in material and a plain one, overlapping in depth, one of
-// them without normals (its face normals from derivatives), over the
-// ground: the same picture both ways, to rounding.
+// them without normals (its face normals from derivatives) and one in the
+// clay view, over the ground: the same picture both ways, to rounding, and
+// by a multi-draw or a call a chunk.
 TEST_F(ShadeOncePerPixelTest, GivesThePictureOfLightingEachTriangle) {
     ASSERT_TRUE(shadesOncePerPixel(qualityOf(QualityPreset::Low)));
     renderer_->upload(1, 1, uvSphereMesh(0.5f, 48, 24));
@@ -91,6 +92,13 @@ TEST_F(ShadeOncePerPixelTest, GivesThePictureOfLightingEachTriangle) {
     // It drew what it says: the sculptures and a screen pass a kind.
     EXPECT_EQ(stats_.trianglesDrawn, perTriangleStats.trianglesDrawn);
     EXPECT_GT(stats_.drawCalls, perTriangleStats.drawCalls);
+    // On GL 3.3 (a call a chunk, the record's index a constant attribute):
+    // the same picture.
+    if (renderer_->multiDraw()) {
+        renderer_->setMultiDraw(false);
+        EXPECT_EQ(render(view, placed, qualityOf(QualityPreset::Low), true), once);
+        renderer_->setMultiDraw(true);
+    }
     // And not an empty scene: the sculptures cover a good part of it.
     const View empty = view;
     const std::vector<std::uint8_t> bare = render(empty, {}, qualityOf(QualityPreset::Low), true);
