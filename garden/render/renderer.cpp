@@ -682,10 +682,15 @@ void Renderer::renderScene(const RenderQuality& q, bool shadowed) {
     timers_->end();
 }
 
+// The surfaces' code is record * 8 + SurfaceKind in a float, and the tiles
+// hold a bit a kind in eight: exact while the records stay under 2^21.
+static_assert(kSurfaceKindCount <= 8, "a surface kind is three bits of the surfaces' code and one of a tile's eight");
+constexpr std::size_t kMaxRecordsOncePerPixel = (std::size_t{1} << 21) - 1;
+
 bool Renderer::drawsOncePerPixel(const RenderQuality& q, bool shadowed) const {
     if (!shadesOncePerPixel(q) || shadowed || targets_->samples() != 1) return false;
     for (const auto& batch : batches_)
-        if (!batch->recordsInOneGroup()) return false;
+        if (!batch->recordsInOneGroup() || batch->records() > kMaxRecordsOncePerPixel) return false;
     return true;
 }
 
