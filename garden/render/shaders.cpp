@@ -327,8 +327,9 @@ const char* const kMeshSurfaceMain = R"(void main() {
 }
 )";
 
-// Then one screen pass a surface kind (HG_KIND), lighting what the G-buffer holds as meshFragment() does without
-// relief: the same colour, to float rounding.
+// Then one screen pass a surface kind (HG_KIND), drawn as the tiles that
+// hold it (kSurfaceTileVertex), lighting what the G-buffer holds as
+// meshFragment() does without relief: the same colour, to float rounding.
 const char* const kMeshShadeHead = "#version 330 core\n" HG_LIGHTING_GLSL HG_DRAW_RECORD_GLSL R"(
 uniform sampler2DMS uSurfaceModel;
 uniform sampler2DMS uSurfaceNormal;
@@ -337,8 +338,8 @@ layout(location = 0) out vec4 fragColor;
 const char* const kMeshShadeMain = R"(void main() {
     ivec2 texel = ivec2(gl_FragCoord.xy);
     vec4 m = texelFetch(uSurfaceModel, texel, 0);
-    // Another kind's pixel, or none: left at once (a block of pixels none
-    // of which is this kind's costs a texel read).
+    // Another kind's pixel in the tile, or none: not lit (llvmpipe still
+    // runs the rest for its lane; the tiles keep such lanes few).
     int code = int(m.w);
     if (m.w < 0.0 || code % 8 != HG_KIND) discard;
     int draw = code / 8;
