@@ -79,11 +79,16 @@ void JobThread::loop() {
             }
             job->ran_ = true;
         }
+        // Finished and out of the backlog in one step, under the lock that
+        // backlog() takes: a backlog of 0 means every job handed over reports
+        // done, and a job that reports done is out of the backlog. (With the
+        // two apart, BlendJobTest.NewWeightsDropTheJobUnderWay failed once:
+        // it saw the backlog empty and the job not yet done.)
         {
             std::lock_guard<std::mutex> lock(mutex_);
+            job->finish();
             --busy_;
         }
-        job->finish();
     }
 }
 
