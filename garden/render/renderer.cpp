@@ -211,13 +211,17 @@ Renderer::MeshProgram& Renderer::meshProgram(int kind) {
     return *made;
 }
 
-ShaderProgram& Renderer::surfaceProgram() {
+Renderer::SurfaceProgram& Renderer::surfaceProgram() {
     if (!surfaceProgram_) {
-        surfaceProgram_ = std::make_unique<ShaderProgram>(
-            "sculpture surfaces", withDefines(shaders::kMeshVertex, "#define HG_GBUFFER 1\n").c_str(),
-            shaders::meshSurfaceFragment());
-        surfaceProgram_->use();
-        glUniform1i(surfaceProgram_->uniform("uDrawRecords"), kDrawRecordUnit);
+        auto p = std::make_unique<SurfaceProgram>();
+        p->program = ShaderProgram("sculpture surfaces",
+                                   withDefines(shaders::kMeshVertex, "#define HG_GBUFFER 1\n").c_str(),
+                                   shaders::meshSurfaceFragment());
+        p->program.use();
+        glUniform1i(p->program.uniform("uDrawRecords"), kDrawRecordUnit);
+        p->viewProjection = p->program.uniform("uViewProjection");
+        p->kind = p->program.uniform("uKind");
+        surfaceProgram_ = std::move(p);
     }
     return *surfaceProgram_;
 }
@@ -225,8 +229,8 @@ ShaderProgram& Renderer::surfaceProgram() {
 Renderer::ShadeProgram& Renderer::shadeProgram(int kind) {
     std::unique_ptr<ShadeProgram>& made = shadePrograms_[static_cast<std::size_t>(surfaceKindIndex(kind))];
     if (made) return *made;
-    const std::string defines = "#define HG_KIND " + std::to_string(surfaceKindIndex(kind)) +
-                                "\n#define HG_TILE_PIXELS " + std::to_string(SurfaceBuffer::kTilePixels) + "\n";
+    const std::string defines =
+        "#define HG_KIND " + std::to_string(surfaceKindIndex(kind)) + "\n" + SurfaceBuffer::tileDefines();
     auto p = std::make_unique<ShadeProgram>();
     p->program = ShaderProgram("sculpture light", withDefines(shaders::kSurfaceTileVertex, defines).c_str(),
                                withDefines(shaders::meshShadeFragment(), defines).c_str());
@@ -702,14 +706,13 @@ std::size_t Renderer::drawSculpturesOncePerPixel(const glm::mat4& viewProjection
     glBindFramebuffer(GL_FRAMEBUFFER, surfaces_->framebuffer());
     const GLfloat none[] = {0.0f, 0.0f, 0.0f, -1.0f};
     glClearBufferfv(GL_COLOR, 0, none);
-    ShaderProgram& surface = surfaceProgram();
-    surface.use();
-    setMat4(surface.uniform("uViewProjection"), viewProjection);
-    const GLint kindUniform = surface.uniform("uKind");
+    SurfaceProgram& surface = surfaceProgram();
+    surface.program.use();
+    setMat4(surface.viewProjection, viewProjection);
     for (int kind = 0; kind < kSurfaceKindCount; ++kind) {
         ChunkBatch& batch = *batches_[static_cast<std::size_t>(kind)];
         if (batch.empty()) continue;
-        glUniform1i(kindUniform, kind);
+        glUniform1i(surface.kind, kind);
         calls += batch.draw(*arena_, multiDraw_);
     }
     glDisable(GL_DEPTH_TEST);

@@ -401,14 +401,18 @@ private:
         LitUniforms lit{};
         ShadowUniforms shadow{};
     };
-    ShaderProgram& surfaceProgram();
+    struct SurfaceProgram {
+        ShaderProgram program;
+        GLint viewProjection = -1, kind = -1;
+    };
+    SurfaceProgram& surfaceProgram();
     ShadeProgram& shadeProgram(int kind);
     // Whether this view's sculptures are shaded once a pixel at q.
     bool drawsOncePerPixel(const RenderQuality& q, bool shadowed) const;
     // The view's sculptures, their surfaces and then their light, into the
     // scene targets (their depth included); the GL draw calls.
     std::size_t drawSculpturesOncePerPixel(const glm::mat4& viewProjection, bool shadowed);
-    std::unique_ptr<ShaderProgram> surfaceProgram_;
+    std::unique_ptr<SurfaceProgram> surfaceProgram_;
     std::array<std::unique_ptr<ShadeProgram>, kSurfaceKindCount> shadePrograms_;
     std::unique_ptr<SurfaceBuffer> surfaces_;
     ShaderProgram groundProgram_;

@@ -18,13 +18,13 @@ gl::Texture floatImage(glm::ivec2 size) {
     glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, 0);
     return t;
 }
-
-std::string tileDefine() { return "#define HG_TILE_PIXELS " + std::to_string(SurfaceBuffer::kTilePixels) + "\n"; }
 }  // namespace
+
+std::string SurfaceBuffer::tileDefines() { return "#define HG_TILE_PIXELS " + std::to_string(kTilePixels) + "\n"; }
 
 SurfaceBuffer::SurfaceBuffer()
     : classify_("surface tiles", shaders::kFullscreenVertex,
-                withDefines(shaders::kSurfaceTileKindsFragment, tileDefine()).c_str()),
+                withDefines(shaders::kSurfaceTileKindsFragment, tileDefines()).c_str()),
       empty_(gl::VertexArray::create()) {
     classify_.use();
     glUniform1i(classify_.uniform("uSurfaceModel"), kSurfaceUnit);
@@ -34,9 +34,9 @@ SurfaceBuffer::SurfaceBuffer()
 void SurfaceBuffer::ensure(const SceneTargets& scene) {
     if (fbo_ && sceneGeneration_ == scene.generation()) return;
     sceneGeneration_ = scene.generation();
-    size_ = scene.size();
-    model_ = floatImage(size_);
-    normal_ = floatImage(size_);
+    const glm::ivec2 size = scene.size();
+    model_ = floatImage(size);
+    normal_ = floatImage(size);
     fbo_ = gl::Framebuffer::create();
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.get());
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D_MULTISAMPLE, model_.get(), 0);
@@ -46,7 +46,7 @@ void SurfaceBuffer::ensure(const SceneTargets& scene) {
     glDrawBuffers(2, buffers);
     checkFramebuffer("sculpture surfaces (shaded once a pixel)");
 
-    tiles_ = (size_ + (kTilePixels - 1)) / kTilePixels;
+    tiles_ = (size + (kTilePixels - 1)) / kTilePixels;
     tileKinds_ = makeTexture2D(GL_R8UI, tiles_, GL_RED_INTEGER, GL_UNSIGNED_BYTE, GL_NEAREST, GL_CLAMP_TO_EDGE);
     glBindTexture(GL_TEXTURE_2D, 0);
     tileFbo_ = gl::Framebuffer::create();

@@ -14,6 +14,8 @@
 
 #include <glm/vec2.hpp>
 
+#include <string>
+
 #include "garden/render/gl_objects.h"
 #include "garden/render/shader_program.h"
 
@@ -24,6 +26,8 @@ class SceneTargets;
 class SurfaceBuffer {
 public:
     static constexpr int kTilePixels = 8;
+    // "#define HG_TILE_PIXELS ...": for the programs that read or draw the tiles.
+    static std::string tileDefines();
 
     SurfaceBuffer();  // throws GlError naming a shader that fails
     // Made or remade for `scene`'s size and its depth texture; `scene`
@@ -37,8 +41,6 @@ public:
     // (R8UI, a bit a SurfaceKind). Leaves the tiles' framebuffer bound.
     void classifyTiles();
     GLuint tileKindsTexture() const { return tileKinds_.get(); }
-    glm::ivec2 tiles() const { return tiles_; }
-    glm::ivec2 size() const { return size_; }
     // Two triangles a tile, with the program in use (kSurfaceTileVertex).
     void drawTiles();
 
@@ -47,7 +49,7 @@ private:
     gl::VertexArray empty_;
     gl::Framebuffer fbo_, tileFbo_;
     gl::Texture model_, normal_, tileKinds_;
-    glm::ivec2 size_{0}, tiles_{0};
+    glm::ivec2 tiles_{0};
     unsigned sceneGeneration_ = 0;  // SceneTargets::generation of the depth attached
 };
 
