@@ -17,8 +17,10 @@ constexpr GLint kResolvedUnit = 9;
 // Compiled per configuration (PostProcess::variant): HG_SAMPLES, the scene's
 // samples a pixel; HG_OCCLUSION, 0 none, 1 at the scene's size, 2 coarser;
 // HG_RESOLVE, 1 for the first of two passes where the scene is stretched
-// over the output: each scene pixel resolved once, at the scene's size, into
-// a texture that kStretchFragment then samples bilinearly.
+// over the output: each scene pixel resolved and sRGB-encoded once, at the
+// scene's size, into an 8-bit texture that kStretchFragment then samples
+// bilinearly (docs/rendering.md, "Quality": why the stretch is in display
+// space).
 const char* const kCompositeFragment = "#version 330 core\n" HG_SRGB_GLSL R"(
 uniform sampler2DMS uColor;
 uniform sampler2DMS uDepth;
@@ -91,7 +93,7 @@ vec3 resolvedAt(ivec2 p) {
 }
 void main() {
 #if HG_RESOLVE
-    fragColor = vec4(resolvedAt(ivec2(gl_FragCoord.xy)), 1.0);  // linear, tone mapped
+    fragColor = vec4(toSrgb(resolvedAt(ivec2(gl_FragCoord.xy))), 1.0);  // tone mapped, encoded
 #else
     ivec2 p = ivec2(gl_FragCoord.xy * uToScene);
     fragColor = vec4(toSrgb(resolvedAt(p)), 1.0);
@@ -105,8 +107,11 @@ void main() {
 // hard edge of the scene becomes a ramp instead of a staircase of doubled
 // pixels. Resolving first costs a quarter of the output's pixels at half
 // scale, where resolving the four neighbours of every output pixel cost a
-// software renderer about as much as the rest of the composite.
-const char* const kStretchFragment = "#version 330 core\n" HG_SRGB_GLSL R"(
+// software renderer about as much as the rest of the composite. The pixels
+// are already encoded, in 8 bits: llvmpipe filters those with integer
+// arithmetic, and encodes a quarter of the pixels (docs/benchmarks.md,
+// "The stretch in display space").
+const char* const kStretchFragment = "#version 330 core\n" R"(
 uniform sampler2D uResolved;
 uniform sampler2DMS uDepth;
 uniform vec2 uSize;     // the scene's pixels
@@ -114,7 +119,7 @@ uniform vec2 uToScene;  // output pixel to scene pixel (the render scale)
 out vec4 fragColor;
 void main() {
     vec2 s = gl_FragCoord.xy * uToScene;
-    fragColor = vec4(toSrgb(texture(uResolved, s / uSize).rgb), 1.0);
+    fragColor = vec4(texture(uResolved, s / uSize).rgb, 1.0);
     gl_FragDepth = texelFetch(uDepth, ivec2(s), 0).r;
 }
 )";
@@ -159,7 +164,7 @@ void PostProcess::ensureResolved(glm::ivec2 size) {
     if (size == resolvedSize_) return;
     glActiveTexture(GL_TEXTURE0 + kResolvedUnit);
     glBindTexture(GL_TEXTURE_2D, resolved_.get());
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA16F, size.x, size.y, 0, GL_RGBA, GL_FLOAT, nullptr);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, size.x, size.y, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
     gl::sampleLinearClamped(GL_TEXTURE_2D);
     glBindTexture(GL_TEXTURE_2D, 0);
     glActiveTexture(GL_TEXTURE0);

@@ -8,7 +8,8 @@
 // per configuration (samples, occlusion, and whether it resolves for a
 // stretch), compiled when first met (docs/rendering.md, "Programs made to
 // measure"); a scene drawn smaller than the output is resolved at its own
-// size first, then stretched bilinearly by a second, small program.
+// size and encoded first, then stretched bilinearly in display space by a
+// second, small program.
 #pragma once
 
 #include <glm/vec2.hpp>
@@ -35,7 +36,7 @@ public:
     // darkness does not bleed over a silhouette onto what lies behind it.
     // `output`: the pixels of the bound framebuffer's view, which the scene
     // (drawn at the render scale) is stretched over, bilinearly between
-    // resolved scene pixels (lines and panels, drawn afterwards at the
+    // resolved, encoded scene pixels (lines and panels, drawn afterwards at the
     // output's size, stay sharp); `smooth` false: the nearest scene pixel.
     void composite(const SceneTargets& scene, const OcclusionImage& occlusion, float exposure, glm::ivec2 output,
                    bool smooth);
@@ -61,7 +62,7 @@ private:
     std::map<Configuration, Variant> variants_;
     ShaderProgram stretch_;  // the resolved scene, bilinearly over the output
     GLint stretchSize_ = -1, stretchToScene_ = -1;
-    gl::Texture resolved_;   // RGBA16F at the scene's size: linear, tone mapped, averaged
+    gl::Texture resolved_;   // RGBA8 at the scene's size: tone mapped, averaged, sRGB-encoded
     gl::Framebuffer resolvedTarget_;
     glm::ivec2 resolvedSize_{0};
     gl::VertexArray empty_;  // the fullscreen triangle comes from gl_VertexID
