@@ -5,8 +5,7 @@
 // software GPU's work); the GPU columns are the renderer's timer queries.
 // The last rows give the nine blocks the built-in materials' procedural
 // detail (issue 24: marble, wood, bronze...), the clay view and the
-// wireframe overlay, at the low and high presets, and the low preset with
-// its sculptures lit as drawn instead of once a pixel.
+// wireframe overlay, at the low and high presets.
 //
 //   xvfb-run -a ./build/release/bench/bench_look [--json FILE] [--filter NAME] [--repeat N]
 #include <epoxy/gl.h>
@@ -149,15 +148,6 @@ int main(int argc, char** argv) {
     q.smoothUpscale = false;
     rows.push_back({"low, scale 0.5, nearest", q});
     rows.push_back({"low + materials", low(), Look::Materials});
-    // The low preset's sculptures lit as their triangles are drawn, as until
-    // 29 November: the peers of "low (all off)" and "low + materials"
-    // (docs/rendering.md, "Shaded once a pixel").
-    q = low();
-    q.shadeOncePerPixel = false;
-    rows.push_back({"low, lit as drawn", q});
-    rows.push_back({"low + materials, lit as drawn", q, Look::Materials});
-    q.renderScale = 0.5f;
-    rows.push_back({"low, scale 0.5, lit as drawn", q});
     rows.push_back({"high + materials", qualityOf(QualityPreset::High), Look::Materials});
     rows.push_back({"high + clay view", qualityOf(QualityPreset::High), Look::Clay});
     rows.push_back({"high + wireframe", qualityOf(QualityPreset::High), Look::Wireframe});

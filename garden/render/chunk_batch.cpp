@@ -91,12 +91,6 @@ void ChunkBatch::bindPage(const ChunkArena& arena, std::size_t page, bool multiD
         glDisableVertexAttribArray(ChunkArena::kDrawIdAttribute);
 }
 
-void ChunkBatch::bindRecords() const {
-    glActiveTexture(GL_TEXTURE0 + kDrawRecordUnit);
-    glBindTexture(GL_TEXTURE_BUFFER, recordTexture_.get());
-    glActiveTexture(GL_TEXTURE0);
-}
-
 std::size_t ChunkBatch::draw(ChunkArena& arena, bool multiDraw) {
     if (commands_.empty()) return 0;
     std::size_t calls = 0;

@@ -58,13 +58,6 @@ public:
     // path. Returns the GL draw calls made.
     std::size_t draw(ChunkArena& arena, bool multiDraw);
 
-    // Whether every record goes to the shaders in one group (all but gardens
-    // of tens of thousands of placements): then, after draw(), bindRecords
-    // binds them all, each at its own index, for a pass that reads a draw's
-    // record by the index a draw left in an image (surface_buffer.h).
-    bool recordsInOneGroup() const { return records() <= maxRecords_; }
-    void bindRecords() const;
-
     // Whether `other` holds exactly this batch's draws: the same ranges of
     // the same pages with the same records (what a pass drawn from either
     // would show, given the same arena contents).

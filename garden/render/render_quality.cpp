@@ -14,7 +14,6 @@ RenderQuality qualityOf(QualityPreset preset) {
             q.ambientOcclusion = false;
             q.materialBump = false;
             q.skyMapSize = 512;
-            q.shadeOncePerPixel = true;
             break;
         case QualityPreset::Medium:
             q.msaaSamples = 2;
@@ -40,17 +39,12 @@ int detailPixels(int outputPixels, const RenderQuality& q) {
     return std::max(1, static_cast<int>(std::lround(static_cast<float>(scenePixels(outputPixels, q)) * scale)));
 }
 
-bool shadesOncePerPixel(const RenderQuality& q) {
-    return q.shadeOncePerPixel && q.msaaSamples <= 1 && !q.materialBump && !q.shadows;
-}
-
 bool sameQuality(const RenderQuality& a, const RenderQuality& b) {
     return a.msaaSamples == b.msaaSamples && a.shadows == b.shadows && a.shadowMapSize == b.shadowMapSize &&
            a.shadowDistance == b.shadowDistance && a.ambientOcclusion == b.ambientOcclusion &&
            a.aoSamples == b.aoSamples && a.aoHalfResolution == b.aoHalfResolution && a.aoRadius == b.aoRadius &&
            a.exposure == b.exposure && a.renderScale == b.renderScale && a.smoothUpscale == b.smoothUpscale &&
-           a.materialBump == b.materialBump && a.skyMapSize == b.skyMapSize && a.detailScale == b.detailScale &&
-           a.shadeOncePerPixel == b.shadeOncePerPixel;
+           a.materialBump == b.materialBump && a.skyMapSize == b.skyMapSize && a.detailScale == b.detailScale;
 }
 
 QualityPreset rendererPreset(const std::string& glRenderer) {

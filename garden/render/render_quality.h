@@ -27,14 +27,6 @@ struct RenderQuality {
     // renderer pays for each triangle and for the partly covered pixel
     // blocks around it, whatever their size (docs/rendering.md, "Quality").
     float detailScale = 1.0f;
-    // Sculptures' surfaces first, then lit once a pixel in a screen pass a
-    // material, instead of lit as their triangles are drawn: a software
-    // rasterizer shades a whole block of pixels around each small
-    // triangle, so most of that lighting was thrown away. Taken only where
-    // the picture is the same (no multisampling, relief or shadows:
-    // shadesOncePerPixel); the low preset's (docs/rendering.md, "Shaded
-    // once a pixel").
-    bool shadeOncePerPixel = false;
 };
 
 }  // namespace hg::garden
@@ -66,10 +58,6 @@ int scenePixels(int outputPixels, const RenderQuality& q);
 // scene's at q's detail scale (clamped to 0.25..1). What the desktop, the
 // headset and the offscreen replay give the session as its viewport.
 int detailPixels(int outputPixels, const RenderQuality& q);
-// Whether q's sculptures are shaded once a pixel: asked for, and nothing
-// on that needs a triangle's derivatives at lighting (relief, the shadow's
-// receiver plane) or several samples a pixel.
-bool shadesOncePerPixel(const RenderQuality& q);
 // Every setting, compared exactly.
 bool sameQuality(const RenderQuality& a, const RenderQuality& b);
 

@@ -55,7 +55,6 @@ void SceneTargets::ensure(glm::ivec2 size, int samples) {
     checkFramebuffer("scene (HDR, multisampled)");
     size_ = size;
     samples_ = samples;
-    ++generation_;
 }
 
 void ScalarTarget::ensure(glm::ivec2 wanted) {

@@ -18,8 +18,6 @@ public:
     GLuint framebuffer() const { return fbo_.get(); }
     GLuint colorTexture() const { return color_.get(); }  // GL_TEXTURE_2D_MULTISAMPLE, RGBA16F
     GLuint depthTexture() const { return depth_.get(); }  // GL_TEXTURE_2D_MULTISAMPLE, DEPTH24
-    // Counts the reallocations: what shares these textures (surface_buffer.h) remakes itself when it changes.
-    unsigned generation() const { return generation_; }
     glm::ivec2 size() const { return size_; }
     int samples() const { return samples_; }
 
@@ -29,7 +27,6 @@ private:
     gl::Texture depth_;
     glm::ivec2 size_{0};
     int samples_ = 0;
-    unsigned generation_ = 0;
 };
 
 // A single-channel texture with its framebuffer (ambient occlusion).

@@ -24,7 +24,6 @@
 #include "garden/render/shadow_pass.h"
 #include "garden/render/shapes.h"
 #include "garden/render/sky_pass.h"
-#include "garden/render/surface_buffer.h"
 
 namespace hg::garden {
 
@@ -100,11 +99,6 @@ bool sameCards(const std::vector<ImpostorCard>& a, const std::vector<ImpostorCar
 
 // The texture unit the lit programs read the shadow map from.
 constexpr GLint kShadowUnit = 3;
-// The texture units the light of sculptures shaded once a pixel reads
-// their surfaces and tiles from (surface_buffer.h).
-constexpr GLint kSurfaceModelUnit = 10;
-constexpr GLint kSurfaceNormalUnit = 11;
-constexpr GLint kSurfaceTilesUnit = 12;
 // Metres between the 3 x 3 shadow taps: a penumbra of about 5 cm.
 constexpr float kPenumbraStep = 0.02f;
 
@@ -208,41 +202,6 @@ Renderer::MeshProgram& Renderer::meshProgram(int kind) {
     m->viewProjection = m->program.uniform("uViewProjection");
     m->bump = m->program.uniform("uBump");
     made = std::move(m);
-    return *made;
-}
-
-Renderer::SurfaceProgram& Renderer::surfaceProgram() {
-    if (!surfaceProgram_) {
-        auto p = std::make_unique<SurfaceProgram>();
-        p->program = ShaderProgram("sculpture surfaces",
-                                   withDefines(shaders::kMeshVertex, "#define HG_GBUFFER 1\n").c_str(),
-                                   shaders::meshSurfaceFragment());
-        p->program.use();
-        glUniform1i(p->program.uniform("uDrawRecords"), kDrawRecordUnit);
-        p->viewProjection = p->program.uniform("uViewProjection");
-        p->kind = p->program.uniform("uKind");
-        surfaceProgram_ = std::move(p);
-    }
-    return *surfaceProgram_;
-}
-
-Renderer::ShadeProgram& Renderer::shadeProgram(int kind) {
-    std::unique_ptr<ShadeProgram>& made = shadePrograms_[static_cast<std::size_t>(surfaceKindIndex(kind))];
-    if (made) return *made;
-    const std::string defines =
-        "#define HG_KIND " + std::to_string(surfaceKindIndex(kind)) + "\n" + SurfaceBuffer::tileDefines();
-    auto p = std::make_unique<ShadeProgram>();
-    p->program = ShaderProgram("sculpture light", withDefines(shaders::kSurfaceTileVertex, defines).c_str(),
-                               withDefines(shaders::meshShadeFragment(), defines).c_str());
-    p->program.use();
-    glUniform1i(p->program.uniform("uDrawRecords"), kDrawRecordUnit);
-    glUniform1i(p->program.uniform("uSurfaceModel"), kSurfaceModelUnit);
-    glUniform1i(p->program.uniform("uSurfaceNormal"), kSurfaceNormalUnit);
-    glUniform1i(p->program.uniform("uTileKinds"), kSurfaceTilesUnit);
-    p->scenePixels = p->program.uniform("uScenePixels");
-    p->lit = litUniforms(p->program);
-    p->shadow = shadowUniforms(p->program);
-    made = std::move(p);
     return *made;
 }
 
@@ -664,19 +623,15 @@ void Renderer::renderScene(const RenderQuality& q, bool shadowed) {
 
     // Sculptures before the ground: they hide much of it, and early depth
     // tests then skip its pixels.
-    if (drawsOncePerPixel(q, shadowed)) {
-        stats_.drawCalls += drawSculpturesOncePerPixel(viewProjection, shadowed);
-    } else {
-        for (int kind = 0; kind < kSurfaceKindCount; ++kind) {
-            ChunkBatch& batch = *batches_[static_cast<std::size_t>(kind)];
-            if (batch.empty()) continue;
-            MeshProgram& m = meshProgram(kind);
-            m.program.use();
-            setMat4(m.viewProjection, viewProjection);
-            glUniform1f(m.bump, q.materialBump ? 1.0f : 0.0f);
-            setLighting(m.lit, m.shadow, shadowed);
-            stats_.drawCalls += batch.draw(*arena_, multiDraw_);
-        }
+    for (int kind = 0; kind < kSurfaceKindCount; ++kind) {
+        ChunkBatch& batch = *batches_[static_cast<std::size_t>(kind)];
+        if (batch.empty()) continue;
+        MeshProgram& m = meshProgram(kind);
+        m.program.use();
+        setMat4(m.viewProjection, viewProjection);
+        glUniform1f(m.bump, q.materialBump ? 1.0f : 0.0f);
+        setLighting(m.lit, m.shadow, shadowed);
+        stats_.drawCalls += batch.draw(*arena_, multiDraw_);
     }
     if (!cardDraws_.empty()) {
         cards_->sceneProgram().use();
@@ -691,75 +646,6 @@ void Renderer::renderScene(const RenderQuality& q, bool shadowed) {
     // Every box against the finished depth (sky included: it writes none).
     if (visibility_) stats_.visibilityTests += visibility_->issue(viewProjection);
     timers_->end();
-}
-
-// The surfaces' code is record * 8 + SurfaceKind in a float, and the tiles
-// hold a bit a kind in eight: exact while the records stay under 2^21.
-static_assert(kSurfaceKindCount <= 8, "a surface kind is three bits of the surfaces' code and one of a tile's eight");
-constexpr std::size_t kMaxRecordsOncePerPixel = (std::size_t{1} << 21) - 1;
-
-bool Renderer::drawsOncePerPixel(const RenderQuality& q, bool shadowed) const {
-    if (!shadesOncePerPixel(q) || shadowed || targets_->samples() != 1) return false;
-    for (const auto& batch : batches_)
-        if (!batch->recordsInOneGroup() || batch->records() > kMaxRecordsOncePerPixel) return false;
-    return true;
-}
-
-std::size_t Renderer::drawSculpturesOncePerPixel(const glm::mat4& viewProjection, bool shadowed) {
-    if (!surfaces_) surfaces_ = std::make_unique<SurfaceBuffer>();
-    surfaces_->ensure(*targets_);
-    std::size_t calls = 0;
-    // Surfaces, depth-tested as any draw; where none is, the code is -1.
-    glBindFramebuffer(GL_FRAMEBUFFER, surfaces_->framebuffer());
-    const GLfloat none[] = {0.0f, 0.0f, 0.0f, -1.0f};
-    glClearBufferfv(GL_COLOR, 0, none);
-    SurfaceProgram& surface = surfaceProgram();
-    surface.program.use();
-    setMat4(surface.viewProjection, viewProjection);
-    for (int kind = 0; kind < kSurfaceKindCount; ++kind) {
-        ChunkBatch& batch = *batches_[static_cast<std::size_t>(kind)];
-        if (batch.empty()) continue;
-        glUniform1i(surface.kind, kind);
-        calls += batch.draw(*arena_, multiDraw_);
-    }
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_CULL_FACE);
-    surfaces_->classifyTiles();
-    ++calls;
-    // Light: a kind's tiles, lit where the code is that kind's, reading its
-    // records (each batch's, left whole by its draw).
-    glBindFramebuffer(GL_FRAMEBUFFER, targets_->framebuffer());
-    glViewport(0, 0, targets_->size().x, targets_->size().y);
-    glActiveTexture(GL_TEXTURE0 + kSurfaceModelUnit);
-    glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, surfaces_->modelTexture());
-    glActiveTexture(GL_TEXTURE0 + kSurfaceNormalUnit);
-    glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, surfaces_->normalTexture());
-    glActiveTexture(GL_TEXTURE0 + kSurfaceTilesUnit);
-    glBindTexture(GL_TEXTURE_2D, surfaces_->tileKindsTexture());
-    glActiveTexture(GL_TEXTURE0);
-    for (int kind = 0; kind < kSurfaceKindCount; ++kind) {
-        const ChunkBatch& batch = *batches_[static_cast<std::size_t>(kind)];
-        if (batch.empty()) continue;
-        ShadeProgram& p = shadeProgram(kind);
-        p.program.use();
-        glUniform2f(p.scenePixels, static_cast<float>(targets_->size().x), static_cast<float>(targets_->size().y));
-        setLighting(p.lit, p.shadow, shadowed);
-        batch.bindRecords();
-        surfaces_->drawTiles();
-        ++calls;
-    }
-    glBindVertexArray(0);
-    for (GLint unit : {kSurfaceModelUnit, kSurfaceNormalUnit, kSurfaceTilesUnit, kDrawRecordUnit}) {
-        glActiveTexture(GL_TEXTURE0 + unit);
-        glBindTexture(unit == kDrawRecordUnit     ? GL_TEXTURE_BUFFER
-                      : unit == kSurfaceTilesUnit ? GL_TEXTURE_2D
-                                                  : GL_TEXTURE_2D_MULTISAMPLE,
-                      0);
-    }
-    glActiveTexture(GL_TEXTURE0);
-    glEnable(GL_DEPTH_TEST);
-    glEnable(GL_CULL_FACE);
-    return calls;
 }
 
 OcclusionImage Renderer::drawPicture(const RenderQuality& q) {

@@ -167,7 +167,6 @@ class OcclusionPass;
 class SkyPass;
 class VisibilityQueries;
 class HeldOutput;
-class SurfaceBuffer;
 
 class Renderer {
 public:
@@ -392,29 +391,6 @@ private:
 
     std::array<std::unique_ptr<MeshProgram>, kSurfaceKindCount> meshPrograms_;
 
-    // Sculptures shaded once a pixel (surface_buffer.h, docs/rendering.md
-    // "Shaded once a pixel"): one surface program for every kind, and a
-    // screen program a kind that lights its pixels; made on first use.
-    struct ShadeProgram {
-        ShaderProgram program;
-        GLint scenePixels = -1;
-        LitUniforms lit{};
-        ShadowUniforms shadow{};
-    };
-    struct SurfaceProgram {
-        ShaderProgram program;
-        GLint viewProjection = -1, kind = -1;
-    };
-    SurfaceProgram& surfaceProgram();
-    ShadeProgram& shadeProgram(int kind);
-    // Whether this view's sculptures are shaded once a pixel at q.
-    bool drawsOncePerPixel(const RenderQuality& q, bool shadowed) const;
-    // The view's sculptures, their surfaces and then their light, into the
-    // scene targets (their depth included); the GL draw calls.
-    std::size_t drawSculpturesOncePerPixel(const glm::mat4& viewProjection, bool shadowed);
-    std::unique_ptr<SurfaceProgram> surfaceProgram_;
-    std::array<std::unique_ptr<ShadeProgram>, kSurfaceKindCount> shadePrograms_;
-    std::unique_ptr<SurfaceBuffer> surfaces_;
     ShaderProgram groundProgram_;
     ShaderProgram flatProgram_;
     LitUniforms groundLit_{};

@@ -91,8 +91,7 @@ namespace hg::garden::shaders {
     "    return vec4(c, clamp(dimmable / max(dot(c, w), 1e-5), 0.0, 1.0));\n"       \
     "}\n"
 
-// The materials' procedural detail (docs/rendering.md, "Materials"): shared by
-// the mesh program and the screen pass that shades sculptures once a pixel.
+// The materials' procedural detail (docs/rendering.md, "Materials").
 const char* const kSurfaceDetailGlsl = R"(
 // Value noise in model space (hash after Dave Hoskins' hash13), and its sum
 // over four octaves, about 0..1 with mean 0.5. An octave finer than a pixel
@@ -224,9 +223,6 @@ flat out vec4 vSurface;  // linear base colour, specular strength
 flat out vec4 vFinish;   // shininess, has normals, cavity
 flat out vec4 vDetail;   // SurfaceKind, metallic, detail scale
 flat out float vModelScale;  // the model matrix's scale: model units to metres
-#ifdef HG_GBUFFER
-flat out int vDraw;  // the draw's record, for the screen pass that shades it
-#endif
 void main() {
     int draw = int(aDraw);
     mat4 model = drawModel(draw);
@@ -239,9 +235,6 @@ void main() {
     vFinish = drawRecord(draw, 8);
     vDetail = drawRecord(draw, 9);
     vModelScale = length(model[0].xyz);
-#ifdef HG_GBUFFER
-    vDraw = draw;
-#endif
     gl_Position = uViewProjection * world;
 }
 )";
@@ -302,124 +295,8 @@ const char* const kMeshFragmentMain = R"(void main() {
 }
 )";
 
-// Sculptures shaded once a pixel (docs/rendering.md, "Shaded once a
-// pixel"). First their surfaces, unlit, into the G-buffer: the model-space
-// position and the draw's record, and the shading normal (its length the
-// clay view's cavity factor, which needs the triangle's derivatives) with
-// the pattern's change across a pixel. The pass runs this cheap program
-// wherever a rasterizer shades whole blocks around small triangles.
-const char* const kMeshSurfaceHead = "#version 330 core\n" R"(
-in vec3 vWorld;
-in vec3 vNormal;
-in vec3 vModel;
-flat in vec4 vFinish;
-flat in vec4 vDetail;
-flat in int vDraw;
-uniform int uKind;  // the draw's SurfaceKind
-layout(location = 0) out vec4 gModel;   // model position, draw record * 8 + SurfaceKind
-layout(location = 1) out vec4 gNormal;  // world normal times cavity, pattern units a pixel
-)";
-const char* const kMeshSurfaceMain = R"(void main() {
-    vec3 n = vFinish.y > 0.5 ? normalize(vNormal) : normalize(cross(dFdx(vWorld), dFdy(vWorld)));
-    float cavity = vFinish.z > 0.0 ? cavityFactor(n, vWorld, vFinish.z) : 1.0;
-    gModel = vec4(vModel, float(vDraw * 8 + uKind));
-    gNormal = vec4(n * cavity, max(length(fwidth(vModel / vDetail.z)), 1e-6));
-}
-)";
-
-// Then one screen pass a surface kind (HG_KIND), drawn as the tiles that
-// hold it (kSurfaceTileVertex), lighting what the G-buffer holds as
-// meshFragment() does without relief: the same colour, to float rounding.
-const char* const kMeshShadeHead = "#version 330 core\n" HG_LIGHTING_GLSL HG_DRAW_RECORD_GLSL R"(
-uniform sampler2DMS uSurfaceModel;
-uniform sampler2DMS uSurfaceNormal;
-layout(location = 0) out vec4 fragColor;
-)";
-const char* const kMeshShadeMain = R"(void main() {
-    ivec2 texel = ivec2(gl_FragCoord.xy);
-    vec4 m = texelFetch(uSurfaceModel, texel, 0);
-    // Another kind's pixel in the tile, or none: not lit (llvmpipe still
-    // runs the rest for its lane; the tiles keep such lanes few).
-    int code = int(m.w);
-    if (m.w < 0.0 || code % 8 != HG_KIND) discard;
-    int draw = code / 8;
-    vec4 g = texelFetch(uSurfaceNormal, texel, 0);
-    vec3 world = (drawModel(draw) * vec4(m.xyz, 1.0)).xyz;
-    float cavity = length(g.xyz);
-    vec3 n = g.xyz / cavity;
-    vec4 surface = drawRecord(draw, 7);  // sRGB base colour, specular
-    vec4 finish = drawRecord(draw, 8);
-    vec4 detail = drawRecord(draw, 9);
-    vec3 base = toLinear(surface.rgb);
-    vec3 specular = vec3(surface.a);
-    float shininess = finish.x, metallic = detail.y;
-    const int kind = HG_KIND;
-    if (kind != 0) {
-        float height;
-        surfaceDetail(kind, m.xyz / detail.z, n, g.w, base, specular, shininess, metallic, height);
-    }
-    if (finish.z > 0.0) base *= cavity;
-    specular = mix(specular, base * (0.6 + specular), metallic);
-    fragColor = aerial(shade(base * (1.0 - 0.6 * metallic), n, world, specular, shininess), world);
-}
-)";
-
-// Which surface kinds each tile of SurfaceBuffer::kTilePixels pixels holds
-// (bit k: SurfaceKind k), from the surfaces' codes: drawn at one fragment a
-// tile with kFullscreenVertex.
-const char* const kSurfaceTileKindsFragment = R"(#version 330 core
-uniform sampler2DMS uSurfaceModel;
-layout(location = 0) out uint kinds;
-const int kTile = HG_TILE_PIXELS;
-void main() {
-    ivec2 last = textureSize(uSurfaceModel) - 1;
-    ivec2 corner = ivec2(gl_FragCoord.xy) * kTile;
-    uint k = 0u;
-    for (int y = 0; y < kTile; ++y)
-        for (int x = 0; x < kTile; ++x) {
-            float code = texelFetch(uSurfaceModel, min(corner + ivec2(x, y), last), 0).w;
-            k |= code >= 0.0 ? 1u << uint(int(code) % 8) : 0u;
-        }
-    kinds = k;
-}
-)";
-
-// The screen pass's geometry: two triangles a tile (gl_VertexID, no
-// vertex buffer), those of tiles without kind HG_KIND collapsed to nothing.
-// A software rasterizer runs a fragment shader over every covered block
-// whatever a discard or a failed depth or stencil test says, so only
-// coverage keeps a kind's light from the rest of the view.
-const char* const kSurfaceTileVertex = R"(#version 330 core
-uniform usampler2D uTileKinds;
-uniform vec2 uScenePixels;
-const int kTile = HG_TILE_PIXELS;
-void main() {
-    int tile = gl_VertexID / 6, corner = gl_VertexID % 6;
-    ivec2 tiles = textureSize(uTileKinds, 0);
-    ivec2 t = ivec2(tile % tiles.x, tile / tiles.x);
-    uint kinds = texelFetch(uTileKinds, t, 0).r;
-    if ((kinds & (1u << uint(HG_KIND))) == 0u) {
-        gl_Position = vec4(2.0, 2.0, 2.0, 1.0);  // every corner outside the view: no triangle
-        return;
-    }
-    // Corners (0,0) (1,0) (1,1) and (0,0) (1,1) (0,1).
-    ivec2 c = ivec2(corner == 1 || corner == 2 || corner == 4 ? 1 : 0, corner == 2 || corner == 4 || corner == 5 ? 1 : 0);
-    gl_Position = vec4(vec2((t + c) * kTile) / uScenePixels * 2.0 - 1.0, 0.0, 1.0);
-}
-)";
-
 const char* meshFragment() {
     static const std::string source = std::string(kMeshFragmentHead) + kSurfaceDetailGlsl + kMeshFormGlsl + kMeshFragmentMain;
-    return source.c_str();
-}
-
-const char* meshSurfaceFragment() {
-    static const std::string source = std::string(kMeshSurfaceHead) + kMeshFormGlsl + kMeshSurfaceMain;
-    return source.c_str();
-}
-
-const char* meshShadeFragment() {
-    static const std::string source = std::string(kMeshShadeHead) + kSurfaceDetailGlsl + kMeshShadeMain;
     return source.c_str();
 }
 

@@ -53,16 +53,6 @@ namespace hg::garden::shaders {
 // the first directional light (the sun) casts shadows.
 extern const char* const kMeshVertex;
 const char* meshFragment();
-// Sculptures shaded once a pixel: their surfaces into a G-buffer (with
-// kMeshVertex compiled with HG_GBUFFER), then lit by a screen pass a
-// surface kind (with kFullscreenVertex; renderer.cpp, docs/rendering.md).
-// (Functions: they share the materials' GLSL, joined once on first use.)
-const char* meshSurfaceFragment();
-const char* meshShadeFragment();
-// The screen pass's tiles: which kinds each holds (with kFullscreenVertex),
-// and two triangles a tile where kind HG_KIND is (HG_TILE_PIXELS defined).
-extern const char* const kSurfaceTileKindsFragment;
-extern const char* const kSurfaceTileVertex;
 
 // The ground plane with its procedural grid.
 extern const char* const kGroundVertex;
