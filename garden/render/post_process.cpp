@@ -15,15 +15,16 @@ constexpr GLint kViewZUnit = 7;
 constexpr GLint kResolvedUnit = 9;
 
 // Compiled per configuration (PostProcess::variant): HG_SAMPLES, the scene's
-// samples a pixel; HG_OCCLUSION, 0 none, 1 at the scene's size, 2 coarser;
+// samples a pixel (and HG_SCENE_SAMPLER, the sampler type its targets take:
+// render_targets.h); HG_OCCLUSION, 0 none, 1 at the scene's size, 2 coarser;
 // HG_RESOLVE, 1 for the first of two passes where the scene is stretched
 // over the output: each scene pixel resolved and sRGB-encoded once, at the
 // scene's size, into an 8-bit texture that kStretchFragment then samples
 // bilinearly (docs/rendering.md, "Quality": why the stretch is in display
 // space).
 const char* const kCompositeFragment = "#version 330 core\n" HG_SRGB_GLSL R"(
-uniform sampler2DMS uColor;
-uniform sampler2DMS uDepth;
+uniform HG_SCENE_SAMPLER uColor;
+uniform HG_SCENE_SAMPLER uDepth;
 uniform sampler2D uOcclusion;
 uniform sampler2D uViewZ;       // the scene's view z at full size (the occlusion's pyramid, level 0)
 uniform int uOcclusionScale;    // scene pixels per occlusion texel (2 or more)
@@ -113,7 +114,7 @@ void main() {
 // "The stretch in display space").
 const char* const kStretchFragment = "#version 330 core\n" R"(
 uniform sampler2D uResolved;
-uniform sampler2DMS uDepth;
+uniform HG_SCENE_SAMPLER uDepth;
 uniform vec2 uSize;     // the scene's pixels
 uniform vec2 uToScene;  // output pixel to scene pixel (the render scale)
 out vec4 fragColor;
@@ -127,16 +128,23 @@ void main() {
 }  // namespace
 
 PostProcess::PostProcess()
-    : stretch_("composite (stretch)", shaders::kFullscreenVertex, kStretchFragment),
-      resolved_(gl::Texture::create()),
-      resolvedTarget_(gl::Framebuffer::create()),
-      empty_(gl::VertexArray::create()) {
-    stretch_.use();
-    glUniform1i(stretch_.uniform("uResolved"), kResolvedUnit);
-    glUniform1i(stretch_.uniform("uDepth"), 1);
-    stretchSize_ = stretch_.uniform("uSize");
-    stretchToScene_ = stretch_.uniform("uToScene");
+    : resolved_(gl::Texture::create()), resolvedTarget_(gl::Framebuffer::create()), empty_(gl::VertexArray::create()) {
     variant(Configuration{});  // the common one now, and a broken shader fails here
+    stretch(1);
+}
+
+const PostProcess::Stretch& PostProcess::stretch(int samples) {
+    std::optional<Stretch>& s = stretches_[samples > 1 ? 1 : 0];
+    if (s) return *s;
+    s.emplace();
+    s->program = ShaderProgram("composite (stretch)", shaders::kFullscreenVertex,
+                               withDefines(kStretchFragment, SceneTargets::sceneSamplerDefine(samples)).c_str());
+    s->program.use();
+    glUniform1i(s->program.uniform("uResolved"), kResolvedUnit);
+    glUniform1i(s->program.uniform("uDepth"), 1);
+    s->size = s->program.uniform("uSize");
+    s->toScene = s->program.uniform("uToScene");
+    return *s;
 }
 
 PostProcess::~PostProcess() = default;
@@ -145,7 +153,8 @@ const PostProcess::Variant& PostProcess::variant(const Configuration& c) {
     auto found = variants_.find(c);
     if (found != variants_.end()) return found->second;
     const std::string defines = "#define HG_SAMPLES " + std::to_string(c.samples) + "\n#define HG_OCCLUSION " +
-                                std::to_string(c.occlusion) + "\n#define HG_RESOLVE " + (c.resolve ? "1" : "0") + "\n";
+                                std::to_string(c.occlusion) + "\n#define HG_RESOLVE " + (c.resolve ? "1" : "0") +
+                                "\n" + SceneTargets::sceneSamplerDefine(c.samples);
     Variant v;
     v.program = ShaderProgram("composite", shaders::kFullscreenVertex, withDefines(kCompositeFragment, defines).c_str());
     const ShaderProgram& p = v.program;
@@ -188,9 +197,9 @@ void PostProcess::composite(const SceneTargets& scene, const OcclusionImage& occ
     glUniform1i(v.occlusionScale, std::max(occlusion.scale, 1));
     glUniform2f(v.toScene, toScene.x, toScene.y);
     glActiveTexture(GL_TEXTURE0);
-    glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, scene.colorTexture());
+    glBindTexture(scene.textureTarget(), scene.colorTexture());
     glActiveTexture(GL_TEXTURE1);
-    glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, scene.depthTexture());
+    glBindTexture(scene.textureTarget(), scene.depthTexture());
     glActiveTexture(GL_TEXTURE2);
     glBindTexture(GL_TEXTURE_2D, occlusion.texture);
     glActiveTexture(GL_TEXTURE0 + kViewZUnit);
@@ -210,9 +219,10 @@ void PostProcess::composite(const SceneTargets& scene, const OcclusionImage& occ
             glDisable(GL_DEPTH_TEST);
             glDrawArrays(GL_TRIANGLES, 0, 3);
         }
-        stretch_.use();
-        glUniform2f(stretchSize_, static_cast<float>(scene.size().x), static_cast<float>(scene.size().y));
-        glUniform2f(stretchToScene_, toScene.x, toScene.y);
+        const Stretch& s = stretch(c.samples);
+        s.program.use();
+        glUniform2f(s.size, static_cast<float>(scene.size().x), static_cast<float>(scene.size().y));
+        glUniform2f(s.toScene, toScene.x, toScene.y);
         glActiveTexture(GL_TEXTURE0 + kResolvedUnit);
         glBindTexture(GL_TEXTURE_2D, resolved_.get());
         glActiveTexture(GL_TEXTURE0);

@@ -14,7 +14,9 @@
 
 #include <glm/vec2.hpp>
 
+#include <array>
 #include <map>
+#include <optional>
 #include <tuple>
 
 #include "garden/render/gl_objects.h"
@@ -57,11 +59,17 @@ private:
         GLint exposure = -1, toScene = -1, occlusionScale = -1;
     };
     const Variant& variant(const Configuration& c);
+    // The resolved scene, bilinearly over the output, with the depth of a
+    // scene of `samples` (compiled when first met, per sampler type).
+    struct Stretch {
+        ShaderProgram program;
+        GLint size = -1, toScene = -1;
+    };
+    const Stretch& stretch(int samples);
     void ensureResolved(glm::ivec2 size);
 
     std::map<Configuration, Variant> variants_;
-    ShaderProgram stretch_;  // the resolved scene, bilinearly over the output
-    GLint stretchSize_ = -1, stretchToScene_ = -1;
+    std::array<std::optional<Stretch>, 2> stretches_;  // one sample, several
     gl::Texture resolved_;   // RGBA8 at the scene's size: tone mapped, averaged, sRGB-encoded
     gl::Framebuffer resolvedTarget_;
     glm::ivec2 resolvedSize_{0};

@@ -43,18 +43,30 @@ void SceneTargets::ensure(glm::ivec2 size, int samples) {
     depth_ = gl::Texture::create();
     // Fixed sample locations: the composite reads sample i of colour and
     // depth as the same point.
-    glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, color_.get());
-    glTexImage2DMultisample(GL_TEXTURE_2D_MULTISAMPLE, samples, GL_RGBA16F, size.x, size.y, GL_TRUE);
-    glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, depth_.get());
-    glTexImage2DMultisample(GL_TEXTURE_2D_MULTISAMPLE, samples, GL_DEPTH_COMPONENT24, size.x, size.y, GL_TRUE);
-    glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, 0);
+    const GLenum target = textureTargetFor(samples);
+    if (samples > 1) {
+        glBindTexture(target, color_.get());
+        glTexImage2DMultisample(target, samples, GL_RGBA16F, size.x, size.y, GL_TRUE);
+        glBindTexture(target, depth_.get());
+        glTexImage2DMultisample(target, samples, GL_DEPTH_COMPONENT24, size.x, size.y, GL_TRUE);
+        glBindTexture(target, 0);
+    } else {
+        color_ = makeTexture2D(GL_RGBA16F, size, GL_RGBA, GL_FLOAT, GL_NEAREST, GL_CLAMP_TO_EDGE);
+        depth_ = makeTexture2D(GL_DEPTH_COMPONENT24, size, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, GL_NEAREST,
+                               GL_CLAMP_TO_EDGE);
+        glBindTexture(target, 0);
+    }
 
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.get());
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D_MULTISAMPLE, color_.get(), 0);
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D_MULTISAMPLE, depth_.get(), 0);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, target, color_.get(), 0);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, target, depth_.get(), 0);
     checkFramebuffer("scene (HDR, multisampled)");
     size_ = size;
     samples_ = samples;
+}
+
+std::string SceneTargets::sceneSamplerDefine(int samples) {
+    return samples > 1 ? "#define HG_SCENE_SAMPLER sampler2DMS\n" : "#define HG_SCENE_SAMPLER sampler2D\n";
 }
 
 void ScalarTarget::ensure(glm::ivec2 wanted) {

@@ -34,7 +34,7 @@ namespace {
 
 // Depth d in [0, 1] to view z: ndc n = 2d - 1 = (P22 z + P32) / (P23 z + P33).
 const char* const kLinearizeFragment = R"(#version 330 core
-uniform sampler2DMS uDepth;
+uniform HG_SCENE_SAMPLER uDepth;  // render_targets.h
 uniform vec4 uDepthToZ;  // P22, P32, P23, P33
 out float z;
 void main() {
@@ -74,12 +74,9 @@ void ViewPositionUniforms::set(const glm::mat4& p, glm::ivec2 fullSize) const {
 }
 
 ViewDepthPyramid::ViewDepthPyramid()
-    : linearize_("view depth", shaders::kFullscreenVertex, kLinearizeFragment),
+    : linearize_{Linearize(1), Linearize(2)},
       reduce_("view depth levels", shaders::kFullscreenVertex, kReduceFragment),
-      empty_(gl::VertexArray::create()),
-      depthToZ_(linearize_.uniform("uDepthToZ")) {
-    linearize_.use();
-    glUniform1i(linearize_.uniform("uDepth"), 0);
+      empty_(gl::VertexArray::create()) {
     reduce_.use();
     glUniform1i(reduce_.uniform("uViewZ"), 0);
 }
@@ -109,6 +106,15 @@ void ViewDepthPyramid::ensure(glm::ivec2 size) {
     size_ = size;
 }
 
+// A scene of `samples` (its depth's sampler type: render_targets.h).
+ViewDepthPyramid::Linearize::Linearize(int samples)
+    : program("view depth", shaders::kFullscreenVertex,
+              withDefines(kLinearizeFragment, SceneTargets::sceneSamplerDefine(samples)).c_str()),
+      depthToZ(program.uniform("uDepthToZ")) {
+    program.use();
+    glUniform1i(program.uniform("uDepth"), 0);
+}
+
 void ViewDepthPyramid::build(const SceneTargets& scene, const glm::mat4& p) {
     ensure(scene.size());
     glBindVertexArray(empty_.get());
@@ -116,11 +122,12 @@ void ViewDepthPyramid::build(const SceneTargets& scene, const glm::mat4& p) {
 
     glBindFramebuffer(GL_FRAMEBUFFER, levels_[0].get());
     glViewport(0, 0, size_.x, size_.y);
-    linearize_.use();
-    glUniform4f(depthToZ_, p[2][2], p[3][2], p[2][3], p[3][3]);
-    glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, scene.depthTexture());
+    const Linearize& linearize = linearize_[scene.samples() > 1 ? 1 : 0];
+    linearize.program.use();
+    glUniform4f(linearize.depthToZ, p[2][2], p[3][2], p[2][3], p[3][3]);
+    glBindTexture(scene.textureTarget(), scene.depthTexture());
     glDrawArrays(GL_TRIANGLES, 0, 3);
-    glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, 0);
+    glBindTexture(scene.textureTarget(), 0);
 
     // Each level reads only the one below: the texture's levels are narrowed
     // to it while the next is drawn, so nothing reads what it writes.

@@ -39,13 +39,18 @@ public:
 private:
     void ensure(glm::ivec2 size);
 
-    ShaderProgram linearize_;
+    struct Linearize {
+        explicit Linearize(int samples);
+        ShaderProgram program;
+        GLint depthToZ = -1;
+    };
+    Linearize linearize_[2];  // for a scene of one sample, of several
     ShaderProgram reduce_;
     gl::VertexArray empty_;
     gl::Texture texture_;
     gl::Framebuffer levels_[kLevels];
     glm::ivec2 size_{0};
-    GLint depthToZ_ = -1, reduceLevel_ = -1;
+    GLint reduceLevel_ = -1;
 };
 
 // The GLSL that reads the pyramid back as view-space positions, for the
