@@ -39,12 +39,12 @@ void SceneTargets::ensure(glm::ivec2 size, int samples) {
     if (fbo_ && size == size_ && samples == samples_) return;
 
     fbo_ = gl::Framebuffer::create();
-    color_ = gl::Texture::create();
-    depth_ = gl::Texture::create();
-    // Fixed sample locations: the composite reads sample i of colour and
-    // depth as the same point.
     const GLenum target = textureTargetFor(samples);
     if (samples > 1) {
+        // Fixed sample locations: the composite reads sample i of colour and
+        // depth as the same point.
+        color_ = gl::Texture::create();
+        depth_ = gl::Texture::create();
         glBindTexture(target, color_.get());
         glTexImage2DMultisample(target, samples, GL_RGBA16F, size.x, size.y, GL_TRUE);
         glBindTexture(target, depth_.get());
