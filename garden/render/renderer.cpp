@@ -591,14 +591,9 @@ void Renderer::renderScene(const RenderQuality& q, bool shadowed) {
     glViewport(0, 0, targets_->size().x, targets_->size().y);
     glDisable(GL_SCISSOR_TEST);
     glDisable(GL_BLEND);
-    // One sample a pixel: rasterized at the pixel's centre, once. A driver
-    // may give the one-sample targets four samples (llvmpipe does), and
-    // multisample rasterization would then cover, depth-test and write all
-    // four for the one the composite reads (docs/rendering.md, "The passes").
-    if (targets_->samples() > 1)
-        glEnable(GL_MULTISAMPLE);
-    else
-        glDisable(GL_MULTISAMPLE);
+    // (At one sample the targets are plain textures, so this changes
+    // nothing there: render_targets.h.)
+    glEnable(GL_MULTISAMPLE);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);

@@ -140,11 +140,11 @@ TEST_F(LookTest, MultisamplingGivesSilhouettesIntermediateCoverageAndLeavesFlatC
 }
 
 // Without multisampling a pixel is covered where its centre is, as a
-// one-sample framebuffer is. The scene's targets are multisample textures
-// of one sample, which a driver may make four (llvmpipe does): with
-// multisample rasterization left on, each pixel was then the coverage of
-// its first sample, a quarter of a pixel off its centre, and the low
-// preset rasterized four samples for the one it shows. An upright square
+// one-sample framebuffer is. The scene's targets were multisample textures
+// of one sample, which a driver may make four (llvmpipe does): each pixel
+// was then the coverage of its first sample, a quarter of a pixel off its
+// centre, and the low preset rasterized four samples for the one it shows
+// (at one sample they are now plain textures). An upright square
 // whose edges lie 0.45 of a pixel past pixel boundaries, seen square on
 // with one model unit a pixel, covers exactly the pixels whose centres it
 // holds.
